@@ -1,0 +1,106 @@
+//! The `qmckit` command: generate and (later) judge sampling patterns.
+//!
+//! Errors go to stderr as one line, `qmckit: error: ...`, with exit code 2 for bad usage or
+//! input and 1 for failures of the environment (e.g. an unwritable output).
+
+mod output;
+mod points;
+
+use std::io::Write;
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+
+/// Quasi-Monte Carlo sampling patterns: low-discrepancy sequences and nets.
+#[derive(Parser, Debug)]
+#[command(name = "qmckit", version, about, long_about = None)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Write N points of a sampler, one point per line (natural order: line k is index start+k).
+    Points(points::PointsArgs),
+}
+
+/// A failure to report: one line and an exit code.
+#[derive(Debug)]
+pub struct Failure {
+    /// 2: bad usage or input; 1: the environment failed.
+    pub code: u8,
+    /// One line, no trailing newline.
+    pub message: String,
+}
+
+impl Failure {
+    /// Bad usage or input (exit code 2).
+    pub fn usage(message: impl Into<String>) -> Self {
+        Failure {
+            code: 2,
+            message: message.into(),
+        }
+    }
+}
+
+impl From<qmckit::Error> for Failure {
+    fn from(e: qmckit::Error) -> Self {
+        Failure::usage(e.to_string())
+    }
+}
+
+impl From<std::io::Error> for Failure {
+    fn from(e: std::io::Error) -> Self {
+        Failure {
+            code: 1,
+            message: format!("write failed: {e}"),
+        }
+    }
+}
+
+/// clap's multi-line error report folded into one line.
+fn one_line(err: &clap::Error) -> String {
+    let text = err.render().to_string();
+    let parts: Vec<&str> = text
+        .lines()
+        .map(str::trim)
+        .filter(|l| !l.is_empty() && !l.starts_with("Usage:") && !l.starts_with("For more"))
+        .map(|l| l.strip_prefix("error: ").unwrap_or(l))
+        .collect();
+    parts.join(" ")
+}
+
+fn main() -> ExitCode {
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(err) => {
+            use clap::error::ErrorKind;
+            if matches!(
+                err.kind(),
+                ErrorKind::DisplayHelp | ErrorKind::DisplayVersion
+            ) {
+                let _ = err.print();
+                return ExitCode::SUCCESS;
+            }
+            if err.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand {
+                let _ = err.print();
+                return ExitCode::from(2);
+            }
+            eprintln!("qmckit: error: {}", one_line(&err));
+            return ExitCode::from(2);
+        }
+    };
+    let result = match cli.command {
+        Command::Points(args) => points::run(&args),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(f) if f.code == 1 && f.message.contains("Broken pipe") => ExitCode::SUCCESS,
+        Err(f) => {
+            let _ = std::io::stdout().flush();
+            eprintln!("qmckit: error: {}", f.message);
+            ExitCode::from(f.code)
+        }
+    }
+}

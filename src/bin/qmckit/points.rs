@@ -1,0 +1,183 @@
+//! `qmckit points SAMPLER -n N [-d D] ...`: write points of any sampler.
+
+use std::io::BufWriter;
+
+use clap::{Args, ValueEnum};
+use qmckit::{
+    Halton, Hammersley, Independent, Jitter, LarcherPillichshammer, LatinHypercube, Sampler,
+    Stratified, VanDerCorput,
+};
+
+use crate::Failure;
+use crate::output::{Format, PointWriter};
+
+/// The constructions `points` knows.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum SamplerName {
+    /// Independent uniform random points (hash of seed, index, dimension).
+    Independent,
+    /// Jittered stratified grid: n must be k^d, or give --strata.
+    Stratified,
+    /// Latin hypercube: one point in each of the n slabs of every axis.
+    Latin,
+    /// Van der Corput sequence, 1D, in base --base (default 2).
+    Vdc,
+    /// Halton sequence: radical inverses in the first d primes.
+    Halton,
+    /// Hammersley set of --total points (default n): (i/N, phi_2(i), phi_3(i), ...).
+    Hammersley,
+    /// Larcher–Pillichshammer (0,m,2)-net, 2D, --total (default n) a power of two.
+    Lp,
+}
+
+/// Arguments of `qmckit points`.
+#[derive(Args, Debug)]
+pub struct PointsArgs {
+    /// Which construction.
+    sampler: SamplerName,
+    /// Number of points to write.
+    #[arg(short = 'n', value_name = "N")]
+    n: u64,
+    /// Dimensions per point [default: 1 for vdc, 2 otherwise].
+    #[arg(short = 'd', value_name = "D")]
+    d: Option<usize>,
+    /// Index of the first point written.
+    #[arg(long, default_value_t = 0)]
+    start: u32,
+    /// Size of the point set for finite sets (stratified, latin, hammersley, lp) [default: n].
+    /// Points start..start+n-1 of it are written.
+    #[arg(long)]
+    total: Option<u64>,
+    /// Seed of the randomized samplers (independent, stratified, latin).
+    #[arg(long, default_value_t = 0)]
+    seed: u64,
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = Format::U32)]
+    format: Format,
+    /// Base of the van der Corput sequence.
+    #[arg(long, default_value_t = 2)]
+    base: u32,
+    /// Strata per dimension for stratified, e.g. 8x4 (their product is the set size).
+    #[arg(long)]
+    strata: Option<String>,
+    /// Stratified: put each point at its cell's center instead of jittering it.
+    #[arg(long)]
+    centered: bool,
+}
+
+/// Points written per batch (bounded memory for any n).
+const BATCH: usize = 1 << 14;
+
+/// Builds the sampler the arguments name.
+fn build(args: &PointsArgs) -> Result<Box<dyn Sampler>, Failure> {
+    let d = args.d.unwrap_or(if args.sampler == SamplerName::Vdc {
+        1
+    } else {
+        2
+    });
+    let total = args.total.unwrap_or(args.n);
+    Ok(match args.sampler {
+        SamplerName::Independent => Box::new(Independent::new(d, args.seed)?),
+        SamplerName::Halton => Box::new(Halton::new(d)?),
+        SamplerName::Vdc => {
+            if d != 1 {
+                return Err(Failure::usage(format!(
+                    "vdc is one-dimensional: -d must be 1, got {d}"
+                )));
+            }
+            Box::new(VanDerCorput::new(args.base)?)
+        }
+        SamplerName::Hammersley => Box::new(Hammersley::new(total, d)?),
+        SamplerName::Latin => Box::new(LatinHypercube::new(total, d, args.seed)?),
+        SamplerName::Lp => {
+            if d != 2 {
+                return Err(Failure::usage(format!(
+                    "lp is two-dimensional: -d must be 2, got {d}"
+                )));
+            }
+            Box::new(LarcherPillichshammer::with_points(total)?)
+        }
+        SamplerName::Stratified => {
+            let strata = match &args.strata {
+                Some(text) => parse_strata(text)?,
+                None => vec![root(total, d)?; d],
+            };
+            if args.d.is_some() && strata.len() != d {
+                return Err(Failure::usage(format!(
+                    "--strata {} has {} dimensions but -d is {d}",
+                    args.strata.as_deref().unwrap_or(""),
+                    strata.len()
+                )));
+            }
+            let jitter = if args.centered {
+                Jitter::Center
+            } else {
+                Jitter::Random(args.seed)
+            };
+            let s = Stratified::new(&strata, jitter)?;
+            if args.total.is_some_and(|t| t != s.len()) {
+                return Err(Failure::usage(format!(
+                    "--total {total} does not match the {} cells of --strata",
+                    s.len()
+                )));
+            }
+            Box::new(s)
+        }
+    })
+}
+
+/// `k` with `k^d == n`, or a usage error.
+fn root(n: u64, d: usize) -> Result<u32, Failure> {
+    let guess = (n as f64).powf(1.0 / d as f64).round() as u64;
+    for k in guess.saturating_sub(1)..=guess + 1 {
+        if k > 0 && k.checked_pow(d as u32) == Some(n) {
+            return Ok(k as u32);
+        }
+    }
+    Err(Failure::usage(format!(
+        "stratified: {n} points is not k^{d} for a whole number k; pass --strata (e.g. 8x4)"
+    )))
+}
+
+/// Parses `8x4x2` into strata counts.
+fn parse_strata(text: &str) -> Result<Vec<u32>, Failure> {
+    text.split(['x', 'X'])
+        .map(|part| {
+            part.trim().parse::<u32>().map_err(|_| {
+                Failure::usage(format!(
+                    "--strata {text:?}: {part:?} is not a count (expected e.g. 8x4)"
+                ))
+            })
+        })
+        .collect()
+}
+
+/// Runs `qmckit points`.
+pub fn run(args: &PointsArgs) -> Result<(), Failure> {
+    if args.n == 0 {
+        return Err(Failure::usage("-n must be at least 1"));
+    }
+    let sampler = build(args)?;
+    let dims = sampler.dims();
+    let end = args.start as u64 + args.n;
+    if end > sampler.len() {
+        return Err(Failure::usage(format!(
+            "points {}..{} are past the end: this set has {} points (see --total)",
+            args.start,
+            end - 1,
+            sampler.len()
+        )));
+    }
+    let stdout = std::io::stdout().lock();
+    let mut writer = PointWriter::new(BufWriter::new(stdout), args.format, args.n, dims)?;
+    let mut buf = vec![0u32; BATCH.min(args.n as usize) * dims];
+    let mut index = args.start as u64;
+    while index < end {
+        let rows = ((end - index) as usize).min(BATCH);
+        let chunk = &mut buf[..rows * dims];
+        sampler.fill(index as u32, chunk)?;
+        writer.write(chunk, dims)?;
+        index += rows as u64;
+    }
+    writer.finish()
+}

@@ -1,0 +1,128 @@
+//! Bit-level building blocks and conversions of 0.32 fixed-point fractions.
+//!
+//! Every coordinate in qmckit is a `u32` read as the fraction `x / 2^32` in `[0, 1)`. The
+//! conversions here never leave that interval: in particular [`to_f32`] rounds toward zero,
+//! so it never returns `1.0` (a plain `x as f32 / 2^32` does for `x >= 0xFFFF_FF80`).
+
+/// Reverses the 32 bits of `x`: bit `k` moves to bit `31 - k`.
+///
+/// This *is* the base-2 radical inverse: the digits of the index mirrored around the binary
+/// point, read as a 0.32 fraction. One instruction on ARMv7-M (`rbit`) and RISC-V with Zbb,
+/// about a dozen elsewhere.
+///
+/// ```
+/// assert_eq!(qmckit::bits::reverse_bits(1), 0x8000_0000);
+/// assert_eq!(qmckit::bits::reverse_bits(6), 0x6000_0000); // 6 = 110b -> 0.011b = 0.375
+/// ```
+#[inline]
+pub const fn reverse_bits(x: u32) -> u32 {
+    x.reverse_bits()
+}
+
+/// The binary-reflected Gray code of `i`, `i ^ (i >> 1)`: consecutive indices differ in
+/// exactly one bit, the lowest set bit of `i + 1`, which is what Sobol's sequential
+/// (Antonov–Saleev) update uses.
+///
+/// ```
+/// use qmckit::bits::{gray, gray_inverse};
+/// assert_eq!(gray(2), 3);
+/// assert_eq!(gray_inverse(gray(123_456)), 123_456);
+/// ```
+#[inline]
+pub const fn gray(i: u32) -> u32 {
+    i ^ (i >> 1)
+}
+
+/// Inverse of [`gray`]: bit `k` of the result is the parity of bits `k..32` of `g`.
+///
+/// Five shift-xor steps (a prefix-xor toward the low bits).
+#[inline]
+pub const fn gray_inverse(g: u32) -> u32 {
+    let mut x = g;
+    x ^= x >> 1;
+    x ^= x >> 2;
+    x ^= x >> 4;
+    x ^= x >> 8;
+    x ^= x >> 16;
+    x
+}
+
+/// 2^-32 as a float, the weight of the lowest bit of a 0.32 fraction.
+const INV_2_POW_32: f64 = 1.0 / 4_294_967_296.0;
+
+/// `x / 2^32` as `f64`: exact (a `u32` fits the 53-bit significand).
+///
+/// ```
+/// assert_eq!(qmckit::bits::to_f64(0x8000_0000), 0.5);
+/// assert!(qmckit::bits::to_f64(u32::MAX) < 1.0);
+/// ```
+#[inline]
+pub const fn to_f64(x: u32) -> f64 {
+    x as f64 * INV_2_POW_32
+}
+
+/// `x / 2^32` as `f32`, rounded toward zero, so the result is always in `[0, 1)`.
+///
+/// Keeps the 24 leading significant bits of `x` (clears the bits below them) and scales
+/// exactly by 2^-32. Values below 2^-8 are exact; the largest result is `1 - 2^-24`. The map
+/// is monotone and `to_f32(x) <= x / 2^32 < to_f32(x) + ulp`. All 2^32 inputs are checked
+/// by a test. Cost: a leading-zero count, a shift and a mask, one conversion.
+///
+/// ```
+/// use qmckit::bits::to_f32;
+/// assert_eq!(to_f32(u32::MAX), 1.0 - f32::EPSILON / 2.0);
+/// assert_eq!(to_f32(0x4000_0000), 0.25);
+/// ```
+#[inline]
+pub const fn to_f32(x: u32) -> f32 {
+    // Number of low bits that do not fit a 24-bit significand (0 when x < 2^24).
+    let drop = 8u32.saturating_sub(x.leading_zeros());
+    let kept = (x >> drop) << drop;
+    kept as f32 * (INV_2_POW_32 as f32)
+}
+
+/// `x / 2^32` as a `fixed` crate `U0F32` (same bits, no rounding).
+#[cfg(feature = "fixed")]
+#[inline]
+pub const fn to_fixed(x: u32) -> fixed::types::U0F32 {
+    fixed::types::U0F32::from_bits(x)
+}
+
+/// `floor(num * 2^32 / den)`: the 0.32 fraction just below `num / den`, exact.
+///
+/// Requires `num < den` (so the result fits); callers validate that. Used wherever a
+/// construction places point `i` of `n` at `i / n` (Hammersley, strata, Latin hypercube).
+///
+/// ```
+/// assert_eq!(qmckit::bits::fraction(1, 3), 0x5555_5555);
+/// assert_eq!(qmckit::bits::fraction(3, 4), 0xC000_0000);
+/// ```
+#[inline]
+pub const fn fraction(num: u64, den: u64) -> u32 {
+    ((num << 32) / den) as u32
+}
+
+/// The point at relative position `u` (a 0.32 fraction) inside cell `cell` of `n` equal
+/// cells of `[0, 1)`, such that the result `x` satisfies `cell / n <= x / 2^32 < (cell + 1) / n`
+/// exactly, i.e. `floor(x n / 2^32) == cell`.
+///
+/// The cells are the integer ranges `[ceil(cell 2^32 / n), ceil((cell + 1) 2^32 / n))`, which
+/// partition the `u32`s; `u` scales into the range. Two divisions and a multiplication.
+/// Requires `cell < n <= 2^32` (callers validate).
+///
+/// ```
+/// use qmckit::bits::in_cell;
+/// assert_eq!(in_cell(1, 4, 0x8000_0000), 0x6000_0000); // middle of the second quarter
+/// let x = in_cell(1, 3, 0); // the first 0.32 fraction at or above 1/3
+/// assert!(x as u64 * 3 >= 1 << 32 && (x as u64 - 1) * 3 < 1 << 32);
+/// ```
+#[inline]
+pub const fn in_cell(cell: u64, n: u64, u: u32) -> u32 {
+    let lo = ((cell << 32) + n - 1) / n;
+    let hi = if cell + 1 >= n {
+        1 << 32
+    } else {
+        (((cell + 1) << 32) + n - 1) / n
+    };
+    (lo + (((hi - lo) * u as u64) >> 32)) as u32
+}

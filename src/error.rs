@@ -1,0 +1,119 @@
+//! The one error type of the crate.
+//!
+//! Every fallible constructor and every request that can be out of range returns
+//! `Result<_, Error>`; nothing in the core panics on bad input. The type is `Copy`, carries
+//! the offending values, and implements [`core::fmt::Display`] (and `defmt::Format` under the
+//! `defmt` feature) so firmware can log it without allocation.
+
+use core::fmt;
+
+/// An invalid parameter or out-of-range request.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+#[non_exhaustive]
+pub enum Error {
+    /// A point set was asked to hold zero points.
+    ZeroPoints,
+    /// A point set was asked for more points than its construction allows.
+    TooManyPoints {
+        /// Points requested.
+        requested: u64,
+        /// Largest allowed.
+        max: u64,
+    },
+    /// A sampler was asked for zero dimensions.
+    ZeroDimensions,
+    /// A dimension past what the sampler (or its compiled-in table) provides.
+    DimensionOutOfRange {
+        /// Dimension requested (0-based).
+        dim: usize,
+        /// Number of dimensions available.
+        dims: usize,
+    },
+    /// A point index past the end of a finite point set.
+    IndexOutOfRange {
+        /// Index requested.
+        index: u64,
+        /// Number of points in the set.
+        len: u64,
+    },
+    /// A radical-inverse base below 2.
+    BaseTooSmall {
+        /// Base requested.
+        base: u32,
+    },
+    /// A net size exponent `m` (N = b^m) past what 32-bit indices and outputs hold.
+    MTooLarge {
+        /// Exponent requested.
+        m: u32,
+        /// Largest allowed.
+        max: u32,
+    },
+    /// A point count that the construction needs to be a power of two.
+    NotPowerOfTwo {
+        /// Count given.
+        n: u64,
+    },
+    /// A stratum count of zero in a stratified sampler.
+    ZeroStrata {
+        /// The dimension with zero strata.
+        dim: usize,
+    },
+    /// An output buffer whose length does not fit the request.
+    BufferLength {
+        /// Length the call needs (or a multiple of it).
+        expected: usize,
+        /// Length given.
+        got: usize,
+    },
+    /// An inverse radical inverse asked for more digits than fit in 32 bits.
+    TooManyDigits {
+        /// Digits requested.
+        digits: u32,
+        /// Largest allowed for this base.
+        max: u32,
+    },
+}
+
+/// Shorthand for `core::result::Result<T, qmckit::Error>`.
+pub type Result<T> = core::result::Result<T, Error>;
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            Error::ZeroPoints => write!(f, "the number of points must be at least 1"),
+            Error::TooManyPoints { requested, max } => {
+                write!(f, "{requested} points requested, at most {max} allowed")
+            }
+            Error::ZeroDimensions => write!(f, "the number of dimensions must be at least 1"),
+            Error::DimensionOutOfRange { dim, dims } => write!(
+                f,
+                "dimension {dim} is out of range: {dims} dimension(s) available (0-based)"
+            ),
+            Error::IndexOutOfRange { index, len } => {
+                write!(f, "index {index} is out of range for a set of {len} points")
+            }
+            Error::BaseTooSmall { base } => write!(f, "base {base} is invalid: it must be >= 2"),
+            Error::MTooLarge { m, max } => write!(f, "m = {m} is too large: at most {max}"),
+            Error::NotPowerOfTwo { n } => write!(f, "{n} points: this set needs a power of two"),
+            Error::ZeroStrata { dim } => {
+                write!(
+                    f,
+                    "dimension {dim} has zero strata: every count must be >= 1"
+                )
+            }
+            Error::BufferLength { expected, got } => {
+                write!(
+                    f,
+                    "buffer of length {got} given, {expected} (or a multiple) needed"
+                )
+            }
+            Error::TooManyDigits { digits, max } => {
+                write!(f, "{digits} digits requested, at most {max} fit in 32 bits")
+            }
+        }
+    }
+}
+
+#[cfg(feature = "std")]
+impl std::error::Error for Error {}

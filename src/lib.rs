@@ -1,0 +1,75 @@
+//! # qmckit — quasi-Monte Carlo sampling from microcontrollers to servers
+//!
+//! Low-discrepancy sequences and nets (radical inverse, van der Corput, Halton, Hammersley,
+//! Larcher–Pillichshammer), the classic random samplers they are measured against
+//! (independent, stratified/jittered, Latin hypercube), all as pure random-access functions
+//! of `(index, dimension)`.
+//!
+//! ## The integer is the sample
+//!
+//! A coordinate is a `u32` read as the 0.32 fixed-point fraction `x / 2^32` in `[0, 1)`.
+//! Constructions are integer-only and exact (the radical inverse is `floor(phi_b(i) 2^32)`
+//! to the last bit), so a Cortex-M0 without an FPU and an x86 server produce the same bits.
+//! [`bits`] converts to `f32` (never 1.0), `f64` and, with the `fixed` feature, `U0F32`.
+//!
+//! ## No panics, no allocation
+//!
+//! The core is `#![no_std]` (unless the `std` feature is on) and never allocates. Invalid
+//! parameters are reported once, by the fallible constructors, as an [`Error`]; validated
+//! values answer hot calls cheaply. Most constructors and `sample` methods are `const fn`,
+//! so firmware can bake a pattern into flash:
+//!
+//! ```
+//! use qmckit::Halton;
+//! const H: Halton = match Halton::new(2) { Ok(h) => h, Err(_) => panic!() };
+//! const PATTERN: [[u32; 2]; 16] = {
+//!     let mut p = [[0u32; 2]; 16];
+//!     let mut i = 0;
+//!     while i < 16 {
+//!         p[i] = [HALTON_X(i as u32), 0];
+//!         p[i][1] = match H.sample(i as u32, 1) { Ok(y) => y, Err(_) => panic!() };
+//!         i += 1;
+//!     }
+//!     p
+//! };
+//! const fn HALTON_X(i: u32) -> u32 { i.reverse_bits() } // phi_2
+//! assert_eq!(PATTERN[3], [0xC000_0000, 0x1C71_C71C]); // (3/4, 1/9)
+//! ```
+//!
+//! ## Features
+//!
+//! | feature | brings |
+//! |---|---|
+//! | `std` (default) | `std::error::Error` for [`Error`]; later the analysis side |
+//! | `cli` | the `qmckit` command (clap, npyz) |
+//! | `fixed` | [`bits::to_fixed`] to `fixed::types::U0F32` |
+//! | `rand_core` | seeding from any `rand_core::Rng`, [`independent::fill_from_rng`] |
+//! | `libm`, `heapless` | reserved for the float warps and fixed-capacity buffers |
+//! | `defmt` | `defmt::Format` on the public types |
+#![cfg_attr(not(feature = "std"), no_std)]
+#![forbid(unsafe_code)]
+#![warn(missing_docs)]
+
+pub mod bits;
+pub mod error;
+pub mod halton;
+pub mod hammersley;
+pub mod hash;
+pub mod independent;
+pub mod larcher_pillichshammer;
+pub mod latin_hypercube;
+pub mod radical_inverse;
+pub mod sampler;
+pub mod stratified;
+pub mod van_der_corput;
+
+pub use error::{Error, Result};
+pub use halton::{HALTON_MAX_DIMS, Halton};
+pub use hammersley::Hammersley;
+pub use independent::Independent;
+pub use larcher_pillichshammer::LarcherPillichshammer;
+pub use latin_hypercube::LatinHypercube;
+pub use radical_inverse::{RadicalInverse, RadicalInverseIter};
+pub use sampler::Sampler;
+pub use stratified::{Jitter, Stratified};
+pub use van_der_corput::VanDerCorput;

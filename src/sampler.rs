@@ -1,0 +1,109 @@
+//! The interface every construction shares: random access by `(index, dimension)`.
+
+use crate::error::{Error, Result};
+
+/// 2^32, the number of `u32` indices.
+pub const FULL_RANGE: u64 = 1 << 32;
+
+/// A point set or sequence in `[0, 1)^dims`, answered by random access.
+///
+/// Coordinates are 0.32 fixed-point fractions (`u32`); see [`crate::bits`] for conversions.
+/// `sample` is a pure function of its arguments (randomized samplers carry their seed), so
+/// points can be generated in any order, in parallel, or baked at compile time.
+///
+/// ```
+/// use qmckit::{Halton, Sampler};
+/// let h = Halton::new(2)?;
+/// let mut pts = [0u32; 8]; // 4 points, row-major
+/// h.fill(0, &mut pts)?;
+/// assert_eq!(pts[2..4], [h.sample(1, 0)?, h.sample(1, 1)?]);
+/// # Ok::<(), qmckit::Error>(())
+/// ```
+pub trait Sampler {
+    /// Number of coordinates of each point.
+    fn dims(&self) -> usize;
+
+    /// Number of valid indices: the size of a finite point set, or 2^32 for a sequence.
+    fn len(&self) -> u64;
+
+    /// Always false: every sampler holds at least one point.
+    fn is_empty(&self) -> bool {
+        false
+    }
+
+    /// Coordinate `dim` of point `index`.
+    ///
+    /// # Errors
+    /// [`Error::IndexOutOfRange`] or [`Error::DimensionOutOfRange`].
+    fn sample(&self, index: u32, dim: usize) -> Result<u32>;
+
+    /// Point `index` into `out`, which must hold exactly `dims()` values.
+    ///
+    /// # Errors
+    /// [`Error::BufferLength`], [`Error::IndexOutOfRange`].
+    fn point(&self, index: u32, out: &mut [u32]) -> Result<()> {
+        if out.len() != self.dims() {
+            return Err(Error::BufferLength {
+                expected: self.dims(),
+                got: out.len(),
+            });
+        }
+        for (dim, slot) in out.iter_mut().enumerate() {
+            *slot = self.sample(index, dim)?;
+        }
+        Ok(())
+    }
+
+    /// Consecutive points `start, start + 1, ...` into `out`, row-major (`dims()` values a
+    /// point); `out.len()` must be a multiple of `dims()`. Samplers override this with
+    /// sequential fast paths that return the same bits.
+    ///
+    /// # Errors
+    /// [`Error::BufferLength`], [`Error::IndexOutOfRange`].
+    fn fill(&self, start: u32, out: &mut [u32]) -> Result<()> {
+        let rows = self.check_fill(start, out.len())?;
+        for (k, row) in out.chunks_exact_mut(self.dims()).enumerate().take(rows) {
+            self.point(start + k as u32, row)?;
+        }
+        Ok(())
+    }
+
+    /// Validates a `fill` request and returns its number of points.
+    ///
+    /// # Errors
+    /// [`Error::BufferLength`] unless `len` is a multiple of `dims()`;
+    /// [`Error::IndexOutOfRange`] if the last index is `len()` or beyond.
+    fn check_fill(&self, start: u32, len: usize) -> Result<usize> {
+        let dims = self.dims();
+        if len % dims != 0 {
+            return Err(Error::BufferLength {
+                expected: dims,
+                got: len,
+            });
+        }
+        let rows = len / dims;
+        let end = start as u64 + rows as u64;
+        if end > self.len() {
+            return Err(Error::IndexOutOfRange {
+                index: end - 1,
+                len: self.len(),
+            });
+        }
+        Ok(rows)
+    }
+}
+
+/// Validates `index < len` and `dim < dims` for a `sample` call.
+#[inline]
+pub(crate) const fn check(index: u32, len: u64, dim: usize, dims: usize) -> Result<()> {
+    if dim >= dims {
+        return Err(Error::DimensionOutOfRange { dim, dims });
+    }
+    if index as u64 >= len {
+        return Err(Error::IndexOutOfRange {
+            index: index as u64,
+            len,
+        });
+    }
+    Ok(())
+}

@@ -1,0 +1,154 @@
+//! The `qmckit` command's contract (DESIGN.md §4): formats, exit codes, one-line errors.
+#![cfg(feature = "cli")]
+
+use std::process::{Command, Output};
+
+fn qmckit(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_qmckit"))
+        .args(args)
+        .output()
+        .expect("run qmckit")
+}
+
+fn stdout(args: &[&str]) -> String {
+    let out = qmckit(args);
+    assert!(
+        out.status.success(),
+        "{args:?}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout).unwrap()
+}
+
+/// Bad usage: exit code 2, exactly one line on stderr, nothing that looks like a panic.
+fn assert_usage_error(args: &[&str], needle: &str) {
+    let out = qmckit(args);
+    assert_eq!(out.status.code(), Some(2), "{args:?}");
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert_eq!(err.lines().count(), 1, "{args:?}: {err:?}");
+    assert!(err.starts_with("qmckit: error: "), "{err}");
+    assert!(err.contains(needle), "{args:?}: {err:?} lacks {needle:?}");
+    assert!(!err.contains("panicked") && !err.contains("RUST_BACKTRACE"));
+    assert!(out.stdout.is_empty());
+}
+
+#[test]
+fn halton_u32_matches_the_library() {
+    let text = stdout(&["points", "halton", "-n", "5", "-d", "2", "--format", "u32"]);
+    let h = qmckit::Halton::new(2).unwrap();
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(lines.len(), 5);
+    for (i, line) in lines.iter().enumerate() {
+        let v: Vec<u32> = line.split(' ').map(|x| x.parse().unwrap()).collect();
+        assert_eq!(
+            v,
+            [
+                h.sample(i as u32, 0).unwrap(),
+                h.sample(i as u32, 1).unwrap()
+            ]
+        );
+    }
+    assert_eq!(lines[1], "2147483648 1431655765"); // (1/2, 1/3) rounded down
+}
+
+#[test]
+fn csv_round_trips_the_exact_values() {
+    let ints = stdout(&["points", "halton", "-n", "300", "-d", "5", "--start", "77"]);
+    let csv = stdout(&[
+        "points", "halton", "-n", "300", "-d", "5", "--start", "77", "--format", "csv",
+    ]);
+    for (a, b) in ints.lines().zip(csv.lines()) {
+        let a: Vec<u32> = a.split(' ').map(|x| x.parse().unwrap()).collect();
+        let b: Vec<f64> = b.split(',').map(|x| x.parse().unwrap()).collect();
+        for (x, y) in a.iter().zip(&b) {
+            assert_eq!(*x as f64, y * 4_294_967_296.0);
+        }
+    }
+}
+
+#[test]
+fn npy_has_numpy_header_and_float64_rows() {
+    let out = qmckit(&["points", "lp", "-n", "8", "--format", "npy"]);
+    assert!(out.status.success());
+    let bytes = out.stdout;
+    assert_eq!(&bytes[..6], b"\x93NUMPY");
+    let header_len = u16::from_le_bytes([bytes[8], bytes[9]]) as usize;
+    let header = std::str::from_utf8(&bytes[10..10 + header_len]).unwrap();
+    assert!(
+        header.contains("'descr': '<f8'") && header.contains("(8, 2"),
+        "{header}"
+    );
+    let data = &bytes[10 + header_len..];
+    assert_eq!(data.len(), 8 * 2 * 8);
+    let x: Vec<f64> = data
+        .chunks(8)
+        .map(|c| f64::from_le_bytes(c.try_into().unwrap()))
+        .collect();
+    // LP with 8 points: x = i/8, y = 0, 1/2, 3/4, 1/4, ...
+    assert_eq!(&x[..8], &[0.0, 0.0, 0.125, 0.5, 0.25, 0.75, 0.375, 0.25]);
+}
+
+#[test]
+fn every_sampler_runs() {
+    for s in [
+        "independent",
+        "stratified",
+        "latin",
+        "vdc",
+        "halton",
+        "hammersley",
+        "lp",
+    ] {
+        let text = stdout(&["points", s, "-n", "16", "--seed", "3"]);
+        assert_eq!(text.lines().count(), 16, "{s}");
+    }
+    let text = stdout(&[
+        "points",
+        "stratified",
+        "-n",
+        "32",
+        "--strata",
+        "8x4",
+        "--centered",
+    ]);
+    assert_eq!(text.lines().next(), Some("268435456 536870912")); // (1/16, 1/8)
+    let text = stdout(&["points", "vdc", "-n", "4", "--base", "3", "--start", "1"]);
+    // phi_3(1..5) = 1/3, 2/3, 1/9, 4/9 rounded down to 0.32
+    let want: Vec<String> = [1u64, 2, 1, 4]
+        .iter()
+        .zip([3u64, 3, 9, 9])
+        .map(|(n, d)| ((n << 32) / d).to_string())
+        .collect();
+    assert_eq!(text.lines().collect::<Vec<_>>(), want);
+}
+
+#[test]
+fn bad_input_is_one_line_and_exit_2() {
+    assert_usage_error(&["points", "halton", "-n", "abc"], "abc");
+    assert_usage_error(&["points", "nosuch", "-n", "4"], "nosuch");
+    assert_usage_error(&["points", "halton", "-n", "0"], "at least 1");
+    assert_usage_error(&["points", "halton", "-n", "4", "-d", "0"], "dimensions");
+    assert_usage_error(
+        &["points", "halton", "-n", "4", "-d", "2000"],
+        "out of range",
+    );
+    assert_usage_error(
+        &["points", "halton", "-n", "2", "--start", "4294967295"],
+        "past the end",
+    );
+    assert_usage_error(
+        &["points", "hammersley", "-n", "4", "--start", "2"],
+        "--total",
+    );
+    assert_usage_error(&["points", "lp", "-n", "12"], "power of two");
+    assert_usage_error(&["points", "lp", "-n", "8", "-d", "3"], "two-dimensional");
+    assert_usage_error(&["points", "vdc", "-n", "8", "--base", "1"], "base 1");
+    assert_usage_error(&["points", "stratified", "-n", "10"], "--strata");
+    assert_usage_error(
+        &["points", "stratified", "-n", "10", "--strata", "3xq"],
+        "\"q\"",
+    );
+    assert_usage_error(&["points", "halton", "-n", "4", "--format", "xml"], "xml");
+    assert_usage_error(&["points", "halton", "-n", "-3"], "-3");
+    assert_usage_error(&["frobnicate"], "frobnicate");
+}

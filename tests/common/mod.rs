@@ -1,0 +1,72 @@
+//! Helpers shared by the integration tests: independent checkers written from the
+//! definitions (elementary intervals, star discrepancy), not from qmckit's code paths.
+#![allow(dead_code)]
+
+use qmckit::Sampler;
+
+/// Points `0..n` of dimensions `dims` of a sampler, as `Vec<[u32; 2]>` for 2D checks.
+pub fn points_2d(s: &dyn Sampler, n: u32, dims: (usize, usize)) -> Vec<[u32; 2]> {
+    (0..n)
+        .map(|i| [s.sample(i, dims.0).unwrap(), s.sample(i, dims.1).unwrap()])
+        .collect()
+}
+
+/// Is this set of `2^m` points a (0, m, 2)-net in base 2: does every elementary interval
+/// `[a 2^-k, (a+1) 2^-k) x [b 2^-(m-k), (b+1) 2^-(m-k))` hold exactly one point?
+/// Returns the first failing `(k, a, b, count)`.
+pub fn first_net_failure(points: &[[u32; 2]], m: u32) -> Option<(u32, u64, u64, u32)> {
+    assert_eq!(points.len() as u64, 1 << m);
+    for k in 0..=m {
+        let mut count = vec![0u32; 1 << m];
+        for p in points {
+            let a = if k == 0 { 0 } else { (p[0] >> (32 - k)) as u64 };
+            let b = if k == m {
+                0
+            } else {
+                (p[1] >> (32 - (m - k))) as u64
+            };
+            count[((a << (m - k)) | b) as usize] += 1;
+        }
+        if let Some(cell) = count.iter().position(|&c| c != 1) {
+            let cell = cell as u64;
+            return Some((
+                k,
+                cell >> (m - k),
+                cell & ((1 << (m - k)) - 1),
+                count[cell as usize],
+            ));
+        }
+    }
+    None
+}
+
+/// Exact star discrepancy of a 2D set of 0.32 fractions, by brute force over the critical
+/// grid: D* = max over anchored boxes [0,a) x [0,b) with a, b in {x_i} u {1} of
+/// max(ab - #open/N, #closed/N - ab), where open counts x < a, y < b and closed x <= a,
+/// y <= b. Returned as the exact numerator over `N 2^64`.
+pub fn star_discrepancy_2d_exact(points: &[[u32; 2]]) -> (i128, i128) {
+    let n = points.len() as i128;
+    let mut xs: Vec<u64> = points.iter().map(|p| p[0] as u64).collect();
+    let mut ys: Vec<u64> = points.iter().map(|p| p[1] as u64).collect();
+    xs.push(1 << 32);
+    ys.push(1 << 32);
+    xs.sort_unstable();
+    xs.dedup();
+    ys.sort_unstable();
+    ys.dedup();
+    let mut best = 0i128;
+    for &a in &xs {
+        for &b in &ys {
+            let (mut open, mut closed) = (0i128, 0i128);
+            for p in points {
+                let (x, y) = (p[0] as u64, p[1] as u64);
+                open += (x < a && y < b) as i128;
+                closed += (x <= a && y <= b) as i128;
+            }
+            let vol = (a as i128) * (b as i128); // over 2^64
+            best = best.max(vol * n - open * (1i128 << 64));
+            best = best.max(closed * (1i128 << 64) - vol * n);
+        }
+    }
+    (best, n << 64)
+}
