@@ -118,11 +118,11 @@ pub const fn fraction(num: u64, den: u64) -> u32 {
 /// ```
 #[inline]
 pub const fn in_cell(cell: u64, n: u64, u: u32) -> u32 {
-    let lo = ((cell << 32) + n - 1) / n;
+    let lo = (cell << 32).div_ceil(n);
     let hi = if cell + 1 >= n {
         1 << 32
     } else {
-        (((cell + 1) << 32) + n - 1) / n
+        ((cell + 1) << 32).div_ceil(n)
     };
     (lo + (((hi - lo) * u as u64) >> 32)) as u32
 }

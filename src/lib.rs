@@ -22,17 +22,19 @@
 //! ```
 //! use qmckit::Halton;
 //! const H: Halton = match Halton::new(2) { Ok(h) => h, Err(_) => panic!() };
+//! /// 16 Halton points, computed by the compiler and stored in flash.
 //! const PATTERN: [[u32; 2]; 16] = {
 //!     let mut p = [[0u32; 2]; 16];
 //!     let mut i = 0;
 //!     while i < 16 {
-//!         p[i] = [HALTON_X(i as u32), 0];
-//!         p[i][1] = match H.sample(i as u32, 1) { Ok(y) => y, Err(_) => panic!() };
+//!         p[i] = match (H.sample(i as u32, 0), H.sample(i as u32, 1)) {
+//!             (Ok(x), Ok(y)) => [x, y],
+//!             _ => panic!(), // a compile error, never a run-time panic
+//!         };
 //!         i += 1;
 //!     }
 //!     p
 //! };
-//! const fn HALTON_X(i: u32) -> u32 { i.reverse_bits() } // phi_2
 //! assert_eq!(PATTERN[3], [0xC000_0000, 0x1C71_C71C]); // (3/4, 1/9)
 //! ```
 //!
@@ -44,13 +46,16 @@
 //! | `cli` | the `qmckit` command (clap, npyz) |
 //! | `fixed` | [`bits::to_fixed`] to `fixed::types::U0F32` |
 //! | `rand_core` | seeding from any `rand_core::Rng`, [`independent::fill_from_rng`] |
-//! | `libm`, `heapless` | reserved for the float warps and fixed-capacity buffers |
+//! | `heapless` | [`buffer::points`]: fixed-capacity point buffers |
+//! | `libm` | reserved for the float warps (no effect yet) |
 //! | `defmt` | `defmt::Format` on the public types |
 #![cfg_attr(not(feature = "std"), no_std)]
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
 pub mod bits;
+#[cfg(feature = "heapless")]
+pub mod buffer;
 pub mod error;
 pub mod halton;
 pub mod hammersley;
@@ -73,3 +78,8 @@ pub use radical_inverse::{RadicalInverse, RadicalInverseIter};
 pub use sampler::Sampler;
 pub use stratified::{Jitter, Stratified};
 pub use van_der_corput::VanDerCorput;
+
+/// The README's examples, compiled and run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;

@@ -75,7 +75,7 @@ pub trait Sampler {
     /// [`Error::IndexOutOfRange`] if the last index is `len()` or beyond.
     fn check_fill(&self, start: u32, len: usize) -> Result<usize> {
         let dims = self.dims();
-        if len % dims != 0 {
+        if !len.is_multiple_of(dims) {
             return Err(Error::BufferLength {
                 expected: dims,
                 got: len,

@@ -141,7 +141,7 @@ fn largest_sets_and_indices_work() {
 fn stratified_puts_one_point_in_every_cell() {
     for seed in 0..50 {
         let s = Stratified::new(&[7, 3, 4], Jitter::Random(seed)).unwrap();
-        let mut seen = vec![false; 84];
+        let mut seen = [false; 84];
         for i in 0..84u32 {
             let cell: Vec<u64> = [7u64, 3, 4]
                 .iter()
@@ -238,4 +238,21 @@ fn halton_point_iterator_matches_random_access() {
     }
     assert!(h.points::<3>(0).is_err());
     assert_eq!(h.points::<4>(u32::MAX - 1).unwrap().count(), 2);
+}
+
+#[cfg(feature = "rand_core")]
+#[test]
+fn independent_from_any_rng() {
+    use rand_pcg::Pcg32;
+    let mut a = Pcg32::new(7, 11);
+    let mut b = Pcg32::new(7, 11);
+    let s1 = Independent::from_rng(2, &mut a).unwrap();
+    let s2 = Independent::from_rng(2, &mut b).unwrap();
+    assert_eq!(s1, s2);
+    let s3 = Independent::from_rng(2, &mut a).unwrap();
+    assert_ne!(s1.sample(0, 0), s3.sample(0, 0));
+    let mut buf = [0u32; 1000];
+    qmckit::independent::fill_from_rng(&mut b, &mut buf);
+    let mean = buf.iter().map(|&x| x as f64).sum::<f64>() / 1000.0 / 4_294_967_296.0;
+    assert!((0.45..0.55).contains(&mean), "{mean}");
 }
