@@ -90,7 +90,8 @@ pub const fn to_fixed(x: u32) -> fixed::types::U0F32 {
 
 /// `floor(num * 2^32 / den)`: the 0.32 fraction just below `num / den`, exact.
 ///
-/// Requires `num < den` (so the result fits); callers validate that. Used wherever a
+/// Requires `num < den < 2^32` (so the result fits); callers validate that. Outside that
+/// range the result is unspecified but the function never panics (`den = 0` gives 0). Used wherever a
 /// construction places point `i` of `n` at `i / n` (Hammersley, strata, Latin hypercube).
 ///
 /// ```
@@ -99,7 +100,7 @@ pub const fn to_fixed(x: u32) -> fixed::types::U0F32 {
 /// ```
 #[inline]
 pub const fn fraction(num: u64, den: u64) -> u32 {
-    ((num << 32) / den) as u32
+    div_u64(num << 32, den) as u32
 }
 
 /// The point at relative position `u` (a 0.32 fraction) inside cell `cell` of `n` equal
@@ -108,7 +109,8 @@ pub const fn fraction(num: u64, den: u64) -> u32 {
 ///
 /// The cells are the integer ranges `[ceil(cell 2^32 / n), ceil((cell + 1) 2^32 / n))`, which
 /// partition the `u32`s; `u` scales into the range. Two divisions and a multiplication.
-/// Requires `cell < n <= 2^32` (callers validate).
+/// Requires `cell < n <= 2^32` (callers validate); otherwise the result is unspecified but
+/// the function never panics.
 ///
 /// ```
 /// use qmckit::bits::in_cell;
@@ -118,11 +120,51 @@ pub const fn fraction(num: u64, den: u64) -> u32 {
 /// ```
 #[inline]
 pub const fn in_cell(cell: u64, n: u64, u: u32) -> u32 {
+    if n == 0 || cell >= n || n > 1 << 32 {
+        return 0;
+    }
     let lo = (cell << 32).div_ceil(n);
-    let hi = if cell + 1 >= n {
+    let hi = if cell + 1 == n {
         1 << 32
     } else {
         ((cell + 1) << 32).div_ceil(n)
     };
     (lo + (((hi - lo) * u as u64) >> 32)) as u32
+}
+
+/// `a / b`, or 0 when `b == 0`: division without a panic path, for divisors the caller
+/// has validated (the compiler cannot always see that they are non-zero).
+#[inline]
+pub(crate) const fn div_u64(a: u64, b: u64) -> u64 {
+    match a.checked_div(b) {
+        Some(q) => q,
+        None => 0,
+    }
+}
+
+/// `a % b`, or 0 when `b == 0` (see [`div_u64`]).
+#[inline]
+pub(crate) const fn rem_u64(a: u64, b: u64) -> u64 {
+    match a.checked_rem(b) {
+        Some(r) => r,
+        None => 0,
+    }
+}
+
+/// `a / b`, or 0 when `b == 0` (see [`div_u64`]).
+#[inline]
+pub(crate) const fn div_u32(a: u32, b: u32) -> u32 {
+    match a.checked_div(b) {
+        Some(q) => q,
+        None => 0,
+    }
+}
+
+/// `a % b`, or 0 when `b == 0` (see [`div_u64`]).
+#[inline]
+pub(crate) const fn rem_u32(a: u32, b: u32) -> u32 {
+    match a.checked_rem(b) {
+        Some(r) => r,
+        None => 0,
+    }
 }

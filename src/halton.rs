@@ -14,7 +14,7 @@ use crate::sampler::{FULL_RANGE, Sampler, check};
 include!(concat!(env!("OUT_DIR"), "/primes.rs"));
 
 /// Radical-inverse constants for the first [`HALTON_MAX_DIMS`] primes, const-evaluated:
-/// 40 bytes a base (40 KiB in all, linked only when indexed at run time).
+/// 48 bytes a base (48 KiB in all, linked only when indexed at run time).
 pub static HALTON_BASES: [RadicalInverse; HALTON_MAX_DIMS] = {
     let mut table = [match RadicalInverse::new(2) {
         Ok(r) => r,
@@ -92,6 +92,13 @@ impl Halton {
             return Err(Error::DimensionOutOfRange {
                 dim,
                 dims: self.dims,
+            });
+        }
+        if dim >= HALTON_MAX_DIMS {
+            // Unreachable (dims <= HALTON_MAX_DIMS); keeps the indexing free of a panic path.
+            return Err(Error::DimensionOutOfRange {
+                dim,
+                dims: HALTON_MAX_DIMS,
             });
         }
         Ok(&HALTON_BASES[dim])
@@ -176,8 +183,10 @@ impl Sampler for Halton {
         if rows == 0 {
             return Ok(());
         }
-        for (dim, ri) in HALTON_BASES[..self.dims].iter().enumerate() {
-            ri.fill_strided(start, &mut out[dim..], self.dims)?;
+        for (dim, ri) in HALTON_BASES.iter().take(self.dims).enumerate() {
+            if let Some(column) = out.get_mut(dim..) {
+                ri.fill_strided(start, column, self.dims)?;
+            }
         }
         Ok(())
     }

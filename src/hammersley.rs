@@ -89,7 +89,15 @@ impl Hammersley {
                 None => crate::bits::fraction(index as u64, self.n),
             }
         } else {
-            HALTON_BASES[dim - 1].sample(index)
+            let k = dim - 1;
+            if k >= HALTON_MAX_DIMS {
+                // Unreachable (validated); keeps the indexing free of a panic path.
+                return Err(Error::DimensionOutOfRange {
+                    dim,
+                    dims: self.dims,
+                });
+            }
+            HALTON_BASES[k].sample(index)
         })
     }
 }
@@ -111,14 +119,18 @@ impl Sampler for Hammersley {
     /// Sequential fast path: the radical-inverse columns use their iterators.
     fn fill(&self, start: u32, out: &mut [u32]) -> Result<()> {
         let rows = self.check_fill(start, out.len())?;
-        for (k, row) in out.chunks_exact_mut(self.dims).enumerate() {
-            row[0] = Hammersley::sample(self, start + k as u32, 0)?;
-        }
-        if rows == 0 {
+        if rows == 0 || self.dims == 0 {
             return Ok(());
         }
-        for (dim, ri) in HALTON_BASES[..self.dims - 1].iter().enumerate() {
-            ri.fill_strided(start, &mut out[dim + 1..], self.dims)?;
+        for (k, row) in out.chunks_exact_mut(self.dims).enumerate() {
+            if let Some(x) = row.first_mut() {
+                *x = Hammersley::sample(self, start + k as u32, 0)?;
+            }
+        }
+        for (dim, ri) in HALTON_BASES.iter().take(self.dims - 1).enumerate() {
+            if let Some(column) = out.get_mut(dim + 1..) {
+                ri.fill_strided(start, column, self.dims)?;
+            }
         }
         Ok(())
     }

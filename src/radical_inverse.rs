@@ -28,18 +28,66 @@
 //! `b^(-t) + b^(-t-1) - 1`, which is `b^(-1)` in the common case `t = 0`. That is one add,
 //! one compare and a conditional subtract per value. Both paths return the same bits (tested).
 
-use crate::bits::reverse_bits;
+use crate::bits::{div_u32, div_u64, rem_u32, rem_u64, reverse_bits};
 use crate::error::{Error, Result};
 
 /// 2^32 as `u64`.
 const TWO_32: u64 = 1 << 32;
 
-/// Number of carry steps cached by [`RadicalInverseIter`]; longer carries (probability
+/// Number of carry steps cached by the sequential paths; longer carries (probability
 /// `b^-STEPS`) are computed on the spot.
 const STEPS: usize = 8;
 
+/// Largest base whose sequential fill uses a table of its `b` digit fractions (on the
+/// stack: 12 bytes an entry).
+const RUN_TABLE: usize = 128;
+
+/// Digit-reversal tables for the small prime bases: entry `r` is the `c`-digit reversal of
+/// `r < b^c`, with `b^c <= 256` so entries fit a byte. They let random access consume `c`
+/// digits per step (5 for base 3). 707 bytes in all.
+static REVERSAL: [&[u8]; 6] = [
+    &[],
+    &reversal_table::<243>(3),
+    &reversal_table::<125>(5),
+    &reversal_table::<49>(7),
+    &reversal_table::<121>(11),
+    &reversal_table::<169>(13),
+];
+
+/// `[rev_c(r) for r < N]` for `N = b^c`.
+const fn reversal_table<const N: usize>(base: u32) -> [u8; N] {
+    let mut table = [0u8; N];
+    let mut r = 0;
+    while r < N {
+        let (mut n, mut rev, mut len) = (r as u32, 0u32, 1usize);
+        while len < N {
+            rev = rev * base + n % base;
+            n /= base;
+            len *= base as usize;
+        }
+        table[r] = rev as u8;
+        r += 1;
+    }
+    table
+}
+
+/// Which [`REVERSAL`] table serves `base` (0: none) and its chunk of digits `c`.
+const fn reversal_for(base: u32) -> (u8, u32) {
+    match base {
+        3 => (1, 5),
+        5 => (2, 3),
+        7 => (3, 2),
+        11 => (4, 2),
+        13 => (5, 2),
+        _ => (0, 1),
+    }
+}
+
 /// A validated base with its precomputed constants: the radical inverse `phi_b` as a cheap,
 /// infallible, `const`-callable function of the index.
+///
+/// 48 bytes (plus the 707-byte shared digit-reversal tables, linked with any run-time use).
+/// Build it once (a `const`, or a table like [`crate::halton::HALTON_BASES`]).
 ///
 /// ```
 /// use qmckit::RadicalInverse;
@@ -53,14 +101,18 @@ const STEPS: usize = 8;
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct RadicalInverse {
     base: u32,
-    /// `K`: digits of the largest `u32` index, the smallest `K` with `b^K >= 2^32`.
+    /// `K`: digit places of the outputs, `B = b^K >= 2^32`, a multiple of the chunk's digits.
     digits: u32,
-    /// Trailing zero bits of `base` (its power-of-two factor).
-    shift: u32,
-    /// `ceil(2^64 / base)`: `n / base == mulhi(n, magic)` for every `u32` `n`.
-    magic: u64,
-    /// Inverse of the odd part of `base` modulo 2^64 (exact division by multiplication).
-    inv: u64,
+    /// `b^c`: random access peels `c` digits of the index at a time.
+    chunk: u32,
+    /// [`REVERSAL`] table for the chunk (0: `c = 1`, no table needed).
+    table: u8,
+    /// Trailing zero bits of `chunk` (its power-of-two factor).
+    chunk_shift: u8,
+    /// `ceil(2^64 / chunk)`: `n / chunk == mulhi(n, chunk_magic)` for every `u32` `n`.
+    chunk_magic: u64,
+    /// Inverse of the odd part of `chunk` modulo 2^64 (exact division by multiplication).
+    chunk_inv: u64,
     /// `B = base^K`, the common denominator of all outputs.
     big: u64,
     /// `floor((2^96 - 1) / B)`: reciprocal for rounding `N * 2^32 / B` down.
@@ -78,22 +130,36 @@ impl RadicalInverse {
         if base < 2 {
             return Err(Error::BaseTooSmall { base });
         }
+        let (table, c) = reversal_for(base);
         let b = base as u64;
+        let mut chunk = 1u64;
+        let mut k = 0;
+        while k < c {
+            chunk *= b;
+            k += 1;
+        }
+        // Smallest multiple K of c with b^K >= 2^32 (b^K < 2^40 for the tabled bases,
+        // < b 2^32 <= 2^64 otherwise).
         let mut big = 1u64;
         let mut digits = 0u32;
         while big < TWO_32 {
-            big *= b; // < 2^32 * 2^32: no overflow
-            digits += 1;
+            big *= chunk;
+            digits += c;
         }
-        let shift = base.trailing_zeros();
+        let chunk_shift = chunk.trailing_zeros();
         Ok(RadicalInverse {
             base,
             digits,
-            shift,
-            magic: u64::MAX / b + 1,
-            inv: inverse_mod_2_64((base >> shift) as u64),
+            chunk: chunk as u32,
+            table,
+            chunk_shift: chunk_shift as u8,
+            chunk_magic: div_u64(u64::MAX, chunk) + 1,
+            chunk_inv: inverse_mod_2_64(chunk >> chunk_shift),
             big,
-            recip: ((u128::MAX >> 32) / big as u128) as u64,
+            recip: match (u128::MAX >> 32).checked_div(big as u128) {
+                Some(r) => r as u64,
+                None => 0,
+            },
         })
     }
 
@@ -103,7 +169,10 @@ impl RadicalInverse {
         self.base
     }
 
-    /// `K`, the number of base-`b` digits of the largest `u32` index (`b^K >= 2^32`).
+    /// `K`, the number of base-`b` digit places behind the outputs: every output is a
+    /// multiple of `b^-K` rounded down, and `b^K >= 2^32`, so every `u32` index has at most
+    /// `K` digits. `K` is the smallest such count, rounded up to a multiple of the digits
+    /// random access peels at once (5 for base 3, so 25 rather than 21).
     #[inline]
     pub const fn digits(&self) -> u32 {
         self.digits
@@ -111,8 +180,9 @@ impl RadicalInverse {
 
     /// `floor(phi_b(index) * 2^32)`, exact. Defined for every `u32` index.
     ///
-    /// Cost: `ceil(log_b(index + 1))` digit steps of ~3 multiplications each plus a fixed
-    /// ~3 for the final scaling; base 2 is one bit reversal.
+    /// Cost: one step per chunk of `c` digits of `index` (`c = 5, 3, 2, 2, 2` for bases
+    /// 3, 5, 7, 11, 13; 1 otherwise), each a multiply-high, two multiplications and a table
+    /// read, plus ~3 multiplications for the final scaling; base 2 is one bit reversal.
     #[inline]
     pub const fn sample(&self, index: u32) -> u32 {
         if self.base == 2 {
@@ -124,30 +194,37 @@ impl RadicalInverse {
     /// `N` with `phi_b(index) = N / B`: the digits of `index` reversed into `K` places.
     #[inline]
     const fn numerator(&self, index: u32) -> u64 {
+        // Guarded indexing (no panic path): an unknown id means no table.
+        let id = self.table as usize;
+        let table: &[u8] = if id < REVERSAL.len() {
+            REVERSAL[id]
+        } else {
+            &[]
+        };
         let mut n = index;
-        let mut weight = self.div_exact(self.big); // b^(K-1)
+        let mut weight = self.div_chunk(self.big); // b^(K-c)
         let mut acc = 0u64;
         while n != 0 {
-            let q = self.div(n);
-            let digit = n - q * self.base;
-            acc += digit as u64 * weight; // sum < B: no overflow
-            weight = self.div_exact(weight);
+            let q = ((self.chunk_magic as u128 * n as u128) >> 64) as u32;
+            let r = n - q * self.chunk;
+            // The chunk's c digits reversed (with c = 1 there is no table: r itself).
+            let rev = if (r as usize) < table.len() {
+                table[r as usize] as u64
+            } else {
+                r as u64
+            };
+            acc += rev * weight; // sum < B: no overflow
+            weight = self.div_chunk(weight);
             n = q;
         }
         acc
     }
 
-    /// `n / base` for any `u32` `n`, by multiply-high.
-    #[inline]
-    const fn div(&self, n: u32) -> u32 {
-        ((self.magic as u128 * n as u128) >> 64) as u32
-    }
-
-    /// `w / base` for `w` a multiple of `base` (exact division by the modular inverse).
+    /// `w / chunk` for `w` a multiple of `chunk` (exact division by the modular inverse).
     /// Wraps harmlessly when `w` is not a multiple (the last weight of a loop is unused).
     #[inline]
-    const fn div_exact(&self, w: u64) -> u64 {
-        (w >> self.shift).wrapping_mul(self.inv)
+    const fn div_chunk(&self, w: u64) -> u64 {
+        (w >> self.chunk_shift).wrapping_mul(self.chunk_inv)
     }
 
     /// `(q, r)` with `n * 2^32 = q * B + r`, `0 <= r < B`, for `n < B` (so `q < 2^32`).
@@ -155,20 +232,32 @@ impl RadicalInverse {
     const fn scale(&self, n: u64) -> (u32, u64) {
         // q0 <= q and q0 > n 2^32 / B - 1, so q is q0 or q0 + 1.
         let q0 = ((n as u128 * self.recip as u128) >> 64) as u64;
-        let r0 = ((n as u128) << 32) - q0 as u128 * self.big as u128;
-        if r0 >= self.big as u128 {
-            ((q0 + 1) as u32, (r0 - self.big as u128) as u64)
+        if self.big <= 1 << 63 {
+            // r0 = n 2^32 - q0 B lies in [0, 2B) within 2^64: wrapping arithmetic is exact.
+            let r0 = (n << 32).wrapping_sub(q0.wrapping_mul(self.big));
+            if r0 >= self.big {
+                ((q0 + 1) as u32, r0 - self.big)
+            } else {
+                (q0 as u32, r0)
+            }
         } else {
-            (q0 as u32, r0 as u64)
+            let r0 = ((n as u128) << 32) - q0 as u128 * self.big as u128;
+            if r0 >= self.big as u128 {
+                ((q0 + 1) as u32, (r0 - self.big as u128) as u64)
+            } else {
+                (q0 as u32, r0 as u64)
+            }
         }
     }
 
     /// `2^32 b^-j` modulo 2^32 as `(q, r)` over `B`, for `1 <= j <= K`.
     const fn power(&self, j: u32) -> (u32, u64) {
+        let inv = inverse_mod_2_64((self.base >> self.base.trailing_zeros()) as u64);
+        let shift = self.base.trailing_zeros();
         let mut w = self.big;
         let mut k = 0;
         while k < j {
-            w = self.div_exact(w);
+            w = (w >> shift).wrapping_mul(inv); // exact: b^(K-k) / b
             k += 1;
         }
         self.scale(w)
@@ -184,6 +273,31 @@ impl RadicalInverse {
         add_exact(hi, self.power(t), self.big)
     }
 
+    /// The steps for `t = 0 .. STEPS` (those with `t < K`).
+    const fn steps(&self) -> [(u32, u64); STEPS] {
+        let mut steps = [(0u32, 0u64); STEPS];
+        if self.base != 2 {
+            let mut t = 0;
+            while t < STEPS {
+                if (t as u32) < self.digits {
+                    steps[t] = self.step(t as u32);
+                }
+                t += 1;
+            }
+        }
+        steps
+    }
+
+    /// Number of trailing zero base-`b` digits of `m > 0`.
+    const fn trailing_zero_digits(&self, mut m: u32) -> u32 {
+        let mut t = 0;
+        while m != 0 && rem_u32(m, self.base) == 0 {
+            m = div_u32(m, self.base);
+            t += 1;
+        }
+        t
+    }
+
     /// Inverse of [`sample`](Self::sample) on indices with at most `digits` base-`b` digits:
     /// the `i < b^digits` whose radical inverse rounds down to `value`.
     ///
@@ -194,29 +308,25 @@ impl RadicalInverse {
     /// [`Error::TooManyDigits`] when `b^digits > 2^32` (outputs of longer indices can
     /// collide in 32 bits, so they cannot be inverted).
     pub const fn inverse(&self, value: u32, digits: u32) -> Result<u32> {
-        let max = if self.big == TWO_32 {
-            self.digits
-        } else {
-            self.digits - 1
-        };
-        if digits > max {
-            return Err(Error::TooManyDigits { digits, max });
-        }
         let b = self.base as u64;
         let mut bk = 1u64;
         let mut k = 0;
         while k < digits {
             bk *= b;
             k += 1;
+            if bk > TWO_32 {
+                // The largest m with b^m <= 2^32 is k - 1.
+                return Err(Error::TooManyDigits { digits, max: k - 1 });
+            }
         }
         // value = floor(a 2^32 / b^k) for the reversed-digit integer a, so
         // a = ceil(value b^k / 2^32); value * b^k + 2^32 - 1 < 2^64.
-        let mut a = ((value as u64 * bk + (TWO_32 - 1)) >> 32) % bk;
+        let mut a = rem_u64((value as u64 * bk + (TWO_32 - 1)) >> 32, bk);
         let mut index = 0u64;
         k = 0;
         while k < digits {
-            index = index * b + a % b;
-            a /= b;
+            index = index * b + rem_u64(a, b);
+            a = div_u64(a, b);
             k += 1;
         }
         Ok(index as u32)
@@ -239,6 +349,10 @@ impl RadicalInverse {
     /// Fills every `stride`-th element of `out`, starting with `out[0]`, with consecutive
     /// samples from `start` on: the column of a row-major point buffer.
     ///
+    /// The sequential fast path: the exact value is kept as an integer part and a remainder
+    /// over `B` in registers, and each index adds a cached step (one add, compare and
+    /// conditional subtract while the lowest digit does not wrap).
+    ///
     /// # Errors
     /// [`Error::IndexOutOfRange`] if the indices pass 2^32; [`Error::BufferLength`] for a
     /// zero stride.
@@ -257,12 +371,65 @@ impl RadicalInverse {
             }
             return Ok(());
         }
-        let mut it = self.iter_from(start);
-        for slot in out.iter_mut().step_by(stride) {
-            *slot = it.value();
-            it.advance();
+        if self.base as usize <= RUN_TABLE && self.big <= 1 << 63 {
+            self.fill_runs(start, out, stride);
+            return Ok(());
+        }
+        let seq = Sequential::new(self, start);
+        let (mut index, mut low, mut q, mut r) = (seq.index, seq.low, seq.q, seq.r);
+        let mut slots = out.iter_mut().step_by(stride);
+        if let Some(first) = slots.next() {
+            *first = q;
+        }
+        for slot in slots {
+            (index, low, q, r) = advance(self, &seq.steps, index, low, q, r);
+            *slot = q;
         }
         Ok(())
+    }
+
+    /// Sequential fill for bases up to [`RUN_TABLE`], by runs of the lowest digit: within
+    /// a run, `phi_b(h b + d) = phi_b(h b) + d / b` exactly, so each value is the run's base
+    /// plus a tabled `d / b` (one add, compare and add-with-carry; no chain from value to
+    /// value), and the run base steps once per `b` values. Needs `B <= 2^63`.
+    fn fill_runs(&self, start: u32, out: &mut [u32], stride: usize) {
+        let b = self.base as usize;
+        // part[d] = 2^32 d / b exactly, as integer part and remainder over B.
+        let (mut part_q, mut part_r) = ([0u32; RUN_TABLE], [0u64; RUN_TABLE]);
+        let steps = self.steps();
+        for d in 1..b {
+            (part_q[d], part_r[d]) = add_exact((part_q[d - 1], part_r[d - 1]), steps[0], self.big);
+        }
+        let low = rem_u32(start, self.base) as usize;
+        let mut run_index = start - low as u32; // h b
+        let (mut base_q, mut base_r) = self.scale(self.numerator(run_index));
+        let mut slots = out.iter_mut().step_by(stride);
+        let mut d0 = low;
+        loop {
+            // The table side first, so that zip never takes a slot it cannot fill.
+            for ((&pq, &pr), slot) in part_q[d0..b].iter().zip(&part_r[d0..b]).zip(&mut slots) {
+                let r = base_r + pr; // < 2B <= 2^64
+                *slot = base_q.wrapping_add(pq).wrapping_add((r >= self.big) as u32);
+            }
+            if slots.len() == 0 {
+                break;
+            }
+            // Next run: (h + 1) b ends in t >= 1 zero digits.
+            run_index += self.base; // stays <= u32::MAX: a value of the run is still due
+            let t = self.trailing_zero_digits(run_index);
+            let step = if (t as usize) < STEPS {
+                steps[t as usize]
+            } else {
+                self.step(t)
+            };
+            // The run base moved by the carry step minus the last run's (b - 1) / b.
+            (base_q, base_r) = add_exact(
+                add_exact((base_q, base_r), (part_q[b - 1], part_r[b - 1]), self.big),
+                step,
+                self.big,
+            );
+            d0 = 0;
+        }
     }
 }
 
@@ -301,11 +468,87 @@ const fn inverse_mod_2_64(x: u64) -> u64 {
     y
 }
 
+/// State of the sequential radical inverse for a base other than 2: `phi_b(i) 2^32` as
+/// `q + r / B`, the lowest digit of the index, and the cached steps.
+#[derive(Clone, Debug)]
+struct Sequential {
+    /// Index of the value held.
+    index: u32,
+    /// The two lowest base-`b` digits of `index`, `(d_1, d_2)`.
+    low: (u32, u32),
+    /// Integer part of `phi_b(index) 2^32`.
+    q: u32,
+    /// Remainder of `phi_b(index) 2^32`, over `B`.
+    r: u64,
+    steps: [(u32, u64); STEPS],
+}
+
+impl Sequential {
+    const fn new(ri: &RadicalInverse, start: u32) -> Self {
+        let (q, r) = ri.scale(ri.numerator(start));
+        Sequential {
+            index: start,
+            low: (
+                rem_u32(start, ri.base),
+                rem_u32(div_u32(start, ri.base), ri.base),
+            ),
+            q,
+            r,
+            steps: ri.steps(),
+        }
+    }
+
+    /// Moves to the next index; the caller guarantees `index < u32::MAX`.
+    #[inline(always)]
+    fn advance(&mut self, ri: &RadicalInverse) {
+        (self.index, self.low, self.q, self.r) =
+            advance(ri, &self.steps, self.index, self.low, self.q, self.r);
+    }
+}
+
+/// One sequential step on the state `(index, low, q, r)`, as a pure function so that a
+/// loop can keep the state in registers.
+#[inline(always)]
+fn advance(
+    ri: &RadicalInverse,
+    steps: &[(u32, u64); STEPS],
+    index: u32,
+    low: (u32, u32),
+    q: u32,
+    r: u64,
+) -> (u32, (u32, u32), u32, u64) {
+    let index = index.wrapping_add(1);
+    let (low, (dq, dr)) = if low.0 + 1 < ri.base {
+        ((low.0 + 1, low.1), steps[0])
+    } else if low.1 + 1 < ri.base {
+        ((0, low.1 + 1), steps[1])
+    } else {
+        ((0, 0), carry(ri, steps, index))
+    };
+    let (r, overflow) = r.overflowing_add(dr);
+    let wrap = overflow || r >= ri.big;
+    let r = if wrap { r.wrapping_sub(ri.big) } else { r };
+    (index, low, q.wrapping_add(dq).wrapping_add(wrap as u32), r)
+}
+
+/// The two lowest digits wrapped: the step for the `t >= 2` trailing zero digits of
+/// `index` (probability `b^-2`).
+#[cold]
+#[inline(never)]
+fn carry(ri: &RadicalInverse, steps: &[(u32, u64); STEPS], index: u32) -> (u32, u64) {
+    let t = ri.trailing_zero_digits(index);
+    if (t as usize) < STEPS {
+        steps[t as usize]
+    } else {
+        ri.step(t)
+    }
+}
+
 /// Sequential radical inverse: yields `phi_b(start)`, `phi_b(start + 1)`, ... (as 0.32
 /// fractions) up to index `u32::MAX`, bit-identical to [`RadicalInverse::sample`].
 ///
 /// Keeps `phi_b(i) 2^32` exactly as an integer part and a remainder over `B`, plus the
-/// lowest digit of `i`; a step adds a cached increment. 128 bytes of cached steps.
+/// lowest digit of `i`; a step adds a cached increment.
 ///
 /// ```
 /// use qmckit::RadicalInverse;
@@ -315,87 +558,29 @@ const fn inverse_mod_2_64(x: u64) -> u64 {
 #[derive(Clone, Debug)]
 pub struct RadicalInverseIter {
     ri: RadicalInverse,
-    /// Index of the value held (2^32 once exhausted).
-    index: u64,
-    /// Lowest base-`b` digit of `index`.
-    low: u32,
-    /// Integer part of `phi_b(index) 2^32`.
-    q: u32,
-    /// Remainder of `phi_b(index) 2^32`, over `B`.
-    r: u64,
-    steps: [(u32, u64); STEPS],
+    seq: Sequential,
+    /// Values left to yield (2^32 - start at the beginning).
+    left: u64,
 }
 
 impl RadicalInverseIter {
     const fn new(ri: RadicalInverse, start: u32) -> Self {
-        let (q, r) = if ri.base == 2 {
-            (reverse_bits(start), 0)
-        } else {
-            ri.scale(ri.numerator(start))
-        };
-        let mut steps = [(0u32, 0u64); STEPS];
-        if ri.base != 2 {
-            let mut t = 0;
-            while t < STEPS {
-                if (t as u32) < ri.digits {
-                    steps[t] = ri.step(t as u32);
-                }
-                t += 1;
+        let seq = if ri.base == 2 {
+            Sequential {
+                index: start,
+                low: (0, 0),
+                q: reverse_bits(start),
+                r: 0,
+                steps: [(0, 0); STEPS],
             }
-        }
+        } else {
+            Sequential::new(&ri, start)
+        };
         RadicalInverseIter {
             ri,
-            index: start as u64,
-            low: start % ri.base,
-            q,
-            r,
-            steps,
+            seq,
+            left: TWO_32 - start as u64,
         }
-    }
-
-    /// The value at the current index.
-    #[inline]
-    const fn value(&self) -> u32 {
-        self.q
-    }
-
-    /// Moves to the next index (no-op past `u32::MAX`).
-    #[inline]
-    fn advance(&mut self) {
-        self.index += 1;
-        if self.index >= TWO_32 {
-            self.index = TWO_32;
-            return;
-        }
-        let ri = &self.ri;
-        if ri.base == 2 {
-            self.q = reverse_bits(self.index as u32);
-            return;
-        }
-        let t = if self.low + 1 < ri.base {
-            self.low += 1;
-            0
-        } else {
-            self.low = 0;
-            // i + 1 ends in t >= 1 zero digits: count them.
-            let mut m = ri.div(self.index as u32);
-            let mut t = 1u32;
-            loop {
-                let q = ri.div(m);
-                if q * ri.base != m {
-                    break;
-                }
-                m = q;
-                t += 1;
-            }
-            t
-        };
-        let step = if (t as usize) < STEPS {
-            self.steps[t as usize]
-        } else {
-            ri.step(t)
-        };
-        (self.q, self.r) = add_exact((self.q, self.r), step, ri.big);
     }
 }
 
@@ -404,17 +589,25 @@ impl Iterator for RadicalInverseIter {
 
     #[inline]
     fn next(&mut self) -> Option<u32> {
-        if self.index >= TWO_32 {
+        if self.left == 0 {
             return None;
         }
-        let v = self.q;
-        self.advance();
-        Some(v)
+        let value = self.seq.q;
+        self.left -= 1;
+        if self.left > 0 {
+            if self.ri.base == 2 {
+                self.seq.index += 1;
+                self.seq.q = reverse_bits(self.seq.index);
+            } else {
+                self.seq.advance(&self.ri);
+            }
+        }
+        Some(value)
     }
 
     fn size_hint(&self) -> (usize, Option<usize>) {
-        let left = (TWO_32 - self.index) as usize;
-        (left, Some(left))
+        let left = usize::try_from(self.left).unwrap_or(usize::MAX);
+        (left, usize::try_from(self.left).ok())
     }
 }
 
@@ -479,6 +672,63 @@ mod tests {
     }
 
     #[test]
+    fn fill_matches_random_access() {
+        let bases = [
+            2,
+            3,
+            4,
+            5,
+            6,
+            7,
+            11,
+            13,
+            31,
+            127,
+            128,
+            129,
+            1000,
+            1 << 31,
+            u32::MAX,
+        ];
+        for base in bases {
+            let ri = RadicalInverse::new(base).unwrap();
+            let starts = [
+                0,
+                1,
+                base - 1,
+                base,
+                base.wrapping_mul(base).wrapping_sub(3),
+                12_345,
+            ];
+            for start in starts.into_iter().chain([u32::MAX - 700, 3u32.pow(12) - 5]) {
+                for stride in [1, 3] {
+                    let mut out = vec![0u32; 2000];
+                    let n = 2000usize.div_ceil(stride) as u32;
+                    if (start as u64 + n as u64) > 1 << 32 {
+                        assert!(ri.fill_strided(start, &mut out, stride).is_err());
+                        continue;
+                    }
+                    ri.fill_strided(start, &mut out, stride).unwrap();
+                    for (k, x) in out.iter().step_by(stride).enumerate() {
+                        assert_eq!(*x, ri.sample(start + k as u32), "b {base} {start}+{k}");
+                    }
+                    // Slots between the strided ones are untouched.
+                    assert!(
+                        out.iter()
+                            .skip(1)
+                            .step_by(stride.max(2))
+                            .all(|&x| stride == 1 || x == 0)
+                    );
+                }
+            }
+            // The last index of the range.
+            let mut last = [7u32; 1];
+            ri.fill(u32::MAX, &mut last).unwrap();
+            assert_eq!(last[0], ri.sample(u32::MAX));
+        }
+    }
+
+    #[test]
     fn long_carries_past_the_cached_steps() {
         // 3^12 - 1 -> 3^12 carries through 12 digits (> STEPS).
         let ri = RadicalInverse::new(3).unwrap();
@@ -500,6 +750,7 @@ mod tests {
                 panic!()
             };
             assert!((base as u64).pow(max) <= 1 << 32);
+            assert!((base as u64).pow(max + 1) > 1 << 32);
             for digits in 0..=max {
                 let n = (base as u64).pow(digits).min(5000);
                 for i in 0..n as u32 {

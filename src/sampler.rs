@@ -62,7 +62,11 @@ pub trait Sampler {
     /// [`Error::BufferLength`], [`Error::IndexOutOfRange`].
     fn fill(&self, start: u32, out: &mut [u32]) -> Result<()> {
         let rows = self.check_fill(start, out.len())?;
-        for (k, row) in out.chunks_exact_mut(self.dims()).enumerate().take(rows) {
+        let dims = self.dims();
+        if dims == 0 {
+            return Ok(()); // unreachable: check_fill refuses zero dimensions
+        }
+        for (k, row) in out.chunks_exact_mut(dims).enumerate().take(rows) {
             self.point(start + k as u32, row)?;
         }
         Ok(())
@@ -75,7 +79,7 @@ pub trait Sampler {
     /// [`Error::IndexOutOfRange`] if the last index is `len()` or beyond.
     fn check_fill(&self, start: u32, len: usize) -> Result<usize> {
         let dims = self.dims();
-        if !len.is_multiple_of(dims) {
+        if dims == 0 || !len.is_multiple_of(dims) {
             return Err(Error::BufferLength {
                 expected: dims,
                 got: len,

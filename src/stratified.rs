@@ -6,7 +6,7 @@
 //! for independent ones. Random access: point `i` is cell `i` in mixed radix (dimension 0
 //! fastest), and its jitter is a hash of `(seed, i, dim)`.
 
-use crate::bits::in_cell;
+use crate::bits::{div_u32, in_cell, rem_u32};
 use crate::error::{Error, Result};
 use crate::hash::uniform;
 use crate::sampler::{FULL_RANGE, Sampler, check};
@@ -117,10 +117,17 @@ impl Stratified {
         if let Err(e) = check(index, self.n, dim, self.dims) {
             return Err(e);
         }
+        if dim >= STRATIFIED_MAX_DIMS {
+            // Unreachable (dims <= STRATIFIED_MAX_DIMS); keeps indexing free of panic paths.
+            return Err(Error::DimensionOutOfRange {
+                dim,
+                dims: self.dims,
+            });
+        }
         let mut cell = index;
         let mut k = 0;
         while k < dim {
-            cell /= self.strata[k];
+            cell = div_u32(cell, self.strata[k]);
             k += 1;
         }
         let s = self.strata[dim];
@@ -128,7 +135,7 @@ impl Stratified {
             Jitter::Random(seed) => uniform(seed, index, dim as u64),
             Jitter::Center => 1 << 31,
         };
-        Ok(in_cell((cell % s) as u64, s as u64, u))
+        Ok(in_cell(rem_u32(cell, s) as u64, s as u64, u))
     }
 }
 
