@@ -65,6 +65,7 @@ pub mod larcher_pillichshammer;
 pub mod latin_hypercube;
 pub mod radical_inverse;
 pub mod sampler;
+pub mod sobol;
 pub mod stratified;
 pub mod van_der_corput;
 
@@ -76,6 +77,7 @@ pub use larcher_pillichshammer::LarcherPillichshammer;
 pub use latin_hypercube::LatinHypercube;
 pub use radical_inverse::{RadicalInverse, RadicalInverseIter};
 pub use sampler::Sampler;
+pub use sobol::{SOBOL_MAX_DIMS, Sobol};
 pub use stratified::{Jitter, Stratified};
 pub use van_der_corput::VanDerCorput;
 

@@ -98,6 +98,7 @@ fn every_sampler_runs() {
         "halton",
         "hammersley",
         "lp",
+        "sobol",
     ] {
         let text = stdout(&["points", s, "-n", "16", "--seed", "3"]);
         assert_eq!(text.lines().count(), 16, "{s}");
@@ -123,7 +124,33 @@ fn every_sampler_runs() {
 }
 
 #[test]
+fn sobol_gray_order_is_scipys() {
+    // scipy: qmc.Sobol(3, scramble=False, bits=32).random(4) * 2^32
+    let text = stdout(&["points", "sobol", "-n", "4", "-d", "3", "--order", "gray"]);
+    let want = "0 0 0\n2147483648 2147483648 2147483648\n\
+                3221225472 1073741824 1073741824\n1073741824 3221225472 3221225472\n";
+    assert_eq!(text, want);
+    // Natural order swaps points 2 and 3.
+    let text = stdout(&["points", "sobol", "-n", "4", "-d", "3"]);
+    assert_eq!(
+        text.lines().nth(3),
+        Some("3221225472 1073741824 1073741824")
+    );
+    // All 21201 dimensions are there.
+    let text = stdout(&["points", "sobol", "-n", "2", "-d", "21201", "--start", "1"]);
+    assert_eq!(text.split(' ').count(), 2 * 21201 - 1);
+}
+
+#[test]
 fn bad_input_is_one_line_and_exit_2() {
+    assert_usage_error(
+        &["points", "sobol", "-n", "4", "-d", "21202"],
+        "out of range",
+    );
+    assert_usage_error(
+        &["points", "halton", "-n", "4", "--order", "gray"],
+        "sobol only",
+    );
     assert_usage_error(&["points", "halton", "-n", "abc"], "abc");
     assert_usage_error(&["points", "nosuch", "-n", "4"], "nosuch");
     assert_usage_error(&["points", "halton", "-n", "0"], "at least 1");

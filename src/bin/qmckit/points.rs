@@ -3,6 +3,7 @@
 use std::io::BufWriter;
 
 use clap::{Args, ValueEnum};
+use qmckit::sobol::{Order, Sobol};
 use qmckit::{
     Halton, Hammersley, Independent, Jitter, LarcherPillichshammer, LatinHypercube, Sampler,
     Stratified, VanDerCorput,
@@ -28,6 +29,17 @@ pub enum SamplerName {
     Hammersley,
     /// Larcher–Pillichshammer (0,m,2)-net, 2D, --total (default n) a power of two.
     Lp,
+    /// Sobol' sequence, Joe–Kuo direction numbers, up to 21201 dimensions.
+    Sobol,
+}
+
+/// Point order (`--order`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum OrderName {
+    /// Line k is point start+k.
+    Natural,
+    /// Gray-code order (Sobol' only): SciPy's qmc.Sobol order.
+    Gray,
 }
 
 /// Arguments of `qmckit points`.
@@ -51,6 +63,9 @@ pub struct PointsArgs {
     /// Seed of the randomized samplers (independent, stratified, latin).
     #[arg(long, default_value_t = 0)]
     seed: u64,
+    /// Point order; gray applies to sobol only.
+    #[arg(long, value_enum, default_value_t = OrderName::Natural)]
+    order: OrderName,
     /// Output format.
     #[arg(long, value_enum, default_value_t = Format::U32)]
     format: Format,
@@ -76,7 +91,19 @@ fn build(args: &PointsArgs) -> Result<Box<dyn Sampler>, Failure> {
         2
     });
     let total = args.total.unwrap_or(args.n);
+    if args.order == OrderName::Gray && args.sampler != SamplerName::Sobol {
+        return Err(Failure::usage(
+            "--order gray applies to sobol only (other samplers have natural order)",
+        ));
+    }
     Ok(match args.sampler {
+        SamplerName::Sobol => {
+            let order = match args.order {
+                OrderName::Natural => Order::Natural,
+                OrderName::Gray => Order::Gray,
+            };
+            Box::new(Sobol::with_order(d, order)?)
+        }
         SamplerName::Independent => Box::new(Independent::new(d, args.seed)?),
         SamplerName::Halton => Box::new(Halton::new(d)?),
         SamplerName::Vdc => {

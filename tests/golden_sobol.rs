@@ -1,0 +1,203 @@
+//! Sobol' against SciPy's `qmc.Sobol(d, scramble=False, bits=32)` (Gray-code order) and
+//! against Joe & Kuo's published direction numbers. Files made by tests/golden/gen.py.
+
+mod common;
+
+use common::{first_net_failure, points_2d};
+use qmckit::sobol::{Order, Sobol, SobolDimension, directions};
+use qmckit::{SOBOL_MAX_DIMS, Sampler};
+
+fn golden(name: &str) -> String {
+    let path = format!("{}/tests/golden/{name}", env!("CARGO_MANIFEST_DIR"));
+    std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"))
+}
+
+/// FNV-1a 64 over the little-endian bytes of the values (as tests/golden/gen.py does).
+fn fnv1a64(values: impl IntoIterator<Item = u32>) -> u64 {
+    let mut h = 0xCBF2_9CE4_8422_2325u64;
+    for v in values {
+        for byte in v.to_le_bytes() {
+            h = (h ^ byte as u64).wrapping_mul(0x0100_0000_01B3);
+        }
+    }
+    h
+}
+
+fn fields(line: &str) -> Vec<&str> {
+    line.split_whitespace().collect()
+}
+
+#[test]
+fn first_64_dimensions_match_scipy_for_65536_points() {
+    let text = golden("scipy_sobol_d64_n65536.txt");
+    let n = 1usize << 16;
+    let s = Sobol::with_order(64, Order::Gray).unwrap();
+    let mut pts = vec![0u32; n * 64];
+    s.fill(0, &mut pts).unwrap();
+    let (mut digests, mut points) = (0, 0);
+    for line in text.lines().filter(|l| !l.starts_with('#')) {
+        let f = fields(line);
+        match f[0] {
+            "digest" => {
+                let dim: usize = f[1].parse().unwrap();
+                let want = u64::from_str_radix(f[2], 16).unwrap();
+                let got = fnv1a64(pts.iter().skip(dim).step_by(64).copied());
+                assert_eq!(got, want, "dimension {dim}: 2^16 points differ from SciPy");
+                digests += 1;
+            }
+            "point" => {
+                let i: u32 = f[1].parse().unwrap();
+                for (dim, v) in f[2..].iter().enumerate() {
+                    let want: u32 = v.parse().unwrap();
+                    assert_eq!(pts[i as usize * 64 + dim], want, "point {i} dim {dim}");
+                    // Random access in Gray order agrees with the sequential fill.
+                    assert_eq!(s.sample(i, dim).unwrap(), want);
+                }
+                points += 1;
+            }
+            other => panic!("unknown line {other}"),
+        }
+    }
+    assert_eq!((digests, points), (64, 64));
+}
+
+#[cfg(feature = "sobol-dims-21201")]
+#[test]
+fn all_21201_dimensions_match_scipy_for_1024_points() {
+    assert_eq!(SOBOL_MAX_DIMS, 21201);
+    let text = golden("scipy_sobol_d21201_n1024.txt");
+    let (n, d) = (1024usize, 21201usize);
+    let s = Sobol::with_order(d, Order::Gray).unwrap();
+    let mut pts = vec![0u32; n * d];
+    s.fill(0, &mut pts).unwrap();
+    let (mut blocks, mut columns) = (0, 0);
+    for line in text.lines().filter(|l| !l.starts_with('#')) {
+        let f = fields(line);
+        match f[0] {
+            "block" => {
+                let (lo, hi): (usize, usize) = (f[1].parse().unwrap(), f[2].parse().unwrap());
+                let want = u64::from_str_radix(f[3], 16).unwrap();
+                let got = fnv1a64((0..n).flat_map(|i| pts[i * d + lo..i * d + hi].iter().copied()));
+                assert_eq!(got, want, "dimensions {lo}..{hi} differ from SciPy");
+                blocks += 1;
+            }
+            "column" => {
+                let dim: usize = f[1].parse().unwrap();
+                let dimension = SobolDimension::new(dim).unwrap();
+                for (i, v) in f[2..].iter().enumerate() {
+                    let want: u32 = v.parse().unwrap();
+                    assert_eq!(pts[i * d + dim], want, "dim {dim} point {i}");
+                    let g = (i ^ (i >> 1)) as u32;
+                    assert_eq!(
+                        dimension.sample(g),
+                        want,
+                        "random access dim {dim} point {i}"
+                    );
+                }
+                columns += 1;
+            }
+            other => panic!("unknown line {other}"),
+        }
+    }
+    assert_eq!((blocks, columns), (213, 9));
+}
+
+/// Rows d = 2..16 of Joe & Kuo's published `new-joe-kuo-6.21201` (d s a m_1 .. m_s).
+const PUBLISHED: [&[u32]; 15] = [
+    &[2, 1, 0, 1],
+    &[3, 2, 1, 1, 3],
+    &[4, 3, 1, 1, 3, 1],
+    &[5, 3, 2, 1, 1, 1],
+    &[6, 4, 1, 1, 1, 3, 3],
+    &[7, 4, 4, 1, 3, 5, 13],
+    &[8, 5, 2, 1, 1, 5, 5, 17],
+    &[9, 5, 4, 1, 1, 5, 5, 5],
+    &[10, 5, 7, 1, 1, 7, 11, 19],
+    &[11, 5, 11, 1, 1, 5, 1, 1],
+    &[12, 5, 13, 1, 1, 1, 3, 11],
+    &[13, 5, 14, 1, 3, 5, 5, 31],
+    &[14, 6, 1, 1, 3, 3, 9, 7, 49],
+    &[15, 6, 13, 1, 1, 1, 15, 21, 21],
+    &[16, 6, 16, 1, 3, 1, 13, 27, 49],
+];
+
+#[test]
+fn table_rows_match_the_published_ones() {
+    let text = std::fs::read_to_string(format!(
+        "{}/tables/new-joe-kuo-6.21201",
+        env!("CARGO_MANIFEST_DIR")
+    ))
+    .unwrap();
+    let rows: Vec<Vec<u32>> = text
+        .lines()
+        .skip(1)
+        .take(15)
+        .map(|l| l.split_whitespace().map(|x| x.parse().unwrap()).collect())
+        .collect();
+    for (row, want) in rows.iter().zip(PUBLISHED) {
+        assert_eq!(row.as_slice(), want);
+        // The compiled direction numbers start with m_k 2^(32-k).
+        let v = directions(row[0] as usize - 1).unwrap();
+        for (k, &m) in row[3..].iter().enumerate() {
+            assert_eq!(v[k], m << (31 - k), "d {} m_{}", row[0], k + 1);
+        }
+    }
+    assert_eq!(text.lines().count(), 21201); // header + d = 2..21201
+}
+
+#[test]
+fn two_dimensional_sobol_is_a_0m2_net_in_both_orders() {
+    for m in 1..=16 {
+        for order in [Order::Natural, Order::Gray] {
+            let s = Sobol::with_order(2, order).unwrap();
+            let pts = points_2d(&s, 1 << m, (0, 1));
+            assert_eq!(first_net_failure(&pts, m), None, "{order:?} m = {m}");
+        }
+    }
+}
+
+#[test]
+fn natural_and_gray_orders_hold_the_same_first_2m_points() {
+    let nat = Sobol::new(8).unwrap();
+    let gray = Sobol::with_order(8, Order::Gray).unwrap();
+    for m in [0, 1, 5, 12] {
+        let n = 1usize << m;
+        let (mut a, mut b) = (vec![0u32; n * 8], vec![0u32; n * 8]);
+        nat.fill(0, &mut a).unwrap();
+        gray.fill(0, &mut b).unwrap();
+        let mut a: Vec<&[u32]> = a.chunks(8).collect();
+        let mut b: Vec<&[u32]> = b.chunks(8).collect();
+        a.sort();
+        b.sort();
+        assert_eq!(a, b, "m = {m}");
+    }
+}
+
+#[test]
+fn fills_and_iterators_match_random_access() {
+    for dim in [0, 1, 2, 7, SOBOL_MAX_DIMS - 1] {
+        let d = SobolDimension::new(dim).unwrap();
+        for start in [0u32, 1, 255, 1 << 20, u32::MAX - 600] {
+            let mut out = vec![0u32; 1200];
+            if start as u64 + 1200 > 1 << 32 {
+                assert!(d.fill_strided(start, &mut out, 1).is_err());
+                let mut out = vec![0u32; 601];
+                d.fill_strided(start, &mut out, 1).unwrap();
+                assert_eq!(out[600], d.sample(u32::MAX));
+                continue;
+            }
+            d.fill_strided(start, &mut out, 1).unwrap();
+            for (k, &x) in out.iter().enumerate() {
+                assert_eq!(x, d.sample(start + k as u32), "dim {dim} at {start}+{k}");
+            }
+            for (k, x) in d.gray_from(start).take(1200).enumerate() {
+                let i = start + k as u32;
+                assert_eq!(x, d.sample(i ^ (i >> 1)), "gray dim {dim} at {i}");
+            }
+        }
+        assert_eq!(d.gray_from(u32::MAX).count(), 1);
+    }
+    assert!(SobolDimension::new(SOBOL_MAX_DIMS).is_err());
+    assert!(Sobol::new(SOBOL_MAX_DIMS + 1).is_err());
+    assert!(Sobol::new(0).is_err());
+}
