@@ -168,3 +168,24 @@ pub(crate) const fn rem_u32(a: u32, b: u32) -> u32 {
         None => 0,
     }
 }
+
+/// `M x` over GF(2) for the 32x32 bit matrix with columns `cols`: the XOR of `cols[k]` over
+/// the set bits `k` of `x`. A branch-free loop of 32 AND/XOR steps (which vectorizes).
+///
+/// This is how a base-2 digital construction maps an index to a point (Sobol' with its
+/// direction numbers as columns) and how a linear scramble maps a point to a point.
+///
+/// ```
+/// let identity: [u32; 32] = core::array::from_fn(|k| 1 << k);
+/// assert_eq!(qmckit::bits::gf2_mul(&identity, 0xDEAD_BEEF), 0xDEAD_BEEF);
+/// ```
+#[inline]
+pub const fn gf2_mul(cols: &[u32; 32], x: u32) -> u32 {
+    let mut acc = 0u32;
+    let mut k = 0;
+    while k < 32 {
+        acc ^= cols[k] & 0u32.wrapping_sub((x >> k) & 1);
+        k += 1;
+    }
+    acc
+}

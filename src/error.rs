@@ -66,6 +66,11 @@ pub enum Error {
         /// Length given.
         got: usize,
     },
+    /// A combination the crate does not provide (e.g. an option that does not apply).
+    Unsupported {
+        /// What was asked for.
+        what: &'static str,
+    },
     /// An inverse radical inverse asked for more digits than fit in 32 bits.
     TooManyDigits {
         /// Digits requested.
@@ -108,6 +113,7 @@ impl fmt::Display for Error {
                     "buffer of length {got} given, {expected} (or a multiple) needed"
                 )
             }
+            Error::Unsupported { what } => write!(f, "not supported: {what}"),
             Error::TooManyDigits { digits, max } => {
                 write!(f, "{digits} digits requested, at most {max} fit in 32 bits")
             }

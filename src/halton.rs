@@ -9,6 +9,7 @@
 
 use crate::error::{Error, Result};
 use crate::radical_inverse::{RadicalInverse, RadicalInverseIter};
+use crate::randomize::digits::DigitScramble;
 use crate::sampler::{FULL_RANGE, Sampler, check};
 
 include!(concat!(env!("OUT_DIR"), "/primes.rs"));
@@ -58,6 +59,7 @@ pub const fn prime(dim: usize) -> Option<u32> {
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct Halton {
     dims: usize,
+    scramble: DigitScramble,
 }
 
 impl Halton {
@@ -75,7 +77,35 @@ impl Halton {
                 dims: HALTON_MAX_DIMS,
             });
         }
-        Ok(Halton { dims })
+        Ok(Halton {
+            dims,
+            scramble: DigitScramble::None,
+        })
+    }
+
+    /// A Halton sequence whose digits are scrambled (random permutations, Faure, or Owen in
+    /// base `b`; see [`DigitScramble`]). Random permutations fix the poor 2D projections of
+    /// high bases, e.g. `(phi_29, phi_31)`.
+    ///
+    /// # Errors
+    /// As [`new`](Self::new).
+    ///
+    /// ```
+    /// use qmckit::{Halton, randomize::digits::DigitScramble};
+    /// let h = Halton::with_scramble(10, DigitScramble::Permutations(7))?;
+    /// assert_ne!(h.sample(0, 9)?, 0); // scrambled leading zeros: the origin moves
+    /// # Ok::<(), qmckit::Error>(())
+    /// ```
+    pub const fn with_scramble(dims: usize, scramble: DigitScramble) -> Result<Self> {
+        match Self::new(dims) {
+            Ok(h) => Ok(Halton { scramble, ..h }),
+            Err(e) => Err(e),
+        }
+    }
+
+    /// The digit scrambling.
+    pub const fn scramble(&self) -> DigitScramble {
+        self.scramble
     }
 
     /// Number of dimensions.
@@ -112,7 +142,7 @@ impl Halton {
     #[inline]
     pub const fn sample(&self, index: u32, dim: usize) -> Result<u32> {
         match self.dimension(dim) {
-            Ok(ri) => Ok(ri.sample(index)),
+            Ok(ri) => Ok(ri.sample_scrambled(index, &self.scramble, dim)),
             Err(e) => Err(e),
         }
     }
@@ -131,6 +161,11 @@ impl Halton {
     /// # Ok::<(), qmckit::Error>(())
     /// ```
     pub fn points<const D: usize>(&self, start: u32) -> Result<HaltonPoints<D>> {
+        if !self.scramble.is_none() {
+            return Err(Error::Unsupported {
+                what: "the sequential Halton iterator of a scrambled sequence (use sample/fill)",
+            });
+        }
         if D != self.dims {
             return Err(Error::BufferLength {
                 expected: self.dims,
@@ -181,6 +216,12 @@ impl Sampler for Halton {
     fn fill(&self, start: u32, out: &mut [u32]) -> Result<()> {
         let rows = self.check_fill(start, out.len())?;
         if rows == 0 {
+            return Ok(());
+        }
+        if !self.scramble.is_none() && self.dims > 0 {
+            for (k, row) in out.chunks_exact_mut(self.dims).enumerate() {
+                self.point(start + k as u32, row)?;
+            }
             return Ok(());
         }
         for (dim, ri) in HALTON_BASES.iter().take(self.dims).enumerate() {

@@ -8,6 +8,7 @@
 
 use crate::error::{Error, Result};
 use crate::halton::{HALTON_BASES, HALTON_MAX_DIMS};
+use crate::randomize::digits::DigitScramble;
 use crate::sampler::{FULL_RANGE, Sampler, check};
 
 /// `N` Hammersley points in `dims` dimensions; dimension 0 is `i / N`, dimension `k >= 1`
@@ -27,6 +28,7 @@ pub struct Hammersley {
     /// `m` when `n = 2^m` (first coordinate is a shift).
     log2: Option<u32>,
     dims: usize,
+    scramble: DigitScramble,
 }
 
 impl Hammersley {
@@ -59,7 +61,24 @@ impl Hammersley {
         } else {
             None
         };
-        Ok(Hammersley { n, log2, dims })
+        Ok(Hammersley {
+            n,
+            log2,
+            dims,
+            scramble: DigitScramble::None,
+        })
+    }
+
+    /// `n` points whose radical-inverse dimensions (1 and up) have their digits scrambled;
+    /// dimension 0 stays `i / N`.
+    ///
+    /// # Errors
+    /// As [`new`](Self::new).
+    pub const fn with_scramble(n: u64, dims: usize, scramble: DigitScramble) -> Result<Self> {
+        match Self::new(n, dims) {
+            Ok(h) => Ok(Hammersley { scramble, ..h }),
+            Err(e) => Err(e),
+        }
     }
 
     /// The `2^m`-point set (`m <= 32`), a (0, m, 2)-net in its first two dimensions.
@@ -97,7 +116,7 @@ impl Hammersley {
                     dims: self.dims,
                 });
             }
-            HALTON_BASES[k].sample(index)
+            HALTON_BASES[k].sample_scrambled(index, &self.scramble, dim)
         })
     }
 }
@@ -120,6 +139,12 @@ impl Sampler for Hammersley {
     fn fill(&self, start: u32, out: &mut [u32]) -> Result<()> {
         let rows = self.check_fill(start, out.len())?;
         if rows == 0 || self.dims == 0 {
+            return Ok(());
+        }
+        if !self.scramble.is_none() {
+            for (k, row) in out.chunks_exact_mut(self.dims).enumerate() {
+                self.point(start + k as u32, row)?;
+            }
             return Ok(());
         }
         for (k, row) in out.chunks_exact_mut(self.dims).enumerate() {

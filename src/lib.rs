@@ -64,6 +64,7 @@ pub mod independent;
 pub mod larcher_pillichshammer;
 pub mod latin_hypercube;
 pub mod radical_inverse;
+pub mod randomize;
 pub mod sampler;
 pub mod sobol;
 pub mod stratified;

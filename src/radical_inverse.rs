@@ -35,6 +35,7 @@
 
 use crate::bits::{div_u32, div_u64, rem_u32, rem_u64, reverse_bits};
 use crate::error::{Error, Result};
+use crate::randomize::digits::DigitScramble;
 
 /// 2^32 as `u64`.
 const TWO_32: u64 = 1 << 32;
@@ -194,6 +195,68 @@ impl RadicalInverse {
             return reverse_bits(index);
         }
         self.scale(self.numerator(index)).0
+    }
+
+    /// `floor(phi'_b(index) 2^32)` for the digit-scrambled radical inverse
+    /// `phi'_b(i) = sum_(j=1..K) sigma_j(d_j) b^-j` (see [`DigitScramble`]), exact for that
+    /// `K`-digit sum. `dim` keys the random permutations. `const`.
+    ///
+    /// Cost: `K` digit steps (all digit places, since scrambled leading zeros are not zero),
+    /// each a division and, for the random kinds, a keyed permutation.
+    ///
+    /// ```
+    /// use qmckit::RadicalInverse;
+    /// use qmckit::randomize::digits::DigitScramble;
+    /// let phi5 = RadicalInverse::new(5)?;
+    /// assert_eq!(phi5.sample_scrambled(123, &DigitScramble::None, 0), phi5.sample(123));
+    /// // Faure's sigma_5 = (0, 3, 2, 1, 4): phi'_5(1) = 3/5.
+    /// assert_eq!(phi5.sample_scrambled(1, &DigitScramble::Faure, 0) as u64, (3u64 << 32) / 5);
+    /// # Ok::<(), qmckit::Error>(())
+    /// ```
+    pub const fn sample_scrambled(&self, index: u32, scramble: &DigitScramble, dim: usize) -> u32 {
+        if scramble.is_none() {
+            return self.sample(index);
+        }
+        self.scale(self.exact_scrambled(index, scramble, dim)).0
+    }
+
+    /// The exact numerator `N` of the (scrambled) radical inverse over
+    /// [`denominator`](Self::denominator): `phi'_b(index) = N / B`. For users who need the
+    /// value beyond 32 bits (e.g. an `f64` with 53) or exact arithmetic.
+    ///
+    /// ```
+    /// use qmckit::{RadicalInverse, randomize::digits::DigitScramble};
+    /// let phi3 = RadicalInverse::new(3)?;
+    /// let n = phi3.exact_scrambled(1000, &DigitScramble::None, 0);
+    /// assert_eq!(n as u128 * 2187, 760 * phi3.denominator() as u128); // 760/2187
+    /// # Ok::<(), qmckit::Error>(())
+    /// ```
+    pub const fn exact_scrambled(&self, index: u32, scramble: &DigitScramble, dim: usize) -> u64 {
+        if scramble.is_none() {
+            return self.numerator(index);
+        }
+        let b = self.base as u64;
+        let mut n = index as u64;
+        let mut weight = div_u64(self.big, b); // b^(K-1)
+        let (mut prefix, mut place) = (0u64, 1u64); // index mod b^(j-1), and b^(j-1)
+        let mut acc = 0u64;
+        let mut j = 1;
+        while j <= self.digits {
+            let d = rem_u64(n, b) as u32;
+            n = div_u64(n, b);
+            let s = scramble.digit(self.base, dim, j, prefix, d);
+            acc += s as u64 * weight; // < B
+            prefix += d as u64 * place;
+            place = place.wrapping_mul(b);
+            weight = div_u64(weight, b);
+            j += 1;
+        }
+        acc
+    }
+
+    /// `B = b^K`, the denominator of [`exact_scrambled`](Self::exact_scrambled).
+    pub const fn denominator(&self) -> u64 {
+        self.big
     }
 
     /// `N` with `phi_b(index) = N / B`: the digits of `index` reversed into `K` places.

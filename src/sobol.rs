@@ -14,7 +14,7 @@
 //! point is the natural point of index `gray(i)`, and consecutive points differ by a single
 //! direction number (Antonov & Saleev 1979), which [`SobolGray`] uses.
 
-use crate::bits::gray;
+use crate::bits::{gf2_mul, gray};
 use crate::error::{Error, Result};
 use crate::sampler::{FULL_RANGE, Sampler, check};
 
@@ -80,13 +80,7 @@ impl SobolDimension {
     /// A branch-free loop over the 32 bits; `const`. Defined for every `u32` index.
     #[inline]
     pub const fn sample(&self, index: u32) -> u32 {
-        let mut x = 0u32;
-        let mut k = 0;
-        while k < 32 {
-            x ^= self.v[k] & 0u32.wrapping_sub((index >> k) & 1);
-            k += 1;
-        }
-        x
+        gf2_mul(self.v, index)
     }
 
     /// `P_t = V_1 ^ .. ^ V_(t+1)`: going from index `i` to `i + 1` flips the `t + 1` lowest

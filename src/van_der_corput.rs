@@ -6,6 +6,7 @@
 
 use crate::error::Result;
 use crate::radical_inverse::RadicalInverse;
+use crate::randomize::digits::DigitScramble;
 use crate::sampler::{FULL_RANGE, Sampler, check};
 
 /// The van der Corput sequence in base `b`.
@@ -21,6 +22,7 @@ use crate::sampler::{FULL_RANGE, Sampler, check};
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct VanDerCorput {
     ri: RadicalInverse,
+    scramble: DigitScramble,
 }
 
 impl VanDerCorput {
@@ -30,15 +32,30 @@ impl VanDerCorput {
     /// [`crate::Error::BaseTooSmall`] for bases below 2.
     pub const fn new(base: u32) -> Result<Self> {
         match RadicalInverse::new(base) {
-            Ok(ri) => Ok(VanDerCorput { ri }),
+            Ok(ri) => Ok(VanDerCorput {
+                ri,
+                scramble: DigitScramble::None,
+            }),
             Err(e) => Err(e),
         }
     }
 
-    /// The `index`-th value, `floor(phi_b(index) 2^32)`: infallible.
+    /// The sequence in base `base` with its digits scrambled (see [`DigitScramble`]).
+    ///
+    /// # Errors
+    /// [`crate::Error::BaseTooSmall`] for bases below 2.
+    pub const fn with_scramble(base: u32, scramble: DigitScramble) -> Result<Self> {
+        match Self::new(base) {
+            Ok(v) => Ok(VanDerCorput { scramble, ..v }),
+            Err(e) => Err(e),
+        }
+    }
+
+    /// The `index`-th value, `floor(phi_b(index) 2^32)` (digit-scrambled if so built):
+    /// infallible.
     #[inline]
     pub const fn value(&self, index: u32) -> u32 {
-        self.ri.sample(index)
+        self.ri.sample_scrambled(index, &self.scramble, 0)
     }
 
     /// The radical inverse behind it (for sequential iteration and inversion).
@@ -63,6 +80,13 @@ impl Sampler for VanDerCorput {
     }
 
     fn fill(&self, start: u32, out: &mut [u32]) -> Result<()> {
-        self.ri.fill(start, out)
+        if self.scramble.is_none() {
+            return self.ri.fill(start, out);
+        }
+        self.check_fill(start, out.len())?;
+        for (k, slot) in out.iter_mut().enumerate() {
+            *slot = self.value(start + k as u32);
+        }
+        Ok(())
     }
 }

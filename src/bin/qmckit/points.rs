@@ -3,6 +3,9 @@
 use std::io::BufWriter;
 
 use clap::{Args, ValueEnum};
+use qmckit::randomize::digits::DigitScramble;
+use qmckit::randomize::shuffle::Shuffled;
+use qmckit::randomize::{CranleyPatterson, DigitalShift, FastOwen, Lms, Owen, OwenHash, Scrambled};
 use qmckit::sobol::{Order, Sobol};
 use qmckit::{
     Halton, Hammersley, Independent, Jitter, LarcherPillichshammer, LatinHypercube, Sampler,
@@ -31,6 +34,31 @@ pub enum SamplerName {
     Lp,
     /// Sobol' sequence, Joe–Kuo direction numbers, up to 21201 dimensions.
     Sobol,
+}
+
+/// Randomization (`--scramble`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum ScrambleName {
+    /// No randomization.
+    None,
+    /// Random digital shift (XOR), base 2.
+    Xor,
+    /// Cranley–Patterson rotation (x + u mod 1); does not keep nets.
+    Rotate,
+    /// Owen scrambling: exact nested uniform in base 2; in base b for halton, hammersley, vdc.
+    Owen,
+    /// Hash-based Owen scrambling (Vegdahl's hash), base 2.
+    FastOwen,
+    /// Hash-based Owen scrambling (Laine–Karras hash), base 2.
+    FastOwenLk,
+    /// Random linear matrix scramble plus digital shift (SciPy's Sobol' scrambling), base 2.
+    Lms,
+    /// Burley's shuffled, hash-Owen-scrambled Sobol' (index shuffle + fast-owen), base 2.
+    ShuffleOwen,
+    /// Random digit permutations per digit position (halton, hammersley, vdc).
+    Perm,
+    /// Faure's digit permutations (halton, hammersley, vdc).
+    Faure,
 }
 
 /// Point order (`--order`).
@@ -63,6 +91,9 @@ pub struct PointsArgs {
     /// Seed of the randomized samplers (independent, stratified, latin).
     #[arg(long, default_value_t = 0)]
     seed: u64,
+    /// Randomization; which kinds apply depends on the sampler (see the list below).
+    #[arg(long, value_enum, default_value_t = ScrambleName::None)]
+    scramble: ScrambleName,
     /// Point order; gray applies to sobol only.
     #[arg(long, value_enum, default_value_t = OrderName::Natural)]
     order: OrderName,
@@ -83,8 +114,74 @@ pub struct PointsArgs {
 /// Points written per batch (bounded memory for any n).
 const BATCH: usize = 1 << 14;
 
-/// Builds the sampler the arguments name.
+/// Builds the sampler the arguments name, randomized as `--scramble` asks.
 fn build(args: &PointsArgs) -> Result<Box<dyn Sampler>, Failure> {
+    use SamplerName as S;
+    use ScrambleName as K;
+    let seed = args.seed;
+    let digits = match args.scramble {
+        K::Perm => Some(DigitScramble::Permutations(seed)),
+        K::Faure => Some(DigitScramble::Faure),
+        K::Owen
+            if matches!(args.sampler, S::Halton | S::Hammersley)
+                || (args.sampler == S::Vdc && args.base != 2) =>
+        {
+            Some(DigitScramble::Owen(seed))
+        }
+        _ => None,
+    };
+    let base2 = args.sampler == S::Sobol
+        || args.sampler == S::Lp
+        || (args.sampler == S::Vdc && args.base == 2);
+    let applies = match args.scramble {
+        K::None => true,
+        K::Perm | K::Faure => matches!(args.sampler, S::Halton | S::Hammersley | S::Vdc),
+        K::Owen => base2 || digits.is_some(),
+        K::ShuffleOwen => args.sampler == S::Sobol || args.sampler == S::Lp,
+        K::Xor | K::Rotate | K::FastOwen | K::FastOwenLk | K::Lms => base2,
+    };
+    if !applies {
+        return Err(Failure::usage(format!(
+            "--scramble {} does not apply to {} (base-2 kinds: sobol, lp, vdc base 2; \
+             perm/faure/owen: halton, hammersley, vdc)",
+            args.scramble
+                .to_possible_value()
+                .map(|v| v.get_name().to_owned())
+                .unwrap_or_default(),
+            args.sampler
+                .to_possible_value()
+                .map(|v| v.get_name().to_owned())
+                .unwrap_or_default(),
+        )));
+    }
+    let sampler = construct(args, digits.unwrap_or_default())?;
+    if digits.is_some() {
+        return Ok(sampler);
+    }
+    Ok(match args.scramble {
+        K::None | K::Perm | K::Faure => sampler,
+        K::Xor => Box::new(Scrambled::new(sampler, DigitalShift::new(seed))),
+        K::Rotate => Box::new(Scrambled::new(sampler, CranleyPatterson::new(seed))),
+        K::Owen => Box::new(Scrambled::new(sampler, Owen::new(seed))),
+        K::FastOwen => Box::new(Scrambled::new(sampler, FastOwen::new(seed))),
+        K::FastOwenLk => Box::new(Scrambled::new(
+            sampler,
+            FastOwen::with_hash(seed, OwenHash::LaineKarras),
+        )),
+        K::Lms => Box::new(Scrambled::new(
+            sampler,
+            (Lms::new(seed), DigitalShift::new(seed)),
+        )),
+        K::ShuffleOwen => Box::new(Shuffled::new(
+            Scrambled::new(sampler, FastOwen::new(seed)),
+            seed,
+            0,
+        )?),
+    })
+}
+
+/// Builds the construction itself (digit scrambles are part of the radical inverse).
+fn construct(args: &PointsArgs, digits: DigitScramble) -> Result<Box<dyn Sampler>, Failure> {
     let d = args.d.unwrap_or(if args.sampler == SamplerName::Vdc {
         1
     } else {
@@ -105,16 +202,16 @@ fn build(args: &PointsArgs) -> Result<Box<dyn Sampler>, Failure> {
             Box::new(Sobol::with_order(d, order)?)
         }
         SamplerName::Independent => Box::new(Independent::new(d, args.seed)?),
-        SamplerName::Halton => Box::new(Halton::new(d)?),
+        SamplerName::Halton => Box::new(Halton::with_scramble(d, digits)?),
         SamplerName::Vdc => {
             if d != 1 {
                 return Err(Failure::usage(format!(
                     "vdc is one-dimensional: -d must be 1, got {d}"
                 )));
             }
-            Box::new(VanDerCorput::new(args.base)?)
+            Box::new(VanDerCorput::with_scramble(args.base, digits)?)
         }
-        SamplerName::Hammersley => Box::new(Hammersley::new(total, d)?),
+        SamplerName::Hammersley => Box::new(Hammersley::with_scramble(total, d, digits)?),
         SamplerName::Latin => Box::new(LatinHypercube::new(total, d, args.seed)?),
         SamplerName::Lp => {
             if d != 2 {

@@ -1,0 +1,89 @@
+//! Linear matrix scrambling (Matoušek 1998, "On the L2-discrepancy for anchored boxes"):
+//! `x -> L x` over GF(2) with `L` a random nonsingular lower-triangular matrix in digit
+//! order (unit diagonal), usually followed by a digital shift, as SciPy scrambles Sobol'.
+//!
+//! Output digit `j` is digit `j` of `x` XOR a random subset of the digits above it, so the
+//! map is nested (keeps nets) and a bijection. Column `p` (input bit `p`) is `2^p` plus
+//! random bits below `p`.
+
+use super::{Randomizer, dimension_seed};
+use crate::bits::gf2_mul;
+use crate::hash::hash3;
+
+/// A random linear scramble for every dimension, keyed by `seed`.
+///
+/// [`Randomizer::apply`] rebuilds the dimension's matrix on each call (32 hashes); for
+/// speed build it once with [`Lms::dimension`].
+///
+/// ```
+/// use qmckit::randomize::{DigitalShift, Lms, Randomizer};
+/// let scramble = (Lms::new(9), DigitalShift::new(9)); // SciPy's Sobol' scrambling
+/// let d = Lms::new(9).dimension(0);
+/// assert_eq!(d.apply(0x8000_0000) >> 31, 1); // the top digit is kept (unit diagonal)
+/// # let _ = scramble.apply(1, 0);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct Lms {
+    seed: u64,
+}
+
+impl Lms {
+    /// The scramble for `seed`.
+    pub const fn new(seed: u64) -> Self {
+        Lms { seed }
+    }
+
+    /// With the seed drawn from `rng`.
+    #[cfg(feature = "rand_core")]
+    pub fn from_rng<R: rand_core::Rng + ?Sized>(rng: &mut R) -> Self {
+        Self::new(rng.next_u64())
+    }
+
+    /// The matrix of dimension `dim`. `const`; 32 hashes.
+    pub const fn dimension(&self, dim: usize) -> LmsDimension {
+        let key = dimension_seed(self.seed, dim) as u64;
+        let mut cols = [0u32; 32];
+        let mut p = 0;
+        while p < 32 {
+            let below = (1u32 << p).wrapping_sub(1);
+            let random = (hash3(self.seed, key, p as u64) >> 32) as u32;
+            cols[p] = (1 << p) | (random & below);
+            p += 1;
+        }
+        LmsDimension { cols }
+    }
+}
+
+impl Randomizer for Lms {
+    fn apply(&self, x: u32, dim: usize) -> u32 {
+        self.dimension(dim).apply(x)
+    }
+}
+
+/// One dimension's linear scramble: the 32 columns of `L` (128 bytes).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct LmsDimension {
+    cols: [u32; 32],
+}
+
+impl LmsDimension {
+    /// `L x`. `const`, 32 AND/XOR steps.
+    #[inline]
+    pub const fn apply(&self, x: u32) -> u32 {
+        gf2_mul(&self.cols, x)
+    }
+
+    /// `L C` for a generator matrix `C` given by its columns: the scrambled matrix, so that
+    /// scrambling costs nothing per point (SciPy scrambles Sobol's direction numbers so).
+    pub const fn scramble_columns(&self, cols: &[u32; 32]) -> [u32; 32] {
+        let mut out = [0u32; 32];
+        let mut k = 0;
+        while k < 32 {
+            out[k] = self.apply(cols[k]);
+            k += 1;
+        }
+        out
+    }
+}
