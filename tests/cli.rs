@@ -212,7 +212,7 @@ fn every_scramble_runs_and_base2_kinds_keep_the_net() {
         // Nine base-3 points: one in each ninth.
         let mut ninths: Vec<u64> = text
             .lines()
-            .map(|l| l.parse::<u64>().unwrap() * 9 >> 32)
+            .map(|l| (l.parse::<u64>().unwrap() * 9) >> 32)
             .collect();
         ninths.sort_unstable();
         // (Faure maps the zero digits to zero: exact multiples of 1/9 round down into the
