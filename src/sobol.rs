@@ -129,6 +129,52 @@ impl SobolDimension {
     }
 }
 
+/// One Sobol' dimension's generator matrix unrolled into four byte tables (4 KiB): random
+/// access by four table reads and three XORs, `x(i) = T0[i0] ^ T1[i1] ^ T2[i2] ^ T3[i3]` for
+/// the bytes `i0..i3` of `i` (the "method of four Russians" for GF(2) matrix-vector
+/// products). For hosts, or firmware with RAM or flash to spare; [`SobolDimension::sample`]
+/// needs no table.
+///
+/// ```
+/// use qmckit::sobol::{SobolDimension, SobolTable};
+/// let d = SobolDimension::new(3)?;
+/// let t = SobolTable::new(d);
+/// assert_eq!(t.sample(0xDEAD_BEEF), d.sample(0xDEAD_BEEF));
+/// # Ok::<(), qmckit::Error>(())
+/// ```
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SobolTable {
+    t: [[u32; 256]; 4],
+}
+
+impl SobolTable {
+    /// The tables of one dimension: 1024 XORs. `const`.
+    pub const fn new(dim: SobolDimension) -> Self {
+        let mut t = [[0u32; 256]; 4];
+        let mut b = 0;
+        while b < 4 {
+            let mut v = 1usize;
+            while v < 256 {
+                // T[v] = T[v without its lowest bit] ^ V[8b + that bit].
+                let low = v.trailing_zeros() as usize;
+                t[b][v] = t[b][v & (v - 1)] ^ dim.v[8 * b + low];
+                v += 1;
+            }
+            b += 1;
+        }
+        SobolTable { t }
+    }
+
+    /// Natural-order point `index`, the same bits as [`SobolDimension::sample`].
+    #[inline]
+    pub const fn sample(&self, index: u32) -> u32 {
+        self.t[0][(index & 0xFF) as usize]
+            ^ self.t[1][((index >> 8) & 0xFF) as usize]
+            ^ self.t[2][((index >> 16) & 0xFF) as usize]
+            ^ self.t[3][(index >> 24) as usize]
+    }
+}
+
 /// Number of slots a strided fill writes, checked against the `u32` index range.
 fn checked_count(start: u32, len: usize, stride: usize) -> Result<usize> {
     if stride == 0 {

@@ -4,7 +4,7 @@
 mod common;
 
 use common::{first_net_failure, points_2d};
-use qmckit::sobol::{Order, Sobol, SobolDimension, directions};
+use qmckit::sobol::{Order, Sobol, SobolDimension, SobolTable, directions};
 use qmckit::{SOBOL_MAX_DIMS, Sampler};
 
 fn golden(name: &str) -> String {
@@ -170,6 +170,22 @@ fn natural_and_gray_orders_hold_the_same_first_2m_points() {
         a.sort();
         b.sort();
         assert_eq!(a, b, "m = {m}");
+    }
+}
+
+#[test]
+fn byte_tables_match_the_matrix_product() {
+    for dim in [0, 1, 5, 40, SOBOL_MAX_DIMS - 1] {
+        let d = SobolDimension::new(dim).unwrap();
+        let t = SobolTable::new(d);
+        let mut i = 0x1234_5678u32;
+        for _ in 0..100_000 {
+            i = i.wrapping_mul(747_796_405).wrapping_add(2_891_336_453);
+            assert_eq!(t.sample(i), d.sample(i), "dim {dim} index {i}");
+        }
+        for i in [0, 1, 255, 256, u32::MAX] {
+            assert_eq!(t.sample(i), d.sample(i));
+        }
     }
 }
 
