@@ -1,9 +1,11 @@
 //! # qmckit — quasi-Monte Carlo sampling from microcontrollers to servers
 //!
 //! Low-discrepancy sequences and nets (radical inverse, van der Corput, Halton, Hammersley,
-//! Larcher–Pillichshammer), the classic random samplers they are measured against
-//! (independent, stratified/jittered, Latin hypercube), all as pure random-access functions
-//! of `(index, dimension)`.
+//! Larcher–Pillichshammer, [`Sobol`] with Joe–Kuo's 21201 dimensions), their
+//! randomizations ([`randomize`]: digital shift, Cranley–Patterson, Owen exact and
+//! hash-based, linear matrix scrambling, index shuffling, base-`b` digit permutations), and
+//! the classic random samplers they are measured against (independent, stratified/jittered,
+//! Latin hypercube), all as pure random-access functions of `(index, dimension)`.
 //!
 //! ## The integer is the sample
 //!
@@ -43,7 +45,8 @@
 //! | feature | brings |
 //! |---|---|
 //! | `std` (default) | `std::error::Error` for [`Error`]; later the analysis side |
-//! | `cli` | the `qmckit` command (clap, npyz) |
+//! | `cli` | the `qmckit` command (clap, npyz); implies `sobol-dims-21201` |
+//! | `sobol-dims-1024`, `sobol-dims-21201` | more Sobol' dimensions than the default 64 |
 //! | `fixed` | [`bits::to_fixed`] to `fixed::types::U0F32` |
 //! | `rand_core` | seeding from any `rand_core::Rng`, [`independent::fill_from_rng`] |
 //! | `heapless` | [`buffer::points`]: fixed-capacity point buffers |

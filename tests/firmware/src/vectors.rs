@@ -15,6 +15,12 @@ use core::hint::black_box;
 
 use qmckit::bits;
 use qmckit::hash;
+use qmckit::randomize::digits::DigitScramble;
+use qmckit::randomize::shuffle::Shuffled;
+use qmckit::randomize::{
+    CranleyPatterson, DigitalShift, FastOwen, Lms, Owen, OwenHash, Randomizer, Scrambled,
+};
+use qmckit::sobol::{Order, Sobol, SobolDimension, SobolTable};
 use qmckit::{
     Error, HALTON_MAX_DIMS, Halton, Hammersley, Independent, Jitter, LarcherPillichshammer,
     LatinHypercube, RadicalInverse, Sampler, Stratified, VanDerCorput,
@@ -195,6 +201,8 @@ pub fn write_all<W: Write>(out: &mut W) -> fmt::Result {
     van_der_corput(&mut lines)?;
     bit_helpers(&mut lines)?;
     randomized(&mut lines)?;
+    sobol(&mut lines)?;
+    scramblers(&mut lines)?;
     const_patterns(&mut lines)?;
     errors(&mut lines)?;
     let n = lines.n;
@@ -562,6 +570,102 @@ fn randomized<W: Write>(out: &mut W) -> fmt::Result {
         }
         Err(e) => writeln!(out, "latin err {e}"),
     }
+}
+
+/// Byte tables of Sobol' dimension 1, built by the compiler and stored in flash.
+static SOBOL_TABLE_1: SobolTable = SobolTable::new(match SobolDimension::new(1) {
+    Ok(d) => d,
+    Err(_) => panic!(),
+});
+
+fn sobol<W: Write>(out: &mut W) -> fmt::Result {
+    for dim in 0..8usize {
+        let Ok(d) = SobolDimension::new(black_box(dim)) else {
+            return writeln!(out, "sobol dim {dim} missing");
+        };
+        for &i in &RI_INDICES {
+            writeln!(out, "sobol {dim} {i} {}", d.sample(black_box(i)))?;
+        }
+    }
+    for &i in &RI_INDICES {
+        let d = SobolDimension::new(1).map(|d| d.sample(i)).unwrap_or(0);
+        writeln!(
+            out,
+            "sobol_table 1 {i} {} {}",
+            SOBOL_TABLE_1.sample(black_box(i)),
+            d
+        )?;
+    }
+    for order in [Order::Natural, Order::Gray] {
+        match Sobol::with_order(black_box(8), order) {
+            Ok(s) => {
+                // 64-point blocks: the Cortex-M0 board has 16 KiB of RAM.
+                let mut buf = [0u32; 64 * 8];
+                let mut d = Digest::new();
+                for block in 0..16u32 {
+                    let r = Sampler::fill(&s, black_box(block * 64), &mut buf);
+                    d.push_all(&buf);
+                    d.push(r.is_ok() as u32);
+                }
+                writeln!(out, "sobol_fill 8 {order:?} 1024 {d}")?;
+            }
+            Err(e) => writeln!(out, "sobol err {e}")?,
+        }
+    }
+    writeln!(out, "sobol_max_dims {}", qmckit::SOBOL_MAX_DIMS)
+}
+
+fn scramblers<W: Write>(out: &mut W) -> fmt::Result {
+    let seed = black_box(0x5EED_u64);
+    let randomizers: [(&str, &dyn Randomizer); 7] = [
+        ("xor", &DigitalShift::new(seed)),
+        ("rotate", &CranleyPatterson::new(seed)),
+        ("owen", &Owen::new(seed)),
+        ("fast-owen", &FastOwen::new(seed)),
+        (
+            "fast-owen-lk",
+            &FastOwen::with_hash(seed, OwenHash::LaineKarras),
+        ),
+        ("lms", &Lms::new(seed)),
+        ("lms+xor", &(Lms::new(seed), DigitalShift::new(seed))),
+    ];
+    let Ok(base) = Sobol::new(2) else {
+        return writeln!(out, "scramble: no sobol");
+    };
+    for (name, r) in randomizers {
+        let s = Scrambled::new(base, r);
+        let mut d = Digest::new();
+        for i in 0..256u32 {
+            for dim in 0..2 {
+                d.push(s.sample(black_box(i), dim).unwrap_or(u32::MAX));
+            }
+        }
+        writeln!(out, "scramble {name} sobol2 256 {d}")?;
+    }
+    if let Ok(s) = Shuffled::new(Scrambled::new(base, FastOwen::new(seed)), seed, 0) {
+        let mut d = Digest::new();
+        for i in 0..256u32 {
+            d.push(s.sample(black_box(i), 1).unwrap_or(u32::MAX));
+        }
+        writeln!(out, "scramble shuffle-owen sobol2 256 {d}")?;
+    }
+    for (name, scramble) in [
+        ("perm", DigitScramble::Permutations(seed)),
+        ("faure", DigitScramble::Faure),
+        ("owen", DigitScramble::Owen(seed)),
+    ] {
+        match Halton::with_scramble(black_box(4), scramble) {
+            Ok(h) => {
+                let mut buf = [0u32; 64 * 4];
+                let r = Sampler::fill(&h, 0, &mut buf);
+                let mut d = Digest::new();
+                d.push_all(&buf);
+                writeln!(out, "scramble {name} halton4 64 {} {d}", r.is_ok())?;
+            }
+            Err(e) => writeln!(out, "scramble {name} err {e}")?,
+        }
+    }
+    Ok(())
 }
 
 fn const_patterns<W: Write>(out: &mut W) -> fmt::Result {
