@@ -43,6 +43,9 @@ pub const fn directions(dim: usize) -> Result<&'static [u32; 32]> {
     }
 }
 
+/// Dimensions advanced together by [`Sobol`]'s sequential fill.
+const FILL_BLOCK: usize = 32;
+
 /// One Sobol' dimension: its direction numbers, validated once; random access is then
 /// infallible and `const`.
 ///
@@ -172,6 +175,75 @@ impl SobolTable {
             ^ self.t[1][((index >> 8) & 0xFF) as usize]
             ^ self.t[2][((index >> 16) & 0xFF) as usize]
             ^ self.t[3][(index >> 24) as usize]
+    }
+}
+
+/// One Sobol' dimension with hash-based Owen scrambling, for random access in hot loops:
+/// byte tables of the *bit-reversed* direction numbers (`reverse` distributes over XOR), so
+/// a sample is four table reads, the Owen hash on the reversed value, and one reversal:
+/// `reverse(hash(T0[i0] ^ T1[i1] ^ T2[i2] ^ T3[i3], key))`. The same bits as
+/// `FastOwen::scramble(SobolDimension::sample(i), dim)`. 4 KiB.
+///
+/// ```
+/// use qmckit::randomize::FastOwen;
+/// use qmckit::sobol::{OwenSobolTable, SobolDimension};
+/// let (d, owen) = (SobolDimension::new(2)?, FastOwen::new(99));
+/// let t = OwenSobolTable::new(d, 2, owen);
+/// assert_eq!(t.sample(123_456), owen.scramble(d.sample(123_456), 2));
+/// # Ok::<(), qmckit::Error>(())
+/// ```
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct OwenSobolTable {
+    t: [[u32; 256]; 4],
+    owen: crate::randomize::FastOwen,
+    key: u32,
+}
+
+impl OwenSobolTable {
+    /// Dimension `dim` (whose position `dim_index` keys the scramble) with `owen`. `const`.
+    pub const fn new(
+        dim: SobolDimension,
+        dim_index: usize,
+        owen: crate::randomize::FastOwen,
+    ) -> Self {
+        let mut rev = [0u32; 32];
+        let mut k = 0;
+        while k < 32 {
+            rev[k] = dim.v[k].reverse_bits();
+            k += 1;
+        }
+        let mut t = [[0u32; 256]; 4];
+        let mut b = 0;
+        while b < 4 {
+            let mut v = 1usize;
+            while v < 256 {
+                let low = v.trailing_zeros() as usize;
+                t[b][v] = t[b][v & (v - 1)] ^ rev[8 * b + low];
+                v += 1;
+            }
+            b += 1;
+        }
+        OwenSobolTable {
+            t,
+            owen,
+            key: owen.dimension_key(dim_index),
+        }
+    }
+
+    /// The scrambled point `index` as a 0.32 fraction.
+    #[inline]
+    pub const fn sample(&self, index: u32) -> u32 {
+        let x_rev = self.t[0][(index & 0xFF) as usize]
+            ^ self.t[1][((index >> 8) & 0xFF) as usize]
+            ^ self.t[2][((index >> 16) & 0xFF) as usize]
+            ^ self.t[3][(index >> 24) as usize];
+        self.owen.scramble_reversed(x_rev, self.key).reverse_bits()
+    }
+
+    /// The scrambled point `index` as an `f32` in `[0, 1)` ([`crate::bits::to_f32`]).
+    #[inline]
+    pub const fn sample_f32(&self, index: u32) -> f32 {
+        crate::bits::to_f32(self.sample(index))
     }
 }
 
@@ -310,6 +382,58 @@ impl Sobol {
     }
 }
 
+impl Sobol {
+    /// Fills dimensions `first .. first + block` (`block <= L`) of the row-major buffer `out`
+    /// with consecutive points from `start`. The block's direction numbers are transposed to
+    /// bit-major rows `T[k][lane]` (natural order: the prefix XORs `V_1 ^ .. ^ V_(k+1)`), so
+    /// each point is one element-wise XOR of a contiguous row into `L` running values: Gray
+    /// order uses row `tz(i + 1)`, natural order row `trailing_ones(i)`. `32 L` words of
+    /// stack.
+    fn fill_block<const L: usize>(&self, start: u32, out: &mut [u32], first: usize, block: usize) {
+        let Some(dirs) = SOBOL_DIRECTIONS.get(first..first + block) else {
+            return; // unreachable: dims <= SOBOL_MAX_DIMS
+        };
+        let mut table = [[0u32; L]; 32];
+        let mut x = [0u32; L];
+        for (lane, v) in dirs.iter().enumerate().take(L) {
+            let (steps, i0) = match self.order {
+                Order::Gray => (*v, gray(start)),
+                Order::Natural => (SobolDimension { v }.increments(), start),
+            };
+            for (row, step) in table.iter_mut().zip(steps) {
+                row[lane] = step;
+            }
+            x[lane] = gf2_mul(v, i0);
+        }
+        let rows = out.len() / self.dims.max(1);
+        let mut i = start;
+        for (row, chunk) in out.chunks_exact_mut(self.dims.max(1)).enumerate() {
+            if block == L {
+                // Full block: a fixed-size copy (vectorized).
+                if let Some(dst) = chunk.get_mut(first..first + L) {
+                    dst.copy_from_slice(&x);
+                }
+            } else if let Some(dst) = chunk.get_mut(first..first + block) {
+                for (o, v) in dst.iter_mut().zip(&x) {
+                    *o = *v;
+                }
+            }
+            if row + 1 == rows {
+                break;
+            }
+            let k = match self.order {
+                Order::Gray => i.wrapping_add(1).trailing_zeros(),
+                Order::Natural => i.trailing_ones(),
+            };
+            let step = &table[(k & 31) as usize];
+            for lane in 0..L {
+                x[lane] ^= step[lane];
+            }
+            i = i.wrapping_add(1);
+        }
+    }
+}
+
 impl Sampler for Sobol {
     fn dims(&self) -> usize {
         self.dims
@@ -325,26 +449,25 @@ impl Sampler for Sobol {
         Sobol::sample(self, index, dim)
     }
 
-    /// Sequential fast path: one XOR a value (natural: the prefix increments; Gray: one
-    /// direction number).
+    /// Sequential fast path, row by row (the buffer is written once, in order), dimensions
+    /// in blocks of up to [`FILL_BLOCK`]; see [`Sobol::fill_block`].
     fn fill(&self, start: u32, out: &mut [u32]) -> Result<()> {
         let rows = self.check_fill(start, out.len())?;
-        if rows == 0 {
+        if rows == 0 || self.dims == 0 {
             return Ok(());
         }
-        for (dim, v) in SOBOL_DIRECTIONS.iter().take(self.dims).enumerate() {
-            let d = SobolDimension { v };
-            let Some(column) = out.get_mut(dim..) else {
-                continue;
-            };
-            match self.order {
-                Order::Natural => d.fill_strided(start, column, self.dims)?,
-                Order::Gray => {
-                    for (slot, x) in column.iter_mut().step_by(self.dims).zip(d.gray_from(start)) {
-                        *slot = x;
-                    }
-                }
+        let mut first = 0;
+        while first < self.dims {
+            let block = (self.dims - first).min(FILL_BLOCK);
+            // Lanes rounded up to a power of two, so the XOR loop is a fixed-size one.
+            match block {
+                1..=2 => self.fill_block::<2>(start, out, first, block),
+                3..=4 => self.fill_block::<4>(start, out, first, block),
+                5..=8 => self.fill_block::<8>(start, out, first, block),
+                9..=16 => self.fill_block::<16>(start, out, first, block),
+                _ => self.fill_block::<32>(start, out, first, block),
             }
+            first += block;
         }
         Ok(())
     }

@@ -190,6 +190,31 @@ fn byte_tables_match_the_matrix_product() {
 }
 
 #[test]
+fn owen_tables_match_the_generic_scramble() {
+    use qmckit::randomize::{FastOwen, OwenHash};
+    use qmckit::sobol::OwenSobolTable;
+    for (dim, hash) in [
+        (0, OwenHash::Vegdahl),
+        (3, OwenHash::LaineKarras),
+        (63, OwenHash::Vegdahl),
+    ] {
+        let d = SobolDimension::new(dim).unwrap();
+        let owen = FastOwen::with_hash(dim as u64 * 7 + 1, hash);
+        let t = OwenSobolTable::new(d, dim, owen);
+        let mut i = 99u32;
+        for _ in 0..100_000 {
+            i = i.wrapping_mul(747_796_405).wrapping_add(2_891_336_453);
+            assert_eq!(
+                t.sample(i),
+                owen.scramble(d.sample(i), dim),
+                "dim {dim} index {i}"
+            );
+            assert_eq!(t.sample_f32(i), qmckit::bits::to_f32(t.sample(i)));
+        }
+    }
+}
+
+#[test]
 fn fills_and_iterators_match_random_access() {
     for dim in [0, 1, 2, 7, SOBOL_MAX_DIMS - 1] {
         let d = SobolDimension::new(dim).unwrap();
