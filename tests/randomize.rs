@@ -234,6 +234,7 @@ fn lecture_scrambled_halton_29_31_has_lower_discrepancy() {
     for seed in 0..8 {
         let h = Halton::with_scramble(11, DigitScramble::Permutations(seed)).unwrap();
         let scrambled = l2_star_sq(&proj(&h)).sqrt();
+        println!("L2* of (phi_29, phi_31), 1000 points: plain {plain:.5}, permuted {scrambled:.5}");
         assert!(
             scrambled * 2.0 < plain,
             "seed {seed}: {scrambled} vs unscrambled {plain}"
