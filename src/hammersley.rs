@@ -9,7 +9,7 @@
 use crate::error::{Error, Result};
 use crate::halton::{HALTON_BASES, HALTON_MAX_DIMS};
 use crate::randomize::digits::DigitScramble;
-use crate::sampler::{FULL_RANGE, Sampler, check};
+use crate::sampler::{Sampler, check, check_set};
 
 /// `N` Hammersley points in `dims` dimensions; dimension 0 is `i / N`, dimension `k >= 1`
 /// the radical inverse in the `k`-th prime (Halton's dimension `k - 1`).
@@ -38,17 +38,8 @@ impl Hammersley {
     /// [`Error::ZeroPoints`], [`Error::TooManyPoints`], [`Error::ZeroDimensions`],
     /// [`Error::DimensionOutOfRange`].
     pub const fn new(n: u64, dims: usize) -> Result<Self> {
-        if n == 0 {
-            return Err(Error::ZeroPoints);
-        }
-        if n > FULL_RANGE {
-            return Err(Error::TooManyPoints {
-                requested: n,
-                max: FULL_RANGE,
-            });
-        }
-        if dims == 0 {
-            return Err(Error::ZeroDimensions);
+        if let Err(e) = check_set(n, dims) {
+            return Err(e);
         }
         if dims > HALTON_MAX_DIMS + 1 {
             return Err(Error::DimensionOutOfRange {

@@ -6,9 +6,9 @@
 //! uniform in `[0, 1)`. Random access, `O(1)` memory, any number of dimensions.
 
 use crate::bits::in_cell;
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::hash::{hash3, permute, uniform};
-use crate::sampler::{FULL_RANGE, Sampler, check};
+use crate::sampler::{Sampler, check, check_set};
 
 /// `n` Latin-hypercube points in `dims` dimensions from `seed`.
 ///
@@ -34,19 +34,10 @@ impl LatinHypercube {
     /// `n` points (`1..=2^32`) in `dims >= 1` dimensions.
     ///
     /// # Errors
-    /// [`Error::ZeroPoints`], [`Error::TooManyPoints`], [`Error::ZeroDimensions`].
+    /// [`crate::Error::ZeroPoints`], [`crate::Error::TooManyPoints`], [`crate::Error::ZeroDimensions`].
     pub const fn new(n: u64, dims: usize, seed: u64) -> Result<Self> {
-        if n == 0 {
-            return Err(Error::ZeroPoints);
-        }
-        if n > FULL_RANGE {
-            return Err(Error::TooManyPoints {
-                requested: n,
-                max: FULL_RANGE,
-            });
-        }
-        if dims == 0 {
-            return Err(Error::ZeroDimensions);
+        if let Err(e) = check_set(n, dims) {
+            return Err(e);
         }
         Ok(LatinHypercube { n, dims, seed })
     }
@@ -54,7 +45,7 @@ impl LatinHypercube {
     /// Coordinate `dim` of point `index`. `const`.
     ///
     /// # Errors
-    /// [`Error::IndexOutOfRange`], [`Error::DimensionOutOfRange`].
+    /// [`crate::Error::IndexOutOfRange`], [`crate::Error::DimensionOutOfRange`].
     pub const fn sample(&self, index: u32, dim: usize) -> Result<u32> {
         if let Err(e) = check(index, self.n, dim, self.dims) {
             return Err(e);

@@ -97,6 +97,23 @@ pub trait Sampler {
     }
 }
 
+/// Validates a finite set's size, `1 <= n <= 2^32`, and its dimension count, `dims >= 1`.
+pub(crate) const fn check_set(n: u64, dims: usize) -> Result<()> {
+    if n == 0 {
+        return Err(Error::ZeroPoints);
+    }
+    if n > FULL_RANGE {
+        return Err(Error::TooManyPoints {
+            requested: n,
+            max: FULL_RANGE,
+        });
+    }
+    if dims == 0 {
+        return Err(Error::ZeroDimensions);
+    }
+    Ok(())
+}
+
 /// Validates `index < len` and `dim < dims` for a `sample` call.
 #[inline]
 pub(crate) const fn check(index: u32, len: u64, dim: usize, dims: usize) -> Result<()> {

@@ -132,6 +132,33 @@ impl SobolDimension {
     }
 }
 
+/// The four byte tables of the GF(2) product with columns `cols`: `T_b[v]` is the XOR of
+/// `cols[8b + k]` over the set bits `k` of `v`, built as `T[v] = T[v & (v - 1)] ^ col`
+/// (1024 XORs).
+const fn byte_tables(cols: &[u32; 32]) -> [[u32; 256]; 4] {
+    let mut t = [[0u32; 256]; 4];
+    let mut b = 0;
+    while b < 4 {
+        let mut v = 1usize;
+        while v < 256 {
+            let low = v.trailing_zeros() as usize;
+            t[b][v] = t[b][v & (v - 1)] ^ cols[8 * b + low];
+            v += 1;
+        }
+        b += 1;
+    }
+    t
+}
+
+/// Four byte-table reads XORed: the product [`byte_tables`] encodes, at `index`.
+#[inline]
+const fn byte_product(t: &[[u32; 256]; 4], index: u32) -> u32 {
+    t[0][(index & 0xFF) as usize]
+        ^ t[1][((index >> 8) & 0xFF) as usize]
+        ^ t[2][((index >> 16) & 0xFF) as usize]
+        ^ t[3][(index >> 24) as usize]
+}
+
 /// One Sobol' dimension's generator matrix unrolled into four byte tables (4 KiB): random
 /// access by four table reads and three XORs, `x(i) = T0[i0] ^ T1[i1] ^ T2[i2] ^ T3[i3]` for
 /// the bytes `i0..i3` of `i` (the "method of four Russians" for GF(2) matrix-vector
@@ -153,28 +180,15 @@ pub struct SobolTable {
 impl SobolTable {
     /// The tables of one dimension: 1024 XORs. `const`.
     pub const fn new(dim: SobolDimension) -> Self {
-        let mut t = [[0u32; 256]; 4];
-        let mut b = 0;
-        while b < 4 {
-            let mut v = 1usize;
-            while v < 256 {
-                // T[v] = T[v without its lowest bit] ^ V[8b + that bit].
-                let low = v.trailing_zeros() as usize;
-                t[b][v] = t[b][v & (v - 1)] ^ dim.v[8 * b + low];
-                v += 1;
-            }
-            b += 1;
+        SobolTable {
+            t: byte_tables(dim.v),
         }
-        SobolTable { t }
     }
 
     /// Natural-order point `index`, the same bits as [`SobolDimension::sample`].
     #[inline]
     pub const fn sample(&self, index: u32) -> u32 {
-        self.t[0][(index & 0xFF) as usize]
-            ^ self.t[1][((index >> 8) & 0xFF) as usize]
-            ^ self.t[2][((index >> 16) & 0xFF) as usize]
-            ^ self.t[3][(index >> 24) as usize]
+        byte_product(&self.t, index)
     }
 }
 
@@ -212,17 +226,7 @@ impl OwenSobolTable {
             rev[k] = dim.v[k].reverse_bits();
             k += 1;
         }
-        let mut t = [[0u32; 256]; 4];
-        let mut b = 0;
-        while b < 4 {
-            let mut v = 1usize;
-            while v < 256 {
-                let low = v.trailing_zeros() as usize;
-                t[b][v] = t[b][v & (v - 1)] ^ rev[8 * b + low];
-                v += 1;
-            }
-            b += 1;
-        }
+        let t = byte_tables(&rev);
         OwenSobolTable {
             t,
             owen,
@@ -233,10 +237,7 @@ impl OwenSobolTable {
     /// The scrambled point `index` as a 0.32 fraction.
     #[inline]
     pub const fn sample(&self, index: u32) -> u32 {
-        let x_rev = self.t[0][(index & 0xFF) as usize]
-            ^ self.t[1][((index >> 8) & 0xFF) as usize]
-            ^ self.t[2][((index >> 16) & 0xFF) as usize]
-            ^ self.t[3][(index >> 24) as usize];
+        let x_rev = byte_product(&self.t, index);
         self.owen.scramble_reversed(x_rev, self.key).reverse_bits()
     }
 
@@ -450,7 +451,8 @@ impl Sampler for Sobol {
     }
 
     /// Sequential fast path, row by row (the buffer is written once, in order), dimensions
-    /// in blocks of up to [`FILL_BLOCK`]; see [`Sobol::fill_block`].
+    /// in blocks of up to 32 whose running values are updated by one element-wise XOR of a
+    /// transposed row of direction numbers per point.
     fn fill(&self, start: u32, out: &mut [u32]) -> Result<()> {
         let rows = self.check_fill(start, out.len())?;
         if rows == 0 || self.dims == 0 {
