@@ -129,51 +129,42 @@ pub(crate) const fn check(index: u32, len: u64, dim: usize, dims: usize) -> Resu
     Ok(())
 }
 
-/// A reference to a sampler is a sampler (so wrappers can borrow, and `&dyn Sampler` works).
-impl<S: Sampler + ?Sized> Sampler for &S {
-    fn dims(&self) -> usize {
-        (**self).dims()
-    }
+/// Forwards every [`Sampler`] method through a pointer type.
+macro_rules! forward_sampler {
+    ($(#[$attr:meta])* $ptr:ty) => {
+        $(#[$attr])*
+        impl<S: Sampler + ?Sized> Sampler for $ptr {
+            fn dims(&self) -> usize {
+                (**self).dims()
+            }
 
-    fn len(&self) -> u64 {
-        (**self).len()
-    }
+            fn len(&self) -> u64 {
+                (**self).len()
+            }
 
-    #[inline]
-    fn sample(&self, index: u32, dim: usize) -> Result<u32> {
-        (**self).sample(index, dim)
-    }
+            #[inline]
+            fn sample(&self, index: u32, dim: usize) -> Result<u32> {
+                (**self).sample(index, dim)
+            }
 
-    fn point(&self, index: u32, out: &mut [u32]) -> Result<()> {
-        (**self).point(index, out)
-    }
+            fn point(&self, index: u32, out: &mut [u32]) -> Result<()> {
+                (**self).point(index, out)
+            }
 
-    fn fill(&self, start: u32, out: &mut [u32]) -> Result<()> {
-        (**self).fill(start, out)
-    }
+            fn fill(&self, start: u32, out: &mut [u32]) -> Result<()> {
+                (**self).fill(start, out)
+            }
+        }
+    };
 }
 
-/// A boxed sampler is a sampler (for run-time choices, as in the command-line tool).
-#[cfg(feature = "std")]
-impl<S: Sampler + ?Sized> Sampler for Box<S> {
-    fn dims(&self) -> usize {
-        (**self).dims()
-    }
-
-    fn len(&self) -> u64 {
-        (**self).len()
-    }
-
-    #[inline]
-    fn sample(&self, index: u32, dim: usize) -> Result<u32> {
-        (**self).sample(index, dim)
-    }
-
-    fn point(&self, index: u32, out: &mut [u32]) -> Result<()> {
-        (**self).point(index, out)
-    }
-
-    fn fill(&self, start: u32, out: &mut [u32]) -> Result<()> {
-        (**self).fill(start, out)
-    }
-}
+forward_sampler!(
+    /// A reference to a sampler is a sampler (so wrappers can borrow, and `&dyn Sampler`
+    /// works).
+    &S
+);
+forward_sampler!(
+    /// A boxed sampler is a sampler (for run-time choices, as in the command-line tool).
+    #[cfg(feature = "std")]
+    Box<S>
+);
