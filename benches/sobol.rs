@@ -34,8 +34,9 @@ use criterion::{BatchSize, BenchmarkGroup, BenchmarkId, Criterion, Throughput};
 use criterion::{criterion_group, criterion_main, measurement::WallTime};
 use qmckit::Sampler;
 use qmckit::bits::{gray, reverse_bits, to_f32};
+use qmckit::owen_sobol::{OwenSobol4, OwenSobolTable};
 use qmckit::randomize::{FastOwen, Scrambled, dimension_seed, shuffle::shuffle, vegdahl};
-use qmckit::sobol::{Order, OwenSobolTable, Sobol, SobolDimension, SobolTable};
+use qmckit::sobol::{Order, Sobol, SobolDimension, SobolTable};
 
 /// Points (indices) per iteration.
 const N: usize = 4096;
@@ -426,7 +427,31 @@ fn sobol_owen_random_f32(c: &mut Criterion) {
         .enumerate()
         .map(|(d, dim)| OwenSobolTable::new(dim, d, owen))
         .collect();
+    let dims4: [SobolDimension; 4] = core::array::from_fn(|d| SobolDimension::new(d).expect("dim"));
+    let owen4 = OwenSobol4::new(dims4, [0, 1, 2, 3], owen);
+    let mut out4 = vec![[0f32; 4]; N];
     for (label, idx) in &index_sets() {
+        // Four interleaved dimensions, batch fill (run-time AVX2 dispatch on x86-64).
+        group.bench_with_input(
+            BenchmarkId::new("qmckit_owen_sobol4_fill", label),
+            idx,
+            |bch, idx| {
+                bch.iter(|| {
+                    black_box(&owen4).fill_f32(black_box(idx.as_slice()), &mut out4);
+                    black_box(&mut out4);
+                })
+            },
+        );
+        group.bench_with_input(
+            BenchmarkId::new("qmckit_owen_sobol4_portable", label),
+            idx,
+            |bch, idx| {
+                bch.iter(|| {
+                    black_box(&owen4).fill_f32_portable(black_box(idx.as_slice()), &mut out4);
+                    black_box(&mut out4);
+                })
+            },
+        );
         // The dedicated path: reversed byte tables, one reversal, the key inside.
         group.bench_with_input(
             BenchmarkId::new("qmckit_owen_sobol_table", label),

@@ -81,6 +81,24 @@ pub const fn to_f32(x: u32) -> f32 {
     kept as f32 * (INV_2_POW_32 as f32)
 }
 
+/// The same function as [`to_f32`] (bit for bit, checked for all 2^32 inputs), computed with
+/// `f64` arithmetic: `x / 2^32` is exact in `f64`; clearing the 29 low significand bits
+/// truncates it to `f32` precision, and the final conversion is then exact. No leading-zero
+/// count, so it vectorizes on hosts (SSE2/AVX2); on FPU-less microcontrollers prefer
+/// [`to_f32`].
+///
+/// ```
+/// use qmckit::bits::{to_f32, to_f32_via_f64};
+/// for x in [0, 1, 0x00FF_FFFF, 0x0100_0001, 0xFFFF_FFFF] {
+///     assert_eq!(to_f32_via_f64(x).to_bits(), to_f32(x).to_bits());
+/// }
+/// ```
+#[inline]
+pub const fn to_f32_via_f64(x: u32) -> f32 {
+    let d = x as f64 * INV_2_POW_32;
+    f64::from_bits(d.to_bits() & !((1u64 << 29) - 1)) as f32
+}
+
 /// `x / 2^32` as a `fixed` crate `U0F32` (same bits, no rounding).
 #[cfg(feature = "fixed")]
 #[inline]

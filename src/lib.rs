@@ -53,7 +53,7 @@
 //! | `libm` | reserved for the float warps (no effect yet) |
 //! | `defmt` | `defmt::Format` on the public types |
 #![cfg_attr(not(feature = "std"), no_std)]
-#![forbid(unsafe_code)]
+#![deny(unsafe_code)]
 #![warn(missing_docs)]
 
 pub mod bits;
@@ -66,6 +66,7 @@ pub mod hash;
 pub mod independent;
 pub mod larcher_pillichshammer;
 pub mod latin_hypercube;
+pub mod owen_sobol;
 pub mod radical_inverse;
 pub mod randomize;
 pub mod sampler;

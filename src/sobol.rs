@@ -135,7 +135,7 @@ impl SobolDimension {
 /// The four byte tables of the GF(2) product with columns `cols`: `T_b[v]` is the XOR of
 /// `cols[8b + k]` over the set bits `k` of `v`, built as `T[v] = T[v & (v - 1)] ^ col`
 /// (1024 XORs).
-const fn byte_tables(cols: &[u32; 32]) -> [[u32; 256]; 4] {
+pub(crate) const fn byte_tables(cols: &[u32; 32]) -> [[u32; 256]; 4] {
     let mut t = [[0u32; 256]; 4];
     let mut b = 0;
     while b < 4 {
@@ -152,7 +152,7 @@ const fn byte_tables(cols: &[u32; 32]) -> [[u32; 256]; 4] {
 
 /// Four byte-table reads XORed: the product [`byte_tables`] encodes, at `index`.
 #[inline]
-const fn byte_product(t: &[[u32; 256]; 4], index: u32) -> u32 {
+pub(crate) const fn byte_product(t: &[[u32; 256]; 4], index: u32) -> u32 {
     t[0][(index & 0xFF) as usize]
         ^ t[1][((index >> 8) & 0xFF) as usize]
         ^ t[2][((index >> 16) & 0xFF) as usize]
@@ -189,62 +189,6 @@ impl SobolTable {
     #[inline]
     pub const fn sample(&self, index: u32) -> u32 {
         byte_product(&self.t, index)
-    }
-}
-
-/// One Sobol' dimension with hash-based Owen scrambling, for random access in hot loops:
-/// byte tables of the *bit-reversed* direction numbers (`reverse` distributes over XOR), so
-/// a sample is four table reads, the Owen hash on the reversed value, and one reversal:
-/// `reverse(hash(T0[i0] ^ T1[i1] ^ T2[i2] ^ T3[i3], key))`. The same bits as
-/// `FastOwen::scramble(SobolDimension::sample(i), dim)`. 4 KiB.
-///
-/// ```
-/// use qmckit::randomize::FastOwen;
-/// use qmckit::sobol::{OwenSobolTable, SobolDimension};
-/// let (d, owen) = (SobolDimension::new(2)?, FastOwen::new(99));
-/// let t = OwenSobolTable::new(d, 2, owen);
-/// assert_eq!(t.sample(123_456), owen.scramble(d.sample(123_456), 2));
-/// # Ok::<(), qmckit::Error>(())
-/// ```
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct OwenSobolTable {
-    t: [[u32; 256]; 4],
-    owen: crate::randomize::FastOwen,
-    key: u32,
-}
-
-impl OwenSobolTable {
-    /// Dimension `dim` (whose position `dim_index` keys the scramble) with `owen`. `const`.
-    pub const fn new(
-        dim: SobolDimension,
-        dim_index: usize,
-        owen: crate::randomize::FastOwen,
-    ) -> Self {
-        let mut rev = [0u32; 32];
-        let mut k = 0;
-        while k < 32 {
-            rev[k] = dim.v[k].reverse_bits();
-            k += 1;
-        }
-        let t = byte_tables(&rev);
-        OwenSobolTable {
-            t,
-            owen,
-            key: owen.dimension_key(dim_index),
-        }
-    }
-
-    /// The scrambled point `index` as a 0.32 fraction.
-    #[inline]
-    pub const fn sample(&self, index: u32) -> u32 {
-        let x_rev = byte_product(&self.t, index);
-        self.owen.scramble_reversed(x_rev, self.key).reverse_bits()
-    }
-
-    /// The scrambled point `index` as an `f32` in `[0, 1)` ([`crate::bits::to_f32`]).
-    #[inline]
-    pub const fn sample_f32(&self, index: u32) -> f32 {
-        crate::bits::to_f32(self.sample(index))
     }
 }
 

@@ -191,8 +191,8 @@ fn byte_tables_match_the_matrix_product() {
 
 #[test]
 fn owen_tables_match_the_generic_scramble() {
+    use qmckit::owen_sobol::OwenSobolTable;
     use qmckit::randomize::{FastOwen, OwenHash};
-    use qmckit::sobol::OwenSobolTable;
     for (dim, hash) in [
         (0, OwenHash::Vegdahl),
         (3, OwenHash::LaineKarras),
@@ -211,6 +211,34 @@ fn owen_tables_match_the_generic_scramble() {
             );
             assert_eq!(t.sample_f32(i), qmckit::bits::to_f32(t.sample(i)));
         }
+    }
+}
+
+#[test]
+fn owen_sobol4_matches_the_scalar_paths_on_every_code_path() {
+    use qmckit::owen_sobol::{OwenSobol4, OwenSobolTable};
+    use qmckit::randomize::FastOwen;
+    let owen = FastOwen::new(31);
+    let picks = [0usize, 1, 7, SOBOL_MAX_DIMS - 1];
+    let dims = picks.map(|d| SobolDimension::new(d).unwrap());
+    let four = OwenSobol4::new(dims, picks, owen);
+    let ones = picks.map(|d| OwenSobolTable::new(SobolDimension::new(d).unwrap(), d, owen));
+    let indices: Vec<u32> = (0..20_000u32)
+        .map(|k| k.wrapping_mul(2_654_435_761))
+        .chain([0, 1, u32::MAX])
+        .collect();
+    // fill_f32 takes the AVX2 build where the CPU has it; the portable build always runs.
+    let (mut a, mut b) = (
+        vec![[0f32; 4]; indices.len()],
+        vec![[0f32; 4]; indices.len()],
+    );
+    four.fill_f32(&indices, &mut a);
+    four.fill_f32_portable(&indices, &mut b);
+    for (k, &i) in indices.iter().enumerate() {
+        let want = ones.each_ref().map(|t| t.sample_f32(i).to_bits());
+        assert_eq!(a[k].map(f32::to_bits), want, "dispatching fill at {i}");
+        assert_eq!(b[k].map(f32::to_bits), want, "portable fill at {i}");
+        assert_eq!(four.sample(i), ones.each_ref().map(|t| t.sample(i)));
     }
 }
 

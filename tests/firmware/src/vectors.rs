@@ -15,6 +15,7 @@ use core::hint::black_box;
 
 use qmckit::bits;
 use qmckit::hash;
+use qmckit::owen_sobol::OwenSobol4;
 use qmckit::randomize::digits::DigitScramble;
 use qmckit::randomize::shuffle::Shuffled;
 use qmckit::randomize::{
@@ -578,7 +579,37 @@ static SOBOL_TABLE_1: SobolTable = SobolTable::new(match SobolDimension::new(1) 
     Err(_) => panic!(),
 });
 
+/// Four Owen-scrambled Sobol' dimensions with interleaved byte tables, baked into flash.
+static OWEN_SOBOL4: OwenSobol4 = OwenSobol4::new(
+    match (
+        SobolDimension::new(0),
+        SobolDimension::new(1),
+        SobolDimension::new(2),
+        SobolDimension::new(3),
+    ) {
+        (Ok(a), Ok(b), Ok(c), Ok(d)) => [a, b, c, d],
+        _ => panic!(),
+    },
+    [0, 1, 2, 3],
+    FastOwen::new(0x5EED),
+);
+
 fn sobol<W: Write>(out: &mut W) -> fmt::Result {
+    let mut d4 = Digest::new();
+    let mut df = Digest::new();
+    for k in 0..512u32 {
+        let i = black_box(k.wrapping_mul(2_654_435_761));
+        for x in OWEN_SOBOL4.sample(i) {
+            d4.push(x);
+        }
+        let mut f = [[0f32; 4]; 1];
+        OWEN_SOBOL4.fill_f32(&[i], &mut f);
+        for x in f[0] {
+            df.push(x.to_bits());
+        }
+    }
+    writeln!(out, "owen_sobol4 512 {d4}")?;
+    writeln!(out, "owen_sobol4_f32 512 {df}")?;
     for dim in 0..8usize {
         let Ok(d) = SobolDimension::new(black_box(dim)) else {
             return writeln!(out, "sobol dim {dim} missing");
