@@ -357,3 +357,35 @@ fn scrambled_samplers_fill_like_they_sample() {
     }
     assert!(Shuffled::new(Hammersley::new(10, 2).unwrap(), 1, 0).is_err());
 }
+
+#[test]
+fn cached_lms_is_the_same_scramble() {
+    let lms = Lms::new(42);
+    let cache = lms.cached(3);
+    for dim in 0..5 {
+        for x in [0u32, 1, 0x8000_0000, 0xDEAD_BEEF, u32::MAX] {
+            assert_eq!(cache.apply(x, dim), lms.apply(x, dim));
+        }
+    }
+}
+
+#[cfg(feature = "rand_core")]
+#[test]
+fn randomizers_draw_their_seeds_from_any_rng() {
+    use rand_pcg::Pcg32;
+    let (mut a, mut b) = (Pcg32::new(1, 2), Pcg32::new(1, 2));
+    assert_eq!(Owen::from_rng(&mut a), Owen::from_rng(&mut b));
+    assert_eq!(FastOwen::from_rng(&mut a), FastOwen::from_rng(&mut b));
+    assert_eq!(
+        DigitalShift::from_rng(&mut a),
+        DigitalShift::from_rng(&mut b)
+    );
+    assert_eq!(
+        CranleyPatterson::from_rng(&mut a),
+        CranleyPatterson::from_rng(&mut b)
+    );
+    assert_eq!(Lms::from_rng(&mut a), Lms::from_rng(&mut b));
+    // Consecutive draws give different scrambles.
+    let (o1, o2) = (FastOwen::from_rng(&mut a), FastOwen::from_rng(&mut a));
+    assert_ne!(o1.apply(0x4000_0000, 0), o2.apply(0x4000_0000, 0));
+}

@@ -13,7 +13,8 @@ use crate::hash::hash3;
 /// A random linear scramble for every dimension, keyed by `seed`.
 ///
 /// [`Randomizer::apply`] rebuilds the dimension's matrix on each call (32 hashes); for
-/// speed build it once with [`Lms::dimension`].
+/// speed build the matrices once: [`Lms::dimension`] for one, [`Lms::cached`] (with `std`)
+/// for many.
 ///
 /// ```
 /// use qmckit::randomize::{DigitalShift, Lms, Randomizer};
@@ -52,6 +53,38 @@ impl Lms {
             p += 1;
         }
         LmsDimension { cols }
+    }
+}
+
+impl Lms {
+    /// The matrices of dimensions `0..dims`, built once (128 bytes each): the same scramble
+    /// as `self`, at 32 AND/XOR steps a coordinate.
+    #[cfg(feature = "std")]
+    pub fn cached(&self, dims: usize) -> LmsCache {
+        LmsCache {
+            lms: *self,
+            dims: (0..dims).map(|d| self.dimension(d)).collect(),
+        }
+    }
+}
+
+/// Prebuilt [`Lms`] matrices for the first dimensions (from [`Lms::cached`]); dimensions past
+/// them fall back to building the matrix on the spot.
+#[cfg(feature = "std")]
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct LmsCache {
+    lms: Lms,
+    dims: Vec<LmsDimension>,
+}
+
+#[cfg(feature = "std")]
+impl Randomizer for LmsCache {
+    #[inline]
+    fn apply(&self, x: u32, dim: usize) -> u32 {
+        match self.dims.get(dim) {
+            Some(m) => m.apply(x),
+            None => self.lms.apply(x, dim),
+        }
     }
 }
 

@@ -27,6 +27,8 @@ mod shift;
 pub mod digits;
 pub mod shuffle;
 
+#[cfg(feature = "std")]
+pub use lms::LmsCache;
 pub use lms::{Lms, LmsDimension};
 pub use owen::{FastOwen, Owen, OwenHash, laine_karras, vegdahl};
 pub use shift::{CranleyPatterson, DigitalShift};

@@ -168,10 +168,10 @@ fn build(args: &PointsArgs) -> Result<Box<dyn Sampler>, Failure> {
             sampler,
             FastOwen::with_hash(seed, OwenHash::LaineKarras),
         )),
-        K::Lms => Box::new(Scrambled::new(
-            sampler,
-            (Lms::new(seed), DigitalShift::new(seed)),
-        )),
+        K::Lms => {
+            let lms = Lms::new(seed).cached(sampler.dims());
+            Box::new(Scrambled::new(sampler, (lms, DigitalShift::new(seed))))
+        }
         K::ShuffleOwen => Box::new(Shuffled::new(
             Scrambled::new(sampler, FastOwen::new(seed)),
             seed,
