@@ -389,3 +389,84 @@ fn randomizers_draw_their_seeds_from_any_rng() {
     let (o1, o2) = (FastOwen::from_rng(&mut a), FastOwen::from_rng(&mut a));
     assert_ne!(o1.apply(0x4000_0000, 0), o2.apply(0x4000_0000, 0));
 }
+
+/// Is the 2^m-point prefix of `pts` a (0, m, 2)-net? `count` is scratch space of 2^m.
+fn prefix_is_net(pts: &[[u32; 2]], m: u32, count: &mut [u32]) -> bool {
+    let n = 1usize << m;
+    for k in 0..=m {
+        count[..n].fill(0);
+        for p in &pts[..n] {
+            let a = if k == 0 {
+                0
+            } else {
+                (p[0] >> (32 - k)) as usize
+            };
+            let b = if k == m {
+                0
+            } else {
+                (p[1] >> (32 - (m - k))) as usize
+            };
+            let cell = (a << (m - k)) | b;
+            count[cell] += 1;
+            if count[cell] > 1 {
+                return false;
+            }
+        }
+    }
+    true
+}
+
+/// The bar in full: for 1000 seeds, every base-2 randomizer keeps the first 2^m
+/// points of 2D Sobol' a (0, m, 2)-net for every m = 1..16. About a minute of CPU, spread
+/// over the cores; CI runs it with `--ignored`.
+#[test]
+#[ignore = "long: 1000 seeds x 7 randomizers x 2^16 points; run with --release -- --ignored"]
+fn base2_randomizers_keep_nets_up_to_m16_for_1000_seeds() {
+    let threads = std::thread::available_parallelism().map_or(2, |n| n.get());
+    std::thread::scope(|scope| {
+        for t in 0..threads {
+            scope.spawn(move || {
+                let mut pts = vec![[0u32; 2]; 1 << 16];
+                let mut buf = vec![0u32; 2 << 16];
+                let mut count = vec![0u32; 1 << 16];
+                for seed in (t as u64..1000).step_by(threads) {
+                    let lms = (Lms::new(seed).cached(2), DigitalShift::new(seed));
+                    let mut rs = randomizers(seed);
+                    rs.retain(|(name, _)| !name.starts_with("lms"));
+                    rs.push(("lms+xor (cached)", Box::new(lms)));
+                    rs.push(("lms (cached)", Box::new(Lms::new(seed).cached(2))));
+                    for (name, r) in &rs {
+                        Scrambled::new(Sobol::new(2).unwrap(), &**r)
+                            .fill(0, &mut buf)
+                            .unwrap();
+                        for (p, q) in pts.iter_mut().zip(buf.chunks_exact(2)) {
+                            *p = [q[0], q[1]];
+                        }
+                        for m in 1..=16 {
+                            assert!(
+                                prefix_is_net(&pts, m, &mut count),
+                                "{name} seed {seed} m {m}"
+                            );
+                        }
+                    }
+                    let sh = Shuffled::new(
+                        Scrambled::new(Sobol::new(2).unwrap(), FastOwen::new(seed)),
+                        seed,
+                        0,
+                    )
+                    .unwrap();
+                    sh.fill(0, &mut buf).unwrap();
+                    for (p, q) in pts.iter_mut().zip(buf.chunks_exact(2)) {
+                        *p = [q[0], q[1]];
+                    }
+                    for m in 1..=16 {
+                        assert!(
+                            prefix_is_net(&pts, m, &mut count),
+                            "shuffle seed {seed} m {m}"
+                        );
+                    }
+                }
+            });
+        }
+    });
+}
