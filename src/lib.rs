@@ -73,6 +73,8 @@ pub mod sampler;
 pub mod sobol;
 pub mod stratified;
 pub mod van_der_corput;
+#[cfg(feature = "libm")]
+pub mod warp;
 
 pub use error::{Error, Result};
 pub use halton::{HALTON_MAX_DIMS, Halton};

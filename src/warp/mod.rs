@@ -1,0 +1,36 @@
+//! Warps: maps from the unit square to the domains renderers and simulations integrate over,
+//! each with its density and its inverse, so that stratified and low-discrepancy samples
+//! keep their structure on the target domain.
+//!
+//! Every warp comes as a triple, in pbrt-v4's style: `sample_*(u)` maps `u` in `[0, 1)^2` to
+//! the domain, `*_pdf` is the density of the result (per unit area or solid angle), and
+//! `invert_*` maps a point of the domain back to `u`. Inputs are `f32` fractions (convert
+//! samples with [`crate::bits::to_f32`]); math goes through the `libm` crate, so the results
+//! are the same bits on every platform, with or without an FPU.
+//!
+//! * [`disk`]: uniform disk by the polar map (the lecture's `theta = 2 pi u0`, `r = sqrt(u1)`)
+//!   and by Shirley & Chiu's concentric map (1997), which keeps strata compact.
+//! * [`sphere`]: uniform sphere, uniform and cosine-weighted hemisphere (Malley's method on
+//!   the concentric disk), and uniform cone.
+//! * [`triangle`]: uniform triangle by Heitz's low-distortion map (2019).
+//! * [`gaussian`]: standard normal by Box–Muller and by the inverse CDF.
+
+pub mod disk;
+pub mod gaussian;
+pub mod sphere;
+pub mod triangle;
+
+/// pi as `f32`.
+pub(crate) const PI: f32 = core::f32::consts::PI;
+
+/// The largest `f32` below 1: `1 - 2^-24`.
+pub const ONE_MINUS_EPSILON: f32 = 1.0 - f32::EPSILON / 2.0;
+
+/// `atan2(y, x) / (2 pi)` wrapped into `[0, 1)`: the fraction of a turn of the direction
+/// `(x, y)` (0 for the origin).
+#[inline]
+pub(crate) fn turn_fraction(y: f32, x: f32) -> f32 {
+    let t = libm::atan2f(y, x) / (2.0 * PI);
+    let t = if t < 0.0 { t + 1.0 } else { t };
+    if t >= 1.0 { 0.0 } else { t }
+}

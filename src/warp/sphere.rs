@@ -1,0 +1,109 @@
+//! Directions: uniform sphere, uniform and cosine-weighted hemisphere (around +z), and the
+//! uniform cone around +z. Densities are per unit solid angle.
+
+use super::disk::{invert_uniform_disk_concentric, sample_uniform_disk_concentric};
+use super::{PI, turn_fraction};
+
+/// Density of a uniform direction on the sphere: `1 / 4 pi`.
+pub const UNIFORM_SPHERE_PDF: f32 = 1.0 / (4.0 * PI);
+
+/// Density of a uniform direction on the hemisphere: `1 / 2 pi`.
+pub const UNIFORM_HEMISPHERE_PDF: f32 = 1.0 / (2.0 * PI);
+
+/// A point `(r cos phi, r sin phi, z)` with `r = sqrt(1 - z^2)`, `phi = 2 pi u1`.
+#[inline]
+fn around_z(z: f32, u1: f32) -> [f32; 3] {
+    let r = libm::sqrtf((1.0 - z * z).max(0.0));
+    let (s, c) = libm::sincosf(2.0 * PI * u1);
+    [r * c, r * s, z]
+}
+
+/// Uniform direction: `z = 1 - 2 u0`, `phi = 2 pi u1` (Archimedes: `z` is uniform).
+///
+/// ```
+/// use qmckit::warp::sphere::sample_uniform_sphere;
+/// let w = sample_uniform_sphere([0.5, 0.0]);
+/// assert!((w[0] - 1.0).abs() < 1e-6 && w[2].abs() < 1e-6);
+/// ```
+#[inline]
+pub fn sample_uniform_sphere(u: [f32; 2]) -> [f32; 3] {
+    around_z(1.0 - 2.0 * u[0], u[1])
+}
+
+/// Inverse of [`sample_uniform_sphere`].
+#[inline]
+pub fn invert_uniform_sphere(w: [f32; 3]) -> [f32; 2] {
+    [(1.0 - w[2]) / 2.0, turn_fraction(w[1], w[0])]
+}
+
+/// Uniform direction on the hemisphere `z >= 0`: `z = u0`, `phi = 2 pi u1`.
+#[inline]
+pub fn sample_uniform_hemisphere(u: [f32; 2]) -> [f32; 3] {
+    around_z(u[0], u[1])
+}
+
+/// Inverse of [`sample_uniform_hemisphere`].
+#[inline]
+pub fn invert_uniform_hemisphere(w: [f32; 3]) -> [f32; 2] {
+    [w[2], turn_fraction(w[1], w[0])]
+}
+
+/// Cosine-weighted direction on the hemisphere `z >= 0` (density `cos theta / pi`): a
+/// concentric-disk point lifted to the hemisphere (Malley's method), which keeps the disk
+/// map's low distortion.
+///
+/// ```
+/// use qmckit::warp::sphere::{cosine_hemisphere_pdf, sample_cosine_hemisphere};
+/// let w = sample_cosine_hemisphere([0.5, 0.5]);
+/// assert_eq!(w, [0.0, 0.0, 1.0]);
+/// assert!((cosine_hemisphere_pdf(w[2]) - 1.0 / std::f32::consts::PI).abs() < 1e-7);
+/// ```
+#[inline]
+pub fn sample_cosine_hemisphere(u: [f32; 2]) -> [f32; 3] {
+    let d = sample_uniform_disk_concentric(u);
+    let z = libm::sqrtf((1.0 - d[0] * d[0] - d[1] * d[1]).max(0.0));
+    [d[0], d[1], z]
+}
+
+/// Density of [`sample_cosine_hemisphere`] at a direction with `cos theta = z`: `z / pi`.
+#[inline]
+pub fn cosine_hemisphere_pdf(cos_theta: f32) -> f32 {
+    cos_theta.max(0.0) / PI
+}
+
+/// Inverse of [`sample_cosine_hemisphere`]: the concentric inverse of the direction's
+/// projection onto the disk.
+#[inline]
+pub fn invert_cosine_hemisphere(w: [f32; 3]) -> [f32; 2] {
+    invert_uniform_disk_concentric([w[0], w[1]])
+}
+
+/// Uniform direction in the cone of half-angle `theta_max` around +z (given as
+/// `cos theta_max` in `[-1, 1]`): `cos theta = 1 - u0 (1 - cos theta_max)`.
+///
+/// ```
+/// use qmckit::warp::sphere::{sample_uniform_cone, uniform_cone_pdf};
+/// let w = sample_uniform_cone([0.999, 0.25], 0.5);
+/// assert!(w[2] >= 0.5 && w[2] <= 1.0);
+/// assert!((uniform_cone_pdf(0.5) - 1.0 / std::f32::consts::PI).abs() < 1e-6); // 1/(2 pi 0.5)
+/// ```
+#[inline]
+pub fn sample_uniform_cone(u: [f32; 2], cos_theta_max: f32) -> [f32; 3] {
+    let z = 1.0 - u[0] * (1.0 - cos_theta_max);
+    around_z(z, u[1])
+}
+
+/// Density of [`sample_uniform_cone`]: `1 / (2 pi (1 - cos theta_max))` (the cone's solid
+/// angle inverted; infinite for a degenerate cone, `cos theta_max = 1`).
+#[inline]
+pub fn uniform_cone_pdf(cos_theta_max: f32) -> f32 {
+    1.0 / (2.0 * PI * (1.0 - cos_theta_max))
+}
+
+/// Inverse of [`sample_uniform_cone`]; `u0 = 0` for a degenerate cone.
+#[inline]
+pub fn invert_uniform_cone(w: [f32; 3], cos_theta_max: f32) -> [f32; 2] {
+    let span = 1.0 - cos_theta_max;
+    let u0 = if span > 0.0 { (1.0 - w[2]) / span } else { 0.0 };
+    [u0, turn_fraction(w[1], w[0])]
+}
