@@ -13,11 +13,14 @@
 //! * [`sphere`]: uniform sphere, uniform and cosine-weighted hemisphere (Malley's method on
 //!   the concentric disk), and uniform cone.
 //! * [`triangle`]: uniform triangle by Heitz's low-distortion map (2019).
+//! * [`spherical`]: uniform directions toward a rectangle (Ureña et al. 2013, for quad
+//!   lights) or a triangle (Arvo 1995), by solid angle.
 //! * [`gaussian`]: standard normal by Box–Muller and by the inverse CDF.
 
 pub mod disk;
 pub mod gaussian;
 pub mod sphere;
+pub mod spherical;
 pub mod triangle;
 
 /// pi as `f32`.
