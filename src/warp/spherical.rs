@@ -236,7 +236,7 @@ pub fn sample_spherical_triangle(
     let o64 = v64(o);
     let [a, b, c] = v.map(|p| normalize(sub(v64(p), o64)));
     let area = triangle_solid_angle(a, b, c);
-    if !(area > 1e-12) {
+    if area.is_nan() || area <= 1e-12 {
         return None;
     }
     // Internal angle at A, between the planes (A, B) and (A, C).
@@ -269,7 +269,7 @@ pub fn invert_spherical_triangle(v: [[f32; 3]; 3], o: [f32; 3], w: [f32; 3]) -> 
     let [a, b, c] = v.map(|p| normalize(sub(v64(p), o64)));
     let w = normalize(v64(w));
     let area = triangle_solid_angle(a, b, c);
-    if !(area > 1e-12) {
+    if area.is_nan() || area <= 1e-12 {
         return None;
     }
     let mut c1 = normalize(cross(cross(b, w), cross(c, a)));
