@@ -224,6 +224,134 @@ fn every_scramble_runs_and_base2_kinds_keep_the_net() {
 }
 
 #[test]
+fn warps_write_real_coordinates_in_their_domains() {
+    let rows = |args: &[&str]| -> Vec<Vec<f64>> {
+        stdout(args)
+            .lines()
+            .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+            .collect()
+    };
+    for p in rows(&[
+        "points", "sobol", "-n", "64", "--warp", "disk", "--format", "csv",
+    ]) {
+        assert_eq!(p.len(), 2);
+        assert!(p[0] * p[0] + p[1] * p[1] <= 1.0 + 1e-6);
+    }
+    for warp in ["hemisphere", "cosine-hemisphere", "sphere", "cone"] {
+        for p in rows(&[
+            "points", "halton", "-n", "64", "--warp", warp, "--format", "csv",
+        ]) {
+            let n = p[0] * p[0] + p[1] * p[1] + p[2] * p[2];
+            assert!((n - 1.0).abs() < 1e-5, "{warp}: {p:?}");
+            if warp != "sphere" {
+                assert!(p[2] >= 0.0);
+            }
+        }
+    }
+    let tri = rows(&[
+        "points",
+        "sobol",
+        "-n",
+        "3",
+        "--warp",
+        "triangle",
+        "--vertices",
+        "0,0;4,0;0,2",
+        "--format",
+        "csv",
+    ]);
+    assert_eq!(tri, [vec![0.0, 2.0], vec![1.0, 1.0], vec![2.5, 0.5]]);
+    let rect = rows(&[
+        "points",
+        "sobol",
+        "-n",
+        "32",
+        "--warp",
+        "spherical-rectangle",
+        "--rect",
+        "-0.5,-0.5,1;1,0,0;0,1,0",
+        "--format",
+        "csv",
+    ]);
+    assert!(
+        rect.iter()
+            .all(|p| (p[2] - 1.0).abs() < 1e-6 && p[0].abs() <= 0.5 + 1e-6)
+    );
+    let normal = rows(&[
+        "points", "sobol", "-n", "8", "-d", "3", "--warp", "normal", "--format", "csv",
+    ]);
+    assert_eq!(normal[1], vec![0.0, 0.0, 0.0]); // point 1 is (1/2, 1/2, 1/2)
+    assert_usage_error(
+        &["points", "sobol", "-n", "2", "--warp", "disk"],
+        "csv or npy",
+    );
+    assert_usage_error(
+        &[
+            "points", "sobol", "-n", "2", "-d", "3", "--warp", "disk", "--format", "csv",
+        ],
+        "-d must be 2",
+    );
+    assert_usage_error(
+        &[
+            "points",
+            "sobol",
+            "-n",
+            "2",
+            "--warp",
+            "cone",
+            "--cone-angle",
+            "200",
+            "--format",
+            "csv",
+        ],
+        "cone-angle",
+    );
+    assert_usage_error(
+        &[
+            "points",
+            "sobol",
+            "-n",
+            "2",
+            "--warp",
+            "spherical-triangle",
+            "--format",
+            "csv",
+        ],
+        "--vertices",
+    );
+    assert_usage_error(
+        &[
+            "points",
+            "sobol",
+            "-n",
+            "2",
+            "--warp",
+            "spherical-rectangle",
+            "--rect",
+            "0,0,0;1,0,0;0,1,0",
+            "--format",
+            "csv",
+        ],
+        "degenerate",
+    );
+    assert_usage_error(
+        &[
+            "points",
+            "sobol",
+            "-n",
+            "2",
+            "--warp",
+            "triangle",
+            "--vertices",
+            "0,0;4,x;0,2",
+            "--format",
+            "csv",
+        ],
+        "not a number",
+    );
+}
+
+#[test]
 fn bad_input_is_one_line_and_exit_2() {
     assert_usage_error(
         &["points", "halton", "-n", "4", "--scramble", "xor"],

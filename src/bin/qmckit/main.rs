@@ -5,6 +5,7 @@
 
 mod output;
 mod points;
+mod warp;
 
 use std::io::Write;
 use std::process::ExitCode;

@@ -51,22 +51,54 @@ impl<W: Write> PointWriter<W> {
         })
     }
 
-    /// Writes the points in `coords` (row-major, `dims` a point).
+    /// Writes the points in `coords` (row-major, `dims` a point): 0.32 fractions.
     pub fn write(&mut self, coords: &[u32], dims: usize) -> Result<(), Failure> {
-        use std::fmt::Write as _;
+        self.write_rows(
+            coords,
+            dims,
+            |line, format, x| {
+                use std::fmt::Write as _;
+                match format {
+                    Format::Csv => write!(line, "{}", qmckit::bits::to_f64(x)),
+                    _ => write!(line, "{x}"),
+                }
+                .expect("writing to a String cannot fail")
+            },
+            qmckit::bits::to_f64,
+        )
+    }
+
+    /// Writes real-valued points (warped samples): shortest decimals that parse back to the
+    /// same `f32`, or float64 in npy.
+    pub fn write_f32(&mut self, coords: &[f32], dims: usize) -> Result<(), Failure> {
+        self.write_rows(
+            coords,
+            dims,
+            |line, _, x| {
+                use std::fmt::Write as _;
+                write!(line, "{x}").expect("writing to a String cannot fail")
+            },
+            f64::from,
+        )
+    }
+
+    /// The shared row writer: `text` formats one value, `number` gives the npy value.
+    fn write_rows<T: Copy>(
+        &mut self,
+        coords: &[T],
+        dims: usize,
+        text: impl Fn(&mut String, Format, T),
+        number: impl Fn(T) -> f64,
+    ) -> Result<(), Failure> {
         match self {
             PointWriter::Text { out, format, line } => {
-                for row in coords.chunks_exact(dims) {
+                for row in coords.chunks_exact(dims.max(1)) {
                     line.clear();
                     for (k, &x) in row.iter().enumerate() {
                         if k > 0 {
                             line.push(if *format == Format::Csv { ',' } else { ' ' });
                         }
-                        match format {
-                            Format::Csv => write!(line, "{}", qmckit::bits::to_f64(x)),
-                            _ => write!(line, "{x}"),
-                        }
-                        .expect("writing to a String cannot fail");
+                        text(line, *format, x);
                     }
                     line.push('\n');
                     out.write_all(line.as_bytes())?;
@@ -74,7 +106,7 @@ impl<W: Write> PointWriter<W> {
             }
             PointWriter::Npy(w) => {
                 for &x in coords {
-                    w.push(&qmckit::bits::to_f64(x))?;
+                    w.push(&number(x))?;
                 }
             }
         }

@@ -14,6 +14,7 @@ use qmckit::{
 
 use crate::Failure;
 use crate::output::{Format, PointWriter};
+use crate::warp::{Warp, WarpArgs};
 
 /// The constructions `points` knows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -109,6 +110,8 @@ pub struct PointsArgs {
     /// Stratified: put each point at its cell's center instead of jittering it.
     #[arg(long)]
     centered: bool,
+    #[command(flatten)]
+    warp: WarpArgs,
 }
 
 /// Points written per batch (bounded memory for any n).
@@ -292,15 +295,41 @@ pub fn run(args: &PointsArgs) -> Result<(), Failure> {
             sampler.len()
         )));
     }
+    let warp = match args.warp.warp {
+        Some(name) => {
+            if args.format == Format::U32 {
+                return Err(Failure::usage(
+                    "warped points are real numbers: use --format csv or npy",
+                ));
+            }
+            Some(Warp::new(&args.warp, name, dims)?)
+        }
+        None => None,
+    };
+    let width = warp.as_ref().map_or(dims, |w| w.width(dims));
     let stdout = std::io::stdout().lock();
-    let mut writer = PointWriter::new(BufWriter::new(stdout), args.format, args.n, dims)?;
+    let mut writer = PointWriter::new(BufWriter::new(stdout), args.format, args.n, width)?;
     let mut buf = vec![0u32; BATCH.min(args.n as usize) * dims];
+    let mut warped = Vec::new();
     let mut index = args.start as u64;
     while index < end {
         let rows = ((end - index) as usize).min(BATCH);
         let chunk = &mut buf[..rows * dims];
         sampler.fill(index as u32, chunk)?;
-        writer.write(chunk, dims)?;
+        match &warp {
+            None => writer.write(chunk, dims)?,
+            Some(w) => {
+                warped.clear();
+                let mut u = vec![0f32; dims];
+                for row in chunk.chunks_exact(dims) {
+                    for (uk, &x) in u.iter_mut().zip(row) {
+                        *uk = qmckit::bits::to_f32(x);
+                    }
+                    warped.extend(w.map(&u)?);
+                }
+                writer.write_f32(&warped, width)?;
+            }
+        }
         index += rows as u64;
     }
     writer.finish()
