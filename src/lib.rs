@@ -60,6 +60,8 @@ pub mod bits;
 #[cfg(feature = "heapless")]
 pub mod buffer;
 pub mod error;
+#[cfg(feature = "fixed")]
+pub mod fixed_warp;
 pub mod halton;
 pub mod hammersley;
 pub mod hash;

@@ -13,7 +13,8 @@ pub const UNIFORM_HEMISPHERE_PDF: f32 = 1.0 / (2.0 * PI);
 /// A point `(r cos phi, r sin phi, z)` with `r = sqrt(1 - z^2)`, `phi = 2 pi u1`.
 #[inline]
 fn around_z(z: f32, u1: f32) -> [f32; 3] {
-    let r = libm::sqrtf((1.0 - z * z).max(0.0));
+    // (1 - z)(1 + z) rather than 1 - z^2: no cancellation near the poles.
+    let r = libm::sqrtf(((1.0 - z) * (1.0 + z)).max(0.0));
     let (s, c) = libm::sincosf(2.0 * PI * u1);
     [r * c, r * s, z]
 }
@@ -61,7 +62,10 @@ pub fn invert_uniform_hemisphere(w: [f32; 3]) -> [f32; 2] {
 #[inline]
 pub fn sample_cosine_hemisphere(u: [f32; 2]) -> [f32; 3] {
     let d = sample_uniform_disk_concentric(u);
-    let z = libm::sqrtf((1.0 - d[0] * d[0] - d[1] * d[1]).max(0.0));
+    // The disk point's radius is max(|2 u0 - 1|, |2 u1 - 1|), exact in f32: z from it keeps
+    // full precision at the rim, where 1 - x^2 - y^2 would cancel.
+    let r = (2.0 * u[0] - 1.0).abs().max((2.0 * u[1] - 1.0).abs());
+    let z = libm::sqrtf(((1.0 - r) * (1.0 + r)).max(0.0));
     [d[0], d[1], z]
 }
 
