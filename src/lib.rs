@@ -47,10 +47,10 @@
 //! | `std` (default) | `std::error::Error` for [`Error`]; later the analysis side |
 //! | `cli` | the `qmckit` command (clap, npyz); implies `sobol-dims-21201` |
 //! | `sobol-dims-1024`, `sobol-dims-21201` | more Sobol' dimensions than the default 64 |
-//! | `fixed` | [`bits::to_fixed`] to `fixed::types::U0F32` |
+//! | `fixed` | [`bits::to_fixed`] to `fixed::types::U0F32`, fixed-point warps ([`fixed_warp`]) |
 //! | `rand_core` | seeding from any `rand_core::Rng`, [`independent::fill_from_rng`] |
 //! | `heapless` | [`buffer::points`]: fixed-capacity point buffers |
-//! | `libm` | reserved for the float warps (no effect yet) |
+//! | `libm` | the float warps ([`warp`]), also in `no_std`; implied by `std` |
 //! | `defmt` | `defmt::Format` on the public types |
 #![cfg_attr(not(feature = "std"), no_std)]
 #![deny(unsafe_code)]
