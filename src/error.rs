@@ -78,6 +78,20 @@ pub enum Error {
         /// Largest allowed for this base.
         max: u32,
     },
+    /// A point coordinate outside the closed unit interval `[0, 1]`, or not a number.
+    CoordinateOutOfRange {
+        /// Point (0-based).
+        point: usize,
+        /// Coordinate (0-based).
+        dim: usize,
+    },
+    /// A flat coordinate buffer whose length is not a multiple of the dimension.
+    RaggedPoints {
+        /// Number of coordinates given.
+        len: usize,
+        /// Dimension of a point.
+        dims: usize,
+    },
 }
 
 /// Shorthand for `core::result::Result<T, qmckit::Error>`.
@@ -117,6 +131,14 @@ impl fmt::Display for Error {
             Error::TooManyDigits { digits, max } => {
                 write!(f, "{digits} digits requested, at most {max} fit in 32 bits")
             }
+            Error::CoordinateOutOfRange { point, dim } => write!(
+                f,
+                "point {point}, coordinate {dim}: not a number in [0, 1] (0-based)"
+            ),
+            Error::RaggedPoints { len, dims } => write!(
+                f,
+                "{len} coordinates do not make whole points of {dims} dimension(s)"
+            ),
         }
     }
 }

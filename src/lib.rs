@@ -44,7 +44,7 @@
 //!
 //! | feature | brings |
 //! |---|---|
-//! | `std` (default) | `std::error::Error` for [`Error`]; later the analysis side |
+//! | `std` (default) | [`analysis`] (discrepancies, t-values, distances; rayon), `std::error::Error` for [`Error`] |
 //! | `cli` | the `qmckit` command (clap, npyz); implies `sobol-dims-21201` |
 //! | `sobol-dims-1024`, `sobol-dims-21201` | more Sobol' dimensions than the default 64 |
 //! | `fixed` | [`bits::to_fixed`] to `fixed::types::U0F32`, fixed-point warps ([`fixed_warp`]) |
@@ -56,6 +56,8 @@
 #![deny(unsafe_code)]
 #![warn(missing_docs)]
 
+#[cfg(feature = "std")]
+pub mod analysis;
 pub mod bits;
 #[cfg(feature = "heapless")]
 pub mod buffer;
