@@ -48,7 +48,7 @@ impl<'a> Points<'a> {
         if data.is_empty() {
             return Err(Error::ZeroPoints);
         }
-        if data.len() % dims != 0 {
+        if !data.len().is_multiple_of(dims) {
             return Err(Error::RaggedPoints {
                 len: data.len(),
                 dims,
