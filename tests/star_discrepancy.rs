@@ -4,7 +4,9 @@
 #![cfg(feature = "std")]
 
 use qmckit::analysis::Points;
-use qmckit::analysis::star::{star, star_1d, star_2d, star_exact};
+use qmckit::analysis::star::{
+    extreme_2d, star, star_1d, star_2d, star_exact, star_lower_bound, star_upper_bound,
+};
 use qmckit::{Hammersley, Independent, Jitter, LarcherPillichshammer, Sampler, Stratified};
 
 /// SplitMix64: a self-contained generator for the random test sets.
@@ -96,7 +98,6 @@ fn brute_star(data: &[f64], d: usize) -> f64 {
 /// `{0} ∪ {x_ik}` and upper `b_k` in `{x_ik} ∪ {1}`; the open box `(a, b)` (`vol - count/N`,
 /// the limit of `[a + ε, b)`) and the closed `[a, b]` (`count/N - vol`, the limit of
 /// `[a, b + ε)`); points with a coordinate 1 never counted.
-#[allow(dead_code)]
 fn brute_extreme_2d(data: &[f64]) -> f64 {
     let n = data.len() / 2;
     let pts: Vec<&[f64]> = data.chunks(2).collect();
@@ -304,4 +305,63 @@ fn refuses_infeasible_requests() {
     assert!(star_exact(p).is_err());
     assert!(star_1d(p).is_err());
     assert!(star_2d(p).is_err());
+}
+
+#[test]
+fn extreme_2d_matches_brute_force() {
+    let mut rng = Rng(6);
+    for trial in 0..200 {
+        let n = 1 + trial % 11;
+        let q = match trial % 3 {
+            0 => Some(4),
+            1 => Some(10),
+            _ => None,
+        };
+        let data = random_set(&mut rng, n, 2, q);
+        let p = Points::new(&data, 2).unwrap();
+        let (got, want) = (extreme_2d(p).unwrap(), brute_extreme_2d(&data));
+        assert!((got - want).abs() < 1e-14, "{data:?}: {got} vs {want}");
+        // D* <= D <= 4 D* in 2D, and D >= 1/N.
+        let s = star_2d(p).unwrap();
+        assert!(s <= got + 1e-15 && got <= 4.0 * s + 1e-15 && got >= 1.0 / n as f64);
+    }
+    let big = vec![0.5; 2 * 2001];
+    assert!(extreme_2d(Points::new(&big, 2).unwrap()).is_err());
+}
+
+#[test]
+fn bounds_bracket_the_exact_value() {
+    let mut rng = Rng(7);
+    for (d, n) in [(1, 20), (2, 30), (2, 64), (3, 25), (4, 12)] {
+        for trial in 0..6 {
+            let q = if trial % 2 == 0 { Some(8) } else { None };
+            let data = random_set(&mut rng, n, d, q);
+            let p = Points::new(&data, d).unwrap();
+            let exact = star(p).unwrap();
+            let lower = star_lower_bound(p, trial, 3000);
+            // Both are exact up to the rounding of the volumes (a few ulps).
+            assert!(
+                lower <= exact + 1e-14,
+                "d = {d}: lower {lower} > exact {exact}"
+            );
+            assert!(
+                lower >= 0.5 * exact,
+                "d = {d}: lower {lower} far below {exact}"
+            );
+            for delta in [0.2, 0.05] {
+                let upper = star_upper_bound(p, delta).unwrap();
+                assert!(exact <= upper, "d = {d}: upper {upper} < exact {exact}");
+                assert!(
+                    upper <= exact + delta + 1e-12,
+                    "d = {d}, delta = {delta}: {upper}"
+                );
+            }
+        }
+    }
+    // On the 64-point LP net the search gets close to the exact 21/512, never above it.
+    let lp = sampler_points(&LarcherPillichshammer::new(6).unwrap(), 64);
+    let p = Points::new(&lp, 2).unwrap();
+    let lower = star_lower_bound(p, 1, 20_000);
+    assert!((0.035..=21.0 / 512.0).contains(&lower), "{lower}");
+    assert!(star_upper_bound(p, 0.0).is_err());
 }

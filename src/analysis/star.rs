@@ -517,7 +517,7 @@ fn splitmix(state: &mut u64) -> u64 {
 /// run) and is accepted unless it worsens the local discrepancy by more than a threshold
 /// that decreases linearly to 0; a few restarts share the `iterations`. Every value is the
 /// exact local discrepancy `max(vol - open/N, closed/N - vol)` of a grid box, so the result
-/// is **guaranteed `<= D*_N`** (in practice often equal to it for moderate `N` and `d`).
+/// is **guaranteed `<= D*_N`** (up to the rounding of the volume products, a few ulps; in practice often equal to it for moderate `N` and `d`).
 /// Simplifications against the paper: uniform rather than volume-weighted neighbourhoods
 /// and a linear threshold sequence. Deterministic for a given `seed`. Cost
 /// `O(iterations · N d)`.
