@@ -1,1 +1,695 @@
-//! (in progress)
+//! Star discrepancy `D*_N`: exact in 1D (closed form), 2D (`O(N^2)` sweep) and d dimensions
+//! (critical-grid enumeration with pruning), the extreme (unanchored) discrepancy in 2D, and
+//! bounds for sets too large to compute exactly.
+//!
+//! # Definition and the open/closed subtlety
+//!
+//! For `N` points `x_i` in `[0, 1]^d`,
+//!
+//! ```text
+//! D*_N = sup_{y in [0,1]^d} | A([0, y)) / N - vol([0, y)) |,   A = number of points inside.
+//! ```
+//!
+//! The supremum is attained, as a limit, on the *critical grid*: every coordinate `y_k` taken
+//! from `{x_ik} ∪ {1}`. At a grid point the two one-sided limits are
+//!
+//! * `vol(y) - open(y) / N`, with `open(y) = #{i : x_i < y}` (the box `[0, y)` itself), and
+//! * `closed(y) / N - vol(y)`, with `closed(y) = #{i : x_i <= y}` (the limit of `[0, y + ε)`),
+//!
+//! and `D*_N` is the maximum of both over the grid (Niederreiter 1992, §2.1; Gnewuch,
+//! Wahlström & Winzen 2012, §1). Checking only half-open boxes underestimates: for the
+//! 64-point Larcher–Pillichshammer net it gives 0.0242 instead of the exact 21/512.
+//!
+//! One more boundary case: a coordinate equal to 1 is never inside any `[0, y)` with
+//! `y <= 1`, and the limit `[0, y + ε)` does not exist past 1. So a point with a coordinate
+//! equal to 1 is never counted (it still counts in `N`); at `y_k = 1` the closed limit is
+//! `x_k < 1`. (Counting it would overestimate: three points `(1, 0), (1, 0), (0, 0)` have
+//! `D* = 2/3`, not 1.)
+//!
+//! # Accuracy
+//!
+//! Everything is evaluated in `f64` at grid points: counts are exact, `vol(y)` is a product of
+//! coordinates rounded once per factor, so results are within a few ulps of the exact value
+//! (exact for dyadic sets with `N` a power of two and few bits, e.g. the nets of
+//! [`crate::LarcherPillichshammer`]).
+//!
+//! # Cost
+//!
+//! | function | cost | limit |
+//! |---|---|---|
+//! | [`star_1d`] | `O(N log N)` | none |
+//! | [`star_2d`] | `O(N^2)` time, `O(N)` memory, parallel over columns | `N <= 50_000` |
+//! | [`star_exact`] | `O(N^d)` worst case (≈ `N^d / 3^(d-2)` for uniform-like sets), pruned | ≈ `3e9` steps |
+//! | [`extreme_2d`] | `O(N^3)` | `N <= 1200` |
+//! | [`star_lower_bound`] | `O(iterations · N d)` | none |
+//! | [`star_upper_bound`] | `O(B · N d)`, `B` boxes of the δ-partition | ≈ `3e9` steps |
+
+use super::Points;
+use crate::{Error, Result};
+use rayon::prelude::*;
+use std::sync::atomic::{AtomicU64, Ordering};
+
+/// Work budget (inner-loop steps) above which the exact algorithms refuse with an error
+/// instead of running for minutes: about ten seconds on a 2-core machine.
+pub const STAR_WORK_BUDGET: f64 = 3e9;
+
+/// Largest `N` [`star_2d`] accepts (about ten seconds: `N = 2^14` takes one).
+pub const STAR_2D_MAX_POINTS: u64 = 50_000;
+
+/// Largest `N` [`extreme_2d`] accepts (`N^3 / 2` sweep steps, about five seconds).
+pub const EXTREME_2D_MAX_POINTS: u64 = 1200;
+
+/// Star discrepancy of `points`, exact: [`star_1d`] in 1D, [`star_2d`] in 2D,
+/// [`star_exact`] otherwise.
+///
+/// # Errors
+/// Those of the function dispatched to (too many points for an exact computation).
+///
+/// ```
+/// use qmckit::analysis::{Points, star::star};
+/// // One point at the center of the square. The closed box [0, 1/2]^2 holds it:
+/// // 1 - 1/4 = 3/4; a box missing it has volume at most 1/2 (e.g. [0, 1) x [0, 1/2)).
+/// let p = Points::new(&[0.5, 0.5], 2)?;
+/// assert_eq!(star(p)?, 0.75);
+/// # Ok::<(), qmckit::Error>(())
+/// ```
+pub fn star(points: Points<'_>) -> Result<f64> {
+    match points.dims() {
+        1 => star_1d(points),
+        2 => star_2d(points),
+        _ => star_exact(points),
+    }
+}
+
+/// Exact 1D star discrepancy by the closed form (Niederreiter 1992, Thm. 2.6):
+/// `D*_N = 1/(2N) + max_i |x_(i) - (2i - 1)/(2N)|` over the sorted `x_(1) <= ... <= x_(N)`.
+///
+/// Ties and points at 0 or 1 need no special care. Range `[1/(2N), 1]`; the minimum
+/// `1/(2N)` is attained by the centered grid `(2i - 1)/(2N)`. Cost `O(N log N)`.
+///
+/// # Errors
+/// [`Error::Unsupported`] unless `points.dims() == 1`.
+///
+/// ```
+/// use qmckit::analysis::{Points, star::star_1d};
+/// // A single point at 1/2: [0, 1/2) is empty (1/2 - 0) and [0, 1/2] holds it (1 - 1/2).
+/// assert_eq!(star_1d(Points::new(&[0.5], 1)?)?, 0.5);
+/// // The centered grid 1/8, 3/8, 5/8, 7/8 has the least possible D* = 1/(2N).
+/// assert_eq!(star_1d(Points::new(&[0.125, 0.375, 0.625, 0.875], 1)?)?, 0.125);
+/// # Ok::<(), qmckit::Error>(())
+/// ```
+pub fn star_1d(points: Points<'_>) -> Result<f64> {
+    if points.dims() != 1 {
+        return Err(Error::Unsupported {
+            what: "star_1d of points with more than one coordinate",
+        });
+    }
+    let mut xs = points.as_slice().to_vec();
+    xs.sort_unstable_by(f64::total_cmp);
+    let two_n = 2.0 * xs.len() as f64;
+    let worst = xs
+        .iter()
+        .enumerate()
+        .map(|(i, &x)| (x - (2 * i + 1) as f64 / two_n).abs())
+        .fold(0.0, f64::max);
+    Ok(1.0 / two_n + worst)
+}
+
+/// Exact 2D star discrepancy over the critical grid, open and closed boxes.
+///
+/// Sweep: points sorted by `x`; for each critical `x = a` (in `{x_i} ∪ {1}`) a count array
+/// over the ranks of the distinct `y`s holds the points left of `a`, and one pass over it
+/// evaluates `a b - open/N` and `closed/N - a b` at every critical `b`. Cost
+/// `O(N · M)` with `M <= N + 1` distinct `y`s, so `O(N^2)` time and `O(N)` memory; the
+/// columns are split over rayon's threads. Measured: 1.0 s for `N = 2^14` (LP net or
+/// Sobol') on a shared 2-core machine.
+///
+/// # Errors
+/// [`Error::Unsupported`] unless `points.dims() == 2`; [`Error::TooManyPoints`] above
+/// [`STAR_2D_MAX_POINTS`].
+///
+/// ```
+/// use qmckit::analysis::{Points, star::star_2d};
+/// // The 4-point Larcher–Pillichshammer net (i/4, y_i), y = 0, 1/2, 3/4, 1/4. The closed
+/// // box [0, 3/4]^2 holds all four points: 1 - 9/16 = 7/16, the maximum (the same box
+/// // taken half-open, [0, 3/4)^2, holds two: 9/16 - 1/2 = 1/16 only).
+/// let p = Points::new(&[0.0, 0.0, 0.25, 0.5, 0.5, 0.75, 0.75, 0.25], 2)?;
+/// assert_eq!(star_2d(p)?, 7.0 / 16.0);
+/// # Ok::<(), qmckit::Error>(())
+/// ```
+pub fn star_2d(points: Points<'_>) -> Result<f64> {
+    if points.dims() != 2 {
+        return Err(Error::Unsupported {
+            what: "star_2d of points that are not 2-dimensional",
+        });
+    }
+    let n = points.len();
+    if n as u64 > STAR_2D_MAX_POINTS {
+        return Err(Error::TooManyPoints {
+            requested: n as u64,
+            max: STAR_2D_MAX_POINTS,
+        });
+    }
+    let pts: Vec<(f64, f64)> = counted(points).map(|p| (p[0], p[1])).collect();
+    Ok(kernel_2d(&pts, &pts, 1.0, n as f64) / n as f64)
+}
+
+/// Points counted by some anchored box: those with every coordinate below 1.
+fn counted<'a>(points: Points<'a>) -> impl Iterator<Item = &'a [f64]> + 'a {
+    points.iter().filter(|p| p.iter().all(|&x| x < 1.0))
+}
+
+/// Sorted distinct values of `values` followed by 1 (if not already last).
+fn grid(values: impl Iterator<Item = f64>) -> Vec<f64> {
+    let mut g: Vec<f64> = values.collect();
+    g.push(1.0);
+    g.sort_unstable_by(f64::total_cmp);
+    g.dedup();
+    g
+}
+
+/// Index of `v` in the sorted, deduplicated `grid` (`v` must be in it).
+fn rank(grid: &[f64], v: f64) -> usize {
+    grid.partition_point(|&g| g < v)
+}
+
+/// The 2D sweep behind [`star_2d`] and [`star_exact`]: the maximum over the critical grid
+/// `(a, b)` of `c a b N - open(a, b)` and `closed(a, b) - c a b N`, where `open` counts the
+/// points of `open_pts` with `x < a, y < b` and `closed` those of `closed_pts` with
+/// `x <= a, y <= b`. `open_pts` must be a subset of `closed_pts`, all coordinates below 1.
+/// Returns the value scaled by `N` (`n`); 0 at least (the empty box).
+fn kernel_2d(open_pts: &[(f64, f64)], closed_pts: &[(f64, f64)], c: f64, n: f64) -> f64 {
+    let xs = grid(closed_pts.iter().map(|p| p.0));
+    let ys = grid(closed_pts.iter().map(|p| p.1));
+    // (x, y-rank), sorted by x.
+    let ranked = |pts: &[(f64, f64)]| {
+        let mut v: Vec<(f64, usize)> = pts.iter().map(|p| (p.0, rank(&ys, p.1))).collect();
+        v.sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
+        v
+    };
+    let open = ranked(open_pts);
+    let closed = ranked(closed_pts);
+    let columns = xs.len();
+    let work = columns * ys.len();
+    let chunks = if work > 1 << 22 {
+        (rayon::current_num_threads() * 4).min(columns)
+    } else {
+        1
+    };
+    let per = columns.div_ceil(chunks);
+    (0..chunks)
+        .into_par_iter()
+        .map(|k| {
+            let cols = xs.get(k * per..((k + 1) * per).min(columns)).unwrap_or(&[]);
+            sweep_columns(cols, &ys, &open, &closed, c * n)
+        })
+        .reduce(|| 0.0, f64::max)
+}
+
+/// Sweeps the critical columns `cols` (ascending) of [`kernel_2d`]; `cn = c N`.
+fn sweep_columns(
+    cols: &[f64],
+    ys: &[f64],
+    open: &[(f64, usize)],
+    closed: &[(f64, usize)],
+    cn: f64,
+) -> f64 {
+    let Some(&first) = cols.first() else {
+        return 0.0;
+    };
+    // counts[r] = [open points with x < a, closed points with x <= a] at y-rank r.
+    let mut counts = vec![[0.0f64; 2]; ys.len()];
+    let mut io = open.partition_point(|p| p.0 < first);
+    let mut ic = closed.partition_point(|p| p.0 < first);
+    for p in open.get(..io).unwrap_or(&[]) {
+        if let Some(c) = counts.get_mut(p.1) {
+            c[0] += 1.0;
+        }
+    }
+    for p in closed.get(..ic).unwrap_or(&[]) {
+        if let Some(c) = counts.get_mut(p.1) {
+            c[1] += 1.0;
+        }
+    }
+    let mut best = 0.0f64;
+    for &a in cols {
+        // Open points strictly left of a are already in; add closed points with x == a.
+        while let Some(p) = open.get(io).filter(|p| p.0 < a) {
+            if let Some(c) = counts.get_mut(p.1) {
+                c[0] += 1.0;
+            }
+            io += 1;
+        }
+        while let Some(p) = closed.get(ic).filter(|p| p.0 <= a) {
+            if let Some(c) = counts.get_mut(p.1) {
+                c[1] += 1.0;
+            }
+            ic += 1;
+        }
+        let can = cn * a;
+        let (mut run_o, mut run_c) = (0.0f64, 0.0f64);
+        let (mut best_o, mut best_c) = (0.0f64, 0.0f64);
+        for (&b, cnt) in ys.iter().zip(&counts) {
+            let v = can * b;
+            let o = v - run_o;
+            if o > best_o {
+                best_o = o;
+            }
+            run_o += cnt[0];
+            run_c += cnt[1];
+            let cl = run_c - v;
+            if cl > best_c {
+                best_c = cl;
+            }
+        }
+        best = best.max(best_o).max(best_c);
+    }
+    best
+}
+
+/// Exact star discrepancy in any dimension `d >= 2` by enumerating the critical grid.
+///
+/// Coordinates `3..d` are fixed in turn to their critical values (ascending, points
+/// filtered to those still inside: strictly for the open count, weakly for the closed one),
+/// and the 2D sweep of [`star_2d`] finishes the first two. A branch is cut when it cannot
+/// beat the best value so far: inside it `vol - open/N <= prod of the fixed y_k` and
+/// `closed/N - vol <= (points left)/N`. Cost `O(N^d)` in the worst case, about
+/// `N^d / 3^(d-2)` for evenly spread sets before pruning; the top level runs in parallel.
+/// Measured (Sobol' points, shared 2-core machine): `d = 3, N = 1000` in 1.3 s;
+/// `d = 4, N = 200` in 0.7 s; `d = 5, N = 100` in 1.9 s; `d = 6, N = 50` in 0.7 s. Beyond
+/// that use [`star_lower_bound`] / [`star_upper_bound`].
+///
+/// The asymptotically better exact algorithm is Dobkin, Eppstein & Mitchell (1996),
+/// "Computing the discrepancy with applications to supersampling patterns", ACM TOG 15(4),
+/// `O(N^(1 + d/2))`: it would replace the enumeration of the fixed coordinates by their
+/// recursive halving with "boxes stabbed by a slab" bookkeeping; not implemented here.
+///
+/// # Errors
+/// [`Error::TooManyPoints`] when the estimated work `N^2 · prod M_k / 3^(d-2)` (with `M_k`
+/// the critical values of coordinate `k >= 3`) exceeds [`STAR_WORK_BUDGET`]; `max` is the
+/// largest `N` within budget for this `d`.
+///
+/// ```
+/// use qmckit::analysis::{Points, star::star_exact};
+/// // One point at the center of the cube: the closed box [0, 1/2]^3 holds it,
+/// // 1 - 1/8 = 7/8; every box missing it has volume at most 1/2.
+/// assert_eq!(star_exact(Points::new(&[0.5, 0.5, 0.5], 3)?)?, 0.875);
+/// # Ok::<(), qmckit::Error>(())
+/// ```
+pub fn star_exact(points: Points<'_>) -> Result<f64> {
+    let d = points.dims();
+    let n = points.len();
+    if d == 1 {
+        return star_1d(points);
+    }
+    let pts: Vec<&[f64]> = counted(points).collect();
+    let mut estimate = (n as f64) * (n as f64);
+    for k in 2..d {
+        let m = grid(pts.iter().filter_map(|p| p.get(k).copied())).len() as f64;
+        estimate *= m / 3.0;
+    }
+    if estimate > STAR_WORK_BUDGET {
+        // Largest N with N^d / 3^(d-2) within budget.
+        let max = (STAR_WORK_BUDGET * 3f64.powi(d as i32 - 2)).powf(1.0 / d as f64);
+        return Err(Error::TooManyPoints {
+            requested: n as u64,
+            max: max as u64,
+        });
+    }
+    let nf = n as f64;
+    if d == 2 {
+        let p2: Vec<(f64, f64)> = pts.iter().map(|p| (p[0], p[1])).collect();
+        return Ok(kernel_2d(&p2, &p2, 1.0, nf) / nf);
+    }
+    // Best value so far, scaled by N, as f64 bits (non-negative, so ordered as u64).
+    let best = AtomicU64::new(0);
+    let k = d - 1;
+    let open = sorted_by(&pts, k);
+    let values = grid(open.iter().map(|p| p[k]));
+    values.par_iter().for_each(|&v| {
+        let no = open.partition_point(|p| p[k] < v);
+        let nc = open.partition_point(|p| p[k] <= v);
+        let (o, c) = (open.get(..no).unwrap_or(&[]), open.get(..nc).unwrap_or(&[]));
+        enumerate(o, c, k, v, nf, &best);
+    });
+    Ok(f64::from_bits(best.load(Ordering::Relaxed)) / nf)
+}
+
+/// Points sorted by coordinate `k`.
+fn sorted_by<'a>(pts: &[&'a [f64]], k: usize) -> Vec<&'a [f64]> {
+    let mut v = pts.to_vec();
+    v.sort_unstable_by(|a, b| a[k].total_cmp(&b[k]));
+    v
+}
+
+/// One node of [`star_exact`]'s enumeration: coordinates `k..d` are fixed (their volume
+/// factor is `c`), `open`/`closed` are the points still inside. Fixes coordinate `k - 1`, or
+/// runs the 2D sweep at `k == 2`.
+fn enumerate(open: &[&[f64]], closed: &[&[f64]], k: usize, c: f64, n: f64, best: &AtomicU64) {
+    let current = f64::from_bits(best.load(Ordering::Relaxed));
+    // Within this branch: vol <= c, closed count <= closed.len().
+    if c * n <= current && closed.len() as f64 <= current {
+        return;
+    }
+    if k == 2 {
+        let o: Vec<(f64, f64)> = open.iter().map(|p| (p[0], p[1])).collect();
+        let cl: Vec<(f64, f64)> = closed.iter().map(|p| (p[0], p[1])).collect();
+        let v = kernel_2d(&o, &cl, c, n);
+        best.fetch_max(v.to_bits(), Ordering::Relaxed);
+        return;
+    }
+    let j = k - 1;
+    let open = sorted_by(open, j);
+    let closed = sorted_by(closed, j);
+    for &v in &grid(closed.iter().map(|p| p[j])) {
+        let no = open.partition_point(|p| p[j] < v);
+        let nc = closed.partition_point(|p| p[j] <= v);
+        enumerate(
+            open.get(..no).unwrap_or(&[]),
+            closed.get(..nc).unwrap_or(&[]),
+            j,
+            c * v,
+            n,
+            best,
+        );
+    }
+}
+
+/// Exact extreme (unanchored) discrepancy in 2D:
+/// `D_N = sup over boxes [a, b) in [0,1]^2 of |A([a, b))/N - vol([a, b))|`.
+///
+/// As for [`star_2d`], the supremum is a maximum over one-sided limits on the critical grid
+/// (`a_k` in `{0} ∪ {x_ik}`, `b_k` in `{x_ik} ∪ {1}`): `vol - #(a < x < b)/N` for the open
+/// box (limit of `[a + ε, b)`) and `#(a <= x <= b)/N - vol` for the closed box (limit of
+/// `[a, b + ε)`, possibly degenerate), points with a coordinate 1 never counted. Always
+/// `D*_N <= D_N <= 2^d D*_N` (here `4 D*_N`), and `D_N >= 1/N` (a degenerate box on a
+/// point).
+///
+/// For each pair of critical `x` bounds (an `x`-slab, `O(N^2)` of them) one pass over the
+/// `y` ranks finds the best `y`-interval as a maximum-difference scan. Cost `O(N^3)` time
+/// (about `N^3 / 2` steps), `O(N)` memory per thread; parallel over the lower `x` bound.
+/// Measured: `N = 500` in 0.4 s, `N = 1000` in 2.7 s (shared 2-core machine).
+///
+/// # Errors
+/// [`Error::Unsupported`] unless `points.dims() == 2`; [`Error::TooManyPoints`] above
+/// [`EXTREME_2D_MAX_POINTS`].
+///
+/// ```
+/// use qmckit::analysis::{Points, star::extreme_2d};
+/// // One point: the degenerate closed box on it holds it with volume 0, so D = 1.
+/// assert_eq!(extreme_2d(Points::new(&[0.5, 0.5], 2)?)?, 1.0);
+/// // Four points at the centers of the 2x2 cells: the open slab (1/4, 3/4) x (0, 1) misses
+/// // them all (vol 1/2), and the closed [1/4, 3/4] x [1/4, 3/4] holds all with vol 1/4:
+/// // 1 - 1/4 = 3/4 is the maximum.
+/// let c = [0.25, 0.25, 0.75, 0.25, 0.25, 0.75, 0.75, 0.75];
+/// assert_eq!(extreme_2d(Points::new(&c, 2)?)?, 0.75);
+/// # Ok::<(), qmckit::Error>(())
+/// ```
+pub fn extreme_2d(points: Points<'_>) -> Result<f64> {
+    if points.dims() != 2 {
+        return Err(Error::Unsupported {
+            what: "extreme_2d of points that are not 2-dimensional",
+        });
+    }
+    let n = points.len();
+    if n as u64 > EXTREME_2D_MAX_POINTS {
+        return Err(Error::TooManyPoints {
+            requested: n as u64,
+            max: EXTREME_2D_MAX_POINTS,
+        });
+    }
+    let pts: Vec<(f64, f64)> = counted(points).map(|p| (p[0], p[1])).collect();
+    let xs = grid(pts.iter().map(|p| p.0).chain([0.0]));
+    let ys = grid(pts.iter().map(|p| p.1).chain([0.0]));
+    // groups[i] = y-ranks of the points with x = xs[i].
+    let mut groups: Vec<Vec<usize>> = vec![Vec::new(); xs.len()];
+    for p in &pts {
+        if let Some(g) = groups.get_mut(rank(&xs, p.0)) {
+            g.push(rank(&ys, p.1));
+        }
+    }
+    let nf = n as f64;
+    let best = (0..xs.len())
+        .into_par_iter()
+        .map(|i| extreme_from(i, &xs, &ys, &groups, nf))
+        .reduce(|| 0.0, f64::max);
+    Ok(best / nf)
+}
+
+/// [`extreme_2d`] for the slabs with lower `x` bound `xs[i]`; scaled by `N`.
+fn extreme_from(i: usize, xs: &[f64], ys: &[f64], groups: &[Vec<usize>], n: f64) -> f64 {
+    let m = ys.len();
+    // interior[r]: points with xs[i] < x < xs[j] at y-rank r; edge[r]: those with x = xs[i]
+    // or x = xs[j] (the closed slab adds them).
+    let mut interior = vec![0.0f64; m];
+    let mut edge = vec![0.0f64; m];
+    let add = |v: &mut [f64], g: Option<&Vec<usize>>, w: f64| {
+        for &r in g.into_iter().flatten() {
+            if let Some(c) = v.get_mut(r) {
+                *c += w;
+            }
+        }
+    };
+    add(&mut edge, groups.get(i), 1.0);
+    let lo = xs.get(i).copied().unwrap_or(0.0);
+    let mut best = 0.0f64;
+    for (j, &hi) in xs.iter().enumerate().skip(i) {
+        if j > i {
+            add(&mut edge, groups.get(j), 1.0);
+        }
+        let wn = (hi - lo) * n;
+        // Open: max over r' < r of (wn y_r - #(y < y_r)) - (wn y_r' - #(y <= y_r')).
+        // Closed: max over r' <= r of (#(y <= y_r) - wn y_r) - (#(y < y_r') - wn y_r').
+        let (mut so, mut sc) = (0.0f64, 0.0f64); // open / closed counts below the rank
+        let (mut min_o, mut min_c) = (f64::INFINITY, f64::INFINITY);
+        for ((&y, &ci), &ce) in ys.iter().zip(&interior).zip(&edge) {
+            let v = wn * y;
+            if j > i && v - so - min_o > best {
+                best = v - so - min_o;
+            }
+            min_c = min_c.min(sc - v);
+            so += ci;
+            sc += ci + ce;
+            min_o = min_o.min(v - so);
+            if sc - v - min_c > best {
+                best = sc - v - min_c;
+            }
+        }
+        if j > i {
+            // Group j moves from the edge to the interior of the next slabs.
+            add(&mut edge, groups.get(j), -1.0);
+            add(&mut interior, groups.get(j), 1.0);
+        }
+    }
+    best
+}
+
+/// Local discrepancy of the critical box with upper corner `y` (coordinates from the grid),
+/// exactly as in the definition: `max(vol - open/N, closed/N - vol)`.
+fn box_value(pts: &[&[f64]], y: &[f64], n: f64) -> f64 {
+    let vol: f64 = y.iter().product();
+    let (mut open, mut closed) = (0usize, 0usize);
+    for p in pts {
+        let mut o = true;
+        let mut c = true;
+        for (&x, &b) in p.iter().zip(y) {
+            o &= x < b;
+            c &= x <= b;
+        }
+        open += usize::from(o);
+        closed += usize::from(c);
+    }
+    (vol - open as f64 / n).max(closed as f64 / n - vol)
+}
+
+/// SplitMix64 step, for the randomized search.
+fn splitmix(state: &mut u64) -> u64 {
+    *state = state.wrapping_add(0x9E37_79B9_7F4A_7C15);
+    let mut z = *state;
+    z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+    z ^ (z >> 31)
+}
+
+/// A lower bound on `D*_N` by threshold accepting over the critical grid (after Gnewuch,
+/// Wahlström & Winzen 2012, "A new randomized algorithm to approximate the star discrepancy
+/// based on threshold accepting", SIAM J. Numer. Anal. 50(2)).
+///
+/// A walk over corners `y` of the critical grid (each `y_k` in `{x_ik} ∪ {1}`): a move shifts
+/// a few coordinates by a random number of grid steps (the neighbourhood shrinks over the
+/// run) and is accepted unless it worsens the local discrepancy by more than a threshold
+/// that decreases linearly to 0; a few restarts share the `iterations`. Every value is the
+/// exact local discrepancy `max(vol - open/N, closed/N - vol)` of a grid box, so the result
+/// is **guaranteed `<= D*_N`** (up to the rounding of the volume products, a few ulps; in practice often equal to it for moderate `N` and `d`).
+/// Simplifications against the paper: uniform rather than volume-weighted neighbourhoods
+/// and a linear threshold sequence. Deterministic for a given `seed`. Cost
+/// `O(iterations · N d)`.
+///
+/// ```
+/// use qmckit::analysis::{Points, star::{star_lower_bound, star_exact}};
+/// let p = Points::new(&[0.5, 0.5, 0.5], 3)?;
+/// let lower = star_lower_bound(p, 7, 1000);
+/// assert!(lower <= star_exact(p)? && lower >= 0.5); // [0,1) x [0,1) x [0,1/2) is empty
+/// # Ok::<(), qmckit::Error>(())
+/// ```
+pub fn star_lower_bound(points: Points<'_>, seed: u64, iterations: u64) -> f64 {
+    let d = points.dims();
+    let n = points.len() as f64;
+    let pts: Vec<&[f64]> = counted(points).collect();
+    let grids: Vec<Vec<f64>> = (0..d)
+        .map(|k| grid(pts.iter().filter_map(|p| p.get(k).copied())))
+        .collect();
+    let at = |idx: &[usize]| -> Vec<f64> {
+        idx.iter()
+            .zip(&grids)
+            .map(|(&i, g)| g.get(i).copied().unwrap_or(1.0))
+            .collect()
+    };
+    let mut state = seed;
+    // The whole cube and the closed box at the largest point coordinates.
+    let top: Vec<usize> = grids.iter().map(|g| g.len() - 1).collect();
+    let mut best = box_value(&pts, &at(&top), n);
+    let restarts = 1 + iterations / 2000;
+    let per = iterations / restarts;
+    for _ in 0..restarts {
+        let mut idx: Vec<usize> = grids
+            .iter()
+            .map(|g| (splitmix(&mut state) % g.len() as u64) as usize)
+            .collect();
+        let mut cur = box_value(&pts, &at(&idx), n);
+        best = best.max(cur);
+        // Initial threshold: a typical change of one move, from a few random moves.
+        let mut t0 = 0.0;
+        let mut next = idx.clone();
+        for step in 0..per {
+            let frac = step as f64 / per.max(1) as f64;
+            let reach = (1.0 - frac) * 0.25 + 0.01; // share of each grid moved at most
+            next.copy_from_slice(&idx);
+            let moves = 1 + (splitmix(&mut state) % d.min(3) as u64) as usize;
+            for _ in 0..moves {
+                let k = (splitmix(&mut state) % d as u64) as usize;
+                if let (Some(i), Some(g)) = (next.get_mut(k), grids.get(k)) {
+                    let span = ((g.len() as f64 * reach) as u64).max(1);
+                    let delta = (splitmix(&mut state) % (2 * span + 1)) as i64 - span as i64;
+                    *i = (*i as i64 + delta).clamp(0, g.len() as i64 - 1) as usize;
+                }
+            }
+            let v = box_value(&pts, &at(&next), n);
+            best = best.max(v);
+            if step < 16 {
+                t0 += (v - cur).abs() / 16.0;
+            }
+            let threshold = t0 * (1.0 - frac);
+            if v >= cur - threshold {
+                cur = v;
+                idx.copy_from_slice(&next);
+            }
+        }
+    }
+    best
+}
+
+/// An upper bound on `D*_N` from a δ-partition of the cube (after Thiémard 2001, "An
+/// algorithm to compute bounds for the star discrepancy", J. Complexity 17(4)).
+///
+/// The cube is cut into boxes `[α, β]` (coordinate by coordinate, from 1 down, each slice
+/// as wide as the volume condition allows) with `vol([0,β)) - vol([0,α)) <= δ`. For every
+/// `y` in such a box, `[0,α) ⊂ [0,y) ⊂ [0,β)`, so
+/// `|A(y)/N - vol(y)| <= max(open(β)/N - vol(α), vol(β) - open(α)/N)`; the maximum of this
+/// over the boxes is **guaranteed `>= D*_N`**, and at most `D*_N + δ`. (A few ulps are
+/// added for the rounding of the volumes.) Cost `O(B · N d)` for `B` boxes, with
+/// `B <= (2(d-1)/δ)^(d-1) · 2/δ`, much fewer in practice (slices widen near the origin).
+/// Thiémard's algorithm counts the points of all boxes at once with sorted structures; here
+/// each box is counted directly.
+///
+/// # Errors
+/// [`Error::Unsupported`] for `δ` not in `(0, 1]`; [`Error::TooManyPoints`] when the box
+/// count bound times `N d` exceeds [`STAR_WORK_BUDGET`] (take a larger `δ`).
+///
+/// ```
+/// use qmckit::analysis::{Points, star::star_upper_bound};
+/// // One point at 1/2 in 1D has D* = 1/2; the bound is within delta of it.
+/// let u = star_upper_bound(Points::new(&[0.5], 1)?, 0.01)?;
+/// assert!(0.5 <= u && u <= 0.51 + 1e-12);
+/// # Ok::<(), qmckit::Error>(())
+/// ```
+pub fn star_upper_bound(points: Points<'_>, delta: f64) -> Result<f64> {
+    if !(delta > 0.0 && delta <= 1.0) {
+        return Err(Error::Unsupported {
+            what: "star_upper_bound needs 0 < delta <= 1",
+        });
+    }
+    let d = points.dims();
+    let n = points.len();
+    let boxes = (2.0 * (d as f64 - 1.0).max(0.5) / delta).powi(d as i32 - 1) * 2.0 / delta;
+    if boxes * (n * d) as f64 > STAR_WORK_BUDGET {
+        return Err(Error::TooManyPoints {
+            requested: n as u64,
+            max: (STAR_WORK_BUDGET / (boxes * d as f64)) as u64,
+        });
+    }
+    let pts: Vec<&[f64]> = counted(points).collect();
+    let mut part = Partition {
+        pts: &pts,
+        n: n as f64,
+        delta,
+        d,
+        alpha: vec![0.0; d],
+        beta: vec![0.0; d],
+        best: 0.0,
+    };
+    part.slice(0, 1.0, 1.0);
+    Ok(part.best + 4.0 * d as f64 * f64::EPSILON)
+}
+
+/// State of [`star_upper_bound`]'s recursive partition.
+struct Partition<'p, 'a> {
+    pts: &'p [&'a [f64]],
+    n: f64,
+    delta: f64,
+    d: usize,
+    alpha: Vec<f64>,
+    beta: Vec<f64>,
+    best: f64,
+}
+
+impl Partition<'_, '_> {
+    /// Slices coordinate `k` given the volume factors `pa = prod α`, `pb = prod β` of the
+    /// coordinates before it, with `pb - pa <= eps(k)`.
+    fn slice(&mut self, k: usize, pa: f64, pb: f64) {
+        if k == self.d {
+            let count = |y: &[f64]| {
+                self.pts
+                    .iter()
+                    .filter(|p| p.iter().zip(y).all(|(&x, &b)| x < b))
+                    .count() as f64
+            };
+            let (oa, ob) = (count(&self.alpha), count(&self.beta));
+            self.best = self.best.max(ob / self.n - pa).max(pb - oa / self.n);
+            return;
+        }
+        // Allowed gap after this coordinate: delta/2 spread over the first d-1 coordinates,
+        // the full delta after the last one.
+        let eps = if k + 1 == self.d {
+            self.delta
+        } else {
+            self.delta * (k + 1) as f64 / (2.0 * (self.d - 1) as f64)
+        };
+        let mut hi = 1.0f64;
+        while hi > 0.0 {
+            let lo = if pb * hi <= eps || pa <= 0.0 {
+                0.0
+            } else {
+                ((pb * hi - eps) / pa).max(0.0)
+            };
+            // Guarantee progress against rounding.
+            let lo = if lo >= hi { 0.0 } else { lo };
+            if let (Some(a), Some(b)) = (self.alpha.get_mut(k), self.beta.get_mut(k)) {
+                *a = lo;
+                *b = hi;
+            }
+            self.slice(k + 1, pa * lo, pb * hi);
+            hi = lo;
+        }
+    }
+}
