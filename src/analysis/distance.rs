@@ -93,9 +93,11 @@ pub fn min_distance(points: Points, toroidal: bool) -> f64 {
 /// Each point's distance to its nearest other point (cube or torus, as in
 /// [`min_distance`]); `f64::INFINITY` for a single point. Parallel over the points (rayon).
 ///
-/// Cost: for each point, a sweep both ways in first-coordinate order until the first
-/// coordinate alone is farther than its nearest neighbour so far: about
-/// `O(N log N + N^(2 - 1/d) d)` for spread-out sets, `O(N^2 d)` at worst.
+/// Cost: in 2D, a uniform grid of about `N` cells searched ring by ring around each point,
+/// `O(N)` for spread-out sets. Otherwise, for each point, a sweep both ways in
+/// first-coordinate order until the first coordinate alone is farther than its nearest
+/// neighbour so far: about `O(N log N + N^(2 - 1/d) d)` for spread-out sets. `O(N^2 d)` at
+/// worst (clustered points).
 ///
 /// ```
 /// use qmckit::analysis::{Points, distance::nearest_neighbor_distances};
@@ -107,6 +109,9 @@ pub fn min_distance(points: Points, toroidal: bool) -> f64 {
 /// ```
 pub fn nearest_neighbor_distances(points: Points, toroidal: bool) -> Vec<f64> {
     use rayon::prelude::*;
+    if points.dims() == 2 {
+        return nearest_neighbor_grid_2d(points, toroidal);
+    }
     let n = points.len();
     let idx = order(points);
     let mut out = vec![f64::INFINITY; n];
@@ -146,6 +151,79 @@ pub fn nearest_neighbor_distances(points: Points, toroidal: bool) -> Vec<f64> {
         out[i] = d;
     }
     out
+}
+
+/// [`nearest_neighbor_distances`] in 2D: a uniform grid of `g x g` cells, `g = ceil(sqrt N)`
+/// (about one point a cell), and for each point a search by square rings of cells around
+/// its own, stopping after ring `r` once `r / g` (a lower bound on the distance to any point
+/// in ring `r + 1`) reaches the nearest distance found; on the torus the rings wrap. `O(N)`
+/// for spread-out sets; memory `8 (N + g^2)` bytes.
+fn nearest_neighbor_grid_2d(points: Points, toroidal: bool) -> Vec<f64> {
+    use rayon::prelude::*;
+    let n = points.len();
+    let g = ((n as f64).sqrt().ceil() as usize).max(1);
+    let h = 1.0 / g as f64;
+    let cell = |x: f64| ((x * g as f64) as usize).min(g - 1);
+    let cell_of = |i: usize| {
+        let p = points.point(i);
+        (cell(p[0]), cell(p[1]))
+    };
+    // Counting sort of the points by cell (row-major in (cx, cy)).
+    let mut start = vec![0usize; g * g + 1];
+    for i in 0..n {
+        let (cx, cy) = cell_of(i);
+        start[cx * g + cy + 1] += 1;
+    }
+    for c in 0..g * g {
+        start[c + 1] += start[c];
+    }
+    let mut fill = start.clone();
+    let mut sorted = vec![0usize; n];
+    for i in 0..n {
+        let (cx, cy) = cell_of(i);
+        let slot = &mut fill[cx * g + cy];
+        sorted[*slot] = i;
+        *slot += 1;
+    }
+    let g_i = g as isize;
+    (0..n)
+        .into_par_iter()
+        .map(|i| {
+            let a = points.point(i);
+            let (cx, cy) = cell_of(i);
+            let mut best2 = f64::INFINITY;
+            let mut r = 0isize;
+            loop {
+                for dx in -r..=r {
+                    for dy in -r..=r {
+                        if dx.abs().max(dy.abs()) != r {
+                            continue;
+                        }
+                        let (mut x, mut y) = (cx as isize + dx, cy as isize + dy);
+                        if toroidal {
+                            x = x.rem_euclid(g_i);
+                            y = y.rem_euclid(g_i);
+                        } else if x < 0 || y < 0 || x >= g_i || y >= g_i {
+                            continue;
+                        }
+                        let c = x as usize * g + y as usize;
+                        for &k in &sorted[start[c]..start[c + 1]] {
+                            if k != i {
+                                best2 = best2.min(dist2(a, points.point(k), toroidal));
+                            }
+                        }
+                    }
+                }
+                let bound = r as f64 * h;
+                let covered = if toroidal { 2 * r + 1 >= g_i } else { r >= g_i };
+                if covered || bound * bound >= best2 {
+                    break;
+                }
+                r += 1;
+            }
+            best2.sqrt()
+        })
+        .collect()
 }
 
 /// The mean over the points of the distance to the nearest other point (see
@@ -198,7 +276,7 @@ mod tests {
     #[test]
     fn matches_brute_force() {
         for dims in 1..=4 {
-            for (n, seed) in [(2, 1), (3, 2), (50, 3), (300, 4)] {
+            for (n, seed) in [(2, 1), (3, 2), (50, 3), (300, 4), (1500, 5)] {
                 let data = uniform(n * dims, seed * 10 + dims as u64);
                 let p = Points::new(&data, dims).unwrap();
                 for toroidal in [false, true] {
@@ -208,6 +286,23 @@ mod tests {
                 }
             }
         }
+    }
+
+    #[test]
+    fn lattice_on_cell_boundaries_and_the_closed_edge() {
+        // 33 x 33 points j / 32 (including 1.0): every nearest neighbour is 1/32 away in the
+        // cube; on the torus 1.0 and 0.0 coincide.
+        let data: Vec<f64> = (0..33 * 33)
+            .flat_map(|i| [(i % 33) as f64 / 32.0, (i / 33) as f64 / 32.0])
+            .collect();
+        let p = Points::new(&data, 2).unwrap();
+        let nn = nearest_neighbor_distances(p, false);
+        assert!(nn.iter().all(|&d| d == 1.0 / 32.0));
+        assert_eq!(min_distance(p, false), 1.0 / 32.0);
+        let (want, nn_t) = brute(p, true);
+        assert_eq!(want, 0.0);
+        assert_eq!(nearest_neighbor_distances(p, true), nn_t);
+        assert_eq!(min_distance(p, true), 0.0);
     }
 
     #[test]
