@@ -59,7 +59,9 @@ const FILL_BLOCK: usize = 32;
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct SobolDimension {
-    v: &'static [u32; 32],
+    /// Held by value (128 bytes), so a `const` dimension in firmware links only its own
+    /// direction numbers, not the whole compiled-in table.
+    v: [u32; 32],
 }
 
 impl SobolDimension {
@@ -69,21 +71,21 @@ impl SobolDimension {
     /// [`Error::DimensionOutOfRange`] past [`SOBOL_MAX_DIMS`].
     pub const fn new(dim: usize) -> Result<Self> {
         match directions(dim) {
-            Ok(v) => Ok(SobolDimension { v }),
+            Ok(v) => Ok(SobolDimension { v: *v }),
             Err(e) => Err(e),
         }
     }
 
     /// The direction numbers `[V_1, .., V_32]` (the generator matrix's columns).
-    pub const fn directions(&self) -> &'static [u32; 32] {
-        self.v
+    pub const fn directions(&self) -> &[u32; 32] {
+        &self.v
     }
 
     /// Natural-order point `index`: the XOR of `V_(k+1)` over the set bits `k` of `index`.
     /// A branch-free loop over the 32 bits; `const`. Defined for every `u32` index.
     #[inline]
     pub const fn sample(&self, index: u32) -> u32 {
-        gf2_mul(self.v, index)
+        gf2_mul(&self.v, index)
     }
 
     /// `P_t = V_1 ^ .. ^ V_(t+1)`: going from index `i` to `i + 1` flips the `t + 1` lowest
@@ -181,7 +183,7 @@ impl SobolTable {
     /// The tables of one dimension: 1024 XORs. `const`.
     pub const fn new(dim: SobolDimension) -> Self {
         SobolTable {
-            t: byte_tables(dim.v),
+            t: byte_tables(&dim.v),
         }
     }
 
@@ -216,7 +218,7 @@ fn checked_count(start: u32, len: usize, stride: usize) -> Result<usize> {
 /// ```
 #[derive(Clone, Debug)]
 pub struct SobolGray {
-    v: &'static [u32; 32],
+    v: [u32; 32],
     x: u32,
     /// Position of `x` (2^32 once exhausted).
     next: u64,
@@ -343,7 +345,7 @@ impl Sobol {
         for (lane, v) in dirs.iter().enumerate().take(L) {
             let (steps, i0) = match self.order {
                 Order::Gray => (*v, gray(start)),
-                Order::Natural => (SobolDimension { v }.increments(), start),
+                Order::Natural => (SobolDimension { v: *v }.increments(), start),
             };
             for (row, step) in table.iter_mut().zip(steps) {
                 row[lane] = step;
