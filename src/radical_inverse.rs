@@ -463,7 +463,10 @@ impl RadicalInverse {
     /// plus a tabled `d / b` (one add, compare and add-with-carry; no chain from value to
     /// value), and the run base steps once per `b` values. Needs `B <= 2^63`.
     fn fill_runs(&self, start: u32, out: &mut [u32], stride: usize) {
-        let b = self.base as usize;
+        // The caller guarantees 2 <= base <= RUN_TABLE; the clamp is a no-op that lets the
+        // compiler see every table index below in bounds (no panic path survives
+        // inlining; tests/firmware/panic_proof.sh checks this at link time).
+        let b = (self.base as usize).clamp(2, RUN_TABLE);
         // part[d] = 2^32 d / b exactly, as integer part and remainder over B.
         let (mut part_q, mut part_r) = ([0u32; RUN_TABLE], [0u64; RUN_TABLE]);
         let steps = self.steps();
@@ -477,7 +480,12 @@ impl RadicalInverse {
         let mut d0 = low;
         loop {
             // The table side first, so that zip never takes a slot it cannot fill.
-            for ((&pq, &pr), slot) in part_q[d0..b].iter().zip(&part_r[d0..b]).zip(&mut slots) {
+            let run = part_q.get(d0..b).unwrap_or(&[]);
+            for ((&pq, &pr), slot) in run
+                .iter()
+                .zip(part_r.get(d0..b).unwrap_or(&[]))
+                .zip(&mut slots)
+            {
                 let r = base_r + pr; // < 2B <= 2^64
                 *slot = base_q.wrapping_add(pq).wrapping_add((r >= self.big) as u32);
             }

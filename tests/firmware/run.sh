@@ -1,85 +1,45 @@
 #!/usr/bin/env bash
 # Runs qmckit's no_std core on three emulated Cortex-M boards and checks that it prints
-# exactly the same test vectors as the host build.
+# exactly the same test vectors as the host build; then runs every other firmware variant.
 #
 #   bash tests/firmware/run.sh          (from any directory; CI calls it from .ci/run)
 #
 # 1. Builds the host generator (host/, rustup's toolchain) and takes its output as the
 #    reference. Both sides print src/vectors.rs, the one list of vectors.
-# 2. For each board, cross-builds the firmware with Debian's rustc-web and -Zbuild-std
-#    (rustup cannot download targets offline; see shared/DESIGN.md §6), links it with
-#    rustup's rust-lld, runs it under qemu-system-arm with semihosting and a timeout,
-#    requires exit code 0 and `diff -u` against the host output.
+# 2. For each board, cross-builds the vector firmware (common.sh: Debian's rustc-web with
+#    -Zbuild-std, rustup's rust-lld), runs it under qemu-system-arm with semihosting and a
+#    timeout, requires exit code 0 and `diff -u` against the host output.
+# 3. The firmware author's example (src/bin/baked_pattern.rs: a const-baked pattern and a
+#    heapless buffer) on every board: exit 0 and the same output on all of them.
+# 4. panic_proof.sh (link-time proof that the hot paths keep no panic) and defmt_check.sh
+#    (defmt logging decoded on the host), unless FIRMWARE_SKIP_EXTRAS=1.
 #
 # Installs nothing except, when missing, the Debian packages qemu-system-arm, rustc-web
-# and rust-web-src (apt-get; as root, or through sudo). Exits non-zero on any build
-# failure, QEMU failure or timeout, or difference. Environment knobs: FIRMWARE_BOARDS
-# (space-separated subset of the boards below), FIRMWARE_TIMEOUT (seconds a QEMU run,
+# and rust-web-src (apt-get; see common.sh). Exits non-zero on any build failure, QEMU
+# failure or timeout, or difference. Environment knobs: FIRMWARE_BOARDS (space-separated
+# subset of microbit, lm3s6965evb, mps2-an386), FIRMWARE_TIMEOUT (seconds a QEMU run,
 # default 120).
 set -euo pipefail
 
-HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-cd "$HERE"
+# shellcheck source=common.sh
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+ensure_cross_toolchain
 
-# board:target:extra qemu arguments
-ALL_BOARDS=(
-    "microbit:thumbv6m-none-eabi:-machine microbit"
-    "lm3s6965evb:thumbv7m-none-eabi:-cpu cortex-m3 -machine lm3s6965evb"
-    "mps2-an386:thumbv7em-none-eabihf:-machine mps2-an386"
-)
+BOARDS=(microbit lm3s6965evb mps2-an386)
 TIMEOUT_SECS=${FIRMWARE_TIMEOUT:-120}
 OUT="$HERE/target/out"
+mkdir -p "$OUT"
 
-# The host side uses the rustup toolchain, whatever the environment says (as .ci/run).
-if [ -d "${CARGO_HOME:-$HOME/.cargo}/bin" ]; then
-    export PATH="${CARGO_HOME:-$HOME/.cargo}/bin:$PATH"
-fi
-unset RUSTC RUSTC_BOOTSTRAP RUSTFLAGS CARGO_ENCODED_RUSTFLAGS CARGO_BUILD_TARGET \
-    CARGO_TARGET_DIR CARGO_BUILD_RUSTFLAGS
-
-now() { date +%s.%N; }
-secs() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.1f", b - a }'; }
-as_root() {
-    if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi
-}
-
-# --- toolchain pieces -------------------------------------------------------------------
-have_cross_toolchain() {
-    [ -x /usr/bin/rustc ] &&
-        /usr/bin/rustc --version 2>/dev/null | grep -Eq '^rustc 1\.9[0-9]' &&
-        [ -d "$(/usr/bin/rustc --print sysroot)/lib/rustlib/src/rust/library/core" ] &&
-        command -v qemu-system-arm >/dev/null 2>&1
-}
-if ! have_cross_toolchain; then
-    echo "firmware: installing qemu-system-arm rustc-web rust-web-src (apt-get)"
-    export DEBIAN_FRONTEND=noninteractive
-    as_root apt-get update
-    as_root apt-get install -y qemu-system-arm rustc-web rust-web-src
-    have_cross_toolchain || { echo "firmware: cross toolchain still missing" >&2; exit 1; }
-fi
-HOST_TRIPLE="$(rustc -vV | sed -n 's/^host: //p')"
-LLD="$(rustc --print sysroot)/lib/rustlib/$HOST_TRIPLE/bin/rust-lld"
-if [ ! -x "$LLD" ]; then
-    echo "firmware: rustup's rust-lld not found at $LLD" >&2
-    exit 1
-fi
 echo "firmware: host $(rustc --version); cross /usr/bin/rustc $(/usr/bin/rustc --version | cut -d' ' -f2)"
 echo "firmware: $(qemu-system-arm --version | head -n1); linker $LLD"
 
-# Flash use: .vector_table + .text + .rodata (+ .data's load image) from the section table.
-flash_size() {
-    command -v readelf >/dev/null 2>&1 || { echo "? (no readelf)"; return; }
-    local vt=0 text=0 rodata=0 data=0 name size
-    while read -r name size; do
-        case "$name" in
-        .vector_table) vt=$((16#$size)) ;;
-        .text) text=$((16#$size)) ;;
-        .rodata) rodata=$((16#$size)) ;;
-        .data) data=$((16#$size)) ;;
-        esac
-    done < <(readelf -SW "$1" | sed -n 's/^ *\[ *[0-9]*\] *//p' | awk '{ print $1, $5 }')
-    echo "$((vt + text + rodata + data)) bytes (.text $text + .rodata $rodata," \
-        "vector table $vt, .data $data)"
+target_of_board() {
+    case "$1" in
+    microbit) echo thumbv6m-none-eabi ;;
+    lm3s6965evb) echo thumbv7m-none-eabi ;;
+    mps2-an386) echo thumbv7em-none-eabihf ;;
+    *) return 1 ;;
+    esac
 }
 
 # A fingerprint of everything the vectors depend on: if qmckit's sources change while
@@ -89,7 +49,6 @@ fingerprint() {
         "$HERE/host/src" -type f -print0 2>/dev/null | sort -z | xargs -0 cat | cksum
 }
 
-mkdir -p "$OUT"
 T_ALL=$(now)
 FINGERPRINT=$(fingerprint)
 
@@ -104,67 +63,62 @@ if [ "$HOST_LINES" -lt 100 ] || ! tail -n1 "$OUT/host.txt" | grep -qx "end $((HO
 fi
 echo "firmware: host reference: $HOST_LINES lines ($(secs "$T0" "$(now)") s)"
 
-# Cargo.lock is generated by rustup's cargo (never with the Debian rustc), as in .ci/run.
-if [ ! -f Cargo.lock ]; then
-    cargo generate-lockfile
-fi
-
-# --- boards -----------------------------------------------------------------------------
 FAILED=()
 PASSED=0
-SUMMARY=()
-for entry in "${ALL_BOARDS[@]}"; do
-    board=${entry%%:*}
-    rest=${entry#*:}
-    target=${rest%%:*}
-    qemu_args=${rest#*:}
-    if [ -n "${FIRMWARE_BOARDS:-}" ] && ! [[ " $FIRMWARE_BOARDS " == *" $board "* ]]; then
-        continue
-    fi
+
+# run_variant BOARD BIN FEATURES EXPECTED: builds BIN for BOARD, runs it, and diffs its
+# output with the file EXPECTED (or, if EXPECTED does not exist yet, makes it the reference).
+run_variant() {
+    local board=$1 bin=$2 features=$3 expected=$4
+    local target tdir elf out rc=0 t0 t1 t2 timing
+    target=$(target_of_board "$board")
+    tdir="$HERE/target/$board"
+    out="$OUT/$board-$bin.txt"
     echo
-    echo "-- firmware $board ($target)"
-    T0=$(now)
-    if ! RUSTC=/usr/bin/rustc RUSTC_BOOTSTRAP=1 \
-        RUSTFLAGS="-C linker=$LLD -C link-arg=-Tlink.x" \
-        cargo build --release --quiet \
-        -Zbuild-std=core,compiler_builtins -Zbuild-std-features=compiler-builtins-mem \
-        --target "$target" --features "board-$board" \
-        --target-dir "$HERE/target/$board"; then
-        echo "firmware $board: BUILD FAILED"
-        FAILED+=("$board (build)")
-        continue
+    echo "-- firmware $bin on $board ($target)"
+    t0=$(now)
+    if ! cross_build "$target" "$tdir" "$features" "$bin"; then
+        echo "firmware $bin on $board: BUILD FAILED"
+        FAILED+=("$bin/$board (build)")
+        return 0
     fi
-    T1=$(now)
-    elf="$HERE/target/$board/$target/release/qmckit-firmware"
-    rc=0
-    # shellcheck disable=SC2086 # qemu_args is a list of words
-    timeout "$TIMEOUT_SECS" qemu-system-arm $qemu_args -nographic -monitor none \
-        -semihosting-config enable=on,target=native -kernel "$elf" \
-        </dev/null >"$OUT/$board.txt" 2>"$OUT/$board.stderr" || rc=$?
-    T2=$(now)
-    timing="build $(secs "$T0" "$T1") s, qemu $(secs "$T1" "$T2") s"
+    t1=$(now)
+    elf="$tdir/$target/release/$bin"
+    run_qemu "$board" "$elf" "$out" "$TIMEOUT_SECS" || rc=$?
+    t2=$(now)
+    timing="build $(secs "$t0" "$t1") s, qemu $(secs "$t1" "$t2") s"
     echo "   flash: $(flash_size "$elf")"
     if [ "$rc" -ne 0 ]; then
         if [ "$rc" -eq 124 ]; then
-            echo "firmware $board: TIMEOUT after ${TIMEOUT_SECS}s ($timing)"
+            echo "firmware $bin on $board: TIMEOUT after ${TIMEOUT_SECS}s ($timing)"
         else
-            echo "firmware $board: qemu exit code $rc ($timing)"
+            echo "firmware $bin on $board: qemu exit code $rc ($timing)"
         fi
-        sed 's/^/   stderr: /' "$OUT/$board.stderr" | tail -n 20
-        FAILED+=("$board (exit $rc)")
-        continue
+        sed 's/^/   stderr: /' "$out.stderr" | tail -n 20
+        FAILED+=("$bin/$board (exit $rc)")
+        return 0
     fi
-    if ! diff -u --label host "$OUT/host.txt" --label "$board" "$OUT/$board.txt" \
-        >"$OUT/$board.diff"; then
-        echo "firmware $board: OUTPUT DIFFERS from host ($timing):"
-        head -n 60 "$OUT/$board.diff"
-        FAILED+=("$board (diff)")
-        continue
+    if [ ! -f "$expected" ]; then
+        cp "$out" "$expected"
     fi
-    n=$(wc -l <"$OUT/$board.txt")
-    echo "firmware $board: $n vector lines identical to host ($timing)"
-    SUMMARY+=("$board: $n lines, $timing")
+    if ! diff -u --label expected "$expected" --label "$board" "$out" >"$out.diff"; then
+        echo "firmware $bin on $board: OUTPUT DIFFERS from $(basename "$expected") ($timing):"
+        head -n 60 "$out.diff"
+        FAILED+=("$bin/$board (diff)")
+        return 0
+    fi
+    echo "firmware $bin on $board: $(wc -l <"$out") lines identical to $(basename "$expected") ($timing)"
     PASSED=$((PASSED + 1))
+}
+
+rm -f "$OUT/baked-pattern.reference.txt"
+for board in "${BOARDS[@]}"; do
+    if [ -n "${FIRMWARE_BOARDS:-}" ] && ! [[ " $FIRMWARE_BOARDS " == *" $board "* ]]; then
+        continue
+    fi
+    run_variant "$board" qmckit-firmware "" "$OUT/host.txt"
+    # The first board's output is the reference for the others.
+    run_variant "$board" baked-pattern heapless "$OUT/baked-pattern.reference.txt"
 done
 
 echo
@@ -172,12 +126,21 @@ if [ "$(fingerprint)" != "$FINGERPRINT" ]; then
     echo "firmware: WARNING: qmckit's sources changed during this run; rerun before" \
         "trusting a difference"
 fi
-if [ "${#FAILED[@]}" -ne 0 ]; then
-    echo "firmware: FAILED: ${FAILED[*]} ($PASSED board(s) identical; outputs in $OUT)"
-    exit 1
-fi
-if [ "$PASSED" -eq 0 ]; then
+if [ "$PASSED" -eq 0 ] && [ "${#FAILED[@]}" -eq 0 ]; then
     echo "firmware: no board selected (FIRMWARE_BOARDS='${FIRMWARE_BOARDS:-}')" >&2
     exit 1
 fi
-echo "firmware: all $PASSED board(s) bit-identical to the host in $(secs "$T_ALL" "$(now)") s"
+
+if [ "${FIRMWARE_SKIP_EXTRAS:-0}" != 1 ]; then
+    echo
+    bash "$HERE/panic_proof.sh" || FAILED+=("panic proof")
+    echo
+    bash "$HERE/defmt_check.sh" || FAILED+=("defmt")
+fi
+
+echo
+if [ "${#FAILED[@]}" -ne 0 ]; then
+    echo "firmware: FAILED: ${FAILED[*]} ($PASSED variant run(s) identical; outputs in $OUT)"
+    exit 1
+fi
+echo "firmware: all $PASSED variant runs identical to their reference in $(secs "$T_ALL" "$(now)") s"
