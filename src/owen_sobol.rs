@@ -10,6 +10,7 @@
 //!   dispatches at run time to an AVX2 build of the same code.
 
 use crate::bits::{reverse_bits, to_f32_via_f64};
+use crate::error::Result;
 use crate::randomize::FastOwen;
 use crate::sobol::{SobolDimension, byte_product, byte_tables};
 
@@ -89,6 +90,36 @@ pub struct OwenSobol4 {
 }
 
 impl OwenSobol4 {
+    /// Sobol' dimensions `dims` (0-based), each scrambled as its own position by `owen`:
+    /// the usual case of [`OwenSobol4::new`], validated. `const`, so firmware can bake the
+    /// 16 KiB of tables into flash.
+    ///
+    /// # Errors
+    /// [`Error::DimensionOutOfRange`](crate::Error::DimensionOutOfRange) for a dimension past
+    /// [`SOBOL_MAX_DIMS`](crate::SOBOL_MAX_DIMS).
+    ///
+    /// ```
+    /// use qmckit::owen_sobol::OwenSobol4;
+    /// use qmckit::randomize::FastOwen;
+    /// static FOUR: OwenSobol4 = match OwenSobol4::from_dims([0, 1, 2, 3], FastOwen::new(7)) {
+    ///     Ok(t) => t,
+    ///     Err(_) => panic!(), // a build error, never a run-time panic
+    /// };
+    /// assert!(OwenSobol4::from_dims([0, 1, 2, 1 << 20], FastOwen::new(7)).is_err());
+    /// # let _ = FOUR.sample(5);
+    /// ```
+    pub const fn from_dims(dims: [usize; 4], owen: FastOwen) -> Result<Self> {
+        match (
+            SobolDimension::new(dims[0]),
+            SobolDimension::new(dims[1]),
+            SobolDimension::new(dims[2]),
+            SobolDimension::new(dims[3]),
+        ) {
+            (Ok(a), Ok(b), Ok(c), Ok(d)) => Ok(Self::new([a, b, c, d], dims, owen)),
+            (Err(e), _, _, _) | (_, Err(e), _, _) | (_, _, Err(e), _) | (_, _, _, Err(e)) => Err(e),
+        }
+    }
+
     /// The dimensions `dims`, scrambled as positions `dim_indices` by `owen`. `const`.
     pub const fn new(dims: [SobolDimension; 4], dim_indices: [usize; 4], owen: FastOwen) -> Self {
         let mut t = [[[0u32; 4]; 256]; 4];

@@ -43,6 +43,20 @@ pub const fn directions(dim: usize) -> Result<&'static [u32; 32]> {
     }
 }
 
+/// `[V_1, V_1 ^ V_2, .., V_1 ^ .. ^ V_32]`: the natural-order increments (see
+/// [`SobolDimension::increments`]).
+const fn prefix_xors(v: &[u32; 32]) -> [u32; 32] {
+    let mut p = [0u32; 32];
+    let mut acc = 0u32;
+    let mut k = 0;
+    while k < 32 {
+        acc ^= v[k];
+        p[k] = acc;
+        k += 1;
+    }
+    p
+}
+
 /// Dimensions advanced together by [`Sobol`]'s sequential fill.
 const FILL_BLOCK: usize = 32;
 
@@ -91,15 +105,7 @@ impl SobolDimension {
     /// `P_t = V_1 ^ .. ^ V_(t+1)`: going from index `i` to `i + 1` flips the `t + 1` lowest
     /// bits of `i`, where `t` is its number of trailing ones, so `x(i + 1) = x(i) ^ P_t`.
     pub const fn increments(&self) -> [u32; 32] {
-        let mut p = [0u32; 32];
-        let mut acc = 0u32;
-        let mut k = 0;
-        while k < 32 {
-            acc ^= self.v[k];
-            p[k] = acc;
-            k += 1;
-        }
-        p
+        prefix_xors(&self.v)
     }
 
     /// Fills every `stride`-th element of `out` with consecutive natural-order points from
@@ -345,7 +351,7 @@ impl Sobol {
         for (lane, v) in dirs.iter().enumerate().take(L) {
             let (steps, i0) = match self.order {
                 Order::Gray => (*v, gray(start)),
-                Order::Natural => (SobolDimension { v: *v }.increments(), start),
+                Order::Natural => (prefix_xors(v), start),
             };
             for (row, step) in table.iter_mut().zip(steps) {
                 row[lane] = step;

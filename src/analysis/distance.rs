@@ -258,19 +258,12 @@ mod tests {
         (nn.iter().copied().fold(f64::INFINITY, f64::min), nn)
     }
 
-    /// A small deterministic generator (splitmix64) for test points.
+    /// `n` seeded independent coordinates in [0, 1) (the crate's hash-based sampler).
     fn uniform(n: usize, seed: u64) -> Vec<f64> {
-        let mut s = seed;
-        (0..n)
-            .map(|_| {
-                s = s.wrapping_add(0x9E37_79B9_7F4A_7C15);
-                let mut z = s;
-                z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-                z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-                z ^= z >> 31;
-                (z >> 11) as f64 / (1u64 << 53) as f64
-            })
-            .collect()
+        let ind = crate::Independent::new(1, seed).expect("one dimension");
+        let mut raw = vec![0u32; n];
+        crate::Sampler::fill(&ind, 0, &mut raw).expect("in range");
+        Points::from_u32(&raw)
     }
 
     #[test]

@@ -70,3 +70,19 @@ pub fn star_discrepancy_2d_exact(points: &[[u32; 2]]) -> (i128, i128) {
     }
     (best, n << 64)
 }
+
+/// `n` SplitMix64 uniform doubles in [0, 1) (Steele, Lea, Flood 2014): test points from a
+/// generator that shares no code with qmckit.
+pub fn uniform(n: usize, seed: u64) -> Vec<f64> {
+    let mut s = seed;
+    (0..n)
+        .map(|_| {
+            s = s.wrapping_add(0x9E37_79B9_7F4A_7C15);
+            let mut z = s;
+            z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+            z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+            z ^= z >> 31;
+            (z >> 11) as f64 / (1u64 << 53) as f64
+        })
+        .collect()
+}

@@ -13,22 +13,38 @@ use core::hint::black_box;
 
 use qmckit::randomize::{FastOwen, OwenHash};
 use qmckit::sobol::{Order, Sobol, SobolDimension};
-use qmckit::{
-    Halton, Hammersley, LarcherPillichshammer, RadicalInverse, Sampler, VanDerCorput,
-};
+use qmckit::{Halton, Hammersley, LarcherPillichshammer, RadicalInverse, Sampler, VanDerCorput};
 
 /// Logs every line; returns the number of lines.
 pub fn log_all() -> u32 {
     let mut n = 0u32;
     // Errors (Error derives defmt::Format under qmckit's `defmt` feature).
     out!("err Halton::new(0) {:?}", Halton::new(black_box(0)).err());
-    out!("err Halton::new(1025) {:?}", Halton::new(black_box(1025)).err());
-    out!("err RadicalInverse::new(1) {:?}", RadicalInverse::new(black_box(1)).err());
-    out!("err LP::new(33) {:?}", LarcherPillichshammer::new(black_box(33)).err());
-    out!("err LP::with_points(48) {:?}", LarcherPillichshammer::with_points(black_box(48)).err());
-    out!("err Hammersley::new(0,2) {:?}", Hammersley::new(black_box(0), 2).err());
+    out!(
+        "err Halton::new(1025) {:?}",
+        Halton::new(black_box(1025)).err()
+    );
+    out!(
+        "err RadicalInverse::new(1) {:?}",
+        RadicalInverse::new(black_box(1)).err()
+    );
+    out!(
+        "err LP::new(33) {:?}",
+        LarcherPillichshammer::new(black_box(33)).err()
+    );
+    out!(
+        "err LP::with_points(48) {:?}",
+        LarcherPillichshammer::with_points(black_box(48)).err()
+    );
+    out!(
+        "err Hammersley::new(0,2) {:?}",
+        Hammersley::new(black_box(0), 2).err()
+    );
     out!("err Sobol::new(65) {:?}", Sobol::new(black_box(65)).err());
-    out!("err VanDerCorput::new(0) {:?}", VanDerCorput::new(black_box(0)).err());
+    out!(
+        "err VanDerCorput::new(0) {:?}",
+        VanDerCorput::new(black_box(0)).err()
+    );
     n += 8;
     // Results of sampling calls, Ok and Err.
     if let Ok(h) = Halton::new(black_box(3)) {
@@ -46,7 +62,11 @@ pub fn log_all() -> u32 {
         n += 2;
     }
     if let Ok(phi3) = RadicalInverse::new(black_box(3)) {
-        out!("ri3 digits {:?} {:?}", phi3.digits(), phi3.sample(black_box(1000)));
+        out!(
+            "ri3 digits {:?} {:?}",
+            phi3.digits(),
+            phi3.sample(black_box(1000))
+        );
         out!("ri3 inverse {:?}", phi3.inverse(black_box(0), 21));
         n += 2;
     }
@@ -59,15 +79,33 @@ pub fn log_all() -> u32 {
         }
     }
     if let Ok(d) = SobolDimension::new(black_box(1)) {
-        out!("sobol dim1 {:?}", [d.sample(1), d.sample(2), d.sample(3), d.sample(0xFFFF_FFFF)]);
+        out!(
+            "sobol dim1 {:?}",
+            [d.sample(1), d.sample(2), d.sample(3), d.sample(0xFFFF_FFFF)]
+        );
         n += 1;
     }
-    for owen in [FastOwen::new(black_box(7)), FastOwen::with_hash(7, OwenHash::LaineKarras)] {
-        out!("{:?} {:?}", owen, [owen.scramble(black_box(1 << 31), 0), owen.scramble(1 << 31, 1)]);
+    for owen in [
+        FastOwen::new(black_box(7)),
+        FastOwen::with_hash(7, OwenHash::LaineKarras),
+    ] {
+        out!(
+            "{:?} {:?}",
+            owen,
+            [
+                owen.scramble(black_box(1 << 31), 0),
+                owen.scramble(1 << 31, 1)
+            ]
+        );
         n += 1;
     }
     if let Ok(lp) = LarcherPillichshammer::new(black_box(4)) {
-        out!("lp {:?} {:?} {:?}", lp, lp.sample(black_box(5), 1), lp.sample(black_box(16), 0));
+        out!(
+            "lp {:?} {:?} {:?}",
+            lp,
+            lp.sample(black_box(5), 1),
+            lp.sample(black_box(16), 0)
+        );
         n += 1;
     }
     n

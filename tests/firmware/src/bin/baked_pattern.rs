@@ -77,7 +77,11 @@ fn run<W: Write>(out: &mut W) -> Result<bool, core::fmt::Error> {
     let pattern = black_box(&PATTERN);
     let same = buf.as_slice() == &pattern[..];
     let net = is_net(pattern);
-    writeln!(out, "pattern {N} points, flash {} bytes", core::mem::size_of_val(pattern))?;
+    writeln!(
+        out,
+        "pattern {N} points, flash {} bytes",
+        core::mem::size_of_val(pattern)
+    )?;
     for (i, &[x, y]) in pattern.iter().enumerate() {
         writeln!(
             out,

@@ -150,19 +150,10 @@ const Y: SobolDimension = match SobolDimension::new(1) {
 /// Byte tables (4 KiB a dimension) baked into flash.
 static TX: SobolTable = SobolTable::new(X);
 static TY: SobolTable = SobolTable::new(Y);
-static OWEN_SOBOL4: OwenSobol4 = OwenSobol4::new(
-    match (
-        SobolDimension::new(0),
-        SobolDimension::new(1),
-        SobolDimension::new(2),
-        SobolDimension::new(3),
-    ) {
-        (Ok(a), Ok(b), Ok(c), Ok(d)) => [a, b, c, d],
-        _ => panic!(),
-    },
-    [0, 1, 2, 3],
-    FastOwen::new(0x5EED),
-);
+static OWEN_SOBOL4: OwenSobol4 = match OwenSobol4::from_dims([0, 1, 2, 3], FastOwen::new(0x5EED)) {
+    Ok(t) => t,
+    Err(_) => panic!(),
+};
 
 /// 16-bit indices: `N` = 4096 samples spread over 0..65536.
 const STEP16: u32 = 16;
@@ -188,7 +179,9 @@ fn measure<W: Write>(out: &mut W) -> core::fmt::Result {
             ("sobol-2d-table", run(step, |i| TX.sample(i) ^ TY.sample(i))),
             (
                 "sobol-2d-owen",
-                run(step, |i| owen.scramble(X.sample(i), 0) ^ owen.scramble(Y.sample(i), 1)),
+                run(step, |i| {
+                    owen.scramble(X.sample(i), 0) ^ owen.scramble(Y.sample(i), 1)
+                }),
             ),
             (
                 "owen-sobol4-4d",

@@ -122,19 +122,10 @@ static SOBOL_TABLE_3: SobolTable = SobolTable::new(match SobolDimension::new(3) 
     Err(_) => panic!(),
 });
 
-static OWEN_SOBOL4: OwenSobol4 = OwenSobol4::new(
-    match (
-        SobolDimension::new(0),
-        SobolDimension::new(1),
-        SobolDimension::new(2),
-        SobolDimension::new(3),
-    ) {
-        (Ok(a), Ok(b), Ok(c), Ok(d)) => [a, b, c, d],
-        _ => panic!(),
-    },
-    [0, 1, 2, 3],
-    FastOwen::new(0x5EED),
-);
+static OWEN_SOBOL4: OwenSobol4 = match OwenSobol4::from_dims([0, 1, 2, 3], FastOwen::new(0x5EED)) {
+    Ok(t) => t,
+    Err(_) => panic!(),
+};
 
 /// Indices swept by every check (run-time values through `black_box`).
 const COUNT: u32 = 64;
