@@ -212,11 +212,11 @@ goal() { awk -v x="$1" 'BEGIN { print (x <= 40) ? "met" : "**not met**" }'; }
     echo
     printf '%s\n' "${GOAL_LINES[@]}"
     echo
-    echo "(b) uses the public API as documented: a \`const SobolDimension\` holds a reference"
-    echo "into the \`SOBOL_DIRECTIONS\` static, so the whole table (8 KiB, 128 KiB with"
-    echo "\`sobol-dims-1024\`) is linked even for two dimensions. (b') copies the two dimensions'"
-    echo "direction numbers into firmware constants at compile time and calls \`bits::gf2_mul\`"
-    echo "(the same bits as \`SobolDimension::sample\`)."
+    echo "(b) uses the public API as documented: \`SobolDimension\` holds its 128 bytes of"
+    echo "direction numbers by value, so a \`const\` dimension links only its own numbers, not"
+    echo "the compiled-in table (8 KiB, 128 KiB with \`sobol-dims-1024\`). (b') copies the two"
+    echo "dimensions' direction numbers into firmware constants and calls \`bits::gf2_mul\`"
+    echo "directly (the same bits as \`SobolDimension::sample\`), as a cross-check of (b)."
     echo
     echo "## Instructions per sample"
     echo

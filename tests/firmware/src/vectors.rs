@@ -205,6 +205,7 @@ pub fn write_all<W: Write>(out: &mut W) -> fmt::Result {
     sobol(&mut lines)?;
     scramblers(&mut lines)?;
     const_patterns(&mut lines)?;
+    warps(&mut lines)?;
     errors(&mut lines)?;
     let n = lines.n;
     writeln!(lines.inner, "end {n}")
@@ -580,19 +581,10 @@ static SOBOL_TABLE_1: SobolTable = SobolTable::new(match SobolDimension::new(1) 
 });
 
 /// Four Owen-scrambled Sobol' dimensions with interleaved byte tables, baked into flash.
-static OWEN_SOBOL4: OwenSobol4 = OwenSobol4::new(
-    match (
-        SobolDimension::new(0),
-        SobolDimension::new(1),
-        SobolDimension::new(2),
-        SobolDimension::new(3),
-    ) {
-        (Ok(a), Ok(b), Ok(c), Ok(d)) => [a, b, c, d],
-        _ => panic!(),
-    },
-    [0, 1, 2, 3],
-    FastOwen::new(0x5EED),
-);
+static OWEN_SOBOL4: OwenSobol4 = match OwenSobol4::from_dims([0, 1, 2, 3], FastOwen::new(0x5EED)) {
+    Ok(t) => t,
+    Err(_) => panic!(),
+};
 
 fn sobol<W: Write>(out: &mut W) -> fmt::Result {
     let mut d4 = Digest::new();
@@ -644,6 +636,105 @@ fn sobol<W: Write>(out: &mut W) -> fmt::Result {
         }
     }
     writeln!(out, "sobol_max_dims {}", qmckit::SOBOL_MAX_DIMS)
+}
+
+/// Warp inputs: 256 Owen-scrambled 2D Sobol' points and the corners of the unit square
+/// (0 and the largest 0.32 fraction below 1).
+fn warp_inputs() -> impl Iterator<Item = [u32; 2]> {
+    let owen = FastOwen::new(black_box(0x3A7B));
+    let sobol = (0..256u32).map(move |i| {
+        let i = black_box(i);
+        let x = SobolDimension::new(0).map(|d| d.sample(i)).unwrap_or(0);
+        let y = SobolDimension::new(1).map(|d| d.sample(i)).unwrap_or(0);
+        [owen.scramble(x, 0), owen.scramble(y, 1)]
+    });
+    let max = u32::MAX;
+    [[0, 0], [0, max], [max, 0], [max, max]]
+        .into_iter()
+        .chain(sobol)
+}
+
+/// The fixed-point warps (integer arithmetic: the same bits everywhere by construction)
+/// and the `f32` warps through `libm` (IEEE-754 basic operations are correctly rounded and
+/// libm is portable Rust, so the same bits are expected on soft-float Cortex-M0/M3, the
+/// M4F's FPU and the host's SSE): digests of outputs, pdfs and inverses.
+fn warps<W: Write>(out: &mut W) -> fmt::Result {
+    use qmckit::bits::{to_f32, to_fixed};
+    use qmckit::{fixed_warp as fw, warp};
+    let (mut fixed, mut fixed_inv, mut float, mut float_inv) =
+        (Digest::new(), Digest::new(), Digest::new(), Digest::new());
+    for [x, y] in warp_inputs() {
+        let u = [to_fixed(x), to_fixed(y)];
+        let d = fw::sample_uniform_disk_polar(u);
+        let c = fw::sample_uniform_disk_concentric(u);
+        let h = fw::sample_uniform_hemisphere(u);
+        let k = fw::sample_cosine_hemisphere(u);
+        let t = fw::sample_uniform_triangle(u);
+        for v in [d[0], d[1], c[0], c[1], h[0], h[1], h[2], k[0], k[1], k[2]] {
+            fixed.push(v.to_bits() as u32);
+        }
+        for v in [t[0], t[1], t[2], fw::cosine_hemisphere_pdf(k[2])] {
+            fixed.push(v.to_bits() as u32);
+        }
+        for v in [
+            fw::invert_uniform_disk_polar(d),
+            fw::invert_uniform_disk_concentric(c),
+            fw::invert_uniform_hemisphere(h),
+            fw::invert_cosine_hemisphere(k),
+            fw::invert_uniform_triangle(t),
+        ] {
+            fixed_inv.push(v[0].to_bits());
+            fixed_inv.push(v[1].to_bits());
+        }
+
+        let u = [to_f32(x), to_f32(y)];
+        let d = warp::disk::sample_uniform_disk_concentric(u);
+        let p = warp::disk::sample_uniform_disk_polar(u);
+        let s = warp::sphere::sample_uniform_sphere(u);
+        let k = warp::sphere::sample_cosine_hemisphere(u);
+        let c = warp::sphere::sample_uniform_cone(u, black_box(0.9));
+        let t = warp::triangle::sample_uniform_triangle(u);
+        let g = warp::gaussian::sample_box_muller(u);
+        for v in [d[0], d[1], p[0], p[1], s[0], s[1], s[2], k[0], k[1], k[2]] {
+            float.push(v.to_bits());
+        }
+        for v in [c[0], c[1], c[2], t[0], t[1], t[2], g[0], g[1]] {
+            float.push(v.to_bits());
+        }
+        float.push(warp::gaussian::sample_normal(u[0]).to_bits());
+        for v in [
+            warp::disk::invert_uniform_disk_concentric(d),
+            warp::disk::invert_uniform_disk_polar(p),
+            warp::sphere::invert_uniform_sphere(s),
+            warp::sphere::invert_cosine_hemisphere(k),
+        ] {
+            float_inv.push(v[0].to_bits());
+            float_inv.push(v[1].to_bits());
+        }
+    }
+    writeln!(out, "fixed_warps 260 {fixed}")?;
+    writeln!(out, "fixed_warps_inverse 260 {fixed_inv}")?;
+    writeln!(out, "f32_warps 260 {float}")?;
+    writeln!(out, "f32_warps_inverse 260 {float_inv}")?;
+    // One point in full, for reading a difference.
+    let u = [
+        to_fixed(black_box(0x4000_0000)),
+        to_fixed(black_box(0xC000_0000)),
+    ];
+    let c = fw::sample_uniform_disk_concentric(u);
+    writeln!(
+        out,
+        "fixed_disk_concentric 1/4 3/4 {} {}",
+        c[0].to_bits(),
+        c[1].to_bits()
+    )?;
+    let c = warp::disk::sample_uniform_disk_concentric([0.25, black_box(0.75)]);
+    writeln!(
+        out,
+        "f32_disk_concentric 1/4 3/4 {} {}",
+        c[0].to_bits(),
+        c[1].to_bits()
+    )
 }
 
 fn scramblers<W: Write>(out: &mut W) -> fmt::Result {
