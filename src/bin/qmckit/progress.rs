@@ -44,7 +44,7 @@ pub fn with_spinner<T: Send>(label: &str, work: impl FnOnce() -> T + Send) -> T 
 
 /// A ticking spinner with `label`.
 fn spinner(label: &str) -> ProgressBar {
-    let bar = ProgressBar::new_spinner();
+    let bar = ProgressBar::new_spinner().with_elapsed(QUIET);
     if let Ok(style) = ProgressStyle::with_template("{spinner} {msg} ({elapsed})") {
         bar.set_style(style);
     }

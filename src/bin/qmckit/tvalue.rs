@@ -20,7 +20,9 @@ vdc (d = 1, base 2). Other samplers are refused.
 Method: without --scramble, the rank test on the generator matrices (exact, m <= 32; its
 cost grows like C(m - t + 1 + d, d), fast for small d). With --scramble KIND (any kind
 `qmckit points` accepts for the sampler), the 2^m points are generated and counted in
-elementary intervals (exact; m <= 24 and 2^m * d <= 2^25).
+elementary intervals (exact; m <= 21, 2^m * d <= 2^25, and 2^m d C(m + d - 1, d - 1) <= 1e8
+steps, e.g. m <= 21 in 2D, m <= 17 in 3D; larger requests are refused). --explain counts too,
+so it has the same limits.
 
 Output, one 'key value' line each:
   sampler NAME
@@ -38,7 +40,7 @@ of volume 2^(t-1-m) that does not hold 2^(t-1) points (why t-1 fails), e.g.
 pub struct TvalueArgs {
     /// Which construction: sobol, lp, hammersley or vdc.
     sampler: SamplerName,
-    /// The set has 2^m points (m <= 32; m <= 24 when counting).
+    /// The set has 2^m points (m <= 32; m <= 21 when counting).
     #[arg(short = 'm', value_name = "M")]
     m: u32,
     /// Dimensions [default: 1 for vdc, 2 otherwise].
@@ -56,9 +58,12 @@ pub struct TvalueArgs {
 }
 
 /// Largest `m` whose points are generated and counted.
-const COUNT_MAX_M: u32 = 24;
+const COUNT_MAX_M: u32 = 21;
 /// Largest number of coordinates (`2^m d`) generated for counting.
 const COUNT_MAX_VALUES: u64 = 1 << 25;
+
+/// Largest [`count_work`] accepted: seconds on two cores.
+const COUNT_MAX_WORK: f64 = 1e8;
 
 /// Failures listed by `--explain`.
 const EXPLAIN_LIMIT: usize = 5;
@@ -103,6 +108,13 @@ fn net(sampler: SamplerName, m: u32, d: usize) -> Result<DigitalNet2, Failure> {
     })
 }
 
+/// Estimated steps of counting `2^m` points of `d` dimensions into the cells of every
+/// interval shape of size up to `m`: `2^m d C(m + d - 1, d - 1)`.
+fn count_work(m: u32, d: usize) -> f64 {
+    let shapes = (1..d).fold(1.0, |c, k| c * (m as f64 + k as f64) / k as f64);
+    (1u64 << m) as f64 * d as f64 * shapes
+}
+
 /// Refuses point counts too large to generate and count in reasonable time and memory.
 fn check_countable(m: u32, d: usize, why: &str) -> Result<(), Failure> {
     let values = (1u64 << m).saturating_mul(d as u64);
@@ -110,6 +122,13 @@ fn check_countable(m: u32, d: usize, why: &str) -> Result<(), Failure> {
         return Err(Failure::usage(format!(
             "{why} counts points: 2^{m} points of {d} dimensions are too many \
              (m <= {COUNT_MAX_M} and 2^m * d <= 2^25)"
+        )));
+    }
+    let work = count_work(m, d);
+    if work > COUNT_MAX_WORK {
+        return Err(Failure::usage(format!(
+            "{why} counts points: 2^{m} points of {d} dimensions take too long to count \
+             (about {work:.1e} steps, at most {COUNT_MAX_WORK:.0e}); lower -m or -d"
         )));
     }
     Ok(())
@@ -134,6 +153,9 @@ pub fn run(args: &TvalueArgs) -> Result<(), Failure> {
     // Validates the sampler and d for both methods.
     let net = net(args.sampler, m, d)?;
     let counting = args.scramble != ScrambleName::None;
+    if args.explain {
+        check_countable(m, d, "--explain")?;
+    }
     let (t, samples) = if counting {
         check_countable(m, d, "--scramble")?;
         let spec = Spec::base2(args.sampler, 1u64 << m, d, args.scramble, args.seed);
@@ -152,10 +174,7 @@ pub fn run(args: &TvalueArgs) -> Result<(), Failure> {
     if args.explain && t > 0 {
         let samples = match samples {
             Some(s) => s,
-            None => {
-                check_countable(m, d, "--explain")?;
-                net.points()?
-            }
+            None => net.points()?,
         };
         let failures: Vec<IntervalFailure> = with_spinner("elementary intervals", || {
             elementary_interval_failures_u32(&samples, d, m, t - 1, EXPLAIN_LIMIT)
