@@ -10,9 +10,11 @@
 //! | [`star`] | star discrepancy: exact (1D closed form, 2D, d-D), extreme discrepancy in 2D |
 //! | [`tvalue`] | t-values of base-2 digital nets (generator matrices) and of point sets (elementary intervals) |
 //! | [`distance`] | minimum distance, optionally on the torus |
+//! | [`pointfile`] | reading point sets from text (the `qmckit discrepancy` input format) |
 
 pub mod distance;
 pub mod l2;
+pub mod pointfile;
 pub mod star;
 pub mod tvalue;
 

@@ -1,10 +1,13 @@
-//! The `qmckit` command: generate and (later) judge sampling patterns.
+//! The `qmckit` command: generate and judge sampling patterns.
 //!
 //! Errors go to stderr as one line, `qmckit: error: ...`, with exit code 2 for bad usage or
 //! input and 1 for failures of the environment (e.g. an unwritable output).
 
+mod discrepancy;
 mod output;
 mod points;
+mod progress;
+mod tvalue;
 mod warp;
 
 use std::io::Write;
@@ -24,6 +27,12 @@ struct Cli {
 enum Command {
     /// Write N points of a sampler, one point per line (natural order: line k is index start+k).
     Points(points::PointsArgs),
+    /// Discrepancies of point sets read from a text file or stdin: 'metric value' lines.
+    #[command(after_help = discrepancy::AFTER_HELP)]
+    Discrepancy(discrepancy::DiscrepancyArgs),
+    /// The t-value of the first 2^m points of a base-2 net or sequence.
+    #[command(after_help = tvalue::AFTER_HELP)]
+    Tvalue(tvalue::TvalueArgs),
 }
 
 /// A failure to report: one line and an exit code.
@@ -94,6 +103,8 @@ fn main() -> ExitCode {
     };
     let result = match cli.command {
         Command::Points(args) => points::run(&args),
+        Command::Discrepancy(args) => discrepancy::run(&args),
+        Command::Tvalue(args) => tvalue::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

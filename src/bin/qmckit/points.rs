@@ -117,8 +117,82 @@ pub struct PointsArgs {
 /// Points written per batch (bounded memory for any n).
 const BATCH: usize = 1 << 14;
 
-/// Builds the sampler the arguments name, randomized as `--scramble` asks.
-fn build(args: &PointsArgs) -> Result<Box<dyn Sampler>, Failure> {
+/// What [`build`] needs to construct a sampler: shared by `points` and `tvalue`.
+#[derive(Clone, Debug)]
+pub struct Spec {
+    /// Which construction.
+    pub sampler: SamplerName,
+    /// Number of points asked for (the default set size of finite sets).
+    pub n: u64,
+    /// Dimensions [default: 1 for vdc, 2 otherwise].
+    pub d: Option<usize>,
+    /// Size of finite sets [default: n].
+    pub total: Option<u64>,
+    /// Seed of randomized samplers and scrambles.
+    pub seed: u64,
+    /// Randomization.
+    pub scramble: ScrambleName,
+    /// Point order.
+    pub order: OrderName,
+    /// Base of the van der Corput sequence.
+    pub base: u32,
+    /// Strata per dimension for stratified (`8x4`).
+    pub strata: Option<String>,
+    /// Stratified: cell centers instead of jitter.
+    pub centered: bool,
+}
+
+impl Spec {
+    /// The spec of an unordered, unwarped base-2 set of `n` points of `d` dimensions.
+    pub fn base2(
+        sampler: SamplerName,
+        n: u64,
+        d: usize,
+        scramble: ScrambleName,
+        seed: u64,
+    ) -> Self {
+        Spec {
+            sampler,
+            n,
+            d: Some(d),
+            total: None,
+            seed,
+            scramble,
+            order: OrderName::Natural,
+            base: 2,
+            strata: None,
+            centered: false,
+        }
+    }
+}
+
+impl PointsArgs {
+    /// The sampler part of the arguments.
+    fn spec(&self) -> Spec {
+        Spec {
+            sampler: self.sampler,
+            n: self.n,
+            d: self.d,
+            total: self.total,
+            seed: self.seed,
+            scramble: self.scramble,
+            order: self.order,
+            base: self.base,
+            strata: self.strata.clone(),
+            centered: self.centered,
+        }
+    }
+}
+
+/// The command-line name of a value (`fast-owen`, `sobol`).
+pub fn value_name(v: &impl ValueEnum) -> String {
+    v.to_possible_value()
+        .map(|v| v.get_name().to_owned())
+        .unwrap_or_default()
+}
+
+/// Builds the sampler `args` names, randomized as `--scramble` asks.
+pub fn build(args: &Spec) -> Result<Box<dyn Sampler>, Failure> {
     use SamplerName as S;
     use ScrambleName as K;
     let seed = args.seed;
@@ -147,14 +221,8 @@ fn build(args: &PointsArgs) -> Result<Box<dyn Sampler>, Failure> {
         return Err(Failure::usage(format!(
             "--scramble {} does not apply to {} (base-2 kinds: sobol, lp, vdc base 2; \
              perm/faure/owen: halton, hammersley, vdc)",
-            args.scramble
-                .to_possible_value()
-                .map(|v| v.get_name().to_owned())
-                .unwrap_or_default(),
-            args.sampler
-                .to_possible_value()
-                .map(|v| v.get_name().to_owned())
-                .unwrap_or_default(),
+            value_name(&args.scramble),
+            value_name(&args.sampler),
         )));
     }
     let sampler = construct(args, digits.unwrap_or_default())?;
@@ -184,7 +252,7 @@ fn build(args: &PointsArgs) -> Result<Box<dyn Sampler>, Failure> {
 }
 
 /// Builds the construction itself (digit scrambles are part of the radical inverse).
-fn construct(args: &PointsArgs, digits: DigitScramble) -> Result<Box<dyn Sampler>, Failure> {
+fn construct(args: &Spec, digits: DigitScramble) -> Result<Box<dyn Sampler>, Failure> {
     let d = args.d.unwrap_or(if args.sampler == SamplerName::Vdc {
         1
     } else {
@@ -284,7 +352,7 @@ pub fn run(args: &PointsArgs) -> Result<(), Failure> {
     if args.n == 0 {
         return Err(Failure::usage("-n must be at least 1"));
     }
-    let sampler = build(args)?;
+    let sampler = build(&args.spec())?;
     let dims = sampler.dims();
     let end = args.start as u64 + args.n;
     if end > sampler.len() {
@@ -333,4 +401,18 @@ pub fn run(args: &PointsArgs) -> Result<(), Failure> {
         index += rows as u64;
     }
     writer.finish()
+}
+
+/// The first `spec.n` points of the sampler `spec` names, as 0.32 fractions (row-major),
+/// with their dimension.
+pub fn samples_u32(spec: &Spec) -> Result<(Vec<u32>, usize), Failure> {
+    let sampler = build(spec)?;
+    let dims = sampler.dims();
+    let len = usize::try_from(spec.n)
+        .ok()
+        .and_then(|n| n.checked_mul(dims))
+        .ok_or_else(|| Failure::usage(format!("{} points do not fit in memory", spec.n)))?;
+    let mut buf = vec![0u32; len];
+    sampler.fill(0, &mut buf)?;
+    Ok((buf, dims))
 }

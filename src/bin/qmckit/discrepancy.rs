@@ -1,0 +1,205 @@
+//! `qmckit discrepancy [--metric M[,M..]] [FILE|-]`: measure point sets read from text.
+
+use std::io::{BufWriter, Read, Write};
+
+use clap::{Args, ValueEnum};
+use qmckit::analysis::Points;
+use qmckit::analysis::l2::L2Metric;
+use qmckit::analysis::pointfile::{PointSet, parse_point_sets};
+use qmckit::analysis::star;
+
+use crate::Failure;
+use crate::points::value_name;
+use crate::progress::with_spinner;
+
+/// Text shown after the options of `qmckit discrepancy --help`.
+pub const AFTER_HELP: &str = "\
+Input: one point a line, coordinates in [0, 1] separated by spaces/tabs or by single commas;
+'#' starts a comment; a line holding only '#' separates point sets; blank lines are ignored.
+
+Output: one 'metric value' line per metric, the value in scientific notation with 17
+significant digits (it parses back to the exact f64). With several point sets, each set's
+block is preceded by a '# set K' line (K from 1).
+
+Conventions:
+  star      star discrepancy D*, exact (1D closed form; 2D sweep, N <= 50000; d-D grid
+            enumeration within a work budget; larger sets are refused with an error)
+  extreme   extreme (unanchored box) discrepancy, exact, 2D only, N <= 1200
+  l2-star   L2-star (Warnock), square root taken (SciPy method=\"L2-star\")
+  cd        centered L2, squared (SciPy method=\"CD\")
+  wd        wrap-around L2, squared (SciPy method=\"WD\")
+  md        mixture L2, squared (SciPy method=\"MD\")
+  sl2       symmetric L2, square root taken (UTK SymmetricL2Discrepancy)
+  ul2       unanchored L2, square root taken (UTK UnanchoredL2Discrepancy)
+  gl2       generalized L2, square root taken (UTK GL2Discrepancy)
+  diaphony  Zinterhof's diaphony, square root taken (UTK Diaphony)
+  all       star, then the eight L2 measures in the order above. When star is refused
+            (too many points for an exact computation) it is replaced by a
+            '# star skipped: REASON' line and the others are still computed. extreme is not
+            part of all.
+
+The L2 measures cost O(N^2 d). A spinner shows on a terminal when a metric takes more than a
+second. Errors: 'qmckit: error: FILE: line N: reason', exit code 2.";
+
+/// A measure `--metric` names.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum Metric {
+    /// Star discrepancy, exact.
+    Star,
+    /// Extreme discrepancy, exact, 2D only.
+    Extreme,
+    /// L2-star discrepancy (square root).
+    L2Star,
+    /// Centered L2 discrepancy (squared).
+    Cd,
+    /// Wrap-around L2 discrepancy (squared).
+    Wd,
+    /// Mixture L2 discrepancy (squared).
+    Md,
+    /// Symmetric L2 discrepancy (square root).
+    Sl2,
+    /// Unanchored L2 discrepancy (square root).
+    Ul2,
+    /// Generalized L2 discrepancy (square root).
+    Gl2,
+    /// Diaphony (square root).
+    Diaphony,
+    /// star and the eight L2 measures.
+    All,
+}
+
+impl Metric {
+    /// The library measure behind an L2 name.
+    fn l2(self) -> Option<L2Metric> {
+        Some(match self {
+            Metric::L2Star => L2Metric::L2Star,
+            Metric::Cd => L2Metric::Centered,
+            Metric::Wd => L2Metric::WrapAround,
+            Metric::Md => L2Metric::Mixture,
+            Metric::Sl2 => L2Metric::Symmetric,
+            Metric::Ul2 => L2Metric::Unanchored,
+            Metric::Gl2 => L2Metric::Generalized,
+            Metric::Diaphony => L2Metric::Diaphony,
+            Metric::Star | Metric::Extreme | Metric::All => return None,
+        })
+    }
+}
+
+/// The metrics of `all`, in output order.
+const ALL: [Metric; 9] = [
+    Metric::Star,
+    Metric::L2Star,
+    Metric::Cd,
+    Metric::Wd,
+    Metric::Md,
+    Metric::Sl2,
+    Metric::Ul2,
+    Metric::Gl2,
+    Metric::Diaphony,
+];
+
+/// Arguments of `qmckit discrepancy`.
+#[derive(Args, Debug)]
+pub struct DiscrepancyArgs {
+    /// Metrics to compute, comma-separated (see below).
+    #[arg(long, value_enum, value_delimiter = ',', default_value = "all")]
+    metric: Vec<Metric>,
+    /// Point file; '-' or none reads standard input.
+    file: Option<String>,
+}
+
+/// Reads the input text; `name` is how errors refer to it.
+fn read_input(file: Option<&str>) -> Result<(String, String), Failure> {
+    let mut bytes = Vec::new();
+    let name = match file {
+        None | Some("-") => {
+            std::io::stdin()
+                .lock()
+                .read_to_end(&mut bytes)
+                .map_err(|e| Failure::usage(format!("<stdin>: {e}")))?;
+            "<stdin>".to_owned()
+        }
+        Some(path) => {
+            bytes = std::fs::read(path).map_err(|e| Failure::usage(format!("{path}: {e}")))?;
+            path.to_owned()
+        }
+    };
+    let text = String::from_utf8(bytes).map_err(|e| {
+        Failure::usage(format!(
+            "{name}: not UTF-8 text (byte {})",
+            e.utf8_error().valid_up_to()
+        ))
+    })?;
+    Ok((name, text))
+}
+
+/// Why an exact measure refused, as the command reports it.
+fn refusal(e: qmckit::Error, what: &str, set: &PointSet) -> String {
+    match e {
+        qmckit::Error::TooManyPoints { max, .. } => format!(
+            "{} points in {} dimensions are too many for the exact {what} (at most {max})",
+            set.len(),
+            set.dims
+        ),
+        other => other.to_string(),
+    }
+}
+
+/// One measure of one set, or why it was refused.
+fn measure(metric: Metric, p: Points<'_>, set: &PointSet) -> Result<f64, String> {
+    let name = value_name(&metric);
+    if let Some(l2) = metric.l2() {
+        return Ok(with_spinner(name.as_str(), || l2.eval(p)));
+    }
+    match metric {
+        Metric::Star => with_spinner(&name, || star::star(p)).map_err(|e| refusal(e, "star", set)),
+        Metric::Extreme if set.dims != 2 => Err(format!(
+            "extreme is implemented for 2-dimensional points only, not {}",
+            set.dims
+        )),
+        Metric::Extreme => {
+            with_spinner(&name, || star::extreme_2d(p)).map_err(|e| refusal(e, "extreme", set))
+        }
+        _ => unreachable!("l2 metrics are handled above and 'all' is expanded"),
+    }
+}
+
+/// Runs `qmckit discrepancy`.
+pub fn run(args: &DiscrepancyArgs) -> Result<(), Failure> {
+    let (name, text) = read_input(args.file.as_deref())?;
+    let sets = parse_point_sets(&text).map_err(|e| Failure::usage(format!("{name}: {e}")))?;
+    let all = args.metric.contains(&Metric::All);
+    let metrics: Vec<Metric> = if all {
+        ALL.to_vec()
+    } else {
+        args.metric.clone()
+    };
+    let mut out = BufWriter::new(std::io::stdout().lock());
+    for (k, set) in sets.iter().enumerate() {
+        let p = set
+            .points()
+            .map_err(|e| Failure::usage(format!("{name}: set {}: {e}", k + 1)))?;
+        if sets.len() > 1 {
+            writeln!(out, "# set {}", k + 1)?;
+        }
+        for &metric in &metrics {
+            match measure(metric, p, set) {
+                Ok(value) => writeln!(out, "{} {value:.16e}", value_name(&metric))?,
+                Err(reason) if all && metric == Metric::Star => {
+                    writeln!(out, "# star skipped: {reason}")?;
+                }
+                Err(reason) => {
+                    out.flush()?;
+                    let set = if sets.len() > 1 {
+                        format!("set {}: ", k + 1)
+                    } else {
+                        String::new()
+                    };
+                    return Err(Failure::usage(format!("{name}: {set}{reason}")));
+                }
+            }
+        }
+    }
+    out.flush()?;
+    Ok(())
+}

@@ -1,0 +1,294 @@
+//! `qmckit discrepancy` and `qmckit tvalue`: values, output format, one-line errors.
+#![cfg(feature = "cli")]
+
+use std::io::Write;
+use std::path::PathBuf;
+use std::process::{Command, Output, Stdio};
+
+/// Runs qmckit with `input` on stdin.
+fn qmckit_with(args: &[&str], input: &str) -> Output {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_qmckit"))
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("run qmckit");
+    let mut stdin = child.stdin.take().unwrap();
+    stdin.write_all(input.as_bytes()).unwrap();
+    drop(stdin);
+    child.wait_with_output().unwrap()
+}
+
+/// Standard output of a successful run with an empty stdin; stderr must be empty.
+fn stdout(args: &[&str], input: &str) -> String {
+    let out = qmckit_with(args, input);
+    assert!(
+        out.status.success(),
+        "{args:?}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(out.stderr.is_empty(), "{args:?}: stderr {:?}", out.stderr);
+    String::from_utf8(out.stdout).unwrap()
+}
+
+/// A file in the temporary directory holding `text` (unique per test).
+fn temp_file(name: &str, text: &str) -> PathBuf {
+    let path =
+        std::env::temp_dir().join(format!("qmckit-cli-analysis-{}-{name}", std::process::id()));
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
+/// Bad usage or input: exit code 2, one line on stderr naming `needle`, no panic.
+fn assert_usage_error(args: &[&str], input: &str, needle: &str) {
+    let out = qmckit_with(args, input);
+    assert_eq!(out.status.code(), Some(2), "{args:?}");
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert_eq!(err.lines().count(), 1, "{args:?}: {err:?}");
+    assert!(err.starts_with("qmckit: error: "), "{err}");
+    assert!(err.contains(needle), "{args:?}: {err:?} lacks {needle:?}");
+    assert!(!err.contains("panicked") && !err.contains("RUST_BACKTRACE"));
+    assert!(out.stdout.is_empty());
+}
+
+/// The `metric value` lines as pairs.
+fn values(text: &str) -> Vec<(String, f64)> {
+    text.lines()
+        .filter(|l| !l.starts_with('#'))
+        .map(|l| {
+            let (name, value) = l.split_once(' ').expect("metric value");
+            (name.to_owned(), value.parse().expect("a number"))
+        })
+        .collect()
+}
+
+#[test]
+fn lp_net_star_discrepancy_is_21_over_512() {
+    let csv = stdout(&["points", "lp", "-n", "64", "--format", "csv"], "");
+    let text = stdout(&["discrepancy", "--metric", "star"], &csv);
+    // Exact for the 64-point Larcher–Pillichshammer net (see analysis::star).
+    assert_eq!(values(&text), [("star".to_owned(), 21.0 / 512.0)]);
+    assert_eq!(text, "star 4.1015625000000000e-2\n");
+}
+
+#[test]
+fn one_point_in_1d() {
+    let path = temp_file("one-point", "0.5\n");
+    let text = stdout(
+        &[
+            "discrepancy",
+            "--metric",
+            "star,l2-star",
+            path.to_str().unwrap(),
+        ],
+        "",
+    );
+    let v = values(&text);
+    // Star: [0, 1/2) is empty (1/2 - 0) and [0, 1/2] holds the point (1 - 1/2): 1/2.
+    assert_eq!(v[0], ("star".to_owned(), 0.5));
+    // Warnock's formula for n = 1, d = 1:
+    //   D^2 = 1/3 - 2^(1-1) (1 - x^2) + (1 - max(x, x)) = 1/3 - (1 - x^2) + (1 - x)
+    //       = x^2 - x + 1/3,   at x = 1/2: 1/4 - 1/2 + 1/3 = 1/12,
+    // and l2-star is the square root (SciPy's convention): sqrt(1/12).
+    assert_eq!(v[1].0, "l2-star");
+    assert!(
+        (v[1].1 - (1.0f64 / 12.0).sqrt()).abs() < 1e-16,
+        "{}",
+        v[1].1
+    );
+    // At least 15 significant digits: 17 in scientific notation.
+    let mantissa = text.lines().nth(1).unwrap().split(' ').nth(1).unwrap();
+    let digits = mantissa.split('e').next().unwrap().replace('.', "");
+    assert!(digits.len() >= 15, "{mantissa}");
+    std::fs::remove_file(path).ok();
+}
+
+#[test]
+fn all_metrics_by_default_in_order() {
+    let text = stdout(&["discrepancy"], "0.25 0.25\n0.75, 0.75\n");
+    let names: Vec<String> = values(&text).into_iter().map(|(n, _)| n).collect();
+    assert_eq!(
+        names,
+        [
+            "star", "l2-star", "cd", "wd", "md", "sl2", "ul2", "gl2", "diaphony"
+        ]
+    );
+    for (name, v) in values(&text) {
+        assert!(v.is_finite() && v >= 0.0, "{name} {v}");
+    }
+}
+
+#[test]
+fn several_sets_get_headers_and_stdin_dash_works() {
+    let input = "# two sets\n0.5\n#\n0.125\n0.375 # comment\n0.625\n0.875\n";
+    let text = stdout(&["discrepancy", "--metric", "star", "-"], input);
+    assert_eq!(
+        text,
+        "# set 1\nstar 5.0000000000000000e-1\n# set 2\nstar 1.2500000000000000e-1\n"
+    );
+    // No header with a single set.
+    assert_eq!(
+        stdout(&["discrepancy", "--metric", "star"], "0.5\n"),
+        "star 5.0000000000000000e-1\n"
+    );
+}
+
+#[test]
+fn extreme_in_2d() {
+    let input = "0.25 0.25\n0.75 0.25\n0.25 0.75\n0.75 0.75\n";
+    let text = stdout(&["discrepancy", "--metric", "extreme"], input);
+    assert_eq!(values(&text), [("extreme".to_owned(), 0.75)]);
+    assert_usage_error(
+        &["discrepancy", "--metric", "extreme"],
+        "0.5\n",
+        "2-dimensional points only",
+    );
+}
+
+#[test]
+fn star_is_refused_when_too_large_and_skipped_by_all() {
+    let csv = stdout(
+        &[
+            "points", "sobol", "-n", "3000", "-d", "3", "--format", "csv",
+        ],
+        "",
+    );
+    assert_usage_error(
+        &["discrepancy", "--metric", "star"],
+        &csv,
+        "too many for the exact star",
+    );
+    let text = stdout(&["discrepancy"], &csv);
+    assert!(text.starts_with("# star skipped: 3000 points"), "{text}");
+    assert_eq!(values(&text).len(), 8);
+}
+
+#[test]
+fn bad_input_is_one_line_with_the_line_number() {
+    let cases = [
+        (
+            "0.5 0.5\n0.5 1.5\n",
+            "<stdin>: line 2: \"1.5\" is outside [0, 1]",
+        ),
+        (
+            "0.5\n\nNaN\n",
+            "<stdin>: line 3: \"NaN\" is not a finite number",
+        ),
+        ("0.1 0.2\n0.3\n", "<stdin>: line 2: 1 coordinate(s)"),
+        ("0.5 abc\n", "<stdin>: line 1: \"abc\" is not a number"),
+        ("", "<stdin>: line 1: set 1 has no points"),
+        ("0.5\n#\n#\n0.5\n", "line 3: set 2 has no points"),
+    ];
+    for (input, needle) in cases {
+        assert_usage_error(&["discrepancy"], input, needle);
+    }
+    let path = temp_file("bad", "0.5\n-0.5\n");
+    let name = path.to_str().unwrap();
+    assert_usage_error(&["discrepancy", name], "", &format!("{name}: line 2: "));
+    std::fs::remove_file(path).ok();
+}
+
+#[test]
+fn missing_file_and_bad_metric() {
+    assert_usage_error(
+        &["discrepancy", "/nonexistent/points.txt"],
+        "",
+        "/nonexistent/points.txt: ",
+    );
+    assert_usage_error(&["discrepancy", "--metric", "l3"], "0.5\n", "l3");
+}
+
+#[test]
+fn help_states_the_conventions() {
+    let help = stdout(&["discrepancy", "--help"], "");
+    for needle in [
+        "cd        centered L2, squared (SciPy",
+        "l2-star   L2-star (Warnock), square root taken (SciPy",
+        "diaphony  Zinterhof's diaphony, square root taken",
+        "extreme is not\n            part of all",
+    ] {
+        assert!(help.contains(needle), "{needle:?} not in\n{help}");
+    }
+}
+
+/// The `t` line of tvalue's output.
+fn t_of(args: &[&str]) -> u32 {
+    let text = stdout(args, "");
+    let line = text
+        .lines()
+        .find(|l| l.starts_with("t "))
+        .unwrap_or_else(|| panic!("{args:?}: no t line in {text:?}"));
+    line[2..].parse().unwrap()
+}
+
+#[test]
+fn tvalue_of_sobol_by_rank() {
+    let text = stdout(&["tvalue", "sobol", "-m", "10", "-d", "2"], "");
+    assert_eq!(
+        text,
+        "sampler sobol\nscramble none\nm 10\nd 2\nmethod rank\nt 0\n"
+    );
+    assert_eq!(t_of(&["tvalue", "sobol", "-d", "3", "-m", "10"]), 1);
+    assert_eq!(t_of(&["tvalue", "hammersley", "-m", "12"]), 0);
+    assert_eq!(t_of(&["tvalue", "vdc", "-m", "32"]), 0);
+}
+
+#[test]
+fn tvalue_of_scrambled_points_by_counting() {
+    let args = [
+        "tvalue",
+        "lp",
+        "-m",
+        "8",
+        "-d",
+        "2",
+        "--scramble",
+        "owen",
+        "--seed",
+        "3",
+    ];
+    assert_eq!(t_of(&args), 0);
+    assert!(stdout(&args, "").contains("method count\n"));
+    // Owen scrambling keeps the t-value of 3D Sobol'.
+    assert_eq!(
+        t_of(&[
+            "tvalue",
+            "sobol",
+            "-m",
+            "10",
+            "-d",
+            "3",
+            "--scramble",
+            "fast-owen"
+        ]),
+        1
+    );
+}
+
+#[test]
+fn tvalue_explain_names_failing_intervals() {
+    let text = stdout(&["tvalue", "sobol", "-m", "10", "-d", "3", "--explain"], "");
+    let fails: Vec<&str> = text.lines().filter(|l| l.starts_with("fail ")).collect();
+    assert!(!fails.is_empty() && fails.len() <= 5, "{text}");
+    assert!(fails[0].contains("expected"), "{}", fails[0]);
+}
+
+#[test]
+fn tvalue_refusals() {
+    assert_usage_error(&["tvalue", "sobol", "-m", "33"], "", "-m 33");
+    assert_usage_error(&["tvalue", "sobol", "-m", "x"], "", "x");
+    assert_usage_error(
+        &["tvalue", "sobol", "-m", "25", "--scramble", "owen"],
+        "",
+        "too many",
+    );
+    assert_usage_error(&["tvalue", "halton", "-m", "4"], "", "base-2");
+    assert_usage_error(&["tvalue", "lp", "-m", "4", "-d", "3"], "", "-d must be 2");
+    assert_usage_error(&["tvalue", "sobol", "-m", "4", "-d", "0"], "", "-d");
+    assert_usage_error(
+        &["tvalue", "sobol", "-m", "8", "--scramble", "perm"],
+        "",
+        "does not apply",
+    );
+}
