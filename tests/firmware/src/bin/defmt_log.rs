@@ -11,6 +11,7 @@ macro_rules! out {
     ($($t:tt)*) => { defmt::println!($($t)*) };
 }
 
+#[path = "../defmt_lines.rs"]
 mod defmt_lines;
 
 use cortex_m_rt::entry;
