@@ -281,7 +281,7 @@ where
 }
 
 /// Adds `prod_k k1(x_ik, x_jk)` for `j > i` to `acc`: whole blocks of `LANES` points `j`,
-/// lanes outside `i < j < n` zeroed in the first and the last block.
+/// the lanes outside `i < j < n` of the first and the last block multiplied by zero.
 #[inline(always)]
 fn add_row<const F: usize, K>(s: &Blocked<F>, i: usize, k1: &K, acc: &mut Lanes)
 where
@@ -290,14 +290,15 @@ where
     let d = s.d;
     let a = &s.rows[i * d..(i + 1) * d];
     let first = (i + 1) / LANES;
+    let full_end = s.n / LANES;
     for (b, blk) in s.blocks.chunks_exact(d).enumerate().skip(first) {
         let mut prod = block_products(a, blk, k1);
-        let j0 = b * LANES;
-        if j0 <= i || j0 + LANES > s.n {
-            for (l, p) in prod.iter_mut().enumerate() {
-                if j0 + l <= i || j0 + l >= s.n {
-                    *p = 0.0;
-                }
+        if b == first || b >= full_end {
+            let j0 = b * LANES;
+            let keep: [f64; LANES] =
+                core::array::from_fn(|l| f64::from(u8::from(j0 + l > i && j0 + l < s.n)));
+            for (p, k) in prod.iter_mut().zip(keep) {
+                *p *= k;
             }
         }
         acc.add(prod);
