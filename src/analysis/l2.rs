@@ -12,6 +12,16 @@
 //! `K`, split over rows with rayon). The exception is [`l2_star`] in one and two dimensions,
 //! which has an exact `O(n log n)` algorithm ([`l2_star_fast`]).
 //!
+//! The pair sum is one generic loop for all eight measures: each coordinate is first
+//! mapped to one or two features (e.g. `1 - x` for L2-star, `x / 2` and
+//! `1/2 + |x - 1/2| / 2` for the centered discrepancy) so that a pair factor costs one to
+//! six arithmetic operations, and the features are stored as structure of arrays in blocks
+//! of 8 points. Point `i` is then evaluated against 8 points `j` at a time with fixed-size
+//! array operations that compile to SIMD instructions; on x86-64 CPUs with AVX2 and FMA
+//! (detected at run time) the same code runs compiled for AVX2, with the same bits. For
+//! 4096 points this is 10 to 50 times faster than SciPy's `discrepancy(workers=1)` on one
+//! thread (`scripts/time_discrepancy.py`).
+//!
 //! | function | name | returns | convention of |
 //! |---|---|---|---|
 //! | [`l2_star`] | `l2-star` | `D` (square root taken) | SciPy `discrepancy(method="L2-star")` |
@@ -27,7 +37,9 @@
 //!
 //! For good point sets the three terms above nearly cancel (for 1000 Sobol' points in 8
 //! dimensions the wrap-around terms are about 10 and the result about 1e-3), so a plain sum
-//! loses digits. Here every row sum and the sum over rows are compensated (Neumaier), and
+//! loses digits. Here every pair term is added to per-lane TwoSum accumulators, the lanes
+//! and then the rows are summed with Neumaier compensation in a fixed order (so the result
+//! does not depend on the number of threads), and
 //! the three terms are combined in double-double arithmetic, with the constants `(13/12)^d`,
 //! ... raised to the power `d` in double-double too. The result is accurate to a few units
 //! in the last place of the exact value of the formula evaluated on the given `f64`
