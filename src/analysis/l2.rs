@@ -12,6 +12,18 @@
 //! `K`, split over rows with rayon). The exception is [`l2_star`] in one and two dimensions,
 //! which has an exact `O(n log n)` algorithm ([`l2_star_fast`]).
 //!
+//! The pair sum is one generic loop for all eight measures: each coordinate is first
+//! mapped to one or two features (e.g. `1 - x` for L2-star, `x / 2` and
+//! `1/2 + |x - 1/2| / 2` for the centered discrepancy) so that a pair factor costs one to
+//! six arithmetic operations, and the features are stored as structure of arrays in blocks
+//! of 8 points. Point `i` is then evaluated against 8 points `j` at a time with fixed-size
+//! array operations that compile to SIMD instructions; on x86-64 CPUs with AVX2 and FMA
+//! (detected at run time) the same code runs compiled for AVX2, with the same bits. For
+//! 4096 points in 2 and 8 dimensions, on one thread, this measured 10 to 15 times faster
+//! than SciPy's `discrepancy(workers=1)` for CD and MD, 15 times for L2-star in 8D (30 in
+//! 2D, by the fast path) but only about 5 times for WD, whose SciPy loop is the cheapest
+//! (`scripts/time_discrepancy.py`).
+//!
 //! | function | name | returns | convention of |
 //! |---|---|---|---|
 //! | [`l2_star`] | `l2-star` | `D` (square root taken) | SciPy `discrepancy(method="L2-star")` |
@@ -27,7 +39,9 @@
 //!
 //! For good point sets the three terms above nearly cancel (for 1000 Sobol' points in 8
 //! dimensions the wrap-around terms are about 10 and the result about 1e-3), so a plain sum
-//! loses digits. Here every row sum and the sum over rows are compensated (Neumaier), and
+//! loses digits. Here every pair term is added to per-lane TwoSum accumulators, the lanes
+//! and then the rows are summed with Neumaier compensation in a fixed order (so the result
+//! does not depend on the number of threads), and
 //! the three terms are combined in double-double arithmetic, with the constants `(13/12)^d`,
 //! ... raised to the power `d` in double-double too. The result is accurate to a few units
 //! in the last place of the exact value of the formula evaluated on the given `f64`
@@ -173,38 +187,192 @@ struct KernelSums {
     s2: Dd,
 }
 
-/// `prod_k k1(a_k, b_k)`.
-#[inline]
-fn pair_product<K: Fn(f64, f64) -> f64>(a: &[f64], b: &[f64], k1: &K) -> f64 {
-    a.iter().zip(b).map(|(&x, &y)| k1(x, y)).product()
+/// Which build of the pair-sum loop runs.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Build {
+    /// The portable build (baseline target features: SSE2 on x86-64). Only the tests ask
+    /// for it explicitly, to compare it with [`Build::Detect`].
+    #[cfg_attr(not(test), allow(dead_code))]
+    Portable,
+    /// On x86-64, the same code compiled with AVX2 and FMA when the CPU has them (detected
+    /// at run time); elsewhere the portable build. Same bits as [`Build::Portable`]: Rust
+    /// never contracts `a * b + c` into an FMA, so the instructions differ only in width.
+    Detect,
 }
 
-/// `sum_{j > i} prod_k k1(x_ik, x_jk)`, compensated.
-fn row_sum<K: Fn(f64, f64) -> f64>(p: Points<'_>, i: usize, k1: &K) -> Acc {
-    let d = p.dims();
-    let xi = p.point(i);
-    let mut acc = Acc::default();
-    for xj in p.as_slice()[(i + 1) * d..].chunks_exact(d) {
-        acc.add(pair_product(xi, xj, k1));
+/// Points per block of the pair sum: the inner loop evaluates the kernel for one point
+/// `i` against `LANES` points `j` as fixed-size array operations, which the compiler turns
+/// into SIMD instructions (2 AVX2 or 4 SSE2 registers per array).
+const LANES: usize = 8;
+
+/// The points as `F` per-coordinate features (`feat(x_ik)`, precomputed once so that the
+/// kernel of a pair is a few operations per coordinate), in two layouts.
+struct Blocked<const F: usize> {
+    n: usize,
+    d: usize,
+    /// `rows[i * d + k]`: the features of coordinate `k` of point `i` (the `i` side).
+    rows: Vec<[f64; F]>,
+    /// `blocks[b * d + k][f][l]`: feature `f` of coordinate `k` of point `b * LANES + l`
+    /// (the `j` side, structure of arrays); zero past the last point.
+    blocks: Vec<[[f64; LANES]; F]>,
+}
+
+impl<const F: usize> Blocked<F> {
+    /// Cost `O(n d)` time and memory.
+    fn new<P: Fn(f64) -> [f64; F]>(p: Points<'_>, feat: P) -> Self {
+        let (n, d) = (p.len(), p.dims());
+        let rows: Vec<[f64; F]> = p.as_slice().iter().map(|&x| feat(x)).collect();
+        let mut blocks = vec![[[0.0; LANES]; F]; n.div_ceil(LANES) * d];
+        for (i, row) in rows.chunks_exact(d).enumerate() {
+            let (b, l) = (i / LANES, i % LANES);
+            for (blk, r) in blocks[b * d..(b + 1) * d].iter_mut().zip(row) {
+                for (lane, &v) in blk.iter_mut().zip(r) {
+                    lane[l] = v;
+                }
+            }
+        }
+        Blocked { n, d, rows, blocks }
     }
-    acc
+}
+
+/// Per-lane compensated sums: lane `l` holds `s[l] + c[l]`, updated by TwoSum (branch-free,
+/// so it vectorizes like the kernel). After `m` additions of non-negative terms the error
+/// of a lane is about `m eps^2` times its sum, far below the roundings of the terms.
+#[derive(Clone, Copy)]
+struct Lanes {
+    s: [f64; LANES],
+    c: [f64; LANES],
+}
+
+impl Lanes {
+    const ZERO: Lanes = Lanes {
+        s: [0.0; LANES],
+        c: [0.0; LANES],
+    };
+
+    #[inline(always)]
+    fn add(&mut self, x: [f64; LANES]) {
+        for ((s, c), x) in self.s.iter_mut().zip(&mut self.c).zip(x) {
+            let t = *s + x;
+            let bb = t - *s;
+            *c += (*s - (t - bb)) + (x - bb);
+            *s = t;
+        }
+    }
+
+    /// The lanes summed in a fixed order.
+    #[inline(always)]
+    fn total(&self) -> Acc {
+        let mut acc = Acc::default();
+        for &s in &self.s {
+            acc.add(s);
+        }
+        for &c in &self.c {
+            acc.add(c);
+        }
+        acc
+    }
+}
+
+/// `prod_k k1(a_k, b_k)` for one point `a` against the `LANES` points of a block `b`:
+/// `d` kernel evaluations per lane, as array operations.
+#[inline(always)]
+fn block_products<const F: usize, K>(
+    a: &[[f64; F]],
+    b: &[[[f64; LANES]; F]],
+    k1: &K,
+) -> [f64; LANES]
+where
+    K: Fn([f64; F], [f64; F]) -> f64,
+{
+    let mut prod = [1.0; LANES];
+    for (ak, bk) in a.iter().zip(b) {
+        for (l, p) in prod.iter_mut().enumerate() {
+            *p *= k1(*ak, core::array::from_fn(|f| bk[f][l]));
+        }
+    }
+    prod
+}
+
+/// Adds `prod_k k1(x_ik, x_jk)` for `j > i` to `acc`: whole blocks of `LANES` points `j`,
+/// the lanes outside `i < j < n` of the first and the last block multiplied by zero.
+#[inline(always)]
+fn add_row<const F: usize, K>(s: &Blocked<F>, i: usize, k1: &K, acc: &mut Lanes)
+where
+    K: Fn([f64; F], [f64; F]) -> f64,
+{
+    let d = s.d;
+    let a = &s.rows[i * d..(i + 1) * d];
+    let first = (i + 1) / LANES;
+    let full_end = s.n / LANES;
+    for (b, blk) in s.blocks.chunks_exact(d).enumerate().skip(first) {
+        let mut prod = block_products(a, blk, k1);
+        if b == first || b >= full_end {
+            let j0 = b * LANES;
+            let keep: [f64; LANES] =
+                core::array::from_fn(|l| f64::from(u8::from(j0 + l > i && j0 + l < s.n)));
+            for (p, k) in prod.iter_mut().zip(keep) {
+                *p *= k;
+            }
+        }
+        acc.add(prod);
+    }
+}
+
+/// Rows `i` and `n - 1 - i` (about `n` pairs together), summed in a fixed order.
+#[inline(always)]
+fn row_pair_portable<const F: usize, K>(s: &Blocked<F>, i: usize, k1: &K) -> Acc
+where
+    K: Fn([f64; F], [f64; F]) -> f64,
+{
+    let mut acc = Lanes::ZERO;
+    add_row(s, i, k1, &mut acc);
+    let mirror = s.n - 1 - i;
+    if mirror != i {
+        add_row(s, mirror, k1, &mut acc);
+    }
+    acc.total()
+}
+
+/// [`row_pair_portable`] compiled with AVX2 and FMA (4 lanes a register instead of 2).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+fn row_pair_avx2<const F: usize, K>(s: &Blocked<F>, i: usize, k1: &K) -> Acc
+where
+    K: Fn([f64; F], [f64; F]) -> f64,
+{
+    row_pair_portable(s, i, k1)
+}
+
+/// [`row_pair_portable`] in the requested build.
+fn row_pair<const F: usize, K>(s: &Blocked<F>, i: usize, k1: &K, build: Build) -> Acc
+where
+    K: Fn([f64; F], [f64; F]) -> f64,
+{
+    #[cfg(target_arch = "x86_64")]
+    if build == Build::Detect
+        && std::arch::is_x86_feature_detected!("avx2")
+        && std::arch::is_x86_feature_detected!("fma")
+    {
+        // SAFETY: `row_pair_avx2` is safe code whose only requirement is that the CPU
+        // supports AVX2 and FMA, both detected at run time on this very CPU just above.
+        #[allow(unsafe_code)]
+        return unsafe { row_pair_avx2(s, i, k1) };
+    }
+    let _ = build;
+    row_pair_portable(s, i, k1)
 }
 
 /// `sum_{i < j} K(x_i, x_j)`: rows `i` and `n - 1 - i` go to the same task so that every
 /// task does about `n` pair evaluations. Row sums are merged in a fixed order, so the
 /// result does not depend on the number of threads.
-fn off_diagonal<K: Fn(f64, f64) -> f64 + Sync>(p: Points<'_>, k1: &K) -> Acc {
-    let n = p.len();
-    let rows: Vec<Acc> = (0..n.div_ceil(2))
+fn off_diagonal<const F: usize, K>(s: &Blocked<F>, k1: &K, build: Build) -> Acc
+where
+    K: Fn([f64; F], [f64; F]) -> f64 + Sync,
+{
+    let rows: Vec<Acc> = (0..s.n.div_ceil(2))
         .into_par_iter()
-        .map(|i| {
-            let mut acc = row_sum(p, i, k1);
-            let mirror = n - 1 - i;
-            if mirror != i {
-                acc.merge(row_sum(p, mirror, k1));
-            }
-            acc
-        })
+        .map(|i| row_pair(s, i, k1, build))
         .collect();
     let mut total = Acc::default();
     for r in rows {
@@ -213,24 +381,39 @@ fn off_diagonal<K: Fn(f64, f64) -> f64 + Sync>(p: Points<'_>, k1: &K) -> Acc {
     total
 }
 
-/// The two sums of a symmetric product kernel. Cost `O(n d)` plus `n (n - 1) / 2` kernel
-/// products of `d` factors.
-fn kernel_sums<G, K>(p: Points<'_>, g1: G, k1: K) -> KernelSums
+/// The two sums of a symmetric product kernel, the pair kernel written on precomputed
+/// features: `k1(x, y) = pair(feat(x), feat(y))`. Cost `O(n d)` plus `n (n - 1) / 2`
+/// kernel products of `d` factors, `LANES` at a time.
+fn kernel_sums<const F: usize, G, P, K>(
+    p: Points<'_>,
+    g1: G,
+    feat: P,
+    pair: K,
+    build: Build,
+) -> KernelSums
 where
     G: Fn(f64) -> f64,
-    K: Fn(f64, f64) -> f64 + Sync,
+    P: Fn(f64) -> [f64; F],
+    K: Fn([f64; F], [f64; F]) -> f64 + Sync,
 {
+    let s = Blocked::new(p, feat);
     let mut s1 = Acc::default();
     let mut diag = Acc::default();
-    for x in p.iter() {
+    for (x, f) in p.iter().zip(s.rows.chunks_exact(s.d)) {
         s1.add(x.iter().map(|&t| g1(t)).product());
-        diag.add(pair_product(x, x, &k1));
+        diag.add(f.iter().map(|&a| pair(a, a)).product());
     }
-    let off = off_diagonal(p, &k1).dd().scale(2.0);
+    let off = off_diagonal(&s, &pair, build).dd().scale(2.0);
     KernelSums {
         s1: s1.dd(),
         s2: diag.dd().add(off),
     }
+}
+
+/// `min(a, b)` as one `minpd` (no NaN handling: the coordinates are validated).
+#[inline(always)]
+fn min(a: f64, b: f64) -> f64 {
+    if b < a { b } else { a }
 }
 
 /// `c - a s1 / n + b s2 / n^2` in double-double.
@@ -296,8 +479,20 @@ const FAST_MIN_POINTS: usize = 256;
 
 /// [`l2_star`] by the `O(n^2 d)` pair sum, whatever the dimension.
 pub fn l2_star_direct(p: Points<'_>) -> f64 {
+    l2_star_direct_with(p, Build::Detect)
+}
+
+/// [`l2_star_direct`] in the given build. The pair factor `1 - max(x, y)` is computed as
+/// `min(1 - x, 1 - y)` on `u = 1 - x` precomputed (the same value: rounding is monotone).
+fn l2_star_direct_with(p: Points<'_>, build: Build) -> f64 {
     let d = p.dims();
-    let sums = kernel_sums(p, |x| 1.0 - x * x, |x, y| 1.0 - x.max(y));
+    let sums = kernel_sums(
+        p,
+        |x| 1.0 - x * x,
+        |x| [1.0 - x],
+        |a, b| min(a[0], b[0]),
+        build,
+    );
     let c = Dd::ratio(1.0, 3.0).powi(d);
     root(combine(c, pow2(1 - d as i32), 1.0, &sums, p.len()))
 }
@@ -323,13 +518,21 @@ pub fn l2_star_direct(p: Points<'_>) -> f64 {
 /// # Ok::<(), qmckit::Error>(())
 /// ```
 pub fn centered(p: Points<'_>) -> f64 {
+    centered_with(p, Build::Detect)
+}
+
+/// [`centered`] in the given build. With `h = x / 2` and `a = 1/2 + |x - 1/2| / 2`
+/// precomputed, the pair factor is `a_i + a_j - |h_i - h_j|` (four operations).
+fn centered_with(p: Points<'_>, build: Build) -> f64 {
     let sums = kernel_sums(
         p,
         |x| {
             let a = (x - 0.5).abs();
             1.0 + 0.5 * a - 0.5 * a * a
         },
-        |x, y| 1.0 + 0.5 * (x - 0.5).abs() + 0.5 * (y - 0.5).abs() - 0.5 * (x - y).abs(),
+        |x| [0.5 * x, 0.5 + 0.5 * (x - 0.5).abs()],
+        |a, b| a[1] + b[1] - (a[0] - b[0]).abs(),
+        build,
     );
     let c = Dd::ratio(13.0, 12.0).powi(p.dims());
     combine(c, 2.0, 1.0, &sums, p.len())
@@ -354,13 +557,20 @@ pub fn centered(p: Points<'_>) -> f64 {
 /// # Ok::<(), qmckit::Error>(())
 /// ```
 pub fn wrap_around(p: Points<'_>) -> f64 {
+    wrap_around_with(p, Build::Detect)
+}
+
+/// [`wrap_around`] in the given build.
+fn wrap_around_with(p: Points<'_>, build: Build) -> f64 {
     let sums = kernel_sums(
         p,
         |_| 0.0,
-        |x, y| {
-            let t = (x - y).abs();
+        |x| [x],
+        |a, b| {
+            let t = (a[0] - b[0]).abs();
             1.5 - t * (1.0 - t)
         },
+        build,
     );
     let c = Dd::ratio(4.0, 3.0).powi(p.dims());
     let minus_c = Dd {
@@ -390,16 +600,24 @@ pub fn wrap_around(p: Points<'_>) -> f64 {
 /// # Ok::<(), qmckit::Error>(())
 /// ```
 pub fn mixture(p: Points<'_>) -> f64 {
+    mixture_with(p, Build::Detect)
+}
+
+/// [`mixture`] in the given build. With `m = 15/16 - |x - 1/2| / 4` precomputed, the pair
+/// factor is `m_i + m_j - t (3/4 - t / 2)`, `t = |x_i - x_j|`.
+fn mixture_with(p: Points<'_>, build: Build) -> f64 {
     let sums = kernel_sums(
         p,
         |x| {
             let a = (x - 0.5).abs();
             5.0 / 3.0 - 0.25 * a - 0.25 * a * a
         },
-        |x, y| {
-            let t = (x - y).abs();
-            15.0 / 8.0 - 0.25 * (x - 0.5).abs() - 0.25 * (y - 0.5).abs() - 0.75 * t + 0.5 * t * t
+        |x| [x, 15.0 / 16.0 - 0.25 * (x - 0.5).abs()],
+        |a, b| {
+            let t = (a[0] - b[0]).abs();
+            a[1] + b[1] - t * (0.75 - 0.5 * t)
         },
+        build,
     );
     let c = Dd::ratio(19.0, 12.0).powi(p.dims());
     combine(c, 2.0, 1.0, &sums, p.len())
@@ -430,11 +648,18 @@ pub fn mixture(p: Points<'_>) -> f64 {
 /// # Ok::<(), qmckit::Error>(())
 /// ```
 pub fn symmetric(p: Points<'_>) -> f64 {
+    symmetric_with(p, Build::Detect)
+}
+
+/// [`symmetric`] in the given build.
+fn symmetric_with(p: Points<'_>, build: Build) -> f64 {
     let d = p.dims();
     let sums = kernel_sums(
         p,
         |x| 1.0 + 2.0 * x - 2.0 * x * x,
-        |x, y| 1.0 - (x - y).abs(),
+        |x| [x],
+        |a, b| 1.0 - (a[0] - b[0]).abs(),
+        build,
     );
     let c = Dd::ratio(4.0, 3.0).powi(d);
     root(combine(c, 2.0, pow2(d as i32), &sums, p.len()))
@@ -461,8 +686,19 @@ pub fn symmetric(p: Points<'_>) -> f64 {
 /// # Ok::<(), qmckit::Error>(())
 /// ```
 pub fn unanchored(p: Points<'_>) -> f64 {
+    unanchored_with(p, Build::Detect)
+}
+
+/// [`unanchored`] in the given build (`1 - max(x, y) = min(1 - x, 1 - y)`, precomputed).
+fn unanchored_with(p: Points<'_>, build: Build) -> f64 {
     let d = p.dims();
-    let sums = kernel_sums(p, |x| x * (1.0 - x), |x, y| x.min(y) * (1.0 - x.max(y)));
+    let sums = kernel_sums(
+        p,
+        |x| x * (1.0 - x),
+        |x| [x, 1.0 - x],
+        |a, b| min(a[0], b[0]) * min(a[1], b[1]),
+        build,
+    );
     let c = Dd::ratio(1.0, 12.0).powi(d);
     root(combine(c, pow2(1 - d as i32), 1.0, &sums, p.len()))
 }
@@ -488,7 +724,18 @@ pub fn unanchored(p: Points<'_>) -> f64 {
 /// # Ok::<(), qmckit::Error>(())
 /// ```
 pub fn generalized(p: Points<'_>) -> f64 {
-    let sums = kernel_sums(p, |x| 0.5 * (3.0 - x * x), |x, y| 2.0 - x.max(y));
+    generalized_with(p, Build::Detect)
+}
+
+/// [`generalized`] in the given build (`2 - max(x, y) = min(2 - x, 2 - y)`, precomputed).
+fn generalized_with(p: Points<'_>, build: Build) -> f64 {
+    let sums = kernel_sums(
+        p,
+        |x| 0.5 * (3.0 - x * x),
+        |x| [2.0 - x],
+        |a, b| min(a[0], b[0]),
+        build,
+    );
     let c = Dd::ratio(4.0, 3.0).powi(p.dims());
     root(combine(c, 2.0, 1.0, &sums, p.len()))
 }
@@ -512,14 +759,21 @@ pub fn generalized(p: Points<'_>) -> f64 {
 /// # Ok::<(), qmckit::Error>(())
 /// ```
 pub fn diaphony(p: Points<'_>) -> f64 {
+    diaphony_with(p, Build::Detect)
+}
+
+/// [`diaphony`] in the given build.
+fn diaphony_with(p: Points<'_>, build: Build) -> f64 {
     const TWO_PI2: f64 = 2.0 * core::f64::consts::PI * core::f64::consts::PI;
     let sums = kernel_sums(
         p,
         |_| 0.0,
-        |x, y| {
-            let t = (x - y).abs();
+        |x| [x],
+        |a, b| {
+            let t = (a[0] - b[0]).abs();
             1.0 + TWO_PI2 * (t * t - t + 1.0 / 6.0)
         },
+        build,
     );
     let minus_one = Dd { hi: -1.0, lo: 0.0 };
     let sq = combine(minus_one, 0.0, 1.0, &sums, p.len());
@@ -736,6 +990,81 @@ impl L2Metric {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Every measure by the pair sum in the given build.
+    fn direct_with(m: L2Metric, p: Points<'_>, build: Build) -> f64 {
+        match m {
+            L2Metric::L2Star => l2_star_direct_with(p, build),
+            L2Metric::Centered => centered_with(p, build),
+            L2Metric::WrapAround => wrap_around_with(p, build),
+            L2Metric::Mixture => mixture_with(p, build),
+            L2Metric::Symmetric => symmetric_with(p, build),
+            L2Metric::Unanchored => unanchored_with(p, build),
+            L2Metric::Generalized => generalized_with(p, build),
+            L2Metric::Diaphony => diaphony_with(p, build),
+        }
+    }
+
+    fn golden_ratio_points(len: usize) -> Vec<f64> {
+        (0..len)
+            .map(|i| ((i as f64) * 0.618_033_988_749_895).fract())
+            .collect()
+    }
+
+    #[test]
+    fn detected_build_gives_the_portable_bits() {
+        // On an x86-64 CPU with AVX2 and FMA this compares the AVX2 build of the pair sum
+        // with the portable one (elsewhere both are the portable build).
+        #[cfg(target_arch = "x86_64")]
+        eprintln!(
+            "avx2+fma: {}",
+            std::arch::is_x86_feature_detected!("avx2")
+                && std::arch::is_x86_feature_detected!("fma")
+        );
+        for (n, d) in [(1, 1), (7, 3), (9, 2), (33, 2), (100, 8), (257, 5)] {
+            let data = golden_ratio_points(n * d);
+            let p = Points::new(&data, d).unwrap();
+            for m in L2Metric::ALL {
+                let (a, b) = (
+                    direct_with(m, p, Build::Portable),
+                    direct_with(m, p, Build::Detect),
+                );
+                assert_eq!(a.to_bits(), b.to_bits(), "{} n={n} d={d}", m.name());
+            }
+        }
+    }
+
+    #[test]
+    fn blocked_pair_sum_equals_plain_loop() {
+        // Every n mod LANES and the masks of the first and last blocks, against a plain
+        // double loop over i < j of the original kernel.
+        let kernel = |x: f64, y: f64| 1.5 - (x - y).abs() * (1.0 - (x - y).abs());
+        for n in 1..=2 * LANES + 3 {
+            for d in [1, 3] {
+                let data = golden_ratio_points(n * d);
+                let p = Points::new(&data, d).unwrap();
+                let mut plain = 0.0;
+                for i in 0..n {
+                    for j in i + 1..n {
+                        let (a, b) = (p.point(i), p.point(j));
+                        plain += a
+                            .iter()
+                            .zip(b)
+                            .map(|(&x, &y)| kernel(x, y))
+                            .product::<f64>();
+                    }
+                }
+                let s = Blocked::new(p, |x| [x]);
+                for build in [Build::Portable, Build::Detect] {
+                    let got =
+                        off_diagonal(&s, &|a: [f64; 1], b: [f64; 1]| kernel(a[0], b[0]), build)
+                            .dd()
+                            .value();
+                    assert!((got - plain).abs() <= 1e-14 * plain.max(1.0), "n={n} d={d}");
+                }
+            }
+        }
+    }
 
     #[test]
     fn dd_constants() {
