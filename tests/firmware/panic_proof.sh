@@ -5,8 +5,8 @@
 #
 # The proof binary's panic handler calls a symbol that is defined nowhere, so it links only
 # if no panic path is reachable from the calls it makes. It is linked for thumbv6m,
-# thumbv7m and thumbv7em at the firmware release profile (opt-level "s") and at opt-level 3
-# (profile proof-o3), and each linked binary runs under QEMU and must exit 0 (the validated
+# thumbv7m and thumbv7em at the firmware release profile (opt-level "s"), and for thumbv7em
+# also at opt-level 3 (profile proof-o3), and each linked binary runs under QEMU and must exit 0 (the validated
 # constructors succeeded). When a link fails, every check is linked alone to name the
 # culprit(s). Exits non-zero on any failure.
 set -euo pipefail
@@ -25,8 +25,12 @@ while IFS= read -r name; do CHECKS+=("$name"); done < <(
 FAILED=()
 for target in thumbv6m-none-eabi thumbv7m-none-eabi thumbv7em-none-eabihf; do
     board=$(board_of_target "$target")
-    for profile in release proof-o3; do
-        tdir="$HERE/target/proof-$board"
+    # opt-level "s" (the firmware profile) everywhere; opt-level 3 on the Cortex-M4F (a
+    # different inliner can keep or drop different panic paths; one target keeps CI short).
+    profiles=(release)
+    [ "$target" = thumbv7em-none-eabihf ] && profiles+=(proof-o3)
+    for profile in "${profiles[@]}"; do
+        tdir="$HERE/target/$board" # shares the release build of core with run.sh
         log="$OUT/$target-$profile.log"
         if FIRMWARE_PROFILE=$profile QMCKIT_PROOF_ONLY=all cross_build "$target" "$tdir" "" \
             panic-proof >"$log" 2>&1; then
@@ -62,4 +66,4 @@ if [ "${#FAILED[@]}" -ne 0 ]; then
     echo "panic proof: FAILED: ${FAILED[*]}"
     exit 1
 fi
-echo "panic proof: every hot path is panic-free on 3 targets x 2 optimisation levels"
+echo "panic proof: every hot path is panic-free on 3 targets at opt-level s, and at 3 on thumbv7em"
