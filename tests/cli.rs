@@ -3,6 +3,8 @@
 
 use std::process::{Command, Output};
 
+mod common;
+
 fn qmckit(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_qmckit"))
         .args(args)
@@ -22,14 +24,7 @@ fn stdout(args: &[&str]) -> String {
 
 /// Bad usage: exit code 2, exactly one line on stderr, nothing that looks like a panic.
 fn assert_usage_error(args: &[&str], needle: &str) {
-    let out = qmckit(args);
-    assert_eq!(out.status.code(), Some(2), "{args:?}");
-    let err = String::from_utf8(out.stderr).unwrap();
-    assert_eq!(err.lines().count(), 1, "{args:?}: {err:?}");
-    assert!(err.starts_with("qmckit: error: "), "{err}");
-    assert!(err.contains(needle), "{args:?}: {err:?} lacks {needle:?}");
-    assert!(!err.contains("panicked") && !err.contains("RUST_BACKTRACE"));
-    assert!(out.stdout.is_empty());
+    common::cli::assert_usage_error(args, "", needle);
 }
 
 #[test]

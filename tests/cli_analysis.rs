@@ -1,24 +1,10 @@
 //! `qmckit discrepancy` and `qmckit tvalue`: values, output format, one-line errors.
 #![cfg(feature = "cli")]
 
-use std::io::Write;
 use std::path::PathBuf;
-use std::process::{Command, Output, Stdio};
 
-/// Runs qmckit with `input` on stdin.
-fn qmckit_with(args: &[&str], input: &str) -> Output {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_qmckit"))
-        .args(args)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("run qmckit");
-    let mut stdin = child.stdin.take().unwrap();
-    stdin.write_all(input.as_bytes()).unwrap();
-    drop(stdin);
-    child.wait_with_output().unwrap()
-}
+mod common;
+use common::cli::{assert_usage_error, run as qmckit_with};
 
 /// Standard output of a successful run with an empty stdin; stderr must be empty.
 fn stdout(args: &[&str], input: &str) -> String {
@@ -38,18 +24,6 @@ fn temp_file(name: &str, text: &str) -> PathBuf {
         std::env::temp_dir().join(format!("qmckit-cli-analysis-{}-{name}", std::process::id()));
     std::fs::write(&path, text).unwrap();
     path
-}
-
-/// Bad usage or input: exit code 2, one line on stderr naming `needle`, no panic.
-fn assert_usage_error(args: &[&str], input: &str, needle: &str) {
-    let out = qmckit_with(args, input);
-    assert_eq!(out.status.code(), Some(2), "{args:?}");
-    let err = String::from_utf8(out.stderr).unwrap();
-    assert_eq!(err.lines().count(), 1, "{args:?}: {err:?}");
-    assert!(err.starts_with("qmckit: error: "), "{err}");
-    assert!(err.contains(needle), "{args:?}: {err:?} lacks {needle:?}");
-    assert!(!err.contains("panicked") && !err.contains("RUST_BACKTRACE"));
-    assert!(out.stdout.is_empty());
 }
 
 /// The `metric value` lines as pairs.

@@ -2,6 +2,9 @@
 //! definitions (elementary intervals, star discrepancy), not from qmckit's code paths.
 #![allow(dead_code)]
 
+#[cfg(feature = "cli")]
+pub mod cli;
+
 use qmckit::Sampler;
 
 /// Points `0..n` of dimensions `dims` of a sampler, as `Vec<[u32; 2]>` for 2D checks.
