@@ -36,6 +36,14 @@ ensure_cross_toolchain() {
         as_root apt-get install -y qemu-system-arm rustc-web rust-web-src
         have_cross_toolchain || { echo "firmware: cross toolchain still missing" >&2; return 1; }
     fi
+    # RISC-V QEMU (qemu-system-misc), without the recommended qemu-utils, whose backported
+    # version conflicts with Debian's qemu-system-common here.
+    if ! command -v qemu-system-riscv32 >/dev/null 2>&1; then
+        echo "firmware: installing qemu-system-misc (apt-get)"
+        export DEBIAN_FRONTEND=noninteractive
+        as_root apt-get install -y --no-install-recommends qemu-system-misc ||
+            { as_root apt-get update && as_root apt-get install -y --no-install-recommends qemu-system-misc; }
+    fi
     local host_triple
     host_triple="$(rustc -vV | sed -n 's/^host: //p')"
     LLD="$(rustc --print sysroot)/lib/rustlib/$host_triple/bin/rust-lld"

@@ -9,6 +9,7 @@
 # 2. For each board, cross-builds the vector firmware (common.sh: Debian's rustc-web with
 #    -Zbuild-std, rustup's rust-lld), runs it under qemu-system-arm with semihosting and a
 #    timeout, requires exit code 0 and `diff -u` against the host output.
+#    The same vectors on RISC-V (riscv32imac, qemu-system-riscv32 -M virt; riscv/).
 # 3. The firmware author's example (src/bin/baked_pattern.rs: a const-baked pattern and a
 #    heapless buffer) on every board: exit 0 and the same output on all of them.
 # 4. panic_proof.sh (link-time proof that the hot paths keep no panic) and defmt_check.sh
@@ -17,7 +18,7 @@
 # Installs nothing except, when missing, the Debian packages qemu-system-arm, rustc-web
 # and rust-web-src (apt-get; see common.sh). Exits non-zero on any build failure, QEMU
 # failure or timeout, or difference. Environment knobs: FIRMWARE_BOARDS (space-separated
-# subset of microbit, lm3s6965evb, mps2-an386), FIRMWARE_TIMEOUT (seconds a QEMU run,
+# subset of microbit, lm3s6965evb, mps2-an386, riscv-virt), FIRMWARE_TIMEOUT (seconds a QEMU run,
 # default 120).
 set -euo pipefail
 
@@ -120,6 +121,44 @@ for board in "${BOARDS[@]}"; do
     # The first board's output is the reference for the others.
     run_variant "$board" baked-pattern heapless "$OUT/baked-pattern.reference.txt"
 done
+
+# RISC-V: riscv32imac on QEMU `virt` (riscv/: riscv-rt, RISC-V semihosting), the same
+# vectors. Its own crate and target directory; memory.x is passed before riscv-rt's link.x.
+if [ -z "${FIRMWARE_BOARDS:-}" ] || [[ " $FIRMWARE_BOARDS " == *" riscv-virt "* ]]; then
+    echo
+    echo "-- firmware qmckit-firmware-riscv on riscv-virt (riscv32imac-unknown-none-elf)"
+    t0=$(now)
+    rv_elf="$HERE/riscv/target/riscv32imac-unknown-none-elf/release/qmckit-firmware-riscv"
+    if ! (cd riscv && RUSTC=/usr/bin/rustc RUSTC_BOOTSTRAP=1 \
+        RUSTFLAGS="-C linker=$LLD -C link-arg=-Tmemory.x -C link-arg=-Tlink.x" \
+        cargo build --release --quiet \
+        -Zbuild-std=core,compiler_builtins -Zbuild-std-features=compiler-builtins-mem \
+        --target riscv32imac-unknown-none-elf); then
+        echo "firmware riscv-virt: BUILD FAILED"
+        FAILED+=("riscv-virt (build)")
+    else
+        t1=$(now)
+        rc=0
+        timeout "$TIMEOUT_SECS" qemu-system-riscv32 -M virt -bios none -nographic -monitor none \
+            -semihosting-config enable=on,target=native -kernel "$rv_elf" \
+            </dev/null >"$OUT/riscv-virt.txt" 2>"$OUT/riscv-virt.txt.stderr" || rc=$?
+        timing="build $(secs "$t0" "$t1") s, qemu $(secs "$t1" "$(now)") s"
+        echo "   flash (RAM image): $(flash_size "$rv_elf")"
+        if [ "$rc" -ne 0 ]; then
+            echo "firmware riscv-virt: qemu exit code $rc ($timing)"
+            tail -n 20 "$OUT/riscv-virt.txt.stderr"
+            FAILED+=("riscv-virt (exit $rc)")
+        elif ! diff -u --label host "$OUT/host.txt" --label riscv-virt "$OUT/riscv-virt.txt" \
+            >"$OUT/riscv-virt.diff"; then
+            echo "firmware riscv-virt: OUTPUT DIFFERS from host ($timing):"
+            head -n 60 "$OUT/riscv-virt.diff"
+            FAILED+=("riscv-virt (diff)")
+        else
+            echo "firmware riscv-virt: $(wc -l <"$OUT/riscv-virt.txt") lines identical to host.txt ($timing)"
+            PASSED=$((PASSED + 1))
+        fi
+    fi
+fi
 
 echo
 if [ "$(fingerprint)" != "$FINGERPRINT" ]; then
