@@ -19,10 +19,11 @@
 //! of 8 points. Point `i` is then evaluated against 8 points `j` at a time with fixed-size
 //! array operations that compile to SIMD instructions; on x86-64 CPUs with AVX2 and FMA
 //! (detected at run time) the same code runs compiled for AVX2, with the same bits. For
-//! 4096 points in 2 and 8 dimensions, on one thread, this measured 10 to 15 times faster
-//! than SciPy's `discrepancy(workers=1)` for CD and MD, 15 times for L2-star in 8D (30 in
-//! 2D, by the fast path) but only about 5 times for WD, whose SciPy loop is the cheapest
-//! (`scripts/time_discrepancy.py`).
+//! 4096 points on one thread (`scripts/time_discrepancy.py`, README for the table) this
+//! measured, against SciPy's `discrepancy(workers=1)`: L2-star 11-15x in 8D (28-40x in 2D,
+//! by the fast path), CD and MD 11-17x in 8D but 7-13x in 2D (with two coordinates the
+//! compensated per-block summation costs as much as the kernel), WD only 3-6x (SciPy's
+//! cheapest loop).
 //!
 //! | function | name | returns | convention of |
 //! |---|---|---|---|
