@@ -10,6 +10,10 @@
 //! * `lo`: the block `0..N` (small indices, few digits);
 //! * `spread`: `k * 1_000_003` wrapping over `u32` (full-width indices, all digits).
 //!
+//! Random-access Halton is measured per coordinate (`Halton::sample(i, dim)`, the
+//! `qmckit_u32` rows) and per point (`Sampler::point(i, row)`, the `qmckit_point_*` rows);
+//! the peer has no point call, so it composes `halton::number` over the bases.
+//!
 //! Note on indexing: `halton::number(b, i)` is `phi_b(i)` like qmckit's `sample(i)`;
 //! `halton::Sequence::new(b)` yields `phi_b(1), phi_b(2), ...`, so the qmckit sequential
 //! benchmarks start at index 1 to produce the same values.
@@ -243,6 +247,38 @@ fn halton_random(c: &mut Criterion) {
                             }
                         }
                         black_box(&mut out_u32);
+                    })
+                },
+            );
+            group.bench_with_input(
+                BenchmarkId::new(format!("qmckit_point_u32/{label}"), d),
+                idx,
+                |bch, idx| {
+                    bch.iter(|| {
+                        let h = black_box(h);
+                        let rows = out_u32.chunks_exact_mut(d);
+                        for (row, &i) in rows.zip(black_box(idx.as_slice())) {
+                            h.point(i, row).expect("row of d values");
+                        }
+                        black_box(&mut out_u32);
+                    })
+                },
+            );
+            group.bench_with_input(
+                BenchmarkId::new(format!("qmckit_point_f64/{label}"), d),
+                idx,
+                |bch, idx| {
+                    bch.iter(|| {
+                        let h = black_box(h);
+                        let mut row = vec![0u32; d];
+                        for (out, &i) in out_f64.chunks_exact_mut(d).zip(black_box(idx.as_slice()))
+                        {
+                            h.point(i, &mut row).expect("row of d values");
+                            for (slot, &x) in out.iter_mut().zip(&row) {
+                                *slot = to_f64(x);
+                            }
+                        }
+                        black_box(&mut out_f64);
                     })
                 },
             );
