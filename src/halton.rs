@@ -117,6 +117,7 @@ impl Halton {
     ///
     /// # Errors
     /// [`Error::DimensionOutOfRange`].
+    #[inline]
     pub const fn dimension(&self, dim: usize) -> Result<&'static RadicalInverse> {
         if dim >= self.dims {
             return Err(Error::DimensionOutOfRange {
@@ -139,7 +140,7 @@ impl Halton {
     ///
     /// # Errors
     /// [`Error::DimensionOutOfRange`].
-    #[inline]
+    #[inline(always)]
     pub const fn sample(&self, index: u32, dim: usize) -> Result<u32> {
         match self.dimension(dim) {
             // The unscrambled case inline (the scrambled digit loop stays out of line).
