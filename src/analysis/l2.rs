@@ -9,8 +9,8 @@
 //! ```
 //!
 //! so each costs one `O(n d)` pass plus an `O(n^2 d)` pair sum (halved by the symmetry of
-//! `K`, split over rows with rayon). The exception is [`l2_star`] in one and two dimensions,
-//! which has an exact `O(n log n)` algorithm ([`l2_star_fast`]).
+//! `K`, split over rows with rayon). The exception is [`l2_star`], which has an exact
+//! `O(n log^(d-1) n)` algorithm for many points in low dimension ([`l2_star_fast`]).
 //!
 //! The pair sum is one generic loop for all eight measures: each coordinate is first
 //! mapped to one or two features (e.g. `1 - x` for L2-star, `x / 2` and
@@ -454,9 +454,11 @@ fn pow2(e: i32) -> f64 {
 /// Not invariant under the reflections `x_k -> 1 - x_k` (the boxes are anchored at the
 /// origin). All points at `(1, ..., 1)` give `D^2 = 3^-d`.
 ///
-/// Cost: `O(n^2 d)` in general, split over threads; in one and two dimensions with
-/// `n >= 256` it switches to the exact `O(n log n)` [`l2_star_fast`] (the values agree to
-/// about 1e-15 relative). [`l2_star_direct`] always uses the pair sum.
+/// Cost: `O(n^2 d)` by the pair sum, split over threads; from the point count where it
+/// measured faster (256 points in one and two dimensions, more in three to five, never
+/// above five) it switches to the exact `O(n log^(d-1) n)` divide and conquer
+/// [`l2_star_fast`] (the values agree to about 1e-14 relative).
+/// [`l2_star_direct`] always uses the pair sum.
 ///
 /// One point at `x` in one dimension: `D^2 = 1/3 - (1 - x^2) + (1 - x) = x^2 - x + 1/3`,
 /// so at `x = 1/2`, `D^2 = 1/12`:
@@ -468,15 +470,12 @@ fn pow2(e: i32) -> f64 {
 /// # Ok::<(), qmckit::Error>(())
 /// ```
 pub fn l2_star(p: Points<'_>) -> f64 {
-    if p.dims() <= 2 && p.len() >= FAST_MIN_POINTS {
+    if l2_star_tree::tree_pays_off(p.dims(), p.len()) {
         l2_star_fast(p)
     } else {
         l2_star_direct(p)
     }
 }
-
-/// Point count from which [`l2_star`] uses the `O(n log n)` algorithm in 1 and 2 dimensions.
-const FAST_MIN_POINTS: usize = 256;
 
 /// [`l2_star`] by the `O(n^2 d)` pair sum, whatever the dimension.
 pub fn l2_star_direct(p: Points<'_>) -> f64 {
