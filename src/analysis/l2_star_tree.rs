@@ -40,7 +40,8 @@ use rayon::prelude::*;
 /// Cost: `O(n log^(d-1) n)` work, about `n (log2 n)^(d-1) / (d-1)!` row operations, and
 /// `O(n d^2)` memory; the factor grows quickly with `d`, so [`l2_star`](super::l2_star)
 /// only takes this path from the point count where it measured faster than the pair sum
-/// (2^13 points for `d = 3`, 2^15 for `d = 4`, 2^17 for `d = 5`, never from `d = 6` on).
+/// (4096 points for `d = 3`, 24576 for `d = 4`, 196608 for `d = 5`, never from `d = 6`
+/// on).
 /// All sums are compensated and every term is non-negative, so the value agrees with
 /// [`l2_star_direct`] up to the rounding of the products (about 1e-14 relative for
 /// random sets of up to `2^16` points).
@@ -60,18 +61,19 @@ pub fn l2_star_fast(p: Points<'_>) -> f64 {
 
 /// Point count from which [`l2_star`](super::l2_star) uses [`l2_star_fast`] in `d`
 /// dimensions: about where the two ran equally fast on one thread on uniform random points
-/// (`examples/time_l2_star.rs`, x86-64 with AVX2 for the pair sum). Measured there, in
-/// seconds (tree / pair sum): `d = 3`, `2^12` points 0.007-0.011 / 0.005-0.014, `2^13`
-/// 0.049 / 0.071, `2^16` 0.58 / 4.2; `d = 4`, `2^14` 0.43 / 0.21, `2^15` 1.4 / 1.5, `2^16`
-/// 3.1 / 5.6; `d = 5`, `2^14` 2.7 / 0.63, `2^16` 34 / 21, and the ratio shrinks like
-/// `log^4 n / n`, so to about 1 at `2^17`. From `d = 6` on the crossover lies near or
-/// beyond `2^20` points, so there the pair sum is always used (`None`).
+/// (`examples/time_l2_star.rs`, best of repeated runs on a busy 2-core x86-64 machine with
+/// AVX2 for the pair sum). Measured, in seconds (tree / pair sum): `d = 3`: `2^12` points
+/// 0.0089 / 0.0084, `2^13` 0.029 / 0.051, `2^18` 1.7 / 82; `d = 4`: `2^14` 0.35 / 0.24,
+/// `2^15` 0.81 / 1.02, `2^16` 3.4 / 6.5; `d = 5`: `2^15` 2.8 / 0.83, `2^16` 11.8 / 6.5, and
+/// the ratio shrinks like `log^4 n / n`, to 1 near `2^17.4`. From `d = 6` on the same
+/// model puts the crossover near or beyond `2^20` points, so there the pair sum is always
+/// used (`None`).
 pub(super) fn crossover(d: usize) -> Option<usize> {
     match d {
         1 | 2 => Some(256),
-        3 => Some(1 << 13),
-        4 => Some(1 << 15),
-        5 => Some(1 << 17),
+        3 => Some(1 << 12),
+        4 => Some(3 << 13),
+        5 => Some(3 << 16),
         _ => None,
     }
 }
