@@ -24,10 +24,10 @@
 //! summation would cost as much as the kernel); in higher dimensions the loop over the
 //! coordinates multiplies the factors of even and odd coordinates in two chains. For
 //! 4096 points on one thread (`scripts/time_discrepancy.py`, README for the table) this
-//! measured, against SciPy's `discrepancy(workers=1)`, on a shared, loaded machine (three
+//! measured, against SciPy's `discrepancy(workers=1)`, on a shared, loaded machine (four
 //! runs): in 2D L2-star 35-69x (by the fast path), CD 19-36x, WD 11-23x, MD 15-31x; in 8D
 //! L2-star 8-17x, CD 14-17x, MD 13-16x but WD only 7-9x (SciPy's cheapest loop; the
-//! previous loop measured 4-9x for WD and 10-19x for CD and MD in 2D in the same runs).
+//! previous loop measured 4-9x for WD and 10-22x for CD and MD in 2D in the same runs).
 //!
 //! | function | name | returns | convention of |
 //! |---|---|---|---|
