@@ -3,7 +3,7 @@
 
 Usage (from the repository root):
 
-    python3 scripts/time_discrepancy.py [--rounds R] [--n N] [--seed S] [--big-m M]
+    python3 scripts/time_discrepancy.py [--rounds R] [--n N] [--seed S] [--big-m M] [--exe PATH]
 
 For d in (2, 8) it draws N (default 4096) seeded uniform points and times, on the same
 points, `scipy.stats.qmc.discrepancy(x, method=..., workers=1)` for SciPy's four methods
@@ -17,6 +17,8 @@ sums of n^2 terms err by up to about 4 n eps max(c, 1) on the squared value, c t
 term: up to ~1e-8 relative for CD in 2D; qmckit's values are checked to 1e-12 against exact
 sums by tests/golden_discrepancy.rs). Then it times qmckit's L2-star of 2^M (default 2^20)
 uniform points in 2D on one thread (no SciPy: its O(n^2) would take hours).
+`--exe PATH` times a previously built copy of the example instead of building it (to
+compare two versions of qmckit under the same conditions).
 """
 import argparse
 import subprocess
@@ -32,14 +34,14 @@ EXE = ROOT / "target" / "release" / "examples" / "time_l2"
 METHODS = [("L2-star", "l2-star"), ("CD", "cd"), ("WD", "wd"), ("MD", "md")]
 
 
-def qmckit(points, reps, metrics):
-    """{metric: (best seconds, value)} from the example, on `points` written as text."""
+def qmckit(exe, points, reps, metrics):
+    """{metric: (best seconds, value)} from the example `exe`, on `points` written as text."""
     with tempfile.NamedTemporaryFile("w", suffix=".txt", delete=False) as f:
         np.savetxt(f, points, fmt="%.17g")
         path = f.name
     try:
         out = subprocess.run(
-            [str(EXE), path, str(points.shape[1]), str(reps), *metrics],
+            [str(exe), path, str(points.shape[1]), str(reps), *metrics],
             check=True, capture_output=True, text=True,
         ).stdout
     finally:
@@ -79,9 +81,13 @@ def main():
     ap.add_argument("--n", type=int, default=4096)
     ap.add_argument("--seed", type=int, default=20240601)
     ap.add_argument("--big-m", type=int, default=20)
+    ap.add_argument("--exe", type=Path, default=None)
     args = ap.parse_args()
-    subprocess.run(["cargo", "build", "--release", "--quiet", "--example", "time_l2"],
-                   cwd=ROOT, check=True)
+    exe = args.exe
+    if exe is None:
+        subprocess.run(["cargo", "build", "--release", "--quiet", "--example", "time_l2"],
+                       cwd=ROOT, check=True)
+        exe = EXE
     rng = np.random.default_rng(args.seed)
     print(f"n = {args.n}, best of {args.rounds} alternating rounds, one thread each\n")
     print("| d | method | SciPy ms | qmckit ms | ratio | rel. diff | within SciPy's error |")
@@ -90,7 +96,7 @@ def main():
         x = rng.random((args.n, d))
         best_q, best_sp = {}, {}
         for _ in range(args.rounds):
-            for name, (t, v) in qmckit(x, 3, [m for _, m in METHODS]).items():
+            for name, (t, v) in qmckit(exe, x, 3, [m for _, m in METHODS]).items():
                 best_q[name] = min(best_q.get(name, (t, v)), (t, v))
             for method, _ in METHODS:
                 t, v = scipy_best(x, method, 1)
@@ -103,7 +109,7 @@ def main():
                   f"{t_sp / t_q:.1f}x | {rel:.1e} | {ok} |")
     n_big = 1 << args.big_m
     big = rng.random((n_big, 2))
-    t_big, v_big = qmckit(big, 3, ["l2-star"])["l2-star"]
+    t_big, v_big = qmckit(exe, big, 3, ["l2-star"])["l2-star"]
     print(f"\nqmckit L2-star, 2^{args.big_m} uniform points in 2D, one thread: "
           f"{t_big * 1e3:.1f} ms (value {v_big:.6e})")
 

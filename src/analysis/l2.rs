@@ -18,12 +18,16 @@
 //! six arithmetic operations, and the features are stored as structure of arrays in blocks
 //! of 8 points. Point `i` is then evaluated against 8 points `j` at a time with fixed-size
 //! array operations that compile to SIMD instructions; on x86-64 CPUs with AVX2 and FMA
-//! (detected at run time) the same code runs compiled for AVX2, with the same bits. For
+//! (detected at run time) the same code runs compiled for AVX2, with the same bits. In one
+//! and two dimensions the loop is compiled for the dimension and the products of four
+//! blocks are summed in plain arithmetic before the compensated addition (otherwise the
+//! summation would cost as much as the kernel); in higher dimensions the loop over the
+//! coordinates multiplies the factors of even and odd coordinates in two chains. For
 //! 4096 points on one thread (`scripts/time_discrepancy.py`, README for the table) this
-//! measured, against SciPy's `discrepancy(workers=1)`: L2-star 11-15x in 8D (28-40x in 2D,
-//! by the fast path), CD and MD 11-17x in 8D but 7-13x in 2D (with two coordinates the
-//! compensated per-block summation costs as much as the kernel), WD only 3-6x (SciPy's
-//! cheapest loop).
+//! measured, against SciPy's `discrepancy(workers=1)`, on a shared, loaded machine (four
+//! runs): in 2D L2-star 35-69x (by the fast path), CD 19-36x, WD 11-23x, MD 15-31x; in 8D
+//! L2-star 8-17x, CD 14-17x, MD 13-16x but WD only 7-9x (SciPy's cheapest loop; the
+//! previous loop measured 4-9x for WD and 10-22x for CD and MD in 2D in the same runs).
 //!
 //! | function | name | returns | convention of |
 //! |---|---|---|---|
@@ -40,13 +44,15 @@
 //!
 //! For good point sets the three terms above nearly cancel (for 1000 Sobol' points in 8
 //! dimensions the wrap-around terms are about 10 and the result about 1e-3), so a plain sum
-//! loses digits. Here every pair term is added to per-lane TwoSum accumulators, the lanes
+//! loses digits. Here every pair term is added to per-lane TwoSum accumulators (in one and
+//! two dimensions after plain sums of four terms), the lanes
 //! and then the rows are summed with Neumaier compensation in a fixed order (so the result
 //! does not depend on the number of threads), and
 //! the three terms are combined in double-double arithmetic, with the constants `(13/12)^d`,
 //! ... raised to the power `d` in double-double too. The result is accurate to a few units
 //! in the last place of the exact value of the formula evaluated on the given `f64`
-//! coordinates (up to the rounding of each pair product), which is usually more accurate
+//! coordinates (up to the rounding of each pair product and, in one and two dimensions,
+//! of the sums of four products), which is usually more accurate
 //! than SciPy's plain double sums. A squared value that rounds below zero is clamped to
 //! zero before a square root is taken (never a NaN).
 
@@ -275,10 +281,25 @@ impl Lanes {
     }
 }
 
+/// In one and two dimensions, where the compensated summation would cost as much as the
+/// kernel, the products of `GROUP` consecutive full blocks are added in plain `f64`
+/// arithmetic, as the tree `(p0 + p1) + (p2 + p3)`, before one TwoSum per lane into
+/// [`Lanes`]. The tree errs by at most `2u (|p0| + |p1| + |p2| + |p3|)` (`u = 2^-53`, to
+/// first order): an error of the order of the rounding of a product of `d <= 2` kernel
+/// factors, after which the TwoSum accumulation loses nothing more. In three and more
+/// dimensions every block goes to the TwoSum directly (the kernel dominates there, and for
+/// 1000 Sobol' points in 3D the grouped sums cost the mixture discrepancy its 1e-12
+/// relative accuracy).
+const GROUP: usize = 4;
+
 /// `prod_k k1(a_k, b_k)` for one point `a` against the `LANES` points of a block `b`:
-/// `d` kernel evaluations per lane, as array operations.
+/// `d` kernel evaluations per lane, as array operations. `D > 0` fixes the dimension at
+/// compile time (the loop unrolls); `D = 0` takes it from `a.len()`. The factors of even
+/// and of odd `k` multiply into two partial products, multiplied together at the end, so
+/// that the dependent multiplications form two chains instead of one (for `d <= 2` this
+/// is the plain product).
 #[inline(always)]
-fn block_products<const F: usize, K>(
+fn block_products<const F: usize, const D: usize, K>(
     a: &[[f64; F]],
     b: &[[[f64; LANES]; F]],
     k1: &K,
@@ -286,51 +307,138 @@ fn block_products<const F: usize, K>(
 where
     K: Fn([f64; F], [f64; F]) -> f64,
 {
-    let mut prod = [1.0; LANES];
-    for (ak, bk) in a.iter().zip(b) {
-        for (l, p) in prod.iter_mut().enumerate() {
-            *p *= k1(*ak, core::array::from_fn(|f| bk[f][l]));
+    let d = if D == 0 { a.len() } else { D };
+    let (a, b) = (&a[..d], &b[..d]);
+    let mut even = factors(a[0], &b[0], k1);
+    if d == 1 {
+        return even;
+    }
+    let mut odd = factors(a[1], &b[1], k1);
+    let mut k = 2;
+    while k + 1 < d {
+        let (fe, fo) = (factors(a[k], &b[k], k1), factors(a[k + 1], &b[k + 1], k1));
+        for ((e, o), (x, y)) in even.iter_mut().zip(&mut odd).zip(fe.into_iter().zip(fo)) {
+            *e *= x;
+            *o *= y;
+        }
+        k += 2;
+    }
+    if k < d {
+        for (e, x) in even.iter_mut().zip(factors(a[k], &b[k], k1)) {
+            *e *= x;
         }
     }
-    prod
+    for (e, o) in even.iter_mut().zip(odd) {
+        *e *= o;
+    }
+    even
 }
 
-/// Adds `prod_k k1(x_ik, x_jk)` for `j > i` to `acc`: whole blocks of `LANES` points `j`,
-/// the lanes outside `i < j < n` of the first and the last block multiplied by zero.
+/// `k1(a, b_l)` for the `LANES` points `b_l` of one coordinate of a block.
 #[inline(always)]
-fn add_row<const F: usize, K>(s: &Blocked<F>, i: usize, k1: &K, acc: &mut Lanes)
+fn factors<const F: usize, K>(a: [f64; F], b: &[[f64; LANES]; F], k1: &K) -> [f64; LANES]
+where
+    K: Fn([f64; F], [f64; F]) -> f64,
+{
+    core::array::from_fn(|l| k1(a, core::array::from_fn(|f| b[f][l])))
+}
+
+/// Adds `prod_k k1(x_ik, x_jk)` for `j > i` to `acc`: the block holding `i + 1` and the
+/// last, partial block with the lanes outside `i < j < n` multiplied by zero, the full
+/// blocks between them one by one or, for `D = 1, 2`, in groups of [`GROUP`].
+#[inline(always)]
+fn add_row<const F: usize, const D: usize, K>(s: &Blocked<F>, i: usize, k1: &K, acc: &mut Lanes)
 where
     K: Fn([f64; F], [f64; F]) -> f64,
 {
     let d = s.d;
     let a = &s.rows[i * d..(i + 1) * d];
     let first = (i + 1) / LANES;
-    let full_end = s.n / LANES;
-    for (b, blk) in s.blocks.chunks_exact(d).enumerate().skip(first) {
-        let mut prod = block_products(a, blk, k1);
-        if b == first || b >= full_end {
-            let j0 = b * LANES;
-            let keep: [f64; LANES] =
-                core::array::from_fn(|l| f64::from(u8::from(j0 + l > i && j0 + l < s.n)));
-            for (p, k) in prod.iter_mut().zip(keep) {
-                *p *= k;
-            }
-        }
-        acc.add(prod);
+    if first * LANES >= s.n {
+        return;
     }
+    let full_end = s.n / LANES;
+    acc.add(masked_products::<F, D, K>(s, a, first, i, k1));
+    let mid = (first + 1).min(full_end)..full_end;
+    let mid = &s.blocks[mid.start * d..mid.end * d];
+    if !(D == 1 || D == 2) {
+        for blk in mid.chunks_exact(d) {
+            acc.add(block_products::<F, D, K>(a, blk, k1));
+        }
+    } else {
+        add_grouped::<F, D, K>(a, mid, k1, acc);
+    }
+    if full_end > first && full_end * LANES < s.n {
+        acc.add(masked_products::<F, D, K>(s, a, full_end, i, k1));
+    }
+}
+
+/// Adds the products of `a` against the blocks `mid` to `acc` in groups of [`GROUP`]
+/// blocks summed in plain arithmetic, the remaining blocks one by one.
+#[inline(always)]
+fn add_grouped<const F: usize, const D: usize, K>(
+    a: &[[f64; F]],
+    mid: &[[[f64; LANES]; F]],
+    k1: &K,
+    acc: &mut Lanes,
+) where
+    K: Fn([f64; F], [f64; F]) -> f64,
+{
+    let d = a.len();
+    let groups = mid.chunks_exact(GROUP * d);
+    let rest = groups.remainder();
+    for g in groups {
+        let (g01, g23) = g.split_at(2 * d);
+        let (g0, g1) = g01.split_at(d);
+        let (g2, g3) = g23.split_at(d);
+        let p0 = block_products::<F, D, K>(a, g0, k1);
+        let p1 = block_products::<F, D, K>(a, g1, k1);
+        let p2 = block_products::<F, D, K>(a, g2, k1);
+        let p3 = block_products::<F, D, K>(a, g3, k1);
+        let mut sum = [0.0; LANES];
+        for l in 0..LANES {
+            sum[l] = (p0[l] + p1[l]) + (p2[l] + p3[l]);
+        }
+        acc.add(sum);
+    }
+    for blk in rest.chunks_exact(d) {
+        acc.add(block_products::<F, D, K>(a, blk, k1));
+    }
+}
+
+/// [`block_products`] of row `a` (point `i`) against block `b`, with the lanes outside
+/// `i < j < n` multiplied by zero.
+#[inline(always)]
+fn masked_products<const F: usize, const D: usize, K>(
+    s: &Blocked<F>,
+    a: &[[f64; F]],
+    b: usize,
+    i: usize,
+    k1: &K,
+) -> [f64; LANES]
+where
+    K: Fn([f64; F], [f64; F]) -> f64,
+{
+    let d = s.d;
+    let mut prod = block_products::<F, D, K>(a, &s.blocks[b * d..(b + 1) * d], k1);
+    let j0 = b * LANES;
+    for (l, p) in prod.iter_mut().enumerate() {
+        *p *= f64::from(u8::from(j0 + l > i && j0 + l < s.n));
+    }
+    prod
 }
 
 /// Rows `i` and `n - 1 - i` (about `n` pairs together), summed in a fixed order.
 #[inline(always)]
-fn row_pair_portable<const F: usize, K>(s: &Blocked<F>, i: usize, k1: &K) -> Acc
+fn row_pair_portable<const F: usize, const D: usize, K>(s: &Blocked<F>, i: usize, k1: &K) -> Acc
 where
     K: Fn([f64; F], [f64; F]) -> f64,
 {
     let mut acc = Lanes::ZERO;
-    add_row(s, i, k1, &mut acc);
+    add_row::<F, D, K>(s, i, k1, &mut acc);
     let mirror = s.n - 1 - i;
     if mirror != i {
-        add_row(s, mirror, k1, &mut acc);
+        add_row::<F, D, K>(s, mirror, k1, &mut acc);
     }
     acc.total()
 }
@@ -338,15 +446,20 @@ where
 /// [`row_pair_portable`] compiled with AVX2 and FMA (4 lanes a register instead of 2).
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]
-fn row_pair_avx2<const F: usize, K>(s: &Blocked<F>, i: usize, k1: &K) -> Acc
+fn row_pair_avx2<const F: usize, const D: usize, K>(s: &Blocked<F>, i: usize, k1: &K) -> Acc
 where
     K: Fn([f64; F], [f64; F]) -> f64,
 {
-    row_pair_portable(s, i, k1)
+    row_pair_portable::<F, D, K>(s, i, k1)
 }
 
 /// [`row_pair_portable`] in the requested build.
-fn row_pair<const F: usize, K>(s: &Blocked<F>, i: usize, k1: &K, build: Build) -> Acc
+fn row_pair<const F: usize, const D: usize, K>(
+    s: &Blocked<F>,
+    i: usize,
+    k1: &K,
+    build: Build,
+) -> Acc
 where
     K: Fn([f64; F], [f64; F]) -> f64,
 {
@@ -358,23 +471,35 @@ where
         // SAFETY: `row_pair_avx2` is safe code whose only requirement is that the CPU
         // supports AVX2 and FMA, both detected at run time on this very CPU just above.
         #[allow(unsafe_code)]
-        return unsafe { row_pair_avx2(s, i, k1) };
+        return unsafe { row_pair_avx2::<F, D, K>(s, i, k1) };
     }
     let _ = build;
-    row_pair_portable(s, i, k1)
+    row_pair_portable::<F, D, K>(s, i, k1)
 }
 
 /// `sum_{i < j} K(x_i, x_j)`: rows `i` and `n - 1 - i` go to the same task so that every
 /// task does about `n` pair evaluations. Row sums are merged in a fixed order, so the
-/// result does not depend on the number of threads.
+/// result does not depend on the number of threads. Dimensions 1 and 2 run loops compiled
+/// for that dimension (in 2D the loop overhead would cost as much as the kernel), the
+/// others one loop over the coordinates (measured faster in 8D than an unrolled loop).
 fn off_diagonal<const F: usize, K>(s: &Blocked<F>, k1: &K, build: Build) -> Acc
 where
     K: Fn([f64; F], [f64; F]) -> f64 + Sync,
 {
-    let rows: Vec<Acc> = (0..s.n.div_ceil(2))
-        .into_par_iter()
-        .map(|i| row_pair(s, i, k1, build))
-        .collect();
+    fn rows<const F: usize, const D: usize, K>(s: &Blocked<F>, k1: &K, build: Build) -> Vec<Acc>
+    where
+        K: Fn([f64; F], [f64; F]) -> f64 + Sync,
+    {
+        (0..s.n.div_ceil(2))
+            .into_par_iter()
+            .map(|i| row_pair::<F, D, K>(s, i, k1, build))
+            .collect()
+    }
+    let rows = match s.d {
+        1 => rows::<F, 1, K>(s, k1, build),
+        2 => rows::<F, 2, K>(s, k1, build),
+        _ => rows::<F, 0, K>(s, k1, build),
+    };
     let mut total = Acc::default();
     for r in rows {
         total.merge(r);
@@ -785,6 +910,55 @@ fn diaphony_with(p: Points<'_>, build: Build) -> f64 {
 mod l2_star_tree;
 pub use l2_star_tree::l2_star_fast;
 
+#[cfg(test)]
+mod kernel_tests {
+    use super::*;
+
+    /// The pair sum over `i < j` with rows long enough for the groups of [`GROUP`] blocks,
+    /// their remainders and the masked first and last blocks (every `n mod LANES`, both
+    /// specialized dimensions and the generic loop with odd and even `d`), against a
+    /// double loop over the pairs summed with Neumaier compensation.
+    #[test]
+    fn grouped_pair_sum_equals_plain_loop() {
+        let kernel = |x: f64, y: f64| 1.5 - (x - y).abs() * (1.0 - (x - y).abs());
+        let ns = (1..=3 * GROUP * LANES + 9)
+            .step_by(5)
+            .chain([LANES * (GROUP + 2) + 1]);
+        for n in ns {
+            for d in [1, 2, 3, 8] {
+                let data: Vec<f64> = (0..n * d)
+                    .map(|i| ((i as f64) * 0.754_877_666_246_692_7).fract())
+                    .collect();
+                let p = Points::new(&data, d).unwrap();
+                let (mut plain, mut comp) = (0.0f64, 0.0f64);
+                for i in 0..n {
+                    for j in i + 1..n {
+                        let (a, b) = (p.point(i), p.point(j));
+                        let x: f64 = a.iter().zip(b).map(|(&x, &y)| kernel(x, y)).product();
+                        let t = plain + x;
+                        comp += if plain.abs() >= x.abs() {
+                            (plain - t) + x
+                        } else {
+                            (x - t) + plain
+                        };
+                        plain = t;
+                    }
+                }
+                let plain = plain + comp;
+                let s = Blocked::new(p, |x| [x]);
+                let k1 = |a: [f64; 1], b: [f64; 1]| kernel(a[0], b[0]);
+                let portable = off_diagonal(&s, &k1, Build::Portable).dd().value();
+                let detect = off_diagonal(&s, &k1, Build::Detect).dd().value();
+                assert!(
+                    (portable - plain).abs() <= 1e-14 * plain.max(1.0),
+                    "n={n} d={d}: {portable} vs {plain}"
+                );
+                assert_eq!(portable.to_bits(), detect.to_bits(), "n={n} d={d}");
+            }
+        }
+    }
+}
+
 // ---------------------------------------------------------------------------------------
 // The metric list, for the command line.
 // ---------------------------------------------------------------------------------------
@@ -914,17 +1088,21 @@ mod tests {
             for d in [1, 3] {
                 let data = golden_ratio_points(n * d);
                 let p = Points::new(&data, d).unwrap();
-                let mut plain = 0.0;
+                let (mut plain, mut comp) = (0.0f64, 0.0f64);
                 for i in 0..n {
                     for j in i + 1..n {
                         let (a, b) = (p.point(i), p.point(j));
-                        plain += a
-                            .iter()
-                            .zip(b)
-                            .map(|(&x, &y)| kernel(x, y))
-                            .product::<f64>();
+                        let x: f64 = a.iter().zip(b).map(|(&x, &y)| kernel(x, y)).product();
+                        let t = plain + x;
+                        comp += if plain.abs() >= x.abs() {
+                            (plain - t) + x
+                        } else {
+                            (x - t) + plain
+                        };
+                        plain = t;
                     }
                 }
+                let plain = plain + comp;
                 let s = Blocked::new(p, |x| [x]);
                 for build in [Build::Portable, Build::Detect] {
                     let got =
