@@ -4,6 +4,7 @@
 #![cfg(feature = "std")]
 
 use qmckit::analysis::Points;
+use qmckit::analysis::dem::star_dem;
 use qmckit::analysis::star::{
     extreme_2d, star, star_1d, star_2d, star_exact, star_lower_bound, star_upper_bound,
 };
@@ -364,4 +365,27 @@ fn bounds_bracket_the_exact_value() {
     let lower = star_lower_bound(p, 1, 20_000);
     assert!((0.035..=21.0 / 512.0).contains(&lower), "{lower}");
     assert!(star_upper_bound(p, 0.0).is_err());
+}
+
+#[test]
+fn dem_matches_brute_force() {
+    let mut rng = Rng(8);
+    for (d, trials, max_n) in [(1, 100, 20), (2, 150, 20), (3, 200, 14), (4, 80, 9), (5, 30, 6), (6, 12, 5)] {
+        for trial in 0..trials {
+            let n = 1 + trial % max_n;
+            let q = match trial % 4 {
+                0 => Some(2),
+                1 => Some(3),
+                2 => Some(8),
+                _ => None,
+            };
+            let data = random_set(&mut rng, n, d, q);
+            let p = Points::new(&data, d).unwrap();
+            let (got, want) = (star_dem(p).unwrap(), brute_star(&data, d));
+            assert!(
+                (got - want).abs() < 1e-14,
+                "d = {d}, {data:?}: {got} vs {want}"
+            );
+        }
+    }
 }
