@@ -148,12 +148,7 @@ pub(crate) fn dem_unchecked(points: Points<'_>) -> f64 {
         step: (n.sqrt().ceil() as usize).max(1),
         best: &best,
     };
-    let rem: Vec<u32> = (0..counted.len() as u32).collect();
-    if d == 1 {
-        ctx.last(&[], &[], &rem, &[]);
-    } else {
-        ctx.split(0, &[], &[], 1.0, &rem, &[]);
-    }
+    ctx.run(counted.len() as u32);
     f64::from_bits(best.load(Ordering::Relaxed)) / n
 }
 
@@ -169,6 +164,71 @@ struct Ctx<'a> {
     step: usize,
     /// Best value so far, scaled by `N`, as `f64` bits (non-negative, so ordered as `u64`).
     best: &'a AtomicU64,
+}
+
+/// Buffers of one cut level, reused across the nodes of a depth-first walk.
+#[derive(Default)]
+struct Level {
+    /// Points below in every earlier coordinate, sorted by this coordinate's level.
+    rem: Vec<u32>,
+    /// Slab points (point, slab coordinate), sorted by this coordinate's level.
+    forced: Vec<(u32, u8)>,
+    /// Lower ends of the slabs of this coordinate.
+    starts: Vec<u32>,
+    /// The slab points handed to the current child.
+    child: Vec<(u32, u8)>,
+}
+
+/// Per-walk state below the cut levels: the current cell bounds and the buffers of
+/// [`Ctx::last`] and [`Ctx::cell`].
+struct Tail {
+    lo: Vec<u32>,
+    hi: Vec<u32>,
+    /// Sorted slab levels of the active slab points, per coordinate `0..L`.
+    active: Vec<Vec<u32>>,
+    /// Their tables (see [`Ctx::tables`]), kept up to date as points are activated.
+    tab_big: Vec<Vec<f64>>,
+    tab_small: Vec<Vec<f64>>,
+    /// `pre_big[j]`: the knapsack of the tables of coordinates `0..j`; valid up to
+    /// `clean_big` (likewise for `small`).
+    pre_big: Vec<Vec<f64>>,
+    pre_small: Vec<Vec<f64>>,
+    clean_big: usize,
+    clean_small: usize,
+    rem: Vec<u32>,
+    forced: Vec<(u32, u8)>,
+    bj: Vec<f64>,
+    sj: Vec<f64>,
+}
+
+impl Tail {
+    fn new(d: usize) -> Self {
+        Tail {
+            lo: vec![0; d],
+            hi: vec![0; d],
+            active: vec![Vec::new(); d],
+            tab_big: vec![Vec::new(); d],
+            tab_small: vec![Vec::new(); d],
+            pre_big: vec![vec![1.0]; d + 1],
+            pre_small: vec![vec![1.0]; d + 1],
+            clean_big: 0,
+            clean_small: 0,
+            rem: Vec::new(),
+            forced: Vec::new(),
+            bj: Vec::new(),
+            sj: Vec::new(),
+        }
+    }
+}
+
+/// One slab `[lo, hi]` of a cut: `below` points of `rem` are below it, `rem[below..inside]`
+/// stab it, `forced[..kept]` stay.
+struct Slab {
+    lo: u32,
+    hi: u32,
+    below: usize,
+    inside: usize,
+    kept: usize,
 }
 
 impl Ctx<'_> {
@@ -201,107 +261,160 @@ impl Ctx<'_> {
         }
     }
 
-    /// Cuts coordinate `k < d - 1`. `lo`, `hi` bound coordinates `0..k`; `vol_hi` is
-    /// `prod A_j(hi_j)` over them; `rem` are the points below in all of them, `forced` the
-    /// slab points with their slab coordinate.
-    fn split(
-        &self,
-        k: usize,
-        lo: &[u32],
-        hi: &[u32],
-        vol_hi: f64,
-        rem: &[u32],
-        forced: &[(u32, u8)],
-    ) {
-        if k + 1 >= self.d {
-            self.last(lo, hi, rem, forced);
+    /// The whole walk over `counted` points; the slabs of the first cut run in parallel.
+    fn run(&self, counted: u32) {
+        let d = self.d;
+        let all: Vec<u32> = (0..counted).collect();
+        if d == 1 {
+            self.last(&all, &mut Tail::new(d));
             return;
         }
-        let mut r = rem.to_vec();
-        r.sort_unstable_by_key(|&i| self.level(i, k));
-        let mut f = forced.to_vec();
-        f.sort_unstable_by_key(|&(i, _)| self.level(i, k));
-        let mut starts: Vec<u32> = Vec::with_capacity(f.len() + r.len() / self.step + 1);
-        starts.push(0);
-        starts.extend(f.iter().map(|&(i, _)| self.level(i, k)));
-        starts.extend(r.iter().skip(self.step).step_by(self.step).map(|&i| self.level(i, k)));
-        starts.sort_unstable();
-        starts.dedup();
-        let top = self.grids[k].len() as u32;
-        let child = |idx: usize| {
-            let lo_k = starts[idx];
-            let hi_k = starts.get(idx + 1).map_or(top, |&s| s - 1);
-            let below = r.partition_point(|&i| self.level(i, k) <= lo_k);
-            let inside = r.partition_point(|&i| self.level(i, k) <= hi_k);
-            let kept = f.partition_point(|&(i, _)| self.level(i, k) <= lo_k);
-            let vh = vol_hi * self.a(k, hi_k);
-            let best = self.best();
-            if self.n * vh <= best && (inside + kept) as f64 <= best {
-                return;
-            }
-            let mut nf = Vec::with_capacity(kept + inside - below);
-            nf.extend_from_slice(&f[..kept]);
-            nf.extend(r[below..inside].iter().map(|&i| (i, k as u8)));
-            let mut lo2 = lo.to_vec();
-            lo2.push(lo_k);
-            let mut hi2 = hi.to_vec();
-            hi2.push(hi_k);
-            self.split(k + 1, &lo2, &hi2, vh, &r[..below], &nf);
-        };
-        if k == 0 {
-            (0..starts.len()).into_par_iter().for_each(child);
-        } else {
-            (0..starts.len()).for_each(child);
+        let mut first = Level::default();
+        self.cut(0, &all, &[], &mut first);
+        let first = &first;
+        (0..first.starts.len()).into_par_iter().for_each(|idx| {
+            let mut levels: Vec<Level> = (1..d).map(|_| Level::default()).collect();
+            let mut tail = Tail::new(d);
+            self.child(0, idx, first, 1.0, &mut levels, &mut tail);
+        });
+    }
+
+    /// Sorts `rem` and `forced` by coordinate `k` into `me` and places the cuts.
+    fn cut(&self, k: usize, rem: &[u32], forced: &[(u32, u8)], me: &mut Level) {
+        me.rem.clear();
+        me.rem.extend_from_slice(rem);
+        me.rem.sort_unstable_by_key(|&i| self.level(i, k));
+        me.forced.clear();
+        me.forced.extend_from_slice(forced);
+        me.forced.sort_unstable_by_key(|&(i, _)| self.level(i, k));
+        me.starts.clear();
+        me.starts.push(0);
+        me.starts
+            .extend(me.forced.iter().map(|&(i, _)| self.level(i, k)));
+        me.starts.extend(
+            me.rem
+                .iter()
+                .skip(self.step)
+                .step_by(self.step)
+                .map(|&i| self.level(i, k)),
+        );
+        me.starts.sort_unstable();
+        me.starts.dedup();
+    }
+
+    /// Slab `idx` of the cut of coordinate `k` in `me`.
+    fn slab(&self, k: usize, idx: usize, me: &Level) -> Slab {
+        let lo = me.starts[idx];
+        let hi = me
+            .starts
+            .get(idx + 1)
+            .map_or(self.grids[k].len() as u32, |&s| s - 1);
+        Slab {
+            lo,
+            hi,
+            below: me.rem.partition_point(|&i| self.level(i, k) <= lo),
+            inside: me.rem.partition_point(|&i| self.level(i, k) <= hi),
+            kept: me.forced.partition_point(|&(i, _)| self.level(i, k) <= lo),
         }
     }
 
-    /// The last coordinate `L = d - 1`: cut only at the slab points' levels, then evaluate
-    /// every cell exactly.
-    fn last(&self, lo: &[u32], hi: &[u32], rem: &[u32], forced: &[(u32, u8)]) {
+    /// Recurses into slab `idx` of the cut `me` of coordinate `k` (`vol_hi` is
+    /// `prod A_j(hi_j)` over coordinates `0..k`), unless it cannot beat the best so far.
+    fn child(
+        &self,
+        k: usize,
+        idx: usize,
+        me: &Level,
+        vol_hi: f64,
+        levels: &mut [Level],
+        tail: &mut Tail,
+    ) {
+        let s = self.slab(k, idx, me);
+        let vh = vol_hi * self.a(k, s.hi);
+        let best = self.best();
+        // Inside: volume at most vh, count at most the points not yet excluded.
+        if self.n * vh <= best && (s.inside + s.kept) as f64 <= best {
+            return;
+        }
+        tail.lo[k] = s.lo;
+        tail.hi[k] = s.hi;
+        let rem = &me.rem[..s.below];
+        let new_forced = me.rem[s.below..s.inside].iter().map(|&i| (i, k as u8));
+        if k + 2 >= self.d {
+            // The last coordinate comes next.
+            tail.forced.clear();
+            tail.forced.extend_from_slice(&me.forced[..s.kept]);
+            tail.forced.extend(new_forced);
+            self.last(rem, tail);
+            return;
+        }
+        let Some((next, rest)) = levels.split_first_mut() else {
+            return;
+        };
+        let mut forced = std::mem::take(&mut next.child);
+        forced.clear();
+        forced.extend_from_slice(&me.forced[..s.kept]);
+        forced.extend(new_forced);
+        self.cut(k + 1, rem, &forced, next);
+        next.child = forced;
+        for j in 0..next.starts.len() {
+            self.child(k + 1, j, next, vh, rest, tail);
+        }
+    }
+
+    /// The last coordinate `L = d - 1` of the node with bounds `tail.lo`, `tail.hi` on
+    /// coordinates `0..L`, points `rem` below in all of them and slab points `tail.forced`:
+    /// cut only at the slab points' levels, then evaluate every cell exactly.
+    fn last(&self, rem: &[u32], tail: &mut Tail) {
         let l = self.d - 1;
-        let mut r: Vec<u32> = rem.iter().map(|&i| self.level(i, l)).collect();
-        r.sort_unstable();
-        let mut f = forced.to_vec();
-        f.sort_unstable_by_key(|&(i, _)| self.level(i, l));
         let top = self.grids[l].len() as u32;
-        // Constant factors of the coordinates without slab points are folded in as they go.
-        let vol_hi: f64 = (0..l).map(|j| self.a(j, hi[j])).product();
-        let vol_lo: f64 = (0..l).map(|j| self.b(j, lo[j])).product();
-        let mut active: Vec<Vec<u32>> = vec![Vec::new(); l];
+        tail.rem.clear();
+        tail.rem.extend(rem.iter().map(|&i| self.level(i, l)));
+        tail.rem.sort_unstable();
+        let mut forced = std::mem::take(&mut tail.forced);
+        forced.sort_unstable_by_key(|&(i, _)| self.level(i, l));
+        for j in 0..l {
+            tail.active[j].clear();
+            tail.tab_big[j].clear();
+            tail.tab_big[j].push(self.a(j, tail.hi[j]));
+            tail.tab_small[j].clear();
+            tail.tab_small[j].push(self.b(j, tail.lo[j]));
+        }
+        tail.clean_big = 0;
+        tail.clean_small = 0;
+        let vol_hi: f64 = (0..l).map(|j| self.a(j, tail.hi[j])).product();
+        let vol_lo: f64 = (0..l).map(|j| self.b(j, tail.lo[j])).product();
         let mut n_active = 0usize;
         let mut fi = 0usize;
-        let mut scratch = Scratch::default();
         let mut lo_l = 0u32;
         loop {
-            // Activate the slab points whose last level is at most lo_l (= lo_l exactly).
-            while let Some(&(i, j)) = f.get(fi) {
+            // Activate the slab points whose last level is lo_l (the cuts are at them).
+            while let Some(&(i, j)) = forced.get(fi) {
                 if self.level(i, l) > lo_l {
                     break;
                 }
-                let v = self.level(i, j as usize);
-                let list = &mut active[j as usize];
+                let (j, v) = (j as usize, self.level(i, j as usize));
+                let list = &mut tail.active[j];
                 let at = list.partition_point(|&x| x <= v);
                 list.insert(at, v);
+                // See `tables`: A(v - 1) enters big at `at`, B(v) enters small after it.
+                tail.tab_big[j].insert(at, self.a(j, v - 1));
+                tail.tab_small[j].insert(at + 1, self.b(j, v));
+                tail.clean_big = tail.clean_big.min(j);
+                tail.clean_small = tail.clean_small.min(j);
                 n_active += 1;
                 fi += 1;
             }
-            let hi_l = f.get(fi).map_or(top, |&(i, _)| self.level(i, l) - 1);
-            let below = r.partition_point(|&x| x <= lo_l);
-            let inside = r.partition_point(|&x| x <= hi_l);
+            let hi_l = forced.get(fi).map_or(top, |&(i, _)| self.level(i, l) - 1);
+            let below = tail.rem.partition_point(|&x| x <= lo_l);
+            let inside = tail.rem.partition_point(|&x| x <= hi_l);
             let rr = below as f64;
             let best = self.best();
             let open_bound = self.n * vol_hi * self.a(l, hi_l) - rr;
             let closed_bound = (inside + n_active) as f64 - self.n * vol_lo * self.b(l, lo_l);
-            if open_bound > best || closed_bound > best {
-                let v = self.cell(
-                    lo,
-                    hi,
-                    &active,
-                    (lo_l, hi_l),
-                    &r[below..inside],
-                    rr,
-                    &mut scratch,
-                );
+            let (open, closed) = (open_bound > best, closed_bound > best);
+            if open || closed {
+                let v = self.cell(tail, (lo_l, hi_l), below, inside, (open, closed));
                 self.offer(v);
             }
             if hi_l >= top {
@@ -309,99 +422,123 @@ impl Ctx<'_> {
             }
             lo_l = hi_l + 1;
         }
+        tail.forced = forced;
     }
 
-    /// Exact value (scaled by `N`) of the cell with bounds `lo`, `hi` (coordinates `0..L`)
-    /// and `last` (coordinate `L`), slab levels `active[j]` (sorted) of coordinate `j < L`,
-    /// `slab` (sorted) of coordinate `L`, and `rr` points below everywhere.
-    #[allow(clippy::too_many_arguments)]
+    /// Exact value (scaled by `N`) of the cell with bounds `tail.lo`, `tail.hi` on
+    /// coordinates `0..L` and `last` on coordinate `L`, slab levels `tail.active[j]` of
+    /// coordinate `j < L` and `tail.rem[below..inside]` of coordinate `L`, `below` points
+    /// below everywhere.
     fn cell(
         &self,
-        lo: &[u32],
-        hi: &[u32],
-        active: &[Vec<u32>],
+        tail: &mut Tail,
         last: (u32, u32),
-        slab: &[u32],
-        rr: f64,
-        s: &mut Scratch,
+        below: usize,
+        inside: usize,
+        (open, closed): (bool, bool),
     ) -> f64 {
         let l = self.d - 1;
+        let t = tail;
         // Knapsack over coordinates 0..L: big[c] (small[c]) = largest (smallest) product of
-        // A (B) factors with total slab count c.
-        s.big.clear();
-        s.big.push(1.0);
-        s.small.clear();
-        s.small.push(1.0);
-        let (mut fa, mut fb) = (1.0f64, 1.0f64);
-        for j in 0..l {
-            let list = &active[j];
-            if list.is_empty() {
-                fa *= self.a(j, hi[j]);
-                fb *= self.b(j, lo[j]);
-                continue;
+        // A (B) factors with total slab count c, from the prefixes still valid. Only the
+        // halves that can beat the best so far (`open`, `closed`) are brought up to date.
+        if open {
+            for j in t.clean_big..l {
+                let (done, todo) = t.pre_big.split_at_mut(j + 1);
+                convolve_max(&done[j], &t.tab_big[j], &mut todo[0]);
             }
-            fill_coordinate(self, j, lo[j], hi[j], list, &mut s.bj, &mut s.sj);
-            convolve(&s.big, &s.bj, &mut s.tmp, f64::max, 0.0);
-            std::mem::swap(&mut s.big, &mut s.tmp);
-            convolve(&s.small, &s.sj, &mut s.tmp, f64::min, f64::INFINITY);
-            std::mem::swap(&mut s.small, &mut s.tmp);
+            t.clean_big = l;
         }
-        fill_coordinate(self, l, last.0, last.1, slab, &mut s.bj, &mut s.sj);
-        let (na, nb) = (self.n * fa, self.n * fb);
-        let mut best = 0.0f64;
-        for (a, (&bg, &sm)) in s.big.iter().zip(&s.small).enumerate() {
-            let (x, y) = (na * bg, nb * sm);
-            let mut count = rr + a as f64;
-            for (&bl, &sl) in s.bj.iter().zip(&s.sj) {
-                let open = x * bl - count;
-                let closed = count - y * sl;
-                best = best.max(open).max(closed);
-                count += 1.0;
+        if closed {
+            for j in t.clean_small..l {
+                let (done, todo) = t.pre_small.split_at_mut(j + 1);
+                convolve_min(&done[j], &t.tab_small[j], &mut todo[0]);
+            }
+            t.clean_small = l;
+        }
+        let slab = &t.rem[below..inside];
+        self.tables(l, last.0, last.1, slab, &mut t.bj, &mut t.sj);
+        let (na, nb) = (self.n, self.n);
+        let base = below as f64;
+        let m = slab.len() as f64;
+        let mut best = self.best();
+        if open {
+            let top = t.bj.last().copied().unwrap_or(0.0);
+            for (a, &bg) in t.pre_big[l].iter().enumerate() {
+                let x = na * bg;
+                let mut count = base + a as f64;
+                if x * top - count <= best {
+                    continue;
+                }
+                for &bl in &t.bj {
+                    let v = x * bl - count;
+                    best = if v > best { v } else { best };
+                    count += 1.0;
+                }
+            }
+        }
+        if closed {
+            let bottom = t.sj.first().copied().unwrap_or(0.0);
+            for (a, &sm) in t.pre_small[l].iter().enumerate() {
+                let y = nb * sm;
+                let mut count = base + a as f64;
+                if count + m - y * bottom <= best {
+                    continue;
+                }
+                for &sl in &t.sj {
+                    let v = count - y * sl;
+                    best = if v > best { v } else { best };
+                    count += 1.0;
+                }
             }
         }
         best
     }
-}
 
-/// Per-coordinate tables of a cell: for `c = 0..=m` slab points counted, `big[c] = A(t)` at
-/// the largest `t` in `[lo, hi]` counting at most `c` of them and `small[c] = B(t)` at the
-/// smallest `t` counting at least `c`.
-fn fill_coordinate(
-    ctx: &Ctx<'_>,
-    k: usize,
-    lo: u32,
-    hi: u32,
-    list: &[u32],
-    big: &mut Vec<f64>,
-    small: &mut Vec<f64>,
-) {
-    big.clear();
-    small.clear();
-    small.push(ctx.b(k, lo));
-    for &v in list {
-        big.push(ctx.a(k, v - 1));
-        small.push(ctx.b(k, v));
+    /// Per-coordinate tables of a cell: for `c = 0..=m` slab points counted (`list`: their
+    /// sorted levels in `(lo, hi]`), `big[c] = A_k(t)` at the largest `t` in `[lo, hi]`
+    /// counting at most `c` of them and `small[c] = B_k(t)` at the smallest `t` counting at
+    /// least `c`.
+    fn tables(
+        &self,
+        k: usize,
+        lo: u32,
+        hi: u32,
+        list: &[u32],
+        big: &mut Vec<f64>,
+        small: &mut Vec<f64>,
+    ) {
+        big.clear();
+        small.clear();
+        small.push(self.b(k, lo));
+        for &v in list {
+            big.push(self.a(k, v - 1));
+            small.push(self.b(k, v));
+        }
+        big.push(self.a(k, hi));
     }
-    big.push(ctx.a(k, hi));
 }
 
-/// `out[a + b] = op over a, b of x[a] * y[b]`, starting from `init`.
-fn convolve(x: &[f64], y: &[f64], out: &mut Vec<f64>, op: fn(f64, f64) -> f64, init: f64) {
+/// `out[a + b] = max over a, b of x[a] * y[b]` (non-negative entries).
+fn convolve_max(x: &[f64], y: &[f64], out: &mut Vec<f64>) {
     out.clear();
-    out.resize(x.len() + y.len() - 1, init);
+    out.resize(x.len() + y.len() - 1, 0.0);
     for (a, &xa) in x.iter().enumerate() {
         for (o, &yb) in out[a..].iter_mut().zip(y) {
-            *o = op(*o, xa * yb);
+            let p = xa * yb;
+            *o = if p > *o { p } else { *o };
         }
     }
 }
 
-/// Reused buffers of [`Ctx::cell`].
-#[derive(Default)]
-struct Scratch {
-    big: Vec<f64>,
-    small: Vec<f64>,
-    tmp: Vec<f64>,
-    bj: Vec<f64>,
-    sj: Vec<f64>,
+/// `out[a + b] = min over a, b of x[a] * y[b]`.
+fn convolve_min(x: &[f64], y: &[f64], out: &mut Vec<f64>) {
+    out.clear();
+    out.resize(x.len() + y.len() - 1, f64::INFINITY);
+    for (a, &xa) in x.iter().enumerate() {
+        for (o, &yb) in out[a..].iter_mut().zip(y) {
+            let p = xa * yb;
+            *o = if p < *o { p } else { *o };
+        }
+    }
 }
