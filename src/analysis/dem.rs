@@ -53,11 +53,11 @@
 //! knapsack prefixes are updated incrementally along the last coordinate, and the slabs of
 //! the first cut run in parallel (rayon).
 //!
-//! Measured (shared 2-core machine under load, `N` taking about ten seconds): Sobol'
-//! points `d = 3`: 8000 (11.7 s), `d = 4`: 1300 (5.3 s), `d = 5`: 500 (8.7 s),
-//! `d = 6`: 250 (10.5 s); uniform random points are faster (they prune better):
-//! 10000 (10.5 s), 1300 (1.7 s), 500 (4.2 s), 250 (6.5 s). `N` in the thousands at
-//! `d = 6` (`~N^4`) stays out of reach.
+//! Measured (shared 2-core machine, load 3 to 10 from other jobs): Sobol' points
+//! `d = 3`: `N` = 7500 in 4.8 s, 10000 in 13.5 s; `d = 4`: 2000 in 9.5 s; `d = 5`: 600 in
+//! 6.2 s; `d = 6`: 300 in 11.0 s. Uniform random points prune better: 10000 in 10.5 s,
+//! 2000 in 4.1 s, 600 in 3.6 s, 280 in 3.9 s. `N` in the thousands at `d = 6` (`~N^4`) stays
+//! out of reach.
 
 use super::Points;
 use crate::{Error, Result};
@@ -97,19 +97,20 @@ pub fn star_dem(points: Points<'_>) -> Result<f64> {
 
 /// Estimated inner-loop steps of [`star_dem`] for `n` points in `d` dimensions,
 /// `c_d N^(1 + d/2)`, with `c_d` fitted so that [`super::star::STAR_WORK_BUDGET`] is about
-/// ten seconds on the slower of Sobol' and random points (measured up to `d = 7`: `c_d` =
-/// 0.6, 0.75, 1.0, 0.8 for `d` = 3..6, then doubling per dimension, conservatively). The
-/// budget then admits `N` up to 7578, 1587, 510, 247, 114, 62 for `d` = 3..8. The estimate
-/// ignores ties: a set on a coarse grid runs faster than estimated.
+/// ten seconds on Sobol' points (slower than random ones) on the shared 2-core machine:
+/// `c_d` = 0.5, 0.45, 0.5, 0.5 for `d` = 3..6, then doubling per dimension
+/// (conservatively). The budget then admits `N` up to 8151, 1882, 621, 278, 127, 68 for
+/// `d` = 3..8. The estimate ignores ties: a set on a coarse grid runs faster than estimated.
 pub fn work_estimate(n: usize, d: usize) -> f64 {
     let c = match d {
         0..=2 => 1.0,
-        3 => 0.6,
-        4 => 0.75,
-        5 => 1.0,
-        6 => 0.8,
-        // Past the measured range: doubling per dimension (d = 7 measured at 0.9).
-        _ => 0.8 * 2f64.powi(d as i32 - 6),
+        3 => 0.5,
+        4 => 0.45,
+        5 => 0.5,
+        6 => 0.5,
+        // Past the measured range: doubling per dimension (d = 7 measured at 0.9 under
+        // heavy load, d = 8 faster than this predicts).
+        _ => 0.5 * 2f64.powi(d as i32 - 6),
     };
     c * (n as f64).powf(1.0 + d as f64 / 2.0)
 }

@@ -39,7 +39,7 @@
 //! |---|---|---|
 //! | [`star_1d`] | `O(N log N)` | none |
 //! | [`star_2d`] | `O(N^2)` time, `O(N)` memory, parallel over columns | `N <= 50_000` |
-//! | [`star_exact`] | `O(N^2)` in 2D; `O(N^(1 + d/2))` for `d >= 3` (Dobkin–Eppstein–Mitchell, [`super::dem`]), pruned | ≈ `3e9` steps: `N <= 7578, 1587, 510, 247` for `d = 3, 4, 5, 6` |
+//! | [`star_exact`] | `O(N^2)` in 2D; `O(N^(1 + d/2))` for `d >= 3` (Dobkin–Eppstein–Mitchell, [`super::dem`]), pruned | ≈ `3e9` steps: `N <= 8151, 1882, 621, 278` for `d = 3, 4, 5, 6` |
 //! | [`extreme_2d`] | `O(N^3)` | `N <= 1200` |
 //! | [`star_lower_bound`] | `O(iterations · N d)` | none |
 //! | [`star_upper_bound`] | `O(B · N d)`, `B` boxes of the δ-partition | ≈ `3e9` steps |
@@ -274,10 +274,10 @@ fn sweep_columns(
 ///
 /// The value is `max over the critical grid of max(vol - open/N, closed/N - vol)`, points
 /// with a coordinate equal to 1 never counted (see the module documentation). Measured on
-/// a shared, loaded 2-core machine, `N` taking about ten seconds (Sobol' / uniform random
-/// points): `d = 3`: 8000 / 10000; `d = 4`: ≈ 1600 / ≈ 2000 (1300 in 5.3 / 1.7 s);
-/// `d = 5`: 500 / ≈ 600; `d = 6`: 250 / ≈ 280. The grid enumeration this replaced was
-/// limited to 2080, 405, 152 and 79 points by the same budget (`d = 3, N = 2000` in 11 s).
+/// the shared 2-core machine, `N` taking about ten seconds (Sobol' / uniform random
+/// points): `d = 3`: ≈ 9000 / 10000; `d = 4`: 2000 / > 2000; `d = 5`: ≈ 650 / > 600;
+/// `d = 6`: ≈ 290 / > 280 (details in [`super::dem`]). The grid enumeration this replaced
+/// took that long at about 1900, 365, 140 and 70 points.
 /// Beyond that use [`star_lower_bound`] / [`star_upper_bound`].
 ///
 /// # Errors
