@@ -10,6 +10,10 @@
 //! * `lo`: the block `0..N` (small indices, few digits);
 //! * `spread`: `k * 1_000_003` wrapping over `u32` (full-width indices, all digits).
 //!
+//! Random-access Halton is measured per coordinate (`Halton::sample(i, dim)`, the
+//! `qmckit_u32` rows) and per point (`Sampler::point(i, row)`, the `qmckit_point_*` rows);
+//! the peer has no point call, so it composes `halton::number` over the bases.
+//!
 //! Note on indexing: `halton::number(b, i)` is `phi_b(i)` like qmckit's `sample(i)`;
 //! `halton::Sequence::new(b)` yields `phi_b(1), phi_b(2), ...`, so the qmckit sequential
 //! benchmarks start at index 1 to produce the same values.
@@ -218,7 +222,7 @@ fn halton_sequential(c: &mut Criterion) {
     group.finish();
 }
 
-/// 4. Random-access Halton: every coordinate of `N` points by `(index, dim)`.
+/// 4. Random-access Halton: every coordinate of `N` points by index.
 fn halton_random(c: &mut Criterion) {
     let mut group = c.benchmark_group("halton_random");
     configure(&mut group);
@@ -227,60 +231,80 @@ fn halton_random(c: &mut Criterion) {
         group.throughput(Throughput::Elements((N * d) as u64));
         let h = Halton::new(d).expect("dims");
         let primes = primes_u8(d);
-        let mut out_u32 = vec![0u32; N * d];
-        let mut out_f64 = vec![0f64; N * d];
         for (label, idx) in &sets {
-            group.bench_with_input(
-                BenchmarkId::new(format!("qmckit_u32/{label}"), d),
+            let id = |name: &str| BenchmarkId::new(format!("{name}/{label}"), d);
+            bench_rows(&mut group, id("qmckit_u32"), idx, d, &h, |h, i, row| {
+                for (dim, slot) in row.iter_mut().enumerate() {
+                    *slot = h.sample(i, dim).expect("dim in range");
+                }
+            });
+            bench_rows(
+                &mut group,
+                id("qmckit_point_u32"),
                 idx,
-                |bch, idx| {
-                    bch.iter(|| {
-                        let h = black_box(h);
-                        let rows = out_u32.chunks_exact_mut(d);
-                        for (row, &i) in rows.zip(black_box(idx.as_slice())) {
-                            for (dim, slot) in row.iter_mut().enumerate() {
-                                *slot = h.sample(i, dim).expect("dim in range");
-                            }
-                        }
-                        black_box(&mut out_u32);
-                    })
+                d,
+                &h,
+                |h, i, row| {
+                    h.point(i, row).expect("row of d values");
                 },
             );
-            group.bench_with_input(
-                BenchmarkId::new(format!("qmckit_f64/{label}"), d),
+            bench_rows(
+                &mut group,
+                id("qmckit_point_f64"),
                 idx,
-                |bch, idx| {
-                    bch.iter(|| {
-                        let h = black_box(h);
-                        let rows = out_f64.chunks_exact_mut(d);
-                        for (row, &i) in rows.zip(black_box(idx.as_slice())) {
-                            for (dim, slot) in row.iter_mut().enumerate() {
-                                *slot = to_f64(h.sample(i, dim).expect("dim in range"));
-                            }
-                        }
-                        black_box(&mut out_f64);
-                    })
+                d,
+                &h,
+                |h, i, row| {
+                    let mut p = [0u32; 32];
+                    let p = &mut p[..row.len()];
+                    h.point(i, p).expect("row of d values");
+                    for (slot, &x) in row.iter_mut().zip(p.iter()) {
+                        *slot = to_f64(x);
+                    }
                 },
             );
-            group.bench_with_input(
-                BenchmarkId::new(format!("halton_number/{label}"), d),
+            bench_rows(&mut group, id("qmckit_f64"), idx, d, &h, |h, i, row| {
+                for (dim, slot) in row.iter_mut().enumerate() {
+                    *slot = to_f64(h.sample(i, dim).expect("dim in range"));
+                }
+            });
+            bench_rows(
+                &mut group,
+                id("halton_number"),
                 idx,
-                |bch, idx| {
-                    bch.iter(|| {
-                        let primes = black_box(primes.as_slice());
-                        let rows = out_f64.chunks_exact_mut(d);
-                        for (row, &i) in rows.zip(black_box(idx.as_slice())) {
-                            for (slot, &p) in row.iter_mut().zip(primes) {
-                                *slot = halton::number(p, i as usize);
-                            }
-                        }
-                        black_box(&mut out_f64);
-                    })
+                d,
+                &primes,
+                |p, i, row| {
+                    for (slot, &b) in row.iter_mut().zip(p) {
+                        *slot = halton::number(b, i as usize);
+                    }
                 },
             );
         }
     }
     group.finish();
+}
+
+/// One random-access benchmark: `fill(state, i, row)` writes the `d` values of point `i`,
+/// for every index of `idx`; `state` goes through `black_box` once per iteration.
+fn bench_rows<S: ?Sized, T: Copy + Default>(
+    group: &mut BenchmarkGroup<'_, WallTime>,
+    id: BenchmarkId,
+    idx: &[u32],
+    d: usize,
+    state: &S,
+    fill: impl Fn(&S, u32, &mut [T]),
+) {
+    let mut out = vec![T::default(); idx.len() * d];
+    group.bench_with_input(id, idx, |bch, idx| {
+        bch.iter(|| {
+            let s = black_box(state);
+            for (row, &i) in out.chunks_exact_mut(d).zip(black_box(idx)) {
+                fill(s, i, row);
+            }
+            black_box(&mut out);
+        })
+    });
 }
 
 criterion_group!(

@@ -16,14 +16,17 @@
 //! multiple of the chunk size `c` below); every `u32` index has at most `K` digits and
 //! `phi_b(i) = N / B` with the integer `N = sum_j d_j b^(K-j) < B < 2^64`.
 //!
-//! Random access ([`RadicalInverse::sample`]) builds `N` a chunk of `c` digits at a time:
-//! it divides the index by `b^c` with a precomputed multiply-high (Lemire, Kaser & Kurz
-//! 2019, "Faster remainder by direct computation"), reverses the chunk's digits with a
+//! Random access ([`RadicalInverse::sample`]) peels the index a chunk of `c` digits at a
+//! time: it divides by `b^c` with a precomputed multiply-high (Lemire, Kaser & Kurz 2019,
+//! "Faster remainder by direct computation") and reverses the chunk's digits with a
 //! 256-entry-at-most table (`c = 5, 3, 2, 2, 2` for bases 3, 5, 7, 11, 13; `c = 1`, no table,
-//! otherwise), and steps the chunk weight down by multiplying with the inverse of `b^c`
-//! modulo 2^64 (an exact division). It then rounds `N * 2^32 / B` down with a precomputed
-//! reciprocal and one correction step (Granlund & Montgomery 1994). Cost: four
-//! multiplications per chunk plus three for the scaling; base 2 is a single bit reversal.
+//! otherwise). Short indices (up to three chunks, `b^c <= 2^16`) then fold the chunks from
+//! the top by nested floors, `F <- floor((rev(C) 2^32 + F) / b^c)`, one exact multiply-high
+//! each, which lands on `floor(phi_b(i) 2^32)` with no rounding step. Longer indices build
+//! `N` (each chunk weighted by `b^(K-c)`, `b^(K-2c)`, ..., the weight stepped down by the
+//! inverse of `b^c` modulo 2^64, an exact division) and round `N * 2^32 / B` down with a
+//! precomputed reciprocal and one correction step (Granlund & Montgomery 1994). Base 2 is a
+//! single bit reversal.
 //!
 //! Sequential access keeps `phi_b(i) * 2^32` as an integer part and an exact remainder over
 //! `B`. The iterator ([`RadicalInverse::iter_from`]) adds a cached step: when `i + 1` ends in
@@ -47,6 +50,10 @@ const STEPS: usize = 8;
 /// Largest base whose sequential fill uses a table of its `b` digit fractions (on the
 /// stack: 12 bytes an entry).
 const RUN_TABLE: usize = 128;
+
+/// Largest chunk `b^c` for which [`RadicalInverse::sample`] takes the nested-floor path
+/// (exact up to `2^16`, see `nest`); larger bases build the exact numerator.
+const NESTED_CHUNK_MAX: u32 = 1 << 16;
 
 /// Digit-reversal tables for the small prime bases: entry `r` is the `c`-digit reversal of
 /// `r < b^c`, with `b^c <= 256` so entries fit a byte. They let random access consume `c`
@@ -186,15 +193,100 @@ impl RadicalInverse {
 
     /// `floor(phi_b(index) * 2^32)`, exact. Defined for every `u32` index.
     ///
-    /// Cost: one step per chunk of `c` digits of `index` (`c = 5, 3, 2, 2, 2` for bases
-    /// 3, 5, 7, 11, 13; 1 otherwise), each a multiply-high, two multiplications and a table
-    /// read, plus ~3 multiplications for the final scaling; base 2 is one bit reversal.
-    #[inline]
+    /// Indices of up to three chunks of `c` digits (`c = 5, 3, 2, 2, 2` for bases 3, 5, 7,
+    /// 11, 13; 1 otherwise), for `b^c <= 2^16`, go by nested floors (see `nest`): three
+    /// multiplications per chunk, one for the last, inline. Longer indices (and bases above
+    /// 2^16) build the exact numerator `N` over `B = b^K` (four multiplications per chunk)
+    /// and scale it once (three). Base 2 is one bit reversal.
+    #[inline(always)]
     pub const fn sample(&self, index: u32) -> u32 {
         if self.base == 2 {
             return reverse_bits(index);
         }
+        let q = self.chunk;
+        if q > NESTED_CHUNK_MAX {
+            return self.sample_big_base(index);
+        }
+        // Up to three chunks by nested floors, unrolled (the common short indices).
+        if index < q {
+            return self.nest(index, 0) as u32;
+        }
+        let (n1, r0) = self.peel(index);
+        if n1 < q {
+            return self.nest(r0, self.nest(n1, 0)) as u32;
+        }
+        let (n2, r1) = self.peel(n1);
+        if n2 < q {
+            return self.nest(r0, self.nest(r1, self.nest(n2, 0))) as u32;
+        }
+        self.sample_long(n2, r0, r1)
+    }
+
+    /// [`sample`](Self::sample) for indices of four or more chunks, given the first two
+    /// chunks `r0`, `r1` and the rest `n`: the exact numerator, then one scaling. Out of
+    /// line, to keep the short path small enough to inline.
+    #[inline(never)]
+    const fn sample_long(&self, n: u32, r0: u32, r1: u32) -> u32 {
+        let w0 = self.div_chunk(self.big);
+        let w1 = self.div_chunk(w0);
+        let acc = self.reverse_chunk(r0) as u64 * w0 + self.reverse_chunk(r1) as u64 * w1;
+        self.scale(self.numerator_from(n, self.div_chunk(w1), acc))
+            .0
+    }
+
+    /// [`sample`](Self::sample) for `b^c > 2^16`: the exact numerator, then one scaling.
+    #[inline(never)]
+    const fn sample_big_base(&self, index: u32) -> u32 {
         self.scale(self.numerator(index)).0
+    }
+
+    /// `(n / b^c, n mod b^c)` by a multiply-high (exact for every `u32` `n`).
+    #[inline(always)]
+    const fn peel(&self, n: u32) -> (u32, u32) {
+        let q = ((self.chunk_magic as u128 * n as u128) >> 64) as u32;
+        (q, n - q * self.chunk)
+    }
+
+    /// One nested-floor step `floor((rev(r) 2^32 + f) / b^c)` for a chunk `r < b^c`,
+    /// `f < 2^32` and `b^c <= 2^16`.
+    ///
+    /// With the index's chunks `C_0, ..., C_m` (`c` digits each, lowest first) and `rev` the
+    /// `c`-digit reversal, `phi_b(i) = (rev(C_0) + (rev(C_1) + ... ) / b^c) / b^c`, and
+    /// because `floor((a + floor(y)) / q) = floor((a + y) / q)` for integers `a`, `q > 0`,
+    ///
+    /// ```text
+    /// F_m = floor(rev(C_m) 2^32 / b^c),   F_j = floor((rev(C_j) 2^32 + F_(j+1)) / b^c),
+    /// floor(phi_b(i) 2^32) = F_0.
+    /// ```
+    ///
+    /// Each step divides `t = rev 2^32 + F < b^c 2^32` by `b^c` with one multiply-high by
+    /// `ceil(2^64 / b^c) = (2^64 + e) / b^c`, `0 <= e < b^c`: the error `t e / (b^c 2^64)` is
+    /// below `1 / b^c` (the smallest gap from `t / b^c` up to an integer) as `b^c <= 2^16`, so
+    /// the floor is exact. No final scaling is needed.
+    #[inline(always)]
+    const fn nest(&self, r: u32, f: u64) -> u64 {
+        let t = ((self.reverse_chunk(r) as u64) << 32) | f;
+        ((self.chunk_magic as u128 * t as u128) >> 64) as u64
+    }
+
+    /// The `c`-digit reversal of a chunk `r < b^c` (the chunk itself when `c = 1`).
+    #[inline(always)]
+    const fn reverse_chunk(&self, r: u32) -> u32 {
+        if self.table == 0 {
+            return r;
+        }
+        // Guarded indexing (no panic path): an unknown id means no table.
+        let id = self.table as usize;
+        let table: &[u8] = if id < REVERSAL.len() {
+            REVERSAL[id]
+        } else {
+            &[]
+        };
+        if (r as usize) < table.len() {
+            table[r as usize] as u32
+        } else {
+            r
+        }
     }
 
     /// `floor(phi'_b(index) 2^32)` for the digit-scrambled radical inverse
@@ -262,26 +354,17 @@ impl RadicalInverse {
     /// `N` with `phi_b(index) = N / B`: the digits of `index` reversed into `K` places.
     #[inline]
     const fn numerator(&self, index: u32) -> u64 {
-        // Guarded indexing (no panic path): an unknown id means no table.
-        let id = self.table as usize;
-        let table: &[u8] = if id < REVERSAL.len() {
-            REVERSAL[id]
-        } else {
-            &[]
-        };
-        let mut n = index;
-        let mut weight = self.div_chunk(self.big); // b^(K-c)
-        let mut acc = 0u64;
+        self.numerator_from(index, self.div_chunk(self.big), 0)
+    }
+
+    /// `acc` plus the chunks of `n` reversed into places `weight = b^(K-c)`,
+    /// `b^(K-2c)`, ... (the numerator's remaining chunks when `acc` holds the lower ones).
+    #[inline]
+    const fn numerator_from(&self, mut n: u32, mut weight: u64, mut acc: u64) -> u64 {
         loop {
-            let q = ((self.chunk_magic as u128 * n as u128) >> 64) as u32;
-            let r = n - q * self.chunk;
+            let (q, r) = self.peel(n);
             // The chunk's c digits reversed (with c = 1 there is no table: r itself).
-            let rev = if (r as usize) < table.len() {
-                table[r as usize] as u64
-            } else {
-                r as u64
-            };
-            acc += rev * weight; // sum < B: no overflow
+            acc += self.reverse_chunk(r) as u64 * weight; // sum < B: no overflow
             if q == 0 {
                 return acc;
             }
@@ -706,13 +789,40 @@ mod tests {
 
     #[test]
     fn exact_against_u128_oracle() {
-        for base in (2..=40).chain([97, 251, 256, 1000, 65_521, 65_536, 1 << 31, u32::MAX]) {
+        // Both random-access paths (nested floors up to b^c = 2^16, exact numerator above)
+        // and their edges: b^c = 2^16 - 1, 2^16, 2^16 + 1.
+        let edges = [
+            97, 251, 255, 256, 257, 1000, 1625, 1626, 8161, 65_521, 65_535, 65_536,
+        ];
+        let big = [65_537, 100_003, 1 << 31, u32::MAX];
+        for base in (2..=40).chain(edges).chain(big) {
             let ri = RadicalInverse::new(base).unwrap();
             let mut x = 0x9E37_79B9u32;
-            for i in (0..2000).chain([u32::MAX - 1, u32::MAX]) {
+            // Indices around the digit-count changes b^k - 1, b^k.
+            let mut powers = vec![];
+            let mut p = base as u64;
+            while p <= u32::MAX as u64 {
+                powers.extend([p as u32 - 1, p as u32]);
+                p *= base as u64;
+            }
+            for i in (0..2000).chain([u32::MAX - 1, u32::MAX]).chain(powers) {
                 assert_eq!(ri.sample(i), oracle(base, i), "base {base} index {i}");
                 x = x.wrapping_mul(747_796_405).wrapping_add(2_891_336_453);
                 assert_eq!(ri.sample(x), oracle(base, x), "base {base} index {x}");
+            }
+        }
+    }
+
+    /// Every index through the end of the three-chunk (nested-floor) range and into the
+    /// long path, for bases with chunks from 3 to 2^16.
+    #[test]
+    fn short_indices_exhaustive_against_oracle() {
+        for base in [3, 5, 7, 11, 13, 17, 31, 131, 255, 256, 257, 4093, 65_521] {
+            let ri = RadicalInverse::new(base).unwrap();
+            let q = ri.chunk as u64;
+            let end = (q * q * q + 5000).min(1 << 21) as u32;
+            for i in 0..end {
+                assert_eq!(ri.sample(i), oracle(base, i), "base {base} index {i}");
             }
         }
     }

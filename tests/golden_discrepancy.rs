@@ -125,6 +125,18 @@ fn scipy_golden_four_metrics() {
             );
             checked += 1;
         }
+        // The divide and conquer L2-star (whatever the dispatch picks) on the same set.
+        let (_, scipy, reference) = g.values.iter().find(|v| v.0 == "L2-star").unwrap();
+        let fast = l2_star_fast(p);
+        let r = rel(fast, *reference);
+        if r > 1e-12 {
+            failures.push(format!(
+                "{} l2_star_fast: {fast:e} vs exactly summed {reference:e} (rel {r:e})",
+                g.name
+            ));
+        }
+        let tol = 1e-12 * reference * reference + 4.0 * g.n as f64 * EPS;
+        assert!((fast * fast - scipy * scipy).abs() <= tol, "{}", g.name);
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
     assert!(checked >= 32);
@@ -402,6 +414,34 @@ fn fast_l2_star_matches_pair_sum_on_random_sets() {
         .collect();
     let p = Points::new(&pts, 2).unwrap();
     assert!(rel(l2_star_fast(p), l2_star_direct(p)) <= 1e-12);
+}
+
+#[test]
+fn fast_l2_star_matches_pair_sum_in_three_to_six_dimensions() {
+    for d in 3usize..=6 {
+        for (n, seed) in [(3usize, 1u64), (100, 2), (1500, 3), (5000, 4)] {
+            let pts = uniform(n * d, seed * 10 + d as u64);
+            let p = Points::new(&pts, d).unwrap();
+            let (fast, direct) = (l2_star_fast(p), l2_star_direct(p));
+            assert!(
+                rel(fast, direct) <= 1e-13,
+                "n={n} d={d}: {fast:e} vs {direct:e}"
+            );
+            // The public dispatch returns one of the two.
+            let both = l2_star(p);
+            assert!(both == fast || both == direct);
+        }
+        // Heavy ties: coordinates on the grid k/4 (0 and 1 included, repeated points).
+        let pts: Vec<f64> = uniform(2000 * d, 50 + d as u64)
+            .iter()
+            .map(|&x| (x * 5.0).floor().min(4.0) / 4.0)
+            .collect();
+        let p = Points::new(&pts, d).unwrap();
+        assert!(
+            rel(l2_star_fast(p), l2_star_direct(p)) <= 1e-13,
+            "ties d={d}"
+        );
+    }
 }
 
 #[test]

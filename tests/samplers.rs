@@ -256,3 +256,28 @@ fn independent_from_any_rng() {
     let mean = buf.iter().map(|&x| x as f64).sum::<f64>() / 1000.0 / 4_294_967_296.0;
     assert!((0.45..0.55).contains(&mean), "{mean}");
 }
+
+#[test]
+fn halton_point_matches_per_coordinate_access() {
+    use qmckit::randomize::digits::DigitScramble;
+    let scrambles = [
+        DigitScramble::None,
+        DigitScramble::Faure,
+        DigitScramble::Permutations(3),
+        DigitScramble::Owen(5),
+    ];
+    for scramble in scrambles {
+        for d in [1, 2, 32, 1024] {
+            let h = Halton::with_scramble(d, scramble).unwrap();
+            let mut row = vec![0u32; d];
+            for i in [0u32, 1, 130, 17_161, 4_000_000, u32::MAX] {
+                Sampler::point(&h, i, &mut row).unwrap();
+                for (dim, &x) in row.iter().enumerate() {
+                    assert_eq!(x, h.sample(i, dim).unwrap(), "{scramble:?} d {d} i {i}");
+                }
+            }
+            let mut short = vec![0u32; d - 1];
+            assert!(Sampler::point(&h, 0, &mut short).is_err());
+        }
+    }
+}

@@ -1,0 +1,613 @@
+//! L2-star discrepancy by divide and conquer instead of the pair sum (a child module of
+//! [`super`], whose compensated-sum helpers it shares).
+
+#[cfg(doc)]
+use super::l2_star_direct;
+use super::{Acc, Dd, KernelSums, Points, combine, pow2, root, two_prod};
+use rayon::prelude::*;
+
+/// [`l2_star`](super::l2_star) by exact divide and conquer, in `O(n log^(d-1) n)` time
+/// (`O(n log n)` in one and two dimensions) instead of the `O(n^2 d)` pair sum.
+///
+/// Warnock's formula needs `S = sum_{i,j} prod_k min(u_ik, u_jk)` with `u = 1 - x`
+/// (`1 - max(x, y) = min(1 - x, 1 - y)`). This is a dominance sum, computed as in
+/// S. Heinrich, "Efficient algorithms for computing the L2-discrepancy", Math. Comp. 65
+/// (1996), and K. Frank & S. Heinrich, "Computing discrepancies of Smolyak quadrature
+/// rules", J. Complexity 12 (1996). After sorting by `u_1`, the pairs across a split into
+/// halves have `min(u_i1, u_j1)` equal to the lower half's `u_j1`, which becomes a weight:
+/// those pairs are a weighted problem between two colours (lower and upper half) on the
+/// other `d - 1` coordinates. That one is split the same way on its first coordinate
+/// (within each half: the same problem; across: two such problems in one dimension less)
+/// down to one coordinate, where a sweep in ascending order with running sums of `|w| u`
+/// costs `O(n)`. Every recursion is a merge sort: it gets its rows sorted by its first
+/// coordinate and returns them sorted by its second, so the halves merged by the second
+/// coordinate are the cross problems already sorted by their first (no sort or median
+/// search inside the recursion). Small sub-problems are summed pair by pair; large ones
+/// run in parallel.
+///
+/// In one and two dimensions the same idea is a single merge sort: with `u = 1 - x`,
+/// `v = 1 - y`,
+///
+/// ```text
+/// sum_{i,j} min(u_i, u_j) min(v_i, v_j)
+///   = sum_i u_i v_i + 2 sum_{i, j: u_j <= u_i, j before i} u_j min(v_i, v_j)
+/// ```
+///
+/// (in one dimension `v = 1`). After sorting by `u`, a merge sort on `v` adds for every
+/// `i` of the right half, with the `j` of the left half,
+/// `sum_{v_j <= v_i} u_j v_j + v_i sum_{v_j > v_i} u_j` from running sums.
+///
+/// Cost: `O(n log^(d-1) n)` work, about `n (log2 n)^(d-1) / (d-1)!` row operations, and
+/// `O(n d^2)` memory; the factor grows quickly with `d`, so [`l2_star`](super::l2_star)
+/// only takes this path from the point count where it measured faster than the pair sum
+/// (4096 points for `d = 3`, 24576 for `d = 4`, 196608 for `d = 5`, never from `d = 6`
+/// on).
+/// All sums are compensated and every term is non-negative, so the value agrees with
+/// [`l2_star_direct`] up to the rounding of the products (about 1e-14 relative for
+/// random sets of up to `2^16` points).
+///
+/// ```
+/// use qmckit::analysis::{l2::{l2_star_direct, l2_star_fast}, Points};
+/// // 300 points of a 3D lattice-like set.
+/// let data: Vec<f64> = (0..900).map(|i| (i as f64 * 0.618_033_988_749_895).fract()).collect();
+/// let p = Points::new(&data, 3)?;
+/// let (fast, direct) = (l2_star_fast(p), l2_star_direct(p));
+/// assert!((fast - direct).abs() <= 1e-13 * direct);
+/// # Ok::<(), qmckit::Error>(())
+/// ```
+pub fn l2_star_fast(p: Points<'_>) -> f64 {
+    l2_star_fast_with(p, p.dims() <= 2)
+}
+
+/// Point count from which [`l2_star`](super::l2_star) uses [`l2_star_fast`] in `d`
+/// dimensions: about where the two ran equally fast on one thread on uniform random points
+/// (`examples/time_l2_star.rs`, best of repeated runs on a busy 2-core x86-64 machine with
+/// AVX2 for the pair sum). Measured, in seconds (tree / pair sum): `d = 3`: `2^12` points
+/// 0.0089 / 0.0084, `2^13` 0.029 / 0.051, `2^18` 1.7 / 82; `d = 4`: `2^14` 0.35 / 0.24,
+/// `2^15` 0.81 / 1.02, `2^16` 3.4 / 6.5; `d = 5`: `2^15` 2.8 / 0.83, `2^16` 11.8 / 6.5, and
+/// the ratio shrinks like `log^4 n / n`, to 1 near `2^17.4`. From `d = 6` on the same
+/// model puts the crossover near or beyond `2^20` points, so there the pair sum is always
+/// used (`None`).
+pub(super) fn crossover(d: usize) -> Option<usize> {
+    match d {
+        1 | 2 => Some(256),
+        3 => Some(1 << 12),
+        4 => Some(3 << 13),
+        5 => Some(3 << 16),
+        _ => None,
+    }
+}
+
+/// Does [`l2_star_fast`] beat the pair sum for `n` points in `d` dimensions?
+pub(super) fn tree_pays_off(d: usize, n: usize) -> bool {
+    crossover(d).is_some_and(|c| n >= c)
+}
+
+/// [`l2_star_fast`] by the merge sort of one and two dimensions (`plane`, only for
+/// `d <= 2`) or by the general recursion.
+fn l2_star_fast_with(p: Points<'_>, plane: bool) -> f64 {
+    let d = p.dims();
+    let mut s1 = Acc::default();
+    let mut diag = Acc::default();
+    for x in p.iter() {
+        s1.add(x.iter().map(|&t| 1.0 - t * t).product());
+        diag.add(x.iter().map(|&t| 1.0 - t).product());
+    }
+    let cross = if plane {
+        debug_assert!(d <= 2, "the plane path is for d <= 2");
+        let mut uv: Vec<(f64, f64)> = p
+            .iter()
+            .map(|x| (1.0 - x[0], x.get(1).map_or(1.0, |&y| 1.0 - y)))
+            .collect();
+        uv.par_sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
+        let mut scratch = vec![(0.0, 0.0); uv.len()];
+        cross_sum(&mut uv, &mut scratch)
+    } else {
+        let u: Vec<f64> = p.as_slice().iter().map(|&t| 1.0 - t).collect();
+        tree_off_diagonal(&u, d)
+    };
+    let sums = KernelSums {
+        s1: s1.dd(),
+        s2: diag.dd().add(cross.dd().scale(2.0)),
+    };
+    let c = Dd::ratio(1.0, 3.0).powi(d);
+    root(combine(c, pow2(1 - d as i32), 1.0, &sums, p.len()))
+}
+
+/// Below this length the cross sum is done pair by pair.
+const CROSS_LEAF: usize = 32;
+/// Above this length the two halves are done in parallel.
+const CROSS_PARALLEL: usize = 1 << 14;
+
+/// For `pts` sorted by `u`: `sum_{j < i} u_j min(v_i, v_j)`. Leaves `pts` sorted by `v`.
+fn cross_sum(pts: &mut [(f64, f64)], scratch: &mut [(f64, f64)]) -> Acc {
+    let n = pts.len();
+    if n <= CROSS_LEAF {
+        return leaf_cross_sum(pts);
+    }
+    let mid = n / 2;
+    let (left, right) = pts.split_at_mut(mid);
+    let (sl, sr) = scratch.split_at_mut(mid);
+    let (mut acc, other) = if n >= CROSS_PARALLEL {
+        rayon::join(|| cross_sum(left, sl), || cross_sum(right, sr))
+    } else {
+        (cross_sum(left, sl), cross_sum(right, sr))
+    };
+    acc.merge(other);
+    acc.merge(between_halves(left, right));
+    merge_by_v(left, right, scratch);
+    pts.copy_from_slice(scratch);
+    acc
+}
+
+/// The pair sum inside a short run sorted by `u`, then sorts the run by `v`.
+fn leaf_cross_sum(pts: &mut [(f64, f64)]) -> Acc {
+    let mut acc = Acc::default();
+    for i in 1..pts.len() {
+        let vi = pts[i].1;
+        for &(uj, vj) in &pts[..i] {
+            acc.add(uj * vi.min(vj));
+        }
+    }
+    pts.sort_unstable_by(|a, b| a.1.total_cmp(&b.1));
+    acc
+}
+
+/// `sum_{i in right, j in left} u_j min(v_i, v_j)` for halves sorted by `v` (every `u_j`
+/// of the left half is at most every `u_i` of the right half).
+fn between_halves(left: &[(f64, f64)], right: &[(f64, f64)]) -> Acc {
+    let mut acc = Acc::default();
+    // sum over v_j <= v_i of u_j v_j, ascending in v_i.
+    let mut below = Acc::default();
+    let mut j = 0;
+    for &(_, vi) in right {
+        while j < left.len() && left[j].1 <= vi {
+            below.add(left[j].0 * left[j].1);
+            j += 1;
+        }
+        acc.merge(below);
+    }
+    // v_i times the sum over v_j > v_i of u_j, descending in v_i.
+    let mut above = Acc::default();
+    let mut j = left.len();
+    for &(_, vi) in right.iter().rev() {
+        while j > 0 && left[j - 1].1 > vi {
+            above.add(left[j - 1].0);
+            j -= 1;
+        }
+        let (p, e) = two_prod(vi, above.s);
+        acc.add(p);
+        acc.add(e + vi * above.c);
+    }
+    acc
+}
+
+/// Merges two runs sorted by `v` into `out`.
+fn merge_by_v(left: &[(f64, f64)], right: &[(f64, f64)], out: &mut [(f64, f64)]) {
+    let (mut a, mut b) = (0, 0);
+    for slot in out.iter_mut() {
+        let take_left = b == right.len() || (a < left.len() && left[a].1 <= right[b].1);
+        if take_left {
+            *slot = left[a];
+            a += 1;
+        } else {
+            *slot = right[b];
+            b += 1;
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// Any dimension: divide and conquer over the coordinates (Heinrich 1996).
+// ---------------------------------------------------------------------------------------
+
+/// Up to this many points the one-colour problem is summed pair by pair.
+const MONO_LEAF: usize = 32;
+/// Up to this many points a two-colour problem is summed pair by pair.
+const BI_LEAF: usize = 24;
+/// From this many points the sub-problems run in parallel.
+const TREE_PARALLEL: usize = 1 << 12;
+
+/// `sum_{i < j} prod_k min(u_ik, u_jk)` over all `n (n - 1) / 2` pairs, for any `d >= 1`.
+fn tree_off_diagonal(u: &[f64], d: usize) -> Acc {
+    let n = u.len() / d;
+    let mut order: Vec<usize> = (0..n).collect();
+    order.par_sort_unstable_by(|&a, &b| u[a * d].total_cmp(&u[b * d]));
+    let mut rows: Vec<f64> = Vec::with_capacity(u.len());
+    for &i in &order {
+        rows.extend_from_slice(&u[i * d..(i + 1) * d]);
+    }
+    drop(order);
+    let mut scratch = vec![0.0; rows.len()];
+    one_colour(&mut rows, &mut scratch, d)
+}
+
+/// `prod_k min(a_k, b_k)`.
+#[inline]
+fn min_product(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).map(|(&x, &y)| x.min(y)).product()
+}
+
+/// Sorts rows of `stride` numbers by column `key` (a short run: through an index).
+fn sort_rows(rows: &mut [f64], scratch: &mut [f64], stride: usize, key: usize) {
+    let n = rows.len() / stride;
+    let mut order: Vec<usize> = (0..n).collect();
+    order.sort_unstable_by(|&a, &b| rows[a * stride + key].total_cmp(&rows[b * stride + key]));
+    for (slot, &i) in scratch.chunks_exact_mut(stride).zip(&order) {
+        slot.copy_from_slice(&rows[i * stride..(i + 1) * stride]);
+    }
+    rows.copy_from_slice(scratch);
+}
+
+/// Merges two runs of rows sorted by column `key`, calling `visit(row, from_left)` in
+/// merged order (left first on ties).
+#[inline]
+fn merge_rows(
+    l: &[f64],
+    r: &[f64],
+    stride: usize,
+    key: usize,
+    mut visit: impl FnMut(&[f64], bool),
+) {
+    let (mut a, mut b) = (0, 0);
+    while a < l.len() || b < r.len() {
+        if b == r.len() || (a < l.len() && l[a + key] <= r[b + key]) {
+            visit(&l[a..a + stride], true);
+            a += stride;
+        } else {
+            visit(&r[b..b + stride], false);
+            b += stride;
+        }
+    }
+}
+
+/// The one-colour problem: for rows `u_i` of `d` numbers sorted by column 0, returns
+/// `sum_{i < j} prod_k min(u_ik, u_jk)` and leaves the rows sorted by column 1 (by
+/// column 0 if `d = 1`).
+///
+/// The two halves `L` (smaller `u_0`) and `R` recurse; a pair `j in L`, `i in R` has
+/// `min(u_i0, u_j0) = u_j0`, so the pairs across the split are the two-colour problem on
+/// columns `1..d` with weight `u_j0` on `L` (colour B) and `1` on `R` (colour A), whose
+/// rows come out of the merge of the halves sorted by its first coordinate.
+fn one_colour(rows: &mut [f64], scratch: &mut [f64], d: usize) -> Acc {
+    let n = rows.len() / d;
+    let key = d.min(2) - 1;
+    if n <= MONO_LEAF {
+        let mut acc = Acc::default();
+        for i in 1..n {
+            let a = &rows[i * d..(i + 1) * d];
+            for b in rows[..i * d].chunks_exact(d) {
+                acc.add(min_product(a, b));
+            }
+        }
+        sort_rows(rows, scratch, d, key);
+        return acc;
+    }
+    let mid = n / 2;
+    let mut acc = {
+        let (l, r) = rows.split_at_mut(mid * d);
+        let (sl, sr) = scratch.split_at_mut(mid * d);
+        let (mut acc, other) = if n >= TREE_PARALLEL {
+            rayon::join(|| one_colour(l, sl, d), || one_colour(r, sr, d))
+        } else {
+            (one_colour(l, sl, d), one_colour(r, sr, d))
+        };
+        acc.merge(other);
+        acc
+    };
+    // Merge the halves by `key`: into `scratch` as they are, and into `cross` as
+    // two-colour rows (columns 1..d, then the signed weight).
+    let mut cross = Vec::with_capacity(n * d);
+    let (l, r) = rows.split_at(mid * d);
+    let mut out = scratch.chunks_exact_mut(d);
+    merge_rows(l, r, d, key, |row, left| {
+        if let Some(o) = out.next() {
+            o.copy_from_slice(row);
+        }
+        cross.extend_from_slice(&row[1..]);
+        cross.push(if left { -row[0] } else { 1.0 });
+    });
+    rows.copy_from_slice(scratch);
+    let mut cross_scratch = vec![0.0; cross.len()];
+    acc.merge(two_colour(&mut cross, &mut cross_scratch, d - 1));
+    acc
+}
+
+/// Is this signed weight on colour B? (The sign bit, so that `-0.0` is B.)
+#[inline]
+fn colour_b(w: f64) -> bool {
+    w.is_sign_negative()
+}
+
+/// The two-colour problem: rows `[u_1 .. u_m, w]` of `m` coordinates and a signed weight
+/// (sign bit set: colour B, else colour A), sorted by `u_1`; returns
+/// `sum_{a in A, b in B} |w_a| |w_b| prod_k min(u_ak, u_bk)` and leaves the rows sorted
+/// by `u_2` (if `m >= 2`).
+///
+/// The halves `L` (smaller `u_1`) and `R` recurse on the same `m` coordinates; across the
+/// split the `L` point has the smaller `u_1`, so its weight takes the factor `u_1` and
+/// the pairs `(L B, R A)` and `(L A, R B)` are two two-colour problems on `u_2 .. u_m`,
+/// sorted by `u_2` by the merge of the halves. With one coordinate left the problem is a
+/// sweep in ascending order; with two, the sweeps of both cross problems run inside the
+/// merge ([`merge_sweep`]); with none, it is a product of two sums.
+fn two_colour(rows: &mut [f64], scratch: &mut [f64], m: usize) -> Acc {
+    let s = m + 1;
+    let n = rows.len() / s;
+    match m {
+        0 => return product_of_sums(rows),
+        1 => return sweep(rows),
+        _ => {}
+    }
+    if n <= BI_LEAF {
+        let acc = two_colour_pairs(rows, m);
+        sort_rows(rows, scratch, s, 1);
+        return acc;
+    }
+    let mid = n / 2;
+    let mut acc = {
+        let (l, r) = rows.split_at_mut(mid * s);
+        let (sl, sr) = scratch.split_at_mut(mid * s);
+        let (mut acc, other) = if n >= TREE_PARALLEL {
+            rayon::join(|| two_colour(l, sl, m), || two_colour(r, sr, m))
+        } else {
+            (two_colour(l, sl, m), two_colour(r, sr, m))
+        };
+        acc.merge(other);
+        acc
+    };
+    let (l, r) = rows.split_at(mid * s);
+    if m == 2 {
+        acc.merge(merge_sweep(l, r, scratch));
+        rows.copy_from_slice(scratch);
+        return acc;
+    }
+    // Group X = (L B) + (R A) first, then group Y = (L A) + (R B); `L` weights times u_1
+    // (the sign, hence the colour, is kept: u_1 >= 0).
+    let in_x = |row: &[f64], left: bool| colour_b(row[m]) == left;
+    let nx = l.chunks_exact(s).filter(|row| in_x(row, true)).count()
+        + r.chunks_exact(s).filter(|row| in_x(row, false)).count();
+    let mut cross = vec![0.0; n * m];
+    let (x, y) = cross.split_at_mut(nx * m);
+    let (mut xs, mut ys) = (x.chunks_exact_mut(m), y.chunks_exact_mut(m));
+    let mut out = scratch.chunks_exact_mut(s);
+    merge_rows(l, r, s, 1, |row, left| {
+        if let Some(o) = out.next() {
+            o.copy_from_slice(row);
+        }
+        let dest = if in_x(row, left) {
+            xs.next()
+        } else {
+            ys.next()
+        };
+        if let Some(c) = dest {
+            c[..m - 1].copy_from_slice(&row[1..m]);
+            c[m - 1] = if left { row[m] * row[0] } else { row[m] };
+        }
+    });
+    rows.copy_from_slice(scratch);
+    let mut cross_scratch = vec![0.0; n * m];
+    let (x, y) = cross.split_at_mut(nx * m);
+    let (sx, sy) = cross_scratch.split_at_mut(nx * m);
+    let (a, b) = if n >= TREE_PARALLEL {
+        rayon::join(|| two_colour(x, sx, m - 1), || two_colour(y, sy, m - 1))
+    } else {
+        (two_colour(x, sx, m - 1), two_colour(y, sy, m - 1))
+    };
+    acc.merge(a);
+    acc.merge(b);
+    acc
+}
+
+/// The cross pairs of [`two_colour`] with two coordinates, rows `[u_1, u_2, w]`, for
+/// halves `l` and `r` sorted by `u_2`: merges them by `u_2` into `out` and, in merged
+/// order, pairs each row with the earlier rows of the other half and the other colour
+/// (whose `u_2` is the smaller): an `r` row adds `|w|` times the running sum of
+/// `|w| u_1 u_2` over such `l` rows, an `l` row adds `|w| u_1` times the running sum of
+/// `|w| u_2` over such `r` rows.
+fn merge_sweep(l: &[f64], r: &[f64], out: &mut [f64]) -> Acc {
+    let mut acc = Acc::default();
+    // Running sums by colour (A = 0, B = 1): over l rows of |w| u_1 u_2, over r rows of
+    // |w| u_2.
+    let mut seen_l = [Acc::default(); 2];
+    let mut seen_r = [Acc::default(); 2];
+    let (mut a, mut b) = (0, 0);
+    for o in out.chunks_exact_mut(3) {
+        let left = b == r.len() || (a < l.len() && l[a + 1] <= r[b + 1]);
+        let row = if left {
+            a += 3;
+            &l[a - 3..a]
+        } else {
+            b += 3;
+            &r[b - 3..b]
+        };
+        o.copy_from_slice(row);
+        let c = colour_b(row[2]) as usize;
+        let w = row[2].abs();
+        if left {
+            let wu = w * row[0];
+            add_product(&mut acc, wu, seen_r[1 - c]);
+            seen_l[c].add(wu * row[1]);
+        } else {
+            add_product(&mut acc, w, seen_l[1 - c]);
+            seen_r[c].add(w * row[1]);
+        }
+    }
+    acc
+}
+
+/// `acc += w (s.s + s.c)`, the leading product exactly.
+#[inline]
+fn add_product(acc: &mut Acc, w: f64, s: Acc) {
+    let (p, e) = two_prod(w, s.s);
+    acc.add(p);
+    acc.add(e + w * s.c);
+}
+
+/// [`two_colour`] pair by pair.
+fn two_colour_pairs(rows: &[f64], m: usize) -> Acc {
+    let s = m + 1;
+    let mut acc = Acc::default();
+    for (i, a) in rows.chunks_exact(s).enumerate() {
+        let ca = colour_b(a[m]);
+        for b in rows[(i + 1) * s..].chunks_exact(s) {
+            if colour_b(b[m]) != ca {
+                acc.add(a[m].abs() * b[m].abs() * min_product(&a[..m], &b[..m]));
+            }
+        }
+    }
+    acc
+}
+
+/// [`two_colour`] with one coordinate, rows `[u, w]` sorted by `u`: each row pairs with
+/// the earlier rows of the other colour, whose `u` is the smaller, so it adds `|w|` times
+/// their running sum of `|w| u`.
+fn sweep(rows: &[f64]) -> Acc {
+    let mut acc = Acc::default();
+    // Running sums of |w| u, for colour A (index 0) and B (index 1).
+    let mut seen = [Acc::default(); 2];
+    for r in rows.chunks_exact(2) {
+        let c = colour_b(r[1]) as usize;
+        let w = r[1].abs();
+        add_product(&mut acc, w, seen[1 - c]);
+        seen[c].add(w * r[0]);
+    }
+    acc
+}
+
+/// [`two_colour`] with no coordinate left: `(sum_A |w|) (sum_B |w|)`.
+fn product_of_sums(rows: &[f64]) -> Acc {
+    let mut sums = [Acc::default(); 2];
+    for &w in rows {
+        sums[colour_b(w) as usize].add(w.abs());
+    }
+    let [a, b] = sums;
+    let mut acc = Acc::default();
+    add_product(&mut acc, a.s, b);
+    acc.add(a.c * b.s);
+    acc
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::l2_star_direct;
+    use super::*;
+
+    /// SplitMix64 uniforms in `[0, 1)`.
+    fn uniform(len: usize, seed: u64) -> Vec<f64> {
+        let mut s = seed;
+        (0..len)
+            .map(|_| {
+                s = s.wrapping_add(0x9E37_79B9_7F4A_7C15);
+                let mut z = s;
+                z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+                z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+                z ^= z >> 31;
+                (z >> 11) as f64 / (1u64 << 53) as f64
+            })
+            .collect()
+    }
+
+    fn rel(a: f64, b: f64) -> f64 {
+        (a - b).abs() / b.abs()
+    }
+
+    /// `S - diag` by the definition, pair by pair, in a plain loop.
+    fn off_diagonal_by_pairs(u: &[f64], d: usize) -> f64 {
+        let n = u.len() / d;
+        let mut s = 0.0;
+        for i in 0..n {
+            for j in 0..i {
+                s += (0..d)
+                    .map(|k| u[i * d + k].min(u[j * d + k]))
+                    .product::<f64>();
+            }
+        }
+        s
+    }
+
+    #[test]
+    fn tree_off_diagonal_equals_pair_loop() {
+        // Every leaf size and the first levels of both recursions, with ties.
+        for d in 1..=5 {
+            for n in [1, 2, 3, 7, 31, 32, 33, 47, 48, 49, 64, 65, 97, 200] {
+                for grid in [0.0, 4.0] {
+                    let mut u = uniform(n * d, (n * 10 + d) as u64);
+                    if grid > 0.0 {
+                        u.iter_mut()
+                            .for_each(|t| *t = (*t * (grid + 1.0)).floor() / grid);
+                    }
+                    let want = off_diagonal_by_pairs(&u, d);
+                    let got = tree_off_diagonal(&u, d).dd().value();
+                    assert!(
+                        (got - want).abs() <= 1e-13 * want.max(1e-300),
+                        "d={d} n={n} grid={grid}: {got:e} vs {want:e}"
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn general_path_matches_pair_sum_d1_to_6() {
+        for d in 1..=6 {
+            for (n, seed) in [(1usize, 1u64), (50, 2), (700, 3), (2500, 4)] {
+                let x = uniform(n * d, seed * 100 + d as u64);
+                let p = Points::new(&x, d).unwrap();
+                let (tree, direct) = (l2_star_fast_with(p, false), l2_star_direct(p));
+                assert!(
+                    rel(tree, direct) <= 1e-13,
+                    "d={d} n={n}: {tree:e} vs {direct:e}"
+                );
+                if d <= 2 {
+                    let plane = l2_star_fast_with(p, true);
+                    assert!(rel(tree, plane) <= 1e-13, "d={d} n={n}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn general_path_with_ties_zeros_and_ones() {
+        // Coordinates on the grid k/8 (so many exactly 0 and 1, repeated points), and sets
+        // where one coordinate is constant 0 or 1.
+        for d in 3..=6 {
+            let x: Vec<f64> = uniform(1500 * d, 7 + d as u64)
+                .iter()
+                .map(|&t| (t * 9.0).floor().min(8.0) / 8.0)
+                .collect();
+            let p = Points::new(&x, d).unwrap();
+            let (tree, direct) = (l2_star_fast(p), l2_star_direct(p));
+            assert!(
+                rel(tree, direct) <= 1e-13,
+                "grid d={d}: {tree:e} vs {direct:e}"
+            );
+            for c in [0.0, 1.0] {
+                let mut y = uniform(900 * d, 11 + d as u64);
+                y.chunks_exact_mut(d).for_each(|r| r[1] = c);
+                let p = Points::new(&y, d).unwrap();
+                let (tree, direct) = (l2_star_fast(p), l2_star_direct(p));
+                assert!(rel(tree, direct) <= 1e-13, "const {c} d={d}");
+            }
+        }
+        // All points at (1, ..., 1): D^2 = 3^-d exactly in the formula.
+        let ones = vec![1.0; 300 * 4];
+        let p = Points::new(&ones, 4).unwrap();
+        assert!(rel(l2_star_fast(p), (1.0f64 / 81.0).sqrt()) <= 1e-15);
+    }
+
+    #[test]
+    fn parallel_recursion_matches_pair_sum() {
+        // Above TREE_PARALLEL points, where the sub-problems are joined.
+        let d = 3;
+        let x = uniform(3 * TREE_PARALLEL * d, 5);
+        let p = Points::new(&x, d).unwrap();
+        assert!(rel(l2_star_fast(p), l2_star_direct(p)) <= 1e-13);
+    }
+
+    #[test]
+    fn crossover_table() {
+        assert!(tree_pays_off(2, 256) && !tree_pays_off(2, 255));
+        assert!(!tree_pays_off(3, 4) && tree_pays_off(3, 1 << 20));
+        assert!(!tree_pays_off(40, 1 << 20));
+    }
+}

@@ -1,0 +1,158 @@
+//! Thiémard's bounds on the star discrepancy: `D* - δ <= lower <= D* <= upper <= D* + δ`
+//! against the exact value (`star_1d`, `star_2d`, `star_exact`, themselves checked against
+//! brute force in `star_discrepancy.rs`) on many random sets, and against values known in
+//! closed form.
+#![cfg(feature = "std")]
+
+use qmckit::analysis::Points;
+use qmckit::analysis::star::{star, star_upper_bound};
+use qmckit::analysis::thiemard::bounds;
+use qmckit::{Error, LarcherPillichshammer};
+
+/// SplitMix64: a self-contained generator for the random test sets.
+struct Rng(u64);
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+    /// `n d` coordinates: uniform, or on the grid `k/q` (ties, 0 and 1 occur).
+    fn set(&mut self, n: usize, d: usize, q: Option<u64>) -> Vec<f64> {
+        (0..n * d)
+            .map(|_| match q {
+                Some(q) => (self.next() % (q + 1)) as f64 / q as f64,
+                None => (self.next() >> 11) as f64 / (1u64 << 53) as f64,
+            })
+            .collect()
+    }
+}
+
+/// Checks `exact - delta <= lower <= exact <= upper <= exact + delta` (up to rounding) and that
+/// `star_upper_bound` returns the same upper bound.
+fn check(data: &[f64], d: usize, delta: f64, exact: f64) {
+    let p = Points::new(data, d).unwrap();
+    let b = bounds(p, delta).unwrap();
+    assert!(
+        b.lower <= exact,
+        "d = {d}, delta = {delta}: lower {} > exact {exact}",
+        b.lower
+    );
+    assert!(
+        exact <= b.upper,
+        "d = {d}, delta = {delta}: upper {} < exact {exact}",
+        b.upper
+    );
+    assert!(
+        b.upper <= exact + delta + 1e-12,
+        "d = {d}, delta = {delta}: upper {} > exact {exact} + delta",
+        b.upper
+    );
+    // Every test box lies in a bracket whose corner is within delta of it in volume.
+    assert!(
+        exact - b.lower <= delta + 1e-12,
+        "d = {d}, delta = {delta}: lower {} < exact {exact} - delta",
+        b.lower
+    );
+    assert!(b.brackets > 0);
+    assert_eq!(star_upper_bound(p, delta).unwrap(), b.upper);
+}
+
+#[test]
+fn brackets_the_exact_value_on_random_sets() {
+    let mut rng = Rng(2001);
+    let cases: [(usize, usize, &[f64]); 6] = [
+        (1, 40, &[0.1, 0.01, 0.003]),
+        (2, 40, &[0.2, 0.05, 0.01]),
+        (2, 200, &[0.02, 0.005]),
+        (3, 30, &[0.2, 0.1, 0.05]),
+        (4, 16, &[0.3, 0.15]),
+        (5, 10, &[0.4, 0.25]),
+    ];
+    for (d, n, deltas) in cases {
+        for trial in 0..8 {
+            let q = match trial % 4 {
+                0 => Some(4),
+                1 => Some(10),
+                _ => None,
+            };
+            let data = rng.set(n, d, q);
+            let exact = star(Points::new(&data, d).unwrap()).unwrap();
+            for &delta in deltas {
+                check(&data, d, delta, exact);
+            }
+        }
+    }
+}
+
+#[test]
+fn larcher_pillichshammer_nets() {
+    // Exact star discrepancies of the 2^m-point LP nets (Larcher & Pillichshammer 2001).
+    let known = [
+        (2, 7.0 / 16.0),
+        (3, 1.0 / 4.0),
+        (4, 9.0 / 64.0),
+        (5, 19.0 / 256.0),
+        (6, 21.0 / 512.0),
+    ];
+    for (m, value) in known {
+        let lp = LarcherPillichshammer::new(m).unwrap();
+        let n = 1u32 << m;
+        let raw: Vec<u32> = (0..n)
+            .flat_map(|i| [lp.sample(i, 0).unwrap(), lp.sample(i, 1).unwrap()])
+            .collect();
+        let data = Points::from_u32(&raw);
+        for delta in [0.05, 0.01, 0.004] {
+            check(&data, 2, delta, value);
+        }
+    }
+}
+
+#[test]
+fn one_point_at_the_center() {
+    // D* = 1 - 2^-d: the closed box [0, 1/2]^d holds the point with volume 2^-d. The best
+    // corner is snapped onto that box, so the lower bound is D* up to the rounding margin.
+    for d in 1..=6 {
+        let data = vec![0.5; d];
+        let exact = 1.0 - 0.5f64.powi(d as i32);
+        for delta in [0.3, 0.1, 0.03] {
+            if (d >= 5 && delta < 0.3) || (d == 4 && delta < 0.1) {
+                continue;
+            }
+            check(&data, d, delta, exact);
+            let b = bounds(Points::new(&data, d).unwrap(), delta).unwrap();
+            assert!((b.lower - exact).abs() < 1e-14, "d = {d}: {}", b.lower);
+        }
+    }
+}
+
+#[test]
+fn whole_cube_as_one_bracket() {
+    // delta = 1: the single bracket [0, 1]^d gives max(A/N - 0, 1 - 0) = 1.
+    let data = [0.25, 0.75, 0.5, 0.5];
+    let b = bounds(Points::new(&data, 2).unwrap(), 1.0).unwrap();
+    assert_eq!(b.brackets, 1);
+    assert!((1.0..1.0 + 1e-14).contains(&b.upper));
+}
+
+#[test]
+fn bad_delta_and_too_much_work() {
+    let data = [0.1, 0.2, 0.3, 0.4];
+    let p = Points::new(&data, 2).unwrap();
+    for delta in [0.0, -0.1, 1.5, f64::NAN, f64::INFINITY] {
+        assert!(
+            matches!(bounds(p, delta), Err(Error::Unsupported { .. })),
+            "{delta}"
+        );
+        assert!(star_upper_bound(p, delta).is_err());
+    }
+    // Ten dimensions at delta = 0.01 would need far more than the budget: refused at once.
+    let ten = vec![0.5; 10];
+    let p = Points::new(&ten, 10).unwrap();
+    assert!(matches!(
+        bounds(p, 0.01),
+        Err(Error::TooManyPoints { requested: 1, .. })
+    ));
+}
