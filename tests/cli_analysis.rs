@@ -124,7 +124,7 @@ fn extreme_in_2d() {
 fn star_is_refused_when_too_large_and_skipped_by_all() {
     let csv = stdout(
         &[
-            "points", "sobol", "-n", "3000", "-d", "3", "--format", "csv",
+            "points", "sobol", "-n", "10000", "-d", "3", "--format", "csv",
         ],
         "",
     );
@@ -134,7 +134,7 @@ fn star_is_refused_when_too_large_and_skipped_by_all() {
         "too many for the exact star",
     );
     let text = stdout(&["discrepancy"], &csv);
-    assert!(text.starts_with("# star skipped: 3000 points"), "{text}");
+    assert!(text.starts_with("# star skipped: 10000 points"), "{text}");
     assert_eq!(values(&text).len(), 8);
 }
 

@@ -4,10 +4,11 @@
 #![cfg(feature = "std")]
 
 use qmckit::analysis::Points;
+use qmckit::analysis::dem::star_dem;
 use qmckit::analysis::star::{
     extreme_2d, star, star_1d, star_2d, star_exact, star_lower_bound, star_upper_bound,
 };
-use qmckit::{Hammersley, Independent, Jitter, LarcherPillichshammer, Sampler, Stratified};
+use qmckit::{Hammersley, Independent, Jitter, LarcherPillichshammer, Sampler, Sobol, Stratified};
 
 /// SplitMix64: a self-contained generator for the random test sets.
 struct Rng(u64);
@@ -364,4 +365,163 @@ fn bounds_bracket_the_exact_value() {
     let lower = star_lower_bound(p, 1, 20_000);
     assert!((0.035..=21.0 / 512.0).contains(&lower), "{lower}");
     assert!(star_upper_bound(p, 0.0).is_err());
+}
+
+#[test]
+fn dem_matches_brute_force() {
+    let mut rng = Rng(8);
+    for (d, trials, max_n) in [
+        (1, 100, 20),
+        (2, 150, 20),
+        (3, 200, 14),
+        (4, 80, 9),
+        (5, 30, 6),
+        (6, 12, 5),
+    ] {
+        for trial in 0..trials {
+            let n = 1 + trial % max_n;
+            let q = match trial % 4 {
+                0 => Some(2),
+                1 => Some(3),
+                2 => Some(8),
+                _ => None,
+            };
+            let data = random_set(&mut rng, n, d, q);
+            let p = Points::new(&data, d).unwrap();
+            let (got, want) = (star_dem(p).unwrap(), brute_star(&data, d));
+            assert!(
+                (got - want).abs() < 1e-14,
+                "d = {d}, {data:?}: {got} vs {want}"
+            );
+        }
+    }
+}
+
+#[test]
+fn dem_matches_brute_force_on_large_coarse_sets() {
+    // On the grid k/q the critical grid has at most (q + 1)^d corners, so the brute force
+    // stays cheap for hundreds of points, while the decomposition sees many ties, points at
+    // 0 and 1, and deep cuts.
+    let mut rng = Rng(9);
+    for (d, q, n) in [
+        (3, 7, 400),
+        (3, 16, 300),
+        (4, 5, 300),
+        (5, 3, 300),
+        (6, 3, 240),
+        (6, 2, 240),
+    ] {
+        for _ in 0..2 {
+            let data = random_set(&mut rng, n, d, Some(q));
+            let p = Points::new(&data, d).unwrap();
+            let (got, want) = (star_dem(p).unwrap(), brute_star(&data, d));
+            assert!(
+                (got - want).abs() < 1e-14,
+                "d = {d}, q = {q}: {got} vs {want}"
+            );
+            assert_eq!(star_exact(p).unwrap(), got);
+        }
+    }
+}
+
+#[test]
+fn dem_one_point_by_hand() {
+    // One point x with every coordinate below 1: the closed box [0, x] holds it
+    // (1 - prod x_k); a box missing it needs some y_k <= x_k, so the largest empty box is
+    // [0, 1)^d with one side cut to x_k: volume max_k x_k. Boxes holding it are at most
+    // 1 - prod x_k. So D* = max(1 - prod x_k, max_k x_k). With a coordinate equal to 1 the
+    // point is never counted and the empty [0, 1)^d gives D* = 1. Dyadic: exact.
+    let mut rng = Rng(10);
+    for d in 1..=6 {
+        for _ in 0..40 {
+            let x: Vec<f64> = (0..d).map(|_| rng.coarse(64)).collect();
+            let want = if x.contains(&1.0) {
+                1.0
+            } else {
+                let prod: f64 = x.iter().product();
+                (1.0 - prod).max(x.iter().copied().fold(0.0, f64::max))
+            };
+            let got = star_dem(Points::new(&x, d).unwrap()).unwrap();
+            assert_eq!(got, want, "{x:?}");
+        }
+    }
+    assert_eq!(
+        star_exact(Points::new(&[0.5; 3], 3).unwrap()).unwrap(),
+        0.875
+    );
+}
+
+#[test]
+fn dem_padded_with_zero_coordinates_reduces_to_2d() {
+    // Extra coordinates equal to 0 for every point: corners with all extra y_k = 1 are the
+    // 2D boxes; a corner with some extra y_k = 0 has volume 0, and its closed limit holds
+    // every point with x, y < 1 (the open box is empty). So D*_d = max(D*_2, inside / N),
+    // for N far past the brute force.
+    let mut rng = Rng(11);
+    for (d, n, q) in [
+        (3, 600, None),
+        (4, 400, Some(64)),
+        (5, 300, None),
+        (6, 200, Some(16)),
+    ] {
+        let data2 = random_set(&mut rng, n, 2, q);
+        let d2 = star_2d(Points::new(&data2, 2).unwrap()).unwrap();
+        let inside = data2.chunks(2).filter(|p| p[0] < 1.0 && p[1] < 1.0).count() as f64;
+        let padded: Vec<f64> = data2
+            .chunks(2)
+            .flat_map(|p| {
+                [p[0], p[1]]
+                    .into_iter()
+                    .chain(std::iter::repeat_n(0.0, d - 2))
+            })
+            .collect();
+        let got = star_dem(Points::new(&padded, d).unwrap()).unwrap();
+        assert_eq!(got, d2.max(inside / n as f64), "d = {d}");
+    }
+}
+
+#[test]
+fn dem_on_nets_matches_brute_force() {
+    // Sobol' and Hammersley nets (first 2^m points), the low-discrepancy case in which
+    // the decomposition prunes least.
+    for (d, m) in [(3, 5), (4, 4), (5, 3), (6, 3)] {
+        let sobol = sampler_points(&Sobol::new(d).unwrap(), 1 << m);
+        let hammersley = sampler_points(&Hammersley::with_m(m, d).unwrap(), 1 << m);
+        for data in [sobol, hammersley] {
+            let p = Points::new(&data, d).unwrap();
+            let (got, want) = (star_dem(p).unwrap(), brute_star(&data, d));
+            assert!(
+                (got - want).abs() < 1e-14,
+                "d = {d}, m = {m}: {got} vs {want}"
+            );
+        }
+    }
+    // The first two Sobol' points in 3D, (0, 0, 0) and (1/2, 1/2, 1/2): the closed
+    // [0, 1/2]^3 holds both, 1 - 1/8 = 7/8; a box holding only the origin has volume at most
+    // 1/2 (one side at 1/2): 1/2 - 1/2 = 0 for the open one, and the closed ones holding only
+    // the origin have some side 0: 1/2 - 0.
+    let s = sampler_points(&Sobol::new(3).unwrap(), 2);
+    assert_eq!(s, [0.0, 0.0, 0.0, 0.5, 0.5, 0.5]);
+    assert_eq!(star_dem(Points::new(&s, 3).unwrap()).unwrap(), 0.875);
+}
+
+#[test]
+fn dem_refuses_beyond_its_budget() {
+    use qmckit::analysis::dem::{max_points, work_estimate};
+    use qmckit::analysis::star::STAR_WORK_BUDGET;
+    for d in 3..=8 {
+        let max = max_points(d) as usize;
+        assert!(work_estimate(max, d) <= STAR_WORK_BUDGET);
+        assert!(work_estimate(max + 1, d) > STAR_WORK_BUDGET);
+        let data = vec![0.5; (max + 1) * d];
+        let err = star_dem(Points::new(&data, d).unwrap()).unwrap_err();
+        assert_eq!(
+            err,
+            qmckit::Error::TooManyPoints {
+                requested: max as u64 + 1,
+                max: max as u64
+            }
+        );
+        assert_eq!(star_exact(Points::new(&data, d).unwrap()).unwrap_err(), err);
+    }
 }

@@ -8,11 +8,13 @@
 //! |---|---|
 //! | [`l2`] | L2-star (Warnock), centered, wrap-around, mixture, symmetric, unanchored, generalized L2 discrepancies, diaphony |
 //! | [`star`] | star discrepancy: exact (1D closed form, 2D, d-D), extreme discrepancy in 2D |
+//! | [`dem`] | exact star discrepancy in d dimensions by the Dobkin–Eppstein–Mitchell decomposition |
 //! | [`thiemard`] | guaranteed lower and upper bounds on the star discrepancy (Thiémard's δ-bracketing cover) |
 //! | [`tvalue`] | t-values of base-2 digital nets (generator matrices) and of point sets (elementary intervals) |
 //! | [`distance`] | minimum distance, optionally on the torus |
 //! | [`pointfile`] | reading point sets from text (the `qmckit discrepancy` input format) |
 
+pub mod dem;
 pub mod distance;
 pub mod l2;
 pub mod pointfile;

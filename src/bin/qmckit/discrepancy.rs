@@ -22,8 +22,9 @@ significant digits (it parses back to the exact f64). With several point sets, e
 block is preceded by a '# set K' line (K from 1).
 
 Conventions:
-  star      star discrepancy D*, exact (1D closed form; 2D sweep, N <= 50000; d-D grid
-            enumeration within a work budget; larger sets are refused with an error)
+  star      star discrepancy D*, exact (1D closed form; 2D sweep, N <= 50000; d-D by
+            Dobkin-Eppstein-Mitchell within a work budget, e.g. N <= 8151 at d = 3,
+            278 at d = 6; larger sets are refused with an error)
   extreme   extreme (unanchored box) discrepancy, exact, 2D only, N <= 1200
   l2-star   L2-star (Warnock), square root taken (SciPy method=\"L2-star\")
   cd        centered L2, squared (SciPy method=\"CD\")
