@@ -42,7 +42,7 @@
 //! | [`star_exact`] | `O(N^2)` in 2D; `O(N^(1 + d/2))` for `d >= 3` (Dobkin–Eppstein–Mitchell, [`super::dem`]), pruned | ≈ `3e9` steps: `N <= 8151, 1882, 621, 278` for `d = 3, 4, 5, 6` |
 //! | [`extreme_2d`] | `O(N^3)` | `N <= 1200` |
 //! | [`star_lower_bound`] | `O(iterations · N d)` | none |
-//! | [`star_upper_bound`] | `O(B · N d)`, `B` boxes of the δ-partition | ≈ `3e9` steps |
+//! | [`star_upper_bound`] | Thiémard's cover ([`super::thiemard`]): about `Σ_R (N vol(b_R) + 16)(d + k_R)` over its regions, parallel | ≈ `3e9` steps, estimated first |
 
 use super::Points;
 use crate::{Error, Result};
