@@ -266,3 +266,40 @@ fn tvalue_refusals() {
         "does not apply",
     );
 }
+
+#[test]
+fn star_bounds_bracket_the_exact_value() {
+    // LP, N = 64: D* = 21/512 exactly; the bounds must hold it, at most delta apart.
+    let csv = stdout(&["points", "lp", "-n", "64", "--format", "csv"], "");
+    let text = stdout(
+        &["discrepancy", "--metric", "star-bounds", "--delta", "0.01"],
+        &csv,
+    );
+    let v = values(&text);
+    assert_eq!(v.len(), 2, "{text}");
+    assert_eq!(
+        (v[0].0.as_str(), v[1].0.as_str()),
+        ("star-lower", "star-upper")
+    );
+    let exact = 21.0 / 512.0;
+    assert!(v[0].1 <= exact && exact <= v[1].1, "{text}");
+    assert!(v[1].1 - v[0].1 <= 0.01 + 1e-12, "{text}");
+    // A set too large for the exact value in 8D still gets bounds.
+    let csv = stdout(
+        &[
+            "points", "sobol", "-n", "2000", "-d", "8", "--format", "csv",
+        ],
+        "",
+    );
+    let v = values(&stdout(
+        &["discrepancy", "--metric", "star-bounds", "--delta", "0.5"],
+        &csv,
+    ));
+    assert!(0.0 < v[0].1 && v[0].1 <= v[1].1 && v[1].1 <= 1.0, "{v:?}");
+    // A bad delta is a one-line usage error.
+    assert_usage_error(
+        &["discrepancy", "--metric", "star-bounds", "--delta", "0"],
+        &csv,
+        "delta",
+    );
+}

@@ -6,7 +6,7 @@ use clap::{Args, ValueEnum};
 use qmckit::analysis::Points;
 use qmckit::analysis::l2::L2Metric;
 use qmckit::analysis::pointfile::{PointSet, parse_point_sets};
-use qmckit::analysis::star;
+use qmckit::analysis::{star, thiemard};
 
 use crate::Failure;
 use crate::points::value_name;
@@ -25,6 +25,10 @@ Conventions:
   star      star discrepancy D*, exact (1D closed form; 2D sweep, N <= 50000; d-D by
             Dobkin-Eppstein-Mitchell within a work budget, e.g. N <= 8151 at d = 3,
             278 at d = 6; larger sets are refused with an error)
+  star-bounds  guaranteed bounds on D* for sets too large for the exact value: two lines,
+            'star-lower' (the best of Thiemard's cover and threshold accepting: a value
+            D* reaches) and 'star-upper' (Thiemard's cover: at most D* + delta); --delta
+            sets the gap (default 0.05; smaller is slower, refused past a work budget)
   extreme   extreme (unanchored box) discrepancy, exact, 2D only, N <= 1200
   l2-star   L2-star (Warnock), square root taken (SciPy method=\"L2-star\")
   cd        centered L2, squared (SciPy method=\"CD\")
@@ -47,6 +51,8 @@ second. Errors: 'qmckit: error: FILE: line N: reason', exit code 2.";
 pub enum Metric {
     /// Star discrepancy, exact.
     Star,
+    /// Lower and upper bounds on the star discrepancy.
+    StarBounds,
     /// Extreme discrepancy, exact, 2D only.
     Extreme,
     /// L2-star discrepancy (square root).
@@ -81,7 +87,7 @@ impl Metric {
             Metric::Ul2 => L2Metric::Unanchored,
             Metric::Gl2 => L2Metric::Generalized,
             Metric::Diaphony => L2Metric::Diaphony,
-            Metric::Star | Metric::Extreme | Metric::All => return None,
+            Metric::Star | Metric::StarBounds | Metric::Extreme | Metric::All => return None,
         })
     }
 }
@@ -105,6 +111,9 @@ pub struct DiscrepancyArgs {
     /// Metrics to compute, comma-separated (see below).
     #[arg(long, value_enum, value_delimiter = ',', default_value = "all")]
     metric: Vec<Metric>,
+    /// Gap between the bounds of star-bounds, in (0, 1].
+    #[arg(long, default_value_t = 0.05)]
+    delta: f64,
     /// Point file; '-' or none reads standard input.
     file: Option<String>,
 }
@@ -146,14 +155,35 @@ fn refusal(e: qmckit::Error, what: &str, set: &PointSet) -> String {
     }
 }
 
-/// One measure of one set, or why it was refused.
-fn measure(metric: Metric, p: Points<'_>, set: &PointSet) -> Result<f64, String> {
+/// Threshold-accepting iterations for star-bounds: about 3e8 point-coordinate steps.
+fn lower_bound_iterations(p: Points<'_>) -> u64 {
+    (3e8 / (p.len() * p.dims()).max(1) as f64).clamp(1000.0, 100_000.0) as u64
+}
+
+/// One measure of one set as `(name, value)` lines, or why it was refused.
+fn measure(
+    metric: Metric,
+    p: Points<'_>,
+    set: &PointSet,
+    delta: f64,
+) -> Result<Vec<(String, f64)>, String> {
     let name = value_name(&metric);
     if let Some(l2) = metric.l2() {
-        return Ok(with_spinner(name.as_str(), || l2.eval(p)));
+        return Ok(vec![(name.clone(), with_spinner(&name, || l2.eval(p)))]);
     }
-    match metric {
+    let value = match metric {
         Metric::Star => with_spinner(&name, || star::star(p)).map_err(|e| refusal(e, "star", set)),
+        Metric::StarBounds => {
+            let b = with_spinner(&name, || thiemard::bounds(p, delta))
+                .map_err(|e| refusal(e, "star-bounds", set))?;
+            let ta = with_spinner(&name, || {
+                star::star_lower_bound(p, 0, lower_bound_iterations(p))
+            });
+            return Ok(vec![
+                ("star-lower".to_owned(), b.lower.max(ta)),
+                ("star-upper".to_owned(), b.upper),
+            ]);
+        }
         Metric::Extreme if set.dims != 2 => Err(format!(
             "extreme is implemented for 2-dimensional points only, not {}",
             set.dims
@@ -162,7 +192,8 @@ fn measure(metric: Metric, p: Points<'_>, set: &PointSet) -> Result<f64, String>
             with_spinner(&name, || star::extreme_2d(p)).map_err(|e| refusal(e, "extreme", set))
         }
         _ => unreachable!("l2 metrics are handled above and 'all' is expanded"),
-    }
+    }?;
+    Ok(vec![(name, value)])
 }
 
 /// Runs `qmckit discrepancy`.
@@ -184,8 +215,12 @@ pub fn run(args: &DiscrepancyArgs) -> Result<(), Failure> {
             writeln!(out, "# set {}", k + 1)?;
         }
         for &metric in &metrics {
-            match measure(metric, p, set) {
-                Ok(value) => writeln!(out, "{} {value:.16e}", value_name(&metric))?,
+            match measure(metric, p, set, args.delta) {
+                Ok(lines) => {
+                    for (label, value) in lines {
+                        writeln!(out, "{label} {value:.16e}")?;
+                    }
+                }
                 Err(reason) if all && metric == Metric::Star => {
                     writeln!(out, "# star skipped: {reason}")?;
                 }
