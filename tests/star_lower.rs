@@ -1,0 +1,88 @@
+//! `star_lower_bound` (threshold accepting after Gnewuch, Wahlström & Winzen 2012): never
+//! above the exact star discrepancy (`star_exact`, itself checked against brute force in
+//! `star_discrepancy.rs`), usually equal to it on small sets, and in 20D close to the lower
+//! bound of Thiémard's bracketing cover (`thiemard::bounds`), an independent algorithm.
+#![cfg(feature = "std")]
+
+use qmckit::Sobol;
+use qmckit::analysis::Points;
+use qmckit::analysis::star::{star, star_lower_bound};
+use qmckit::analysis::thiemard::bounds;
+
+/// SplitMix64: a self-contained generator for the random test sets.
+struct Rng(u64);
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+    /// `n d` coordinates: uniform, or on the grid `k/q` (ties, 0 and 1 occur).
+    fn set(&mut self, n: usize, d: usize, q: Option<u64>) -> Vec<f64> {
+        (0..n * d)
+            .map(|_| match q {
+                Some(q) => (self.next() % (q + 1)) as f64 / q as f64,
+                None => (self.next() >> 11) as f64 / (1u64 << 53) as f64,
+            })
+            .collect()
+    }
+}
+
+#[test]
+fn never_above_and_mostly_equal_to_the_exact_value() {
+    let mut rng = Rng(2012);
+    let (mut equal, mut total) = (0, 0);
+    for d in 2..=5 {
+        for trial in 0..25u64 {
+            let n = 5 + (rng.next() % 36) as usize;
+            let q = if trial % 3 == 0 { Some(6) } else { None };
+            let data = rng.set(n, d, q);
+            let p = Points::new(&data, d).unwrap();
+            let exact = star(p).unwrap();
+            let lower = star_lower_bound(p, trial, 4000);
+            // Exact up to the rounding of the volume products (a few ulps).
+            assert!(
+                lower <= exact + 1e-14,
+                "d = {d}, n = {n}: {lower} > {exact}"
+            );
+            assert!(lower >= 0.5 * exact, "d = {d}, n = {n}: {lower} << {exact}");
+            total += 1;
+            equal += usize::from(exact - lower <= 1e-14);
+        }
+    }
+    // Measured: 93 of 100 (the misses are uniform sets in 4D and 5D, at most 0.03 below).
+    eprintln!("equal to the exact value in {equal} of {total}");
+    assert!(
+        equal * 100 >= total * 85,
+        "equal in only {equal} of {total}"
+    );
+}
+
+#[test]
+fn deterministic_for_a_seed() {
+    let data = Rng(5).set(200, 6, None);
+    let p = Points::new(&data, 6).unwrap();
+    assert_eq!(star_lower_bound(p, 3, 3000), star_lower_bound(p, 3, 3000));
+}
+
+#[test]
+fn sobol_20d_reaches_the_bracketing_lower_bound() {
+    let (n, d) = (1000usize, 20usize);
+    let s = Sobol::new(d).unwrap();
+    let mut raw = vec![0u32; n * d];
+    for (i, row) in raw.chunks_mut(d).enumerate() {
+        for (k, c) in row.iter_mut().enumerate() {
+            *c = s.sample(i as u32, k).unwrap();
+        }
+    }
+    let data = Points::from_u32(&raw);
+    let p = Points::new(&data, d).unwrap();
+    let thiemard = bounds(p, 0.7).unwrap().lower;
+    let lower = star_lower_bound(p, 1, 20_000);
+    eprintln!("20D Sobol', N = {n}: threshold accepting {lower}, Thiémard lower {thiemard}");
+    // Measured: 0.0612 against Thiémard's 0.0500; the uniform-neighbourhood search this
+    // replaced found 0.0010 (= 1/N) at the same iteration count.
+    assert!(lower >= thiemard, "{lower} vs {thiemard}");
+}
