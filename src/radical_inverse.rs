@@ -67,6 +67,16 @@ static REVERSAL: [&[u8]; 6] = [
     &reversal_table::<169>(13),
 ];
 
+/// `table[r]`, or `r` itself past the table's end (an empty table: `c = 1`, no reversal).
+#[inline(always)]
+const fn reverse_in(table: &[u8], r: u32) -> u32 {
+    if (r as usize) < table.len() {
+        table[r as usize] as u32
+    } else {
+        r
+    }
+}
+
 /// `[rev_c(r) for r < N]` for `N = b^c`.
 const fn reversal_table<const N: usize>(base: u32) -> [u8; N] {
     let mut table = [0u8; N];
@@ -275,17 +285,18 @@ impl RadicalInverse {
         if self.table == 0 {
             return r;
         }
+        reverse_in(self.reversal_table(), r)
+    }
+
+    /// This base's digit-reversal table (empty when `c = 1`).
+    #[inline(always)]
+    const fn reversal_table(&self) -> &'static [u8] {
         // Guarded indexing (no panic path): an unknown id means no table.
         let id = self.table as usize;
-        let table: &[u8] = if id < REVERSAL.len() {
+        if id < REVERSAL.len() {
             REVERSAL[id]
         } else {
             &[]
-        };
-        if (r as usize) < table.len() {
-            table[r as usize] as u32
-        } else {
-            r
         }
     }
 
@@ -361,10 +372,11 @@ impl RadicalInverse {
     /// `b^(K-2c)`, ... (the numerator's remaining chunks when `acc` holds the lower ones).
     #[inline]
     const fn numerator_from(&self, mut n: u32, mut weight: u64, mut acc: u64) -> u64 {
+        let table = self.reversal_table(); // looked up once, not per chunk
         loop {
             let (q, r) = self.peel(n);
             // The chunk's c digits reversed (with c = 1 there is no table: r itself).
-            acc += self.reverse_chunk(r) as u64 * weight; // sum < B: no overflow
+            acc += reverse_in(table, r) as u64 * weight; // sum < B: no overflow
             if q == 0 {
                 return acc;
             }

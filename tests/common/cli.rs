@@ -16,7 +16,11 @@ pub fn run(args: &[&str], input: &str) -> Output {
     // A command that fails before reading its input (a missing file, a bad option) may
     // close the pipe first: that broken pipe is not the test's concern, its exit code is.
     if let Err(e) = stdin.write_all(input.as_bytes()) {
-        assert_eq!(e.kind(), std::io::ErrorKind::BrokenPipe, "writing stdin: {e}");
+        assert_eq!(
+            e.kind(),
+            std::io::ErrorKind::BrokenPipe,
+            "writing stdin: {e}"
+        );
     }
     drop(stdin);
     child.wait_with_output().unwrap()
