@@ -10,34 +10,8 @@ use qmckit::analysis::star::{
 };
 use qmckit::{Hammersley, Independent, Jitter, LarcherPillichshammer, Sampler, Sobol, Stratified};
 
-/// SplitMix64: a self-contained generator for the random test sets.
-struct Rng(u64);
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-    /// A coordinate on a coarse grid `k / q` (`0 <= k <= q`), so that ties, 0 and 1 occur.
-    fn coarse(&mut self, q: u64) -> f64 {
-        (self.next() % (q + 1)) as f64 / q as f64
-    }
-    fn uniform(&mut self) -> f64 {
-        (self.next() >> 11) as f64 / (1u64 << 53) as f64
-    }
-}
-
-/// `n` random points in `[0,1]^d`; with `q = Some(q)` on the grid `k/q` (ties, 0 and 1).
-fn random_set(rng: &mut Rng, n: usize, d: usize, q: Option<u64>) -> Vec<f64> {
-    (0..n * d)
-        .map(|_| match q {
-            Some(q) => rng.coarse(q),
-            None => rng.uniform(),
-        })
-        .collect()
-}
+mod common;
+use common::Rng;
 
 fn sampler_points(s: &dyn Sampler, n: u32) -> Vec<f64> {
     let d = s.dims();
@@ -182,7 +156,7 @@ fn one_dimension_closed_form_matches_brute_force() {
     for trial in 0..300 {
         let n = 1 + trial % 17;
         let q = if trial % 2 == 0 { Some(7) } else { None };
-        let data = random_set(&mut rng, n, 1, q);
+        let data = rng.set(n, 1, q);
         let p = Points::new(&data, 1).unwrap();
         let (got, want) = (star_1d(p).unwrap(), brute_star(&data, 1));
         assert!((got - want).abs() < 1e-14, "{data:?}: {got} vs {want}");
@@ -207,7 +181,7 @@ fn two_dimensions_match_brute_force_with_ties_and_boundaries() {
             1 => Some(16),
             _ => None,
         };
-        let data = random_set(&mut rng, n, 2, q);
+        let data = rng.set(n, 2, q);
         let p = Points::new(&data, 2).unwrap();
         let (got, want) = (star_2d(p).unwrap(), brute_star(&data, 2));
         assert!((got - want).abs() < 1e-14, "{data:?}: {got} vs {want}");
@@ -240,7 +214,7 @@ fn higher_dimensions_match_brute_force() {
                 1 => Some(8),
                 _ => None,
             };
-            let data = random_set(&mut rng, n, d, q);
+            let data = rng.set(n, d, q);
             let p = Points::new(&data, d).unwrap();
             let (got, want) = (star_exact(p).unwrap(), brute_star(&data, d));
             assert!(
@@ -256,14 +230,14 @@ fn higher_dimensions_match_brute_force() {
 fn star_exact_agrees_with_star_2d_on_larger_sets() {
     let mut rng = Rng(4);
     for n in [50, 200, 500] {
-        let data = random_set(&mut rng, n, 2, None);
+        let data = rng.set(n, 2, None);
         let p = Points::new(&data, 2).unwrap();
         assert_eq!(star_exact(p).unwrap(), star_2d(p).unwrap());
     }
     // A 3D set whose last coordinate is 0 for every point: boxes with y_3 = 1 are the 2D
     // boxes (D*_2 of the first two coordinates), and the closed boxes with y_3 = 0 have
     // volume 0 and hold, at most, every point with x, y < 1. Other y_3 do not occur.
-    let data2 = random_set(&mut rng, 300, 2, Some(64));
+    let data2 = rng.set(300, 2, Some(64));
     let data3: Vec<f64> = data2.chunks(2).flat_map(|p| [p[0], p[1], 0.0]).collect();
     let d2 = star_2d(Points::new(&data2, 2).unwrap()).unwrap();
     let inside = data2.chunks(2).filter(|p| p[0] < 1.0 && p[1] < 1.0).count() as f64 / 300.0;
@@ -318,7 +292,7 @@ fn extreme_2d_matches_brute_force() {
             1 => Some(10),
             _ => None,
         };
-        let data = random_set(&mut rng, n, 2, q);
+        let data = rng.set(n, 2, q);
         let p = Points::new(&data, 2).unwrap();
         let (got, want) = (extreme_2d(p).unwrap(), brute_extreme_2d(&data));
         assert!((got - want).abs() < 1e-14, "{data:?}: {got} vs {want}");
@@ -336,7 +310,7 @@ fn bounds_bracket_the_exact_value() {
     for (d, n) in [(1, 20), (2, 30), (2, 64), (3, 25), (4, 12)] {
         for trial in 0..6 {
             let q = if trial % 2 == 0 { Some(8) } else { None };
-            let data = random_set(&mut rng, n, d, q);
+            let data = rng.set(n, d, q);
             let p = Points::new(&data, d).unwrap();
             let exact = star(p).unwrap();
             let lower = star_lower_bound(p, trial, 3000);
@@ -386,7 +360,7 @@ fn dem_matches_brute_force() {
                 2 => Some(8),
                 _ => None,
             };
-            let data = random_set(&mut rng, n, d, q);
+            let data = rng.set(n, d, q);
             let p = Points::new(&data, d).unwrap();
             let (got, want) = (star_dem(p).unwrap(), brute_star(&data, d));
             assert!(
@@ -412,7 +386,7 @@ fn dem_matches_brute_force_on_large_coarse_sets() {
         (6, 2, 240),
     ] {
         for _ in 0..2 {
-            let data = random_set(&mut rng, n, d, Some(q));
+            let data = rng.set(n, d, Some(q));
             let p = Points::new(&data, d).unwrap();
             let (got, want) = (star_dem(p).unwrap(), brute_star(&data, d));
             assert!(
@@ -464,7 +438,7 @@ fn dem_padded_with_zero_coordinates_reduces_to_2d() {
         (5, 300, None),
         (6, 200, Some(16)),
     ] {
-        let data2 = random_set(&mut rng, n, 2, q);
+        let data2 = rng.set(n, 2, q);
         let d2 = star_2d(Points::new(&data2, 2).unwrap()).unwrap();
         let inside = data2.chunks(2).filter(|p| p[0] < 1.0 && p[1] < 1.0).count() as f64;
         let padded: Vec<f64> = data2

@@ -9,26 +9,8 @@ use qmckit::analysis::star::{star, star_upper_bound};
 use qmckit::analysis::thiemard::bounds;
 use qmckit::{Error, LarcherPillichshammer};
 
-/// SplitMix64: a self-contained generator for the random test sets.
-struct Rng(u64);
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-    /// `n d` coordinates: uniform, or on the grid `k/q` (ties, 0 and 1 occur).
-    fn set(&mut self, n: usize, d: usize, q: Option<u64>) -> Vec<f64> {
-        (0..n * d)
-            .map(|_| match q {
-                Some(q) => (self.next() % (q + 1)) as f64 / q as f64,
-                None => (self.next() >> 11) as f64 / (1u64 << 53) as f64,
-            })
-            .collect()
-    }
-}
+mod common;
+use common::Rng;
 
 /// Checks `exact - delta <= lower <= exact <= upper <= exact + delta` (up to rounding) and that
 /// `star_upper_bound` returns the same upper bound.

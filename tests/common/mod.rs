@@ -74,18 +74,43 @@ pub fn star_discrepancy_2d_exact(points: &[[u32; 2]]) -> (i128, i128) {
     (best, n << 64)
 }
 
-/// `n` SplitMix64 uniform doubles in [0, 1) (Steele, Lea, Flood 2014): test points from a
-/// generator that shares no code with qmckit.
+/// SplitMix64 (Steele, Lea & Flood 2014): a generator for test sets that shares no code
+/// with qmckit.
+pub struct Rng(pub u64);
+
+impl Rng {
+    /// The next 64 random bits.
+    pub fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+
+    /// A uniform double in [0, 1) (53 random bits).
+    pub fn uniform(&mut self) -> f64 {
+        (self.next() >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    /// A coordinate on the grid `k / q` (`0 <= k <= q`), so that ties, 0 and 1 occur.
+    pub fn coarse(&mut self, q: u64) -> f64 {
+        (self.next() % (q + 1)) as f64 / q as f64
+    }
+
+    /// `n d` coordinates: uniform, or on the grid `k/q` with `q = Some(q)`.
+    pub fn set(&mut self, n: usize, d: usize, q: Option<u64>) -> Vec<f64> {
+        (0..n * d)
+            .map(|_| match q {
+                Some(q) => self.coarse(q),
+                None => self.uniform(),
+            })
+            .collect()
+    }
+}
+
+/// `n` SplitMix64 uniform doubles in [0, 1) from `seed`.
 pub fn uniform(n: usize, seed: u64) -> Vec<f64> {
-    let mut s = seed;
-    (0..n)
-        .map(|_| {
-            s = s.wrapping_add(0x9E37_79B9_7F4A_7C15);
-            let mut z = s;
-            z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-            z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-            z ^= z >> 31;
-            (z >> 11) as f64 / (1u64 << 53) as f64
-        })
-        .collect()
+    let mut rng = Rng(seed);
+    (0..n).map(|_| rng.uniform()).collect()
 }
