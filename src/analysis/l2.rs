@@ -914,6 +914,26 @@ pub use l2_star_tree::l2_star_fast;
 mod kernel_tests {
     use super::*;
 
+    /// The reference pair sum `sum_{i<j} prod_k kernel(x_ik, x_jk)`: a plain double loop
+    /// with Neumaier's compensation, sharing nothing with the blocked kernels.
+    pub(super) fn neumaier_pair_sum(p: Points<'_>, kernel: impl Fn(f64, f64) -> f64) -> f64 {
+        let (mut plain, mut comp) = (0.0f64, 0.0f64);
+        for i in 0..p.len() {
+            for j in i + 1..p.len() {
+                let (a, b) = (p.point(i), p.point(j));
+                let x: f64 = a.iter().zip(b).map(|(&x, &y)| kernel(x, y)).product();
+                let t = plain + x;
+                comp += if plain.abs() >= x.abs() {
+                    (plain - t) + x
+                } else {
+                    (x - t) + plain
+                };
+                plain = t;
+            }
+        }
+        plain + comp
+    }
+
     /// The pair sum over `i < j` with rows long enough for the groups of [`GROUP`] blocks,
     /// their remainders and the masked first and last blocks (every `n mod LANES`, both
     /// specialized dimensions and the generic loop with odd and even `d`), against a
@@ -930,21 +950,7 @@ mod kernel_tests {
                     .map(|i| ((i as f64) * 0.754_877_666_246_692_7).fract())
                     .collect();
                 let p = Points::new(&data, d).unwrap();
-                let (mut plain, mut comp) = (0.0f64, 0.0f64);
-                for i in 0..n {
-                    for j in i + 1..n {
-                        let (a, b) = (p.point(i), p.point(j));
-                        let x: f64 = a.iter().zip(b).map(|(&x, &y)| kernel(x, y)).product();
-                        let t = plain + x;
-                        comp += if plain.abs() >= x.abs() {
-                            (plain - t) + x
-                        } else {
-                            (x - t) + plain
-                        };
-                        plain = t;
-                    }
-                }
-                let plain = plain + comp;
+                let plain = neumaier_pair_sum(p, kernel);
                 let s = Blocked::new(p, |x| [x]);
                 let k1 = |a: [f64; 1], b: [f64; 1]| kernel(a[0], b[0]);
                 let portable = off_diagonal(&s, &k1, Build::Portable).dd().value();
@@ -1034,6 +1040,7 @@ impl L2Metric {
 
 #[cfg(test)]
 mod tests {
+    use super::kernel_tests::neumaier_pair_sum;
     use super::*;
 
     /// Every measure by the pair sum in the given build.
@@ -1088,21 +1095,7 @@ mod tests {
             for d in [1, 3] {
                 let data = golden_ratio_points(n * d);
                 let p = Points::new(&data, d).unwrap();
-                let (mut plain, mut comp) = (0.0f64, 0.0f64);
-                for i in 0..n {
-                    for j in i + 1..n {
-                        let (a, b) = (p.point(i), p.point(j));
-                        let x: f64 = a.iter().zip(b).map(|(&x, &y)| kernel(x, y)).product();
-                        let t = plain + x;
-                        comp += if plain.abs() >= x.abs() {
-                            (plain - t) + x
-                        } else {
-                            (x - t) + plain
-                        };
-                        plain = t;
-                    }
-                }
-                let plain = plain + comp;
+                let plain = neumaier_pair_sum(p, kernel);
                 let s = Blocked::new(p, |x| [x]);
                 for build in [Build::Portable, Build::Detect] {
                     let got =
