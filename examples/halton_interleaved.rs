@@ -1,0 +1,119 @@
+//! Random-access Halton and radical inverse against the `halton` crate, interleaved: each
+//! variant is timed `R` times in alternation with the others and its best time kept, so that
+//! load from other processes on a shared machine hits all variants alike (criterion runs
+//! them one after another, seconds apart). Complements `cargo bench --bench halton`.
+//!
+//! `cargo run --release --example halton_interleaved [-- ROUNDS]` (default 300).
+//! Index sets as in the bench: `lo` = 0..4096, `spread` = k * 1_000_003 over the u32 range.
+
+use std::hint::black_box;
+use std::time::Instant;
+
+use qmckit::{Halton, RadicalInverse, Sampler};
+
+const N: usize = 4096;
+
+/// Seconds one call of `f` takes.
+fn time(f: &mut dyn FnMut()) -> f64 {
+    let t = Instant::now();
+    f();
+    t.elapsed().as_secs_f64()
+}
+
+/// Best times of the variants over `rounds` alternating rounds.
+fn race(rounds: usize, variants: &mut [&mut dyn FnMut()]) -> Vec<f64> {
+    let mut best = vec![f64::MAX; variants.len()];
+    for _ in 0..rounds {
+        for (b, f) in best.iter_mut().zip(variants.iter_mut()) {
+            *b = b.min(time(*f));
+        }
+    }
+    best
+}
+
+fn main() {
+    let rounds: usize = std::env::args()
+        .nth(1)
+        .map_or(300, |s| s.parse().expect("ROUNDS is a number"));
+    let lo: Vec<u32> = (0..N as u32).collect();
+    let spread: Vec<u32> = (0..N as u32).map(|k| k.wrapping_mul(1_000_003)).collect();
+    println!("ns per value, best of {rounds} interleaved rounds; ratio = peer / qmckit");
+    for (label, idx) in [("lo", &lo), ("spread", &spread)] {
+        for d in [2usize, 8, 32] {
+            let h = Halton::new(d).expect("dims");
+            let primes: Vec<u8> = (0..d)
+                .map(|k| qmckit::halton::prime(k).expect("prime") as u8)
+                .collect();
+            let (mut a, mut b, mut c) = (vec![0u32; N * d], vec![0u32; N * d], vec![0f64; N * d]);
+            let t = race(
+                rounds,
+                &mut [
+                    &mut || {
+                        let h = black_box(h);
+                        for (row, &i) in a.chunks_exact_mut(d).zip(black_box(idx.as_slice())) {
+                            for (dim, slot) in row.iter_mut().enumerate() {
+                                *slot = h.sample(i, dim).expect("dim in range");
+                            }
+                        }
+                        black_box(&mut a);
+                    },
+                    &mut || {
+                        let h = black_box(h);
+                        for (row, &i) in b.chunks_exact_mut(d).zip(black_box(idx.as_slice())) {
+                            h.point(i, row).expect("row of d values");
+                        }
+                        black_box(&mut b);
+                    },
+                    &mut || {
+                        let p = black_box(primes.as_slice());
+                        for (row, &i) in c.chunks_exact_mut(d).zip(black_box(idx.as_slice())) {
+                            for (slot, &base) in row.iter_mut().zip(p) {
+                                *slot = halton::number(base, i as usize);
+                            }
+                        }
+                        black_box(&mut c);
+                    },
+                ],
+            );
+            let ns = |s: f64| s * 1e9 / (N * d) as f64;
+            println!(
+                "halton d={d:<2} {label:<6} per coordinate {:6.2}  per point {:6.2}  peer {:6.2}  ratio {:.2}x / {:.2}x",
+                ns(t[0]),
+                ns(t[1]),
+                ns(t[2]),
+                t[2] / t[0],
+                t[2] / t[1]
+            );
+        }
+        for base in [3u32, 7, 31] {
+            let ri = RadicalInverse::new(base).expect("base");
+            let (mut a, mut c) = (vec![0u32; N], vec![0f64; N]);
+            let t = race(
+                rounds,
+                &mut [
+                    &mut || {
+                        let ri = black_box(ri);
+                        for (slot, &i) in a.iter_mut().zip(black_box(idx.as_slice())) {
+                            *slot = ri.sample(i);
+                        }
+                        black_box(&mut a);
+                    },
+                    &mut || {
+                        let b = black_box(base as u8);
+                        for (slot, &i) in c.iter_mut().zip(black_box(idx.as_slice())) {
+                            *slot = halton::number(b, i as usize);
+                        }
+                        black_box(&mut c);
+                    },
+                ],
+            );
+            let ns = |s: f64| s * 1e9 / N as f64;
+            println!(
+                "radical inverse base {base:<2} {label:<6} qmckit {:6.2}  peer {:6.2}  ratio {:.2}x",
+                ns(t[0]),
+                ns(t[1]),
+                t[1] / t[0]
+            );
+        }
+    }
+}
