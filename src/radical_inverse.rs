@@ -214,39 +214,28 @@ impl RadicalInverse {
             return reverse_bits(index);
         }
         let q = self.chunk;
-        if q > NESTED_CHUNK_MAX {
-            return self.sample_big_base(index);
+        if q <= NESTED_CHUNK_MAX {
+            // Up to three chunks by nested floors, unrolled (the common short indices).
+            if index < q {
+                return self.nest(index, 0) as u32;
+            }
+            let (n1, r0) = self.peel(index);
+            if n1 < q {
+                return self.nest(r0, self.nest(n1, 0)) as u32;
+            }
+            let (n2, r1) = self.peel(n1);
+            if n2 < q {
+                return self.nest(r0, self.nest(r1, self.nest(n2, 0))) as u32;
+            }
         }
-        // Up to three chunks by nested floors, unrolled (the common short indices).
-        if index < q {
-            return self.nest(index, 0) as u32;
-        }
-        let (n1, r0) = self.peel(index);
-        if n1 < q {
-            return self.nest(r0, self.nest(n1, 0)) as u32;
-        }
-        let (n2, r1) = self.peel(n1);
-        if n2 < q {
-            return self.nest(r0, self.nest(r1, self.nest(n2, 0))) as u32;
-        }
-        self.sample_long(n2, r0, r1)
+        self.sample_long(index)
     }
 
-    /// [`sample`](Self::sample) for indices of four or more chunks, given the first two
-    /// chunks `r0`, `r1` and the rest `n`: the exact numerator, then one scaling. Out of
-    /// line, to keep the short path small enough to inline.
+    /// [`sample`](Self::sample) for indices of four or more chunks, and for all indices
+    /// when `b^c > 2^16`: the exact numerator, then one scaling. Out of line, to keep the
+    /// short path small enough to inline.
     #[inline(never)]
-    const fn sample_long(&self, n: u32, r0: u32, r1: u32) -> u32 {
-        let w0 = self.div_chunk(self.big);
-        let w1 = self.div_chunk(w0);
-        let acc = self.reverse_chunk(r0) as u64 * w0 + self.reverse_chunk(r1) as u64 * w1;
-        self.scale(self.numerator_from(n, self.div_chunk(w1), acc))
-            .0
-    }
-
-    /// [`sample`](Self::sample) for `b^c > 2^16`: the exact numerator, then one scaling.
-    #[inline(never)]
-    const fn sample_big_base(&self, index: u32) -> u32 {
+    const fn sample_long(&self, index: u32) -> u32 {
         self.scale(self.numerator(index)).0
     }
 
