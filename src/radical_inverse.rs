@@ -354,13 +354,7 @@ impl RadicalInverse {
     /// `N` with `phi_b(index) = N / B`: the digits of `index` reversed into `K` places.
     #[inline]
     const fn numerator(&self, index: u32) -> u64 {
-        self.numerator_from(index, self.div_chunk(self.big), 0)
-    }
-
-    /// `acc` plus the chunks of `n` reversed into places `weight = b^(K-c)`,
-    /// `b^(K-2c)`, ... (the numerator's remaining chunks when `acc` holds the lower ones).
-    #[inline]
-    const fn numerator_from(&self, mut n: u32, mut weight: u64, mut acc: u64) -> u64 {
+        let (mut n, mut weight, mut acc) = (index, self.div_chunk(self.big), 0u64); // b^(K-c)
         let table = self.reversal_table(); // looked up once, not per chunk
         loop {
             let (q, r) = self.peel(n);
