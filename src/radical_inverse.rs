@@ -23,10 +23,11 @@
 //! otherwise). Short indices (up to three chunks, `b^c <= 2^16`) then fold the chunks from
 //! the top by nested floors, `F <- floor((rev(C) 2^32 + F) / b^c)`, one exact multiply-high
 //! each, which lands on `floor(phi_b(i) 2^32)` with no rounding step. Longer indices build
-//! `N` (each chunk weighted by `b^(K-c)`, `b^(K-2c)`, ..., the weight stepped down by the
-//! inverse of `b^c` modulo 2^64, an exact division) and round `N * 2^32 / B` down with a
-//! precomputed reciprocal and one correction step (Granlund & Montgomery 1994). Base 2 is a
-//! single bit reversal.
+//! `N = sum_j rev(C_j) b^(K-c(j+1))` from the quotients `floor(i / b^(cj))`, all computed
+//! at once by multiply-highs with precomputed magics (so no chunk waits on the previous
+//! one; for `c = 1` the digits need not even be formed, see `numerator_wide`), and round
+//! `N * 2^32 / B` down with a precomputed reciprocal and one correction step (Granlund &
+//! Montgomery 1994). Base 2 is a single bit reversal.
 //!
 //! Sequential access keeps `phi_b(i) * 2^32` as an integer part and an exact remainder over
 //! `B`. The iterator ([`RadicalInverse::iter_from`]) adds a cached step: when `i + 1` ends in
@@ -54,6 +55,52 @@ const RUN_TABLE: usize = 128;
 /// Largest chunk `b^c` for which [`RadicalInverse::sample`] takes the nested-floor path
 /// (exact up to `2^16`, see `nest`); larger bases build the exact numerator.
 const NESTED_CHUNK_MAX: u32 = 1 << 16;
+
+/// Most chunks the wide numerator handles (every prime base: at most 8 chunks, for 17, 19
+/// and 23; the composite bases 4 to 15 without a reversal table have more and take the
+/// serial numerator).
+const WIDE: usize = 8;
+
+/// [`RadicalInverse::power_magic`] for chunk `q` and `m` chunks.
+const fn power_magics(q: u64, m: u32) -> [u64; 3] {
+    let mut magic = [0u64; 3];
+    let mut p = q * q;
+    let mut j = 2;
+    while j <= 4 && j < m {
+        // q^j <= q^(m-1) < 2^32: no overflow, and the magic is exact for u32 numerators.
+        magic[j as usize - 2] = div_u64(u64::MAX, p) + 1;
+        p *= q;
+        j += 1;
+    }
+    magic
+}
+
+/// [`RadicalInverse::weight`] for chunk `q` and `m` chunks.
+const fn wide_weights(q: u64, m: u32) -> [u32; WIDE] {
+    let mut weight = [0u32; WIDE];
+    if m as usize <= WIDE {
+        let mut w = 1u64;
+        let mut j = m as usize;
+        while j > 0 {
+            j -= 1;
+            weight[j] = w as u32; // q^(m-1-j) <= q^(m-1) < 2^32
+            w *= q;
+        }
+    }
+    weight
+}
+
+/// `floor(m x / 2^64)`.
+#[inline(always)]
+const fn mul_hi(m: u64, x: u32) -> u32 {
+    ((m as u128 * x as u128) >> 64) as u32
+}
+
+/// `rev(lo - q hi) w`: chunk `lo - q hi` of the wide numerator, reversed and weighted.
+#[inline(always)]
+const fn rev_weighted(table: &[u8], q: u32, hi: u32, lo: u32, w: u32) -> u64 {
+    reverse_in(table, lo.wrapping_sub(hi.wrapping_mul(q))) as u64 * w as u64
+}
 
 /// Digit-reversal tables for the small prime bases: entry `r` is the `c`-digit reversal of
 /// `r < b^c`, with `b^c <= 256` so entries fit a byte. They let random access consume `c`
@@ -109,7 +156,7 @@ const fn reversal_for(base: u32) -> (u8, u32) {
 /// A validated base with its precomputed constants: the radical inverse `phi_b` as a cheap,
 /// infallible, `const`-callable function of the index.
 ///
-/// 48 bytes (plus the 707-byte shared digit-reversal tables, linked with any run-time use).
+/// 96 bytes (plus the 707-byte shared digit-reversal tables, linked with any run-time use).
 /// Build it once (a `const`, or a table like [`crate::halton::HALTON_BASES`]).
 ///
 /// ```
@@ -125,7 +172,7 @@ const fn reversal_for(base: u32) -> (u8, u32) {
 pub struct RadicalInverse {
     base: u32,
     /// `K`: digit places of the outputs, `B = b^K >= 2^32`, a multiple of the chunk's digits.
-    digits: u32,
+    digits: u8,
     /// `b^c`: random access peels `c` digits of the index at a time.
     chunk: u32,
     /// [`REVERSAL`] table for the chunk (0: `c = 1`, no table needed).
@@ -134,8 +181,14 @@ pub struct RadicalInverse {
     chunk_shift: u8,
     /// `ceil(2^64 / chunk)`: `n / chunk == mulhi(n, chunk_magic)` for every `u32` `n`.
     chunk_magic: u64,
-    /// Inverse of the odd part of `chunk` modulo 2^64 (exact division by multiplication).
-    chunk_inv: u64,
+    /// `ceil(2^64 / chunk^j)` for `j = 2, 3, 4` while `j` is below the chunk count, else 0:
+    /// the quotients `floor(n / chunk^j)` of a `u32` index by one multiply-high each.
+    power_magic: [u64; 3],
+    /// `min(chunk^3, 2^32) - 1`: indices up to it have at most three chunks.
+    short_max: u32,
+    /// `chunk^(m-1-j)` for the `m = K / c <= WIDE` chunks of the wide numerator (0 past `m`),
+    /// all below 2^32; all zero when `m > WIDE` (the serial numerator serves those bases).
+    weight: [u32; WIDE],
     /// `B = base^K`, the common denominator of all outputs.
     big: u64,
     /// `floor((2^96 - 1) / B)`: reciprocal for rounding `N * 2^32 / B` down.
@@ -172,12 +225,18 @@ impl RadicalInverse {
         let chunk_shift = chunk.trailing_zeros();
         Ok(RadicalInverse {
             base,
-            digits,
+            digits: digits as u8,
             chunk: chunk as u32,
             table,
             chunk_shift: chunk_shift as u8,
             chunk_magic: div_u64(u64::MAX, chunk) + 1,
-            chunk_inv: inverse_mod_2_64(chunk >> chunk_shift),
+            power_magic: power_magics(chunk, digits / c),
+            short_max: if chunk * chunk >= TWO_32 / chunk {
+                u32::MAX
+            } else {
+                (chunk * chunk * chunk - 1) as u32
+            },
+            weight: wide_weights(chunk, digits / c),
             big,
             recip: match (u128::MAX >> 32).checked_div(big as u128) {
                 Some(r) => r as u64,
@@ -198,24 +257,26 @@ impl RadicalInverse {
     /// random access peels at once (5 for base 3, so 25 rather than 21).
     #[inline]
     pub const fn digits(&self) -> u32 {
-        self.digits
+        self.digits as u32
     }
 
     /// `floor(phi_b(index) * 2^32)`, exact. Defined for every `u32` index.
     ///
     /// Indices of up to three chunks of `c` digits (`c = 5, 3, 2, 2, 2` for bases 3, 5, 7,
     /// 11, 13; 1 otherwise), for `b^c <= 2^16`, go by nested floors (see `nest`): three
-    /// multiplications per chunk, one for the last, inline. Longer indices (and bases above
-    /// 2^16) build the exact numerator `N` over `B = b^K` (four multiplications per chunk)
-    /// and scale it once (three). Base 2 is one bit reversal.
+    /// multiplications per chunk, one for the last. Longer indices (and bases above 2^16)
+    /// build the exact numerator `N` over `B = b^K` from all chunk quotients at once (see
+    /// `numerator_wide`: about 16 multiplications, none waiting on another, no branch) and
+    /// scale it once (two more). Base 2 is one bit reversal. All inline, except the
+    /// chunk-by-chunk numerator of the composite bases 4 to 15 (more than 8 chunks).
     #[inline(always)]
     pub const fn sample(&self, index: u32) -> u32 {
         if self.base == 2 {
             return reverse_bits(index);
         }
         let q = self.chunk;
-        if q <= NESTED_CHUNK_MAX {
-            // Up to three chunks by nested floors, unrolled (the common short indices).
+        if q <= NESTED_CHUNK_MAX && index <= self.short_max {
+            // index < q^3: up to three chunks by nested floors, unrolled.
             if index < q {
                 return self.nest(index, 0) as u32;
             }
@@ -224,18 +285,8 @@ impl RadicalInverse {
                 return self.nest(r0, self.nest(n1, 0)) as u32;
             }
             let (n2, r1) = self.peel(n1);
-            if n2 < q {
-                return self.nest(r0, self.nest(r1, self.nest(n2, 0))) as u32;
-            }
+            return self.nest(r0, self.nest(r1, self.nest(n2, 0))) as u32;
         }
-        self.sample_long(index)
-    }
-
-    /// [`sample`](Self::sample) for indices of four or more chunks, and for all indices
-    /// when `b^c > 2^16`: the exact numerator, then one scaling. Out of line, to keep the
-    /// short path small enough to inline.
-    #[inline(never)]
-    const fn sample_long(&self, index: u32) -> u32 {
         self.scale(self.numerator(index)).0
     }
 
@@ -333,7 +384,7 @@ impl RadicalInverse {
         let (mut prefix, mut place) = (0u64, 1u64); // index mod b^(j-1), and b^(j-1)
         let mut acc = 0u64;
         let mut j = 1;
-        while j <= self.digits {
+        while j <= self.digits as u32 {
             let d = rem_u64(n, b) as u32;
             n = div_u64(n, b);
             let s = scramble.digit(self.base, dim, j, prefix, d);
@@ -352,9 +403,76 @@ impl RadicalInverse {
     }
 
     /// `N` with `phi_b(index) = N / B`: the digits of `index` reversed into `K` places.
-    #[inline]
+    #[inline(always)]
     const fn numerator(&self, index: u32) -> u64 {
-        let (mut n, mut weight, mut acc) = (index, self.div_chunk(self.big), 0u64); // b^(K-c)
+        if self.weight[0] != 0 {
+            self.numerator_wide(index)
+        } else {
+            self.numerator_serial(index)
+        }
+    }
+
+    /// [`numerator`](Self::numerator) with all chunk quotients at once, for `m <= WIDE`
+    /// chunks of `c` digits (`q = b^c`, `W_j = q^(m-1-j)`).
+    ///
+    /// The quotients `Q_j = floor(n / q^j)` do not wait on each other: `Q_1 .. Q_4` are one
+    /// multiply-high of `n` each, `Q_5 .. Q_7` one of `Q_4` (`floor(floor(n/a)/b) =
+    /// floor(n/(ab))`); each magic `ceil(2^64/d)` is exact for numerators below 2^32 and
+    /// `d < 2^32`, and is 0 where `q^j >= 2^32` (then `Q_j = 0` indeed). Chunk `j` is
+    /// `Q_j - q Q_(j+1)`, so
+    ///
+    /// ```text
+    /// N = sum_(j<6) rev(Q_j - q Q_(j+1)) W_j                   (reversal table, c > 1)
+    /// N = W_0 n - (b^2 - 1) sum_(j>=1) W_j Q_j  (mod 2^64)    (c = 1, rev = identity)
+    /// ```
+    ///
+    /// the second because `b W_j = W_(j-1)`, so in `sum_j (Q_j - b Q_(j+1)) W_j` the
+    /// coefficient of `Q_j` (`j >= 1`) is `W_j - W_(j-2) = (1 - b^2) W_j` (`W_(-1) = b^m`).
+    /// Wrapping arithmetic is exact as `N < 2^64`. Cost: 7 multiply-highs
+    /// and 8 (c = 1) or 12 (tabled) multiplications, no loop and one branch (table or
+    /// not), so the work of one index overlaps the next one's.
+    #[inline(always)]
+    const fn numerator_wide(&self, n: u32) -> u64 {
+        let [m2, m3, m4] = self.power_magic;
+        let q1 = mul_hi(self.chunk_magic, n);
+        let q2 = mul_hi(m2, n);
+        let q3 = mul_hi(m3, n);
+        let q4 = mul_hi(m4, n);
+        let q5 = mul_hi(self.chunk_magic, q4);
+        let q6 = mul_hi(m2, q4);
+        let q7 = mul_hi(m3, q4);
+        let w = &self.weight;
+        if self.table == 0 {
+            let s = (w[1] as u64 * q1 as u64)
+                .wrapping_add(w[2] as u64 * q2 as u64)
+                .wrapping_add(w[3] as u64 * q3 as u64)
+                .wrapping_add(w[4] as u64 * q4 as u64)
+                .wrapping_add(w[5] as u64 * q5 as u64)
+                .wrapping_add(w[6] as u64 * q6 as u64)
+                .wrapping_add(w[7] as u64 * q7 as u64);
+            let b = self.base as u64;
+            return (w[0] as u64 * n as u64).wrapping_sub((b * b - 1).wrapping_mul(s));
+        }
+        // The tabled bases have at most 6 chunks (49^6 >= 2^32 for base 7; 5 for the
+        // others): chunks 6 and 7 are zero.
+        let (t, q) = (self.reversal_table(), self.chunk);
+        rev_weighted(t, q, q1, n, w[0])
+            + rev_weighted(t, q, q2, q1, w[1])
+            + rev_weighted(t, q, q3, q2, w[2])
+            + rev_weighted(t, q, q4, q3, w[3])
+            + rev_weighted(t, q, q5, q4, w[4])
+            + rev_weighted(t, q, q6, q5, w[5])
+    }
+
+    /// [`numerator`](Self::numerator) chunk by chunk, for the bases with more than `WIDE`
+    /// chunks (composites 4 to 15): each chunk weighted by `b^(K-c)`, `b^(K-2c)`, ..., the
+    /// weight stepped down by the inverse of `b^c` modulo 2^64 (an exact division).
+    #[inline(never)]
+    const fn numerator_serial(&self, index: u32) -> u64 {
+        let inv = inverse_mod_2_64((self.chunk >> self.chunk_shift) as u64);
+        let shift = self.chunk_shift;
+        let (mut n, mut acc) = (index, 0u64);
+        let mut weight = (self.big >> shift).wrapping_mul(inv); // b^(K-c)
         let table = self.reversal_table(); // looked up once, not per chunk
         loop {
             let (q, r) = self.peel(n);
@@ -363,16 +481,9 @@ impl RadicalInverse {
             if q == 0 {
                 return acc;
             }
-            weight = self.div_chunk(weight);
+            weight = (weight >> shift).wrapping_mul(inv); // exact: weight / b^c
             n = q;
         }
-    }
-
-    /// `w / chunk` for `w` a multiple of `chunk` (exact division by the modular inverse).
-    /// Wraps harmlessly when `w` is not a multiple (the last weight of a loop is unused).
-    #[inline]
-    const fn div_chunk(&self, w: u64) -> u64 {
-        (w >> self.chunk_shift).wrapping_mul(self.chunk_inv)
     }
 
     /// `(q, r)` with `n * 2^32 = q * B + r`, `0 <= r < B`, for `n < B` (so `q < 2^32`).
@@ -427,7 +538,7 @@ impl RadicalInverse {
         if self.base != 2 {
             let mut t = 0;
             while t < STEPS {
-                if (t as u32) < self.digits {
+                if (t as u32) < self.digits as u32 {
                     steps[t] = self.step(t as u32);
                 }
                 t += 1;
@@ -806,6 +917,52 @@ mod tests {
                 assert_eq!(ri.sample(x), oracle(base, x), "base {base} index {x}");
             }
         }
+    }
+
+    /// The wide numerator for every Halton base (chunk counts 2 to 8, magics present or
+    /// zero) and the serial one for the composites with more than 8 chunks: the indices
+    /// around every power `b^j` (where a chunk quotient changes), the largest indices and
+    /// random ones, against the oracle.
+    #[test]
+    fn long_indices_against_oracle_for_every_halton_base() {
+        let halton = crate::halton::HALTON_BASES.iter().map(|ri| ri.base());
+        let mut x = 0x2545_F491u32;
+        for base in halton.chain([4, 6, 8, 9, 10, 12, 14, 15, 16]) {
+            let ri = RadicalInverse::new(base).unwrap();
+            let mut edges = vec![u32::MAX, u32::MAX - 1, 1 << 31];
+            let mut p = base as u64;
+            while p <= u32::MAX as u64 {
+                edges.extend([p - 1, p, p + 1].map(|v| v.min(u32::MAX as u64) as u32));
+                p *= base as u64;
+            }
+            for i in edges {
+                assert_eq!(ri.sample(i), oracle(base, i), "base {base} index {i}");
+            }
+            for _ in 0..300 {
+                x ^= x << 13;
+                x ^= x >> 17;
+                x ^= x << 5;
+                assert_eq!(ri.sample(x), oracle(base, x), "base {base} index {x}");
+            }
+        }
+    }
+
+    /// The wide numerator's tabled form sums six chunks: no tabled base has more.
+    #[test]
+    fn tabled_bases_have_at_most_six_chunks() {
+        for base in [3, 5, 7, 11, 13] {
+            let ri = RadicalInverse::new(base).unwrap();
+            assert!(
+                ri.table != 0 && ri.weight[0] != 0 && ri.weight[6] == 0,
+                "base {base}"
+            );
+        }
+    }
+
+    /// The size the documentation states (it sets the Halton table's flash cost).
+    #[test]
+    fn size_is_96_bytes() {
+        assert_eq!(core::mem::size_of::<RadicalInverse>(), 96);
     }
 
     /// Every index through the end of the three-chunk (nested-floor) range and into the
