@@ -231,10 +231,13 @@ impl RadicalInverse {
             chunk_shift: chunk_shift as u8,
             chunk_magic: div_u64(u64::MAX, chunk) + 1,
             power_magic: power_magics(chunk, digits / c),
-            short_max: if chunk * chunk >= TWO_32 / chunk {
-                u32::MAX
-            } else {
-                (chunk * chunk * chunk - 1) as u32
+            short_max: {
+                let cube = chunk as u128 * chunk as u128 * chunk as u128; // no overflow
+                if cube >= TWO_32 as u128 {
+                    u32::MAX
+                } else {
+                    (cube - 1) as u32
+                }
             },
             weight: wide_weights(chunk, digits / c),
             big,
