@@ -59,9 +59,11 @@ const NESTED_CHUNK_MAX: u32 = 1 << 16;
 /// Most chunks the wide numerator handles (every prime base: at most 8 chunks, for 17, 19
 /// and 23; the composite bases 4 to 15 without a reversal table have more and take the
 /// serial numerator).
+#[cfg(target_pointer_width = "64")]
 const WIDE: usize = 8;
 
 /// [`RadicalInverse::power_magic`] for chunk `q` and `m` chunks.
+#[cfg(target_pointer_width = "64")]
 const fn power_magics(q: u64, m: u32) -> [u64; 3] {
     let mut magic = [0u64; 3];
     let mut p = q * q;
@@ -76,6 +78,7 @@ const fn power_magics(q: u64, m: u32) -> [u64; 3] {
 }
 
 /// [`RadicalInverse::weight`] for chunk `q` and `m` chunks.
+#[cfg(target_pointer_width = "64")]
 const fn wide_weights(q: u64, m: u32) -> [u32; WIDE] {
     let mut weight = [0u32; WIDE];
     if m as usize <= WIDE {
@@ -91,12 +94,14 @@ const fn wide_weights(q: u64, m: u32) -> [u32; WIDE] {
 }
 
 /// `floor(m x / 2^64)`.
+#[cfg(target_pointer_width = "64")]
 #[inline(always)]
 const fn mul_hi(m: u64, x: u32) -> u32 {
     ((m as u128 * x as u128) >> 64) as u32
 }
 
 /// `rev(lo - q hi) w`: chunk `lo - q hi` of the wide numerator, reversed and weighted.
+#[cfg(target_pointer_width = "64")]
 #[inline(always)]
 const fn rev_weighted(table: &[u8], q: u32, hi: u32, lo: u32, w: u32) -> u64 {
     reverse_in(table, lo.wrapping_sub(hi.wrapping_mul(q))) as u64 * w as u64
@@ -156,7 +161,8 @@ const fn reversal_for(base: u32) -> (u8, u32) {
 /// A validated base with its precomputed constants: the radical inverse `phi_b` as a cheap,
 /// infallible, `const`-callable function of the index.
 ///
-/// 96 bytes (plus the 707-byte shared digit-reversal tables, linked with any run-time use).
+/// 96 bytes on 64-bit targets, 48 on 32-bit ones (plus the 707-byte shared digit-reversal
+/// tables, linked with any run-time use).
 /// Build it once (a `const`, or a table like [`crate::halton::HALTON_BASES`]).
 ///
 /// ```
@@ -183,17 +189,29 @@ pub struct RadicalInverse {
     chunk_magic: u64,
     /// `ceil(2^64 / chunk^j)` for `j = 2, 3, 4` while `j` is below the chunk count, else 0:
     /// the quotients `floor(n / chunk^j)` of a `u32` index by one multiply-high each.
+    #[cfg(target_pointer_width = "64")]
     power_magic: [u64; 3],
+    /// Inverse of the odd part of `chunk` modulo 2^64 (exact division by multiplication).
+    #[cfg(not(target_pointer_width = "64"))]
+    chunk_inv: u64,
     /// `min(chunk^3, 2^32) - 1`: indices up to it have at most three chunks.
     short_max: u32,
     /// `chunk^(m-1-j)` for the `m = K / c <= WIDE` chunks of the wide numerator (0 past `m`),
     /// all below 2^32; all zero when `m > WIDE` (the serial numerator serves those bases).
+    #[cfg(target_pointer_width = "64")]
     weight: [u32; WIDE],
     /// `B = base^K`, the common denominator of all outputs.
     big: u64,
     /// `floor((2^96 - 1) / B)`: reciprocal for rounding `N * 2^32 / B` down.
     recip: u64,
 }
+
+// The sizes the documentation states (they set the Halton table's flash cost), checked
+// at compile time on every target.
+#[cfg(target_pointer_width = "64")]
+const _: () = assert!(core::mem::size_of::<RadicalInverse>() == 96);
+#[cfg(not(target_pointer_width = "64"))]
+const _: () = assert!(core::mem::size_of::<RadicalInverse>() == 48);
 
 impl RadicalInverse {
     /// Validates `base >= 2` and precomputes its constants (a few `u128` divisions: do it
@@ -230,7 +248,10 @@ impl RadicalInverse {
             table,
             chunk_shift: chunk_shift as u8,
             chunk_magic: div_u64(u64::MAX, chunk) + 1,
+            #[cfg(target_pointer_width = "64")]
             power_magic: power_magics(chunk, digits / c),
+            #[cfg(not(target_pointer_width = "64"))]
+            chunk_inv: inverse_mod_2_64(chunk >> chunk_shift),
             short_max: {
                 let cube = chunk as u128 * chunk as u128 * chunk as u128; // no overflow
                 if cube >= TWO_32 as u128 {
@@ -239,6 +260,7 @@ impl RadicalInverse {
                     (cube - 1) as u32
                 }
             },
+            #[cfg(target_pointer_width = "64")]
             weight: wide_weights(chunk, digits / c),
             big,
             recip: match (u128::MAX >> 32).checked_div(big as u128) {
@@ -290,6 +312,16 @@ impl RadicalInverse {
             let (n2, r1) = self.peel(n1);
             return self.nest(r0, self.nest(r1, self.nest(n2, 0))) as u32;
         }
+        self.sample_long(index)
+    }
+
+    /// [`sample`](Self::sample) for indices of four or more chunks, and for all indices
+    /// when `b^c > 2^16`: the exact numerator, then one scaling. Inline on 64-bit targets
+    /// (the branch-free wide numerator overlaps neighbouring calls' work); out of line on
+    /// 32-bit ones, where flash is dear and the serial numerator serves.
+    #[cfg_attr(target_pointer_width = "64", inline(always))]
+    #[cfg_attr(not(target_pointer_width = "64"), inline(never))]
+    const fn sample_long(&self, index: u32) -> u32 {
         self.scale(self.numerator(index)).0
     }
 
@@ -406,13 +438,16 @@ impl RadicalInverse {
     }
 
     /// `N` with `phi_b(index) = N / B`: the digits of `index` reversed into `K` places.
+    /// 64-bit targets build it from all chunk quotients at once (for at most `WIDE` chunks,
+    /// every prime base); 32-bit targets (microcontrollers without a 64-bit multiplier,
+    /// where that code would cost a kilobyte of flash) chunk by chunk. Same value.
     #[inline(always)]
     const fn numerator(&self, index: u32) -> u64 {
+        #[cfg(target_pointer_width = "64")]
         if self.weight[0] != 0 {
-            self.numerator_wide(index)
-        } else {
-            self.numerator_serial(index)
+            return self.numerator_wide(index);
         }
+        self.numerator_serial(index)
     }
 
     /// [`numerator`](Self::numerator) with all chunk quotients at once, for `m <= WIDE`
@@ -434,6 +469,7 @@ impl RadicalInverse {
     /// Wrapping arithmetic is exact as `N < 2^64`. Cost: 7 multiply-highs
     /// and 8 (c = 1) or 12 (tabled) multiplications, no loop and one branch (table or
     /// not), so the work of one index overlaps the next one's.
+    #[cfg(target_pointer_width = "64")]
     #[inline(always)]
     const fn numerator_wide(&self, n: u32) -> u64 {
         let [m2, m3, m4] = self.power_magic;
@@ -467,12 +503,16 @@ impl RadicalInverse {
             + rev_weighted(t, q, q6, q5, w[5])
     }
 
-    /// [`numerator`](Self::numerator) chunk by chunk, for the bases with more than `WIDE`
-    /// chunks (composites 4 to 15): each chunk weighted by `b^(K-c)`, `b^(K-2c)`, ..., the
-    /// weight stepped down by the inverse of `b^c` modulo 2^64 (an exact division).
+    /// [`numerator`](Self::numerator) chunk by chunk (on 64-bit targets only for the bases
+    /// with more than `WIDE` chunks, the composites 4 to 15): each chunk weighted by
+    /// `b^(K-c)`, `b^(K-2c)`, ..., the weight stepped down by the inverse of `b^c` modulo
+    /// 2^64 (an exact division). Four multiplications a chunk, each waiting on the last.
     #[inline(never)]
     const fn numerator_serial(&self, index: u32) -> u64 {
+        #[cfg(target_pointer_width = "64")]
         let inv = inverse_mod_2_64((self.chunk >> self.chunk_shift) as u64);
+        #[cfg(not(target_pointer_width = "64"))]
+        let inv = self.chunk_inv;
         let shift = self.chunk_shift;
         let (mut n, mut acc) = (index, 0u64);
         let mut weight = (self.big >> shift).wrapping_mul(inv); // b^(K-c)
@@ -951,6 +991,7 @@ mod tests {
     }
 
     /// The wide numerator's tabled form sums six chunks: no tabled base has more.
+    #[cfg(target_pointer_width = "64")]
     #[test]
     fn tabled_bases_have_at_most_six_chunks() {
         for base in [3, 5, 7, 11, 13] {
@@ -960,12 +1001,6 @@ mod tests {
                 "base {base}"
             );
         }
-    }
-
-    /// The size the documentation states (it sets the Halton table's flash cost).
-    #[test]
-    fn size_is_96_bytes() {
-        assert_eq!(core::mem::size_of::<RadicalInverse>(), 96);
     }
 
     /// Every index through the end of the three-chunk (nested-floor) range and into the
