@@ -292,8 +292,9 @@ impl RadicalInverse {
     /// multiplications per chunk, one for the last. Longer indices (and bases above 2^16)
     /// build the exact numerator `N` over `B = b^K` from all chunk quotients at once (see
     /// `numerator_wide`: about 16 multiplications, none waiting on another, no branch) and
-    /// scale it once (two more). Base 2 is one bit reversal. All inline, except the
-    /// chunk-by-chunk numerator of the composite bases 4 to 15 (more than 8 chunks).
+    /// scale it once (two more); that is on 64-bit targets, inline, except for the composite
+    /// bases 4 to 15 (more than 8 chunks). 32-bit targets build `N` chunk by chunk (four
+    /// multiplications per chunk), out of line, for flash. Base 2 is one bit reversal.
     #[inline(always)]
     pub const fn sample(&self, index: u32) -> u32 {
         if self.base == 2 {
