@@ -22,7 +22,9 @@
 //! 256-entry-at-most table (`c = 5, 3, 2, 2, 2` for bases 3, 5, 7, 11, 13; `c = 1`, no table,
 //! otherwise). Short indices (up to three chunks, `b^c <= 2^16`) then fold the chunks from
 //! the top by nested floors, `F <- floor((rev(C) 2^32 + F) / b^c)`, one exact multiply-high
-//! each, which lands on `floor(phi_b(i) 2^32)` with no rounding step. Longer indices build
+//! each, which lands on `floor(phi_b(i) 2^32)` with no rounding step (on 64-bit targets, two
+//! chunks for `b^c <= 256` and three for `b^c <= 40` take a single exact multiply-high by
+//! `ceil(2^64 / b^(2c))` or `ceil(2^64 / b^(3c))` instead). Longer indices build
 //! `N = sum_j rev(C_j) b^(K-c(j+1))` from the quotients `floor(i / b^(cj))`, all computed
 //! at once by multiply-highs with precomputed magics (so no chunk waits on the previous
 //! one; for `c = 1` the digits need not even be formed, see `numerator_wide`), and round
@@ -97,6 +99,13 @@ const fn wide_weights(q: u64, m: u32) -> [u32; WIDE] {
 #[cfg(target_pointer_width = "64")]
 #[inline(always)]
 const fn mul_hi(m: u64, x: u32) -> u32 {
+    ((m as u128 * x as u128) >> 64) as u32
+}
+
+/// `floor(m x / 2^64)` as a `u32` (the caller knows it fits).
+#[cfg(target_pointer_width = "64")]
+#[inline(always)]
+const fn mul_hi_64(m: u64, x: u64) -> u32 {
     ((m as u128 * x as u128) >> 64) as u32
 }
 
@@ -308,12 +317,44 @@ impl RadicalInverse {
             }
             let (n1, r0) = self.peel(index);
             if n1 < q {
-                return self.nest(r0, self.nest(n1, 0)) as u32;
+                return self.two_chunks(r0, n1);
             }
             let (n2, r1) = self.peel(n1);
-            return self.nest(r0, self.nest(r1, self.nest(n2, 0))) as u32;
+            return self.three_chunks(r0, r1, n2);
         }
         self.sample_long(index)
+    }
+
+    /// `floor(phi_b(i) 2^32)` for an index of two chunks `r0 + q r1` (`q = b^c <= 2^16`).
+    ///
+    /// On 64-bit targets with `q <= 256`, in one division: `phi_b(i) = X / q^2` with
+    /// `X = rev(r0) q + rev(r1) < q^2`, and the multiply-high of `X 2^32` by
+    /// `ceil(2^64 / q^2) = (2^64 + e) / q^2` (`e < q^2`) errs by less than `q^2 / 2^32 <=
+    /// 1 / q^2`, the smallest gap from `X 2^32 / q^2` up to an integer, so the floor is
+    /// exact. Otherwise two nested floors.
+    #[inline(always)]
+    const fn two_chunks(&self, r0: u32, r1: u32) -> u32 {
+        #[cfg(target_pointer_width = "64")]
+        if self.chunk <= 256 {
+            let x = self.reverse_chunk(r0) * self.chunk + self.reverse_chunk(r1);
+            return mul_hi_64(self.power_magic[0], (x as u64) << 32);
+        }
+        self.nest(r0, self.nest(r1, 0)) as u32
+    }
+
+    /// `floor(phi_b(i) 2^32)` for an index of three chunks `r0 + q r1 + q^2 r2`
+    /// (`q = b^c <= 2^16`): as [`two_chunks`](Self::two_chunks) with `X < q^3` over `q^3`,
+    /// exact for `q^6 <= 2^32`, i.e. `q <= 40` (on 64-bit targets); otherwise nested floors.
+    #[inline(always)]
+    const fn three_chunks(&self, r0: u32, r1: u32, r2: u32) -> u32 {
+        #[cfg(target_pointer_width = "64")]
+        if self.chunk <= 40 {
+            let q = self.chunk;
+            let x =
+                (self.reverse_chunk(r0) * q + self.reverse_chunk(r1)) * q + self.reverse_chunk(r2);
+            return mul_hi_64(self.power_magic[1], (x as u64) << 32);
+        }
+        self.nest(r0, self.nest(r1, self.nest(r2, 0))) as u32
     }
 
     /// [`sample`](Self::sample) for indices of four or more chunks, and for all indices
@@ -1008,7 +1049,9 @@ mod tests {
     /// long path, for bases with chunks from 3 to 2^16.
     #[test]
     fn short_indices_exhaustive_against_oracle() {
-        for base in [3, 5, 7, 11, 13, 17, 31, 131, 255, 256, 257, 4093, 65_521] {
+        for base in [
+            3, 5, 7, 11, 13, 17, 31, 37, 40, 41, 131, 251, 255, 256, 257, 4093, 65_521,
+        ] {
             let ri = RadicalInverse::new(base).unwrap();
             let q = ri.chunk as u64;
             let end = (q * q * q + 5000).min(1 << 21) as u32;
