@@ -23,7 +23,7 @@
 //! blocks are summed in plain arithmetic before the compensated addition (otherwise the
 //! summation would cost as much as the kernel); in higher dimensions the loop over the
 //! coordinates multiplies the factors of even and odd coordinates in two chains. In eight
-//! dimensions the centered, wrap-around and mixture discrepancies instead run a loop
+//! dimensions the centered, wrap-around, mixture and unanchored discrepancies instead run a loop
 //! compiled for 8D in register tiles: four points `i` against each block of 8 points `j`,
 //! so each loaded block serves four rows, and the four products per lane are summed
 //! before the compensated addition. For 4096 points on one thread
@@ -580,10 +580,13 @@ where
 enum Loop {
     /// One row against all blocks ([`add_row`]), the dimension a run-time value.
     Rows,
-    /// Tiles of [`TILE`] rows compiled for [`TILED_D`] ([`add_row_block`]): for 4096
-    /// points in 8D it measured 1.2-1.4x faster for the wrap-around, centered and mixture
-    /// discrepancies, but 2-3x slower for L2-star, whose `min` kernel the compiler then
-    /// fails to vectorize well.
+    /// Tiles of [`TILE`] rows compiled for [`TILED_D`] ([`add_row_block`]). For 4096
+    /// points in 8D, timed against [`Loop::Rows`] in alternation (`examples/time_l2.rs`):
+    /// the centered discrepancy 1.2-1.6x faster, wrap-around 1.3-1.5x, mixture 1.2-1.5x,
+    /// unanchored 1.4-2x, diaphony about the same; but L2-star 2-3x slower, symmetric
+    /// 1.6-2.4x and generalized L2 about 3x slower: for these the compiler vectorizes the
+    /// tile badly (partly 128-bit and scalar code, spilled accumulators), so they keep
+    /// the row loop.
     Tiles,
 }
 
@@ -947,7 +950,7 @@ fn unanchored_with(p: Points<'_>, build: Build) -> f64 {
         |x| [x, 1.0 - x],
         |a, b| min(a[0], b[0]) * min(a[1], b[1]),
         build,
-        Loop::Rows,
+        Loop::Tiles,
     );
     let c = Dd::ratio(1.0, 12.0).powi(d);
     root(combine(c, pow2(1 - d as i32), 1.0, &sums, p.len()))
