@@ -23,16 +23,17 @@
 //! blocks are summed in plain arithmetic before the compensated addition (otherwise the
 //! summation would cost as much as the kernel); in higher dimensions the loop over the
 //! coordinates multiplies the factors of even and odd coordinates in two chains. In eight
-//! dimensions the centered, wrap-around, mixture and unanchored discrepancies instead run a loop
-//! compiled for 8D in register tiles: four points `i` against each block of 8 points `j`,
-//! so each loaded block serves four rows, and the four products per lane are summed
-//! before the compensated addition. For 4096 points on one thread
+//! dimensions the centered, wrap-around, mixture and unanchored discrepancies instead run
+//! a loop compiled for 8D in register tiles: four points `i` against each block of 8
+//! points `j`, so each loaded block serves four rows, and the four products per lane are
+//! summed before the compensated addition. For 4096 points on one thread
 //! (`scripts/time_discrepancy.py`, README for the table) this measured, against SciPy's
 //! `discrepancy(workers=1)`, on a shared, loaded machine (four runs): in 2D L2-star
 //! 35-69x (by the fast path), CD 19-36x, WD 11-23x, MD 15-31x; in 8D L2-star 8-17x, CD
-//! 14-17x, MD 13-16x but WD only 7-9x (SciPy's cheapest loop) before the 8D tiles; with
-//! them (2026-11-30, one run alternating with the previous build): 8D CD 17.2x (was
-//! 11.4x), WD 10.0x (was 6.2x), MD 20.9x (was 10.7x), the WD loop 1.47x faster.
+//! 14-17x, MD 13-16x but WD only 7-9x (SciPy's cheapest loop) before the 8D tiles. With
+//! them (2026-11-30, four runs, loaded machine): 8D CD 17.2-20.8x, WD 8.6-10.9x, MD
+//! 14.0-20.9x (the previous build, timed in the same session: 11.4-13.5x, 6.2-8.7x,
+//! 10.7-14.4x); the wrap-around loop itself went from 19-22 ms to 12.5-13.1 ms.
 //!
 //! | function | name | returns | convention of |
 //! |---|---|---|---|
@@ -445,9 +446,9 @@ const TILE: usize = 4;
 /// `prod_k k1(a_rk, b_k)` for the [`TILE`] points `a_r` against the `LANES` points of block
 /// `b`, the dimension `D` fixed at compile time: `TILE * LANES` independent products (so
 /// one chain of multiplications per row and register is enough), each block coordinate
-/// loaded once for the `TILE` rows. Each product is the same left-to-right product as
-/// [`block_products`] computes in two chains, so the values differ from it only in the
-/// rounding of the products.
+/// loaded once for the `TILE` rows. The factors are those of [`block_products`]; only the
+/// order of the multiplications differs (one left-to-right chain instead of two), hence
+/// the rounding of the products. Cost `TILE * LANES * D` kernel evaluations.
 #[inline(always)]
 fn tile_products<const F: usize, const D: usize, K>(
     a: [&[[f64; F]]; TILE],
@@ -491,6 +492,7 @@ fn add_row_block<const F: usize, const D: usize, K>(
     let d = s.d;
     let full_end = s.n / LANES;
     let rows = rb * LANES..((rb + 1) * LANES).min(s.n);
+    // Two masked blocks per row: the generic loop (`D = 0`) is enough there.
     for i in rows.clone() {
         let a = &s.rows[i * d..(i + 1) * d];
         acc.add(masked_products::<F, 0, K>(s, a, rb, i, k1));
