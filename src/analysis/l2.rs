@@ -22,12 +22,18 @@
 //! and two dimensions the loop is compiled for the dimension and the products of four
 //! blocks are summed in plain arithmetic before the compensated addition (otherwise the
 //! summation would cost as much as the kernel); in higher dimensions the loop over the
-//! coordinates multiplies the factors of even and odd coordinates in two chains. For
-//! 4096 points on one thread (`scripts/time_discrepancy.py`, README for the table) this
-//! measured, against SciPy's `discrepancy(workers=1)`, on a shared, loaded machine (four
-//! runs): in 2D L2-star 35-69x (by the fast path), CD 19-36x, WD 11-23x, MD 15-31x; in 8D
-//! L2-star 8-17x, CD 14-17x, MD 13-16x but WD only 7-9x (SciPy's cheapest loop; the
-//! previous loop measured 4-9x for WD and 10-22x for CD and MD in 2D in the same runs).
+//! coordinates multiplies the factors of even and odd coordinates in two chains. In eight
+//! dimensions the centered, wrap-around, mixture and unanchored discrepancies instead run
+//! a loop compiled for 8D in register tiles: four points `i` against each block of 8
+//! points `j`, so each loaded block serves four rows, and the four products per lane are
+//! summed before the compensated addition. For 4096 points on one thread
+//! (`scripts/time_discrepancy.py`, README for the table) this measured, against SciPy's
+//! `discrepancy(workers=1)`, on a shared, loaded machine (four runs): in 2D L2-star
+//! 35-69x (by the fast path), CD 19-36x, WD 11-23x, MD 15-31x; in 8D L2-star 8-17x, CD
+//! 14-17x, MD 13-16x but WD only 7-9x (SciPy's cheapest loop) before the 8D tiles. With
+//! them (2026-11-30, four runs, loaded machine): 8D CD 17.2-20.8x, WD 8.6-10.9x, MD
+//! 14.0-20.9x (the previous build, timed in the same session: 11.4-13.5x, 6.2-8.7x,
+//! 10.7-14.4x); the wrap-around loop itself went from 19-22 ms to 12.5-13.1 ms.
 //!
 //! | function | name | returns | convention of |
 //! |---|---|---|---|
@@ -45,14 +51,14 @@
 //! For good point sets the three terms above nearly cancel (for 1000 Sobol' points in 8
 //! dimensions the wrap-around terms are about 10 and the result about 1e-3), so a plain sum
 //! loses digits. Here every pair term is added to per-lane TwoSum accumulators (in one and
-//! two dimensions after plain sums of four terms), the lanes
+//! two dimensions, and in the 8D tiles, after plain sums of four terms), the lanes
 //! and then the rows are summed with Neumaier compensation in a fixed order (so the result
 //! does not depend on the number of threads), and
 //! the three terms are combined in double-double arithmetic, with the constants `(13/12)^d`,
 //! ... raised to the power `d` in double-double too. The result is accurate to a few units
 //! in the last place of the exact value of the formula evaluated on the given `f64`
-//! coordinates (up to the rounding of each pair product and, in one and two dimensions,
-//! of the sums of four products), which is usually more accurate
+//! coordinates (up to the rounding of each pair product and, in one and two dimensions
+//! and the 8D tiles, of the sums of four products), which is usually more accurate
 //! than SciPy's plain double sums. A squared value that rounds below zero is clamped to
 //! zero before a square root is taken (never a NaN).
 
@@ -289,7 +295,9 @@ impl Lanes {
 /// factors, after which the TwoSum accumulation loses nothing more. In three and more
 /// dimensions every block goes to the TwoSum directly (the kernel dominates there, and for
 /// 1000 Sobol' points in 3D the grouped sums cost the mixture discrepancy its 1e-12
-/// relative accuracy).
+/// relative accuracy: a product of three factors carries only two roundings of its
+/// multiplications, so the `2u` of the tree is of the same size), except in the 8D tiles
+/// ([`add_row_block`]), where a product carries seven.
 const GROUP: usize = 4;
 
 /// `prod_k k1(a_k, b_k)` for one point `a` against the `LANES` points of a block `b`:
@@ -428,13 +436,104 @@ where
     prod
 }
 
-/// Rows `i` and `n - 1 - i` (about `n` pairs together), summed in a fixed order.
+/// The dimension whose pair sum runs in register tiles ([`add_row_block`]): the loop is
+/// compiled for it, and every loaded block of `j` points serves [`TILE`] rows `i`.
+const TILED_D: usize = 8;
+
+/// Rows `i` per register tile in dimension [`TILED_D`].
+const TILE: usize = 4;
+
+/// `prod_k k1(a_rk, b_k)` for the [`TILE`] points `a_r` against the `LANES` points of block
+/// `b`, the dimension `D` fixed at compile time: `TILE * LANES` independent products (so
+/// one chain of multiplications per row and register is enough), each block coordinate
+/// loaded once for the `TILE` rows. The factors are those of [`block_products`]; only the
+/// order of the multiplications differs (one left-to-right chain instead of two), hence
+/// the rounding of the products. Cost `TILE * LANES * D` kernel evaluations.
+#[inline(always)]
+fn tile_products<const F: usize, const D: usize, K>(
+    a: [&[[f64; F]]; TILE],
+    b: &[[[f64; LANES]; F]],
+    k1: &K,
+) -> [[f64; LANES]; TILE]
+where
+    K: Fn([f64; F], [f64; F]) -> f64,
+{
+    let b = &b[..D];
+    let mut p = [[1.0; LANES]; TILE];
+    for (k, bk) in b.iter().enumerate() {
+        for (pr, ar) in p.iter_mut().zip(&a) {
+            for (x, f) in pr.iter_mut().zip(factors(ar[k], bk, k1)) {
+                *x *= f;
+            }
+        }
+    }
+    p
+}
+
+/// Adds `prod_k k1(x_ik, x_jk)` for all `j > i` of the `LANES` rows `i` of row block `rb`
+/// (points `rb * LANES ..`) to `acc`: the diagonal block and the last, partial block row by
+/// row with masks ([`masked_products`]), the full blocks between them in tiles of [`TILE`]
+/// rows whose four products per lane are added as the tree `(p0 + p1) + (p2 + p3)` before
+/// one TwoSum. The tree errs by at most `2u` times the sum of the (non-negative, or in
+/// absolute value) products, `u = 2^-53`, to first order: each product already carries
+/// `D - 1 = 7` roundings of its multiplications plus those of its factors, so the bound
+/// on the rounding error per pair grows by at most `2/7`, and the TwoSum accumulation adds
+/// nothing of that order (see [`GROUP`] for why lower dimensions keep one TwoSum per
+/// product).
+#[inline(always)]
+fn add_row_block<const F: usize, const D: usize, K>(
+    s: &Blocked<F>,
+    rb: usize,
+    k1: &K,
+    acc: &mut Lanes,
+) where
+    K: Fn([f64; F], [f64; F]) -> f64,
+{
+    let d = s.d;
+    let full_end = s.n / LANES;
+    let rows = rb * LANES..((rb + 1) * LANES).min(s.n);
+    // Two masked blocks per row: the generic loop (`D = 0`) is enough there.
+    for i in rows.clone() {
+        let a = &s.rows[i * d..(i + 1) * d];
+        acc.add(masked_products::<F, 0, K>(s, a, rb, i, k1));
+    }
+    if rb + 1 < full_end {
+        // A full row block (`rb < full_end`): `LANES` rows, `LANES / TILE` tiles.
+        let mid = &s.blocks[(rb + 1) * d..full_end * d];
+        for i0 in rows.clone().step_by(TILE) {
+            let a: [&[[f64; F]]; TILE] =
+                core::array::from_fn(|r| &s.rows[(i0 + r) * d..(i0 + r + 1) * d]);
+            for blk in mid.chunks_exact(d) {
+                let [p0, p1, p2, p3] = tile_products::<F, D, K>(a, blk, k1);
+                acc.add(core::array::from_fn(|l| (p0[l] + p1[l]) + (p2[l] + p3[l])));
+            }
+        }
+    }
+    if full_end > rb && full_end * LANES < s.n {
+        for i in rows {
+            let a = &s.rows[i * d..(i + 1) * d];
+            acc.add(masked_products::<F, 0, K>(s, a, full_end, i, k1));
+        }
+    }
+}
+
+/// Rows `i` and `n - 1 - i` (about `n` pairs together), summed in a fixed order; for
+/// `D = TILED_D`, the row blocks `i` and `ceil(n / LANES) - 1 - i` (about `LANES n` pairs).
 #[inline(always)]
 fn row_pair_portable<const F: usize, const D: usize, K>(s: &Blocked<F>, i: usize, k1: &K) -> Acc
 where
     K: Fn([f64; F], [f64; F]) -> f64,
 {
     let mut acc = Lanes::ZERO;
+    if D == TILED_D {
+        // `i` is a row block: blocks `i` and `nb - 1 - i` together.
+        add_row_block::<F, D, K>(s, i, k1, &mut acc);
+        let mirror = s.n.div_ceil(LANES) - 1 - i;
+        if mirror != i {
+            add_row_block::<F, D, K>(s, mirror, k1, &mut acc);
+        }
+        return acc.total();
+    }
     add_row::<F, D, K>(s, i, k1, &mut acc);
     let mirror = s.n - 1 - i;
     if mirror != i {
@@ -477,12 +576,30 @@ where
     row_pair_portable::<F, D, K>(s, i, k1)
 }
 
+/// Which loop computes the pair sum in dimension [`TILED_D`], chosen per measure by
+/// measurement (`scripts/time_discrepancy.py`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Loop {
+    /// One row against all blocks ([`add_row`]), the dimension a run-time value.
+    Rows,
+    /// Tiles of [`TILE`] rows compiled for [`TILED_D`] ([`add_row_block`]). For 4096
+    /// points in 8D, timed against [`Loop::Rows`] in alternation (`examples/time_l2.rs`):
+    /// the centered discrepancy 1.2-1.6x faster, wrap-around 1.3-1.5x, mixture 1.2-1.5x,
+    /// unanchored 1.4-2x, diaphony about the same; but L2-star 2-3x slower, symmetric
+    /// 1.6-2.4x and generalized L2 about 3x slower: for these the compiler vectorizes the
+    /// tile badly (partly 128-bit and scalar code, spilled accumulators), so they keep
+    /// the row loop.
+    Tiles,
+}
+
 /// `sum_{i < j} K(x_i, x_j)`: rows `i` and `n - 1 - i` go to the same task so that every
-/// task does about `n` pair evaluations. Row sums are merged in a fixed order, so the
-/// result does not depend on the number of threads. Dimensions 1 and 2 run loops compiled
-/// for that dimension (in 2D the loop overhead would cost as much as the kernel), the
-/// others one loop over the coordinates (measured faster in 8D than an unrolled loop).
-fn off_diagonal<const F: usize, K>(s: &Blocked<F>, k1: &K, build: Build) -> Acc
+/// task does about `n` pair evaluations (with [`Loop::Tiles`] in [`TILED_D`] dimensions,
+/// row blocks `b` and `ceil(n / LANES) - 1 - b`). Row sums are merged in a fixed order, so
+/// the result does not depend on the number of threads. Dimensions 1 and 2 run loops
+/// compiled for that dimension (in 2D the loop overhead would cost as much as the kernel),
+/// the others one loop over the coordinates (measured faster in 8D than an unrolled loop
+/// of one row) or, in 8D with [`Loop::Tiles`], register tiles compiled for 8D.
+fn off_diagonal<const F: usize, K>(s: &Blocked<F>, k1: &K, build: Build, lp: Loop) -> Acc
 where
     K: Fn([f64; F], [f64; F]) -> f64 + Sync,
 {
@@ -490,14 +607,20 @@ where
     where
         K: Fn([f64; F], [f64; F]) -> f64 + Sync,
     {
-        (0..s.n.div_ceil(2))
+        let units = if D == TILED_D {
+            s.n.div_ceil(LANES)
+        } else {
+            s.n
+        };
+        (0..units.div_ceil(2))
             .into_par_iter()
             .map(|i| row_pair::<F, D, K>(s, i, k1, build))
             .collect()
     }
-    let rows = match s.d {
-        1 => rows::<F, 1, K>(s, k1, build),
-        2 => rows::<F, 2, K>(s, k1, build),
+    let rows = match (s.d, lp) {
+        (1, _) => rows::<F, 1, K>(s, k1, build),
+        (2, _) => rows::<F, 2, K>(s, k1, build),
+        (TILED_D, Loop::Tiles) => rows::<F, TILED_D, K>(s, k1, build),
         _ => rows::<F, 0, K>(s, k1, build),
     };
     let mut total = Acc::default();
@@ -508,14 +631,15 @@ where
 }
 
 /// The two sums of a symmetric product kernel, the pair kernel written on precomputed
-/// features: `k1(x, y) = pair(feat(x), feat(y))`. Cost `O(n d)` plus `n (n - 1) / 2`
-/// kernel products of `d` factors, `LANES` at a time.
+/// features: `k1(x, y) = pair(feat(x), feat(y))`, the pair sum by the loop `lp`. Cost
+/// `O(n d)` plus `n (n - 1) / 2` kernel products of `d` factors, `LANES` at a time.
 fn kernel_sums<const F: usize, G, P, K>(
     p: Points<'_>,
     g1: G,
     feat: P,
     pair: K,
     build: Build,
+    lp: Loop,
 ) -> KernelSums
 where
     G: Fn(f64) -> f64,
@@ -529,7 +653,7 @@ where
         s1.add(x.iter().map(|&t| g1(t)).product());
         diag.add(f.iter().map(|&a| pair(a, a)).product());
     }
-    let off = off_diagonal(&s, &pair, build).dd().scale(2.0);
+    let off = off_diagonal(&s, &pair, build, lp).dd().scale(2.0);
     KernelSums {
         s1: s1.dd(),
         s2: diag.dd().add(off),
@@ -617,6 +741,7 @@ fn l2_star_direct_with(p: Points<'_>, build: Build) -> f64 {
         |x| [1.0 - x],
         |a, b| min(a[0], b[0]),
         build,
+        Loop::Rows,
     );
     let c = Dd::ratio(1.0, 3.0).powi(d);
     root(combine(c, pow2(1 - d as i32), 1.0, &sums, p.len()))
@@ -658,6 +783,7 @@ fn centered_with(p: Points<'_>, build: Build) -> f64 {
         |x| [0.5 * x, 0.5 + 0.5 * (x - 0.5).abs()],
         |a, b| a[1] + b[1] - (a[0] - b[0]).abs(),
         build,
+        Loop::Tiles,
     );
     let c = Dd::ratio(13.0, 12.0).powi(p.dims());
     combine(c, 2.0, 1.0, &sums, p.len())
@@ -696,6 +822,7 @@ fn wrap_around_with(p: Points<'_>, build: Build) -> f64 {
             1.5 - t * (1.0 - t)
         },
         build,
+        Loop::Tiles,
     );
     let c = Dd::ratio(4.0, 3.0).powi(p.dims());
     let minus_c = Dd {
@@ -743,6 +870,7 @@ fn mixture_with(p: Points<'_>, build: Build) -> f64 {
             a[1] + b[1] - t * (0.75 - 0.5 * t)
         },
         build,
+        Loop::Tiles,
     );
     let c = Dd::ratio(19.0, 12.0).powi(p.dims());
     combine(c, 2.0, 1.0, &sums, p.len())
@@ -785,6 +913,7 @@ fn symmetric_with(p: Points<'_>, build: Build) -> f64 {
         |x| [x],
         |a, b| 1.0 - (a[0] - b[0]).abs(),
         build,
+        Loop::Rows,
     );
     let c = Dd::ratio(4.0, 3.0).powi(d);
     root(combine(c, 2.0, pow2(d as i32), &sums, p.len()))
@@ -823,6 +952,7 @@ fn unanchored_with(p: Points<'_>, build: Build) -> f64 {
         |x| [x, 1.0 - x],
         |a, b| min(a[0], b[0]) * min(a[1], b[1]),
         build,
+        Loop::Tiles,
     );
     let c = Dd::ratio(1.0, 12.0).powi(d);
     root(combine(c, pow2(1 - d as i32), 1.0, &sums, p.len()))
@@ -860,6 +990,7 @@ fn generalized_with(p: Points<'_>, build: Build) -> f64 {
         |x| [2.0 - x],
         |a, b| min(a[0], b[0]),
         build,
+        Loop::Rows,
     );
     let c = Dd::ratio(4.0, 3.0).powi(p.dims());
     root(combine(c, 2.0, 1.0, &sums, p.len()))
@@ -899,6 +1030,7 @@ fn diaphony_with(p: Points<'_>, build: Build) -> f64 {
             1.0 + TWO_PI2 * (t * t - t + 1.0 / 6.0)
         },
         build,
+        Loop::Rows,
     );
     let minus_one = Dd { hi: -1.0, lo: 0.0 };
     let sq = combine(minus_one, 0.0, 1.0, &sums, p.len());
@@ -936,8 +1068,9 @@ mod kernel_tests {
 
     /// The pair sum over `i < j` with rows long enough for the groups of [`GROUP`] blocks,
     /// their remainders and the masked first and last blocks (every `n mod LANES`, both
-    /// specialized dimensions and the generic loop with odd and even `d`), against a
-    /// double loop over the pairs summed with Neumaier compensation.
+    /// specialized dimensions and the generic loop with odd and even `d`, and both loops
+    /// in 8D: rows and tiles, with the row blocks' masked diagonal and last blocks),
+    /// against a double loop over the pairs summed with Neumaier compensation.
     #[test]
     fn grouped_pair_sum_equals_plain_loop() {
         let kernel = |x: f64, y: f64| 1.5 - (x - y).abs() * (1.0 - (x - y).abs());
@@ -945,7 +1078,13 @@ mod kernel_tests {
             .step_by(5)
             .chain([LANES * (GROUP + 2) + 1]);
         for n in ns {
-            for d in [1, 2, 3, 8] {
+            for (d, lp) in [
+                (1, Loop::Rows),
+                (2, Loop::Rows),
+                (3, Loop::Rows),
+                (8, Loop::Rows),
+                (8, Loop::Tiles),
+            ] {
                 let data: Vec<f64> = (0..n * d)
                     .map(|i| ((i as f64) * 0.754_877_666_246_692_7).fract())
                     .collect();
@@ -953,13 +1092,13 @@ mod kernel_tests {
                 let plain = neumaier_pair_sum(p, kernel);
                 let s = Blocked::new(p, |x| [x]);
                 let k1 = |a: [f64; 1], b: [f64; 1]| kernel(a[0], b[0]);
-                let portable = off_diagonal(&s, &k1, Build::Portable).dd().value();
-                let detect = off_diagonal(&s, &k1, Build::Detect).dd().value();
+                let portable = off_diagonal(&s, &k1, Build::Portable, lp).dd().value();
+                let detect = off_diagonal(&s, &k1, Build::Detect, lp).dd().value();
                 assert!(
                     (portable - plain).abs() <= 1e-14 * plain.max(1.0),
-                    "n={n} d={d}: {portable} vs {plain}"
+                    "n={n} d={d} {lp:?}: {portable} vs {plain}"
                 );
-                assert_eq!(portable.to_bits(), detect.to_bits(), "n={n} d={d}");
+                assert_eq!(portable.to_bits(), detect.to_bits(), "n={n} d={d} {lp:?}");
             }
         }
     }
@@ -1098,10 +1237,14 @@ mod tests {
                 let plain = neumaier_pair_sum(p, kernel);
                 let s = Blocked::new(p, |x| [x]);
                 for build in [Build::Portable, Build::Detect] {
-                    let got =
-                        off_diagonal(&s, &|a: [f64; 1], b: [f64; 1]| kernel(a[0], b[0]), build)
-                            .dd()
-                            .value();
+                    let got = off_diagonal(
+                        &s,
+                        &|a: [f64; 1], b: [f64; 1]| kernel(a[0], b[0]),
+                        build,
+                        Loop::Rows,
+                    )
+                    .dd()
+                    .value();
                     assert!((got - plain).abs() <= 1e-14 * plain.max(1.0), "n={n} d={d}");
                 }
             }
