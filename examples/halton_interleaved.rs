@@ -5,6 +5,7 @@
 //!
 //! `cargo run --release --example halton_interleaved [-- ROUNDS]` (default 300).
 //! Index sets as in the bench: `lo` = 0..4096, `spread` = k * 1_000_003 over the u32 range.
+//! Last, sequential Halton: `Sampler::fill` against `halton::Sequence`.
 
 use std::hint::black_box;
 use std::time::Instant;
@@ -115,5 +116,53 @@ fn main() {
                 t[1] / t[0]
             );
         }
+    }
+    sequential(rounds);
+}
+
+/// Sequential Halton, points 1..=N (the peer's `Sequence` starts at index 1): qmckit's
+/// `Sampler::fill` (and its `f64` conversion) against `halton::Sequence` per dimension.
+fn sequential(rounds: usize) {
+    for d in [2usize, 8, 32] {
+        let h = Halton::new(d).expect("dims");
+        let primes: Vec<u8> = (0..d)
+            .map(|k| qmckit::halton::prime(k).expect("prime") as u8)
+            .collect();
+        let (mut a, mut a2) = (vec![0u32; N * d], vec![0u32; N * d]);
+        let (mut b, mut c) = (vec![0f64; N * d], vec![0f64; N * d]);
+        let t = race(
+            rounds,
+            &mut [
+                &mut || {
+                    black_box(h).fill(black_box(1), &mut a).expect("in range");
+                    black_box(&mut a);
+                },
+                &mut || {
+                    black_box(h).fill(black_box(1), &mut a2).expect("in range");
+                    for (y, &x) in b.iter_mut().zip(&a2) {
+                        *y = qmckit::bits::to_f64(x);
+                    }
+                    black_box(&mut b);
+                },
+                &mut || {
+                    for (dim, &p) in black_box(primes.as_slice()).iter().enumerate() {
+                        let seq = halton::Sequence::new(p);
+                        for (slot, x) in c[dim..].iter_mut().step_by(d).zip(seq) {
+                            *slot = x;
+                        }
+                    }
+                    black_box(&mut c);
+                },
+            ],
+        );
+        let ns = |s: f64| s * 1e9 / (N * d) as f64;
+        println!(
+            "sequential halton d={d:<2} fill {:6.2}  fill+f64 {:6.2}  peer {:6.2}  ratio {:.2}x / {:.2}x",
+            ns(t[0]),
+            ns(t[1]),
+            ns(t[2]),
+            t[2] / t[0],
+            t[2] / t[1]
+        );
     }
 }
