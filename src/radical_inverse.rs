@@ -713,8 +713,7 @@ impl RadicalInverse {
             fill_base_2(start, out, stride);
             return Ok(());
         }
-        if self.base as usize <= RUN_TABLE && self.big <= 1 << 63 {
-            // base >= 3 here
+        if self.by_runs() {
             self.fill_runs(start, out, stride);
             return Ok(());
         }
@@ -729,6 +728,13 @@ impl RadicalInverse {
             *slot = q;
         }
         Ok(())
+    }
+
+    /// Whether the sequential fill goes by runs ([`RunFill`]): `3 <= b <= RUN_TABLE` (and
+    /// `B <= 2^63`, true for these bases: `B < b 2^32`).
+    #[inline]
+    pub(crate) const fn by_runs(&self) -> bool {
+        self.base >= 3 && self.base as usize <= RUN_TABLE && self.big <= 1 << 63
     }
 
     /// Sequential fill for bases `3 ..= RUN_TABLE`, by runs of the lowest `k` digits, with
@@ -751,10 +757,45 @@ impl RadicalInverse {
     /// probability `1/b`), and the threshold takes one multiply-high and one correction.
     /// Stack: `RUN_TABLE` `u32`s and as many bytes (1280 bytes).
     fn fill_runs(&self, start: u32, out: &mut [u32], stride: usize) {
+        let count = out.len().div_ceil(stride);
+        RunFill::new(self, start).write(out, stride, count);
+    }
+}
+
+/// The resumable state of [`RadicalInverse::fill_runs`] (see there for the math): the
+/// tables of one base and the current run, so that a caller can fill a column block by
+/// block (the Halton fill interleaves several dimensions this way). About 1.5 KiB.
+pub(crate) struct RunFill {
+    pq: [u32; RUN_TABLE],
+    ps: [u8; RUN_TABLE],
+    ri: RadicalInverse,
+    /// `L = b^k`, `k`, and `L` as a table length.
+    len: u32,
+    k: u32,
+    l: usize,
+    /// `U = B / L` and `floor((2^64 - 1) / U)`.
+    unit: u64,
+    unit_magic: u64,
+    /// `2^32 (L - 1) / L` as `(P, s U)`: the last entry, exact over `B`.
+    last: (u32, u64),
+    steps: [(u32, u64); STEPS],
+    /// The current run: its first index `h L`, the lowest digit of `h`, its base
+    /// `q + r / B`, its carry threshold, and the offset of the next value in it.
+    run_index: u32,
+    next_digit: u32,
+    base_q: u32,
+    base_r: u64,
+    thr: u32,
+    d0: usize,
+}
+
+impl RunFill {
+    /// The state at index `start`, for `3 <= base <= RUN_TABLE` and `B <= 2^63`.
+    pub(crate) fn new(ri: &RadicalInverse, start: u32) -> Self {
         // The caller guarantees 3 <= base <= RUN_TABLE; the clamps are no-ops that let the
         // compiler see every table index below in bounds (no panic path survives
         // inlining; tests/firmware/panic_proof.sh checks this at link time).
-        let b = self.base.clamp(3, RUN_TABLE as u32);
+        let b = ri.base.clamp(3, RUN_TABLE as u32);
         let (mut len, mut k) = (b, 1u32);
         while len * b <= RUN_TABLE as u32 {
             len *= b;
@@ -762,7 +803,7 @@ impl RadicalInverse {
         }
         let l = (len as usize).clamp(3, RUN_TABLE);
         // U = B / L, exact as L = b^k with k <= K.
-        let unit = div_u64(self.big, len as u64);
+        let unit = div_u64(ri.big, len as u64);
         // (pq[e], ps[e]) = 2^32 rev_k(e) / L as integer part and remainder over L. Walk
         // n = 0, 1, .. L - 1 (adding 2^32 / L exactly each time) and keep e = rev_k(n): a
         // carry out of digit j of n moves e by b^(k-1-j).
@@ -772,6 +813,7 @@ impl RadicalInverse {
             rem_u64(TWO_32, len as u64) as u32,
         );
         let (mut q, mut s, mut e) = (0u32, 0u32, 0u32);
+        let top = div_u32(len, b); // b^(k-1), the weight of digit 0 of n in e
         let mut digit = [0u32; 8]; // k <= 5 for b >= 3
         for _ in 0..l {
             if let (Some(a), Some(c)) = (pq.get_mut(e as usize), ps.get_mut(e as usize)) {
@@ -781,7 +823,7 @@ impl RadicalInverse {
             if s >= len {
                 (q, s) = (q.wrapping_add(1), s - len);
             }
-            let mut place = div_u32(len, b);
+            let mut place = top;
             for d in digit.iter_mut().take(k as usize) {
                 *d += 1;
                 e += place;
@@ -793,58 +835,125 @@ impl RadicalInverse {
                 place = div_u32(place, b);
             }
         }
-        let last = (pq[l - 1], ps[l - 1] as u64 * unit);
-        let steps = self.steps();
-        // floor((2^64 - 1) / U): ceil(y / U) for y <= B by one multiply-high and a fix.
-        let unit_magic = div_u64(u64::MAX, unit);
-        let threshold = |r: u64| -> u32 {
-            let y = self.big - r; // 1 ..= B
-            let q0 = ((y as u128 * unit_magic as u128) >> 64) as u64; // q - 1 or q
-            let r0 = y - q0 * unit; // < 2 U
-            let (q, r) = if r0 >= unit {
-                (q0 + 1, r0 - unit)
-            } else {
-                (q0, r0)
-            };
-            (q + (r != 0) as u64) as u32 // ceil, in 1 ..= L
-        };
         let low = rem_u32(start, len) as usize;
-        let mut run_index = start - low as u32; // h L
-        // The lowest digit of h (that of h + 1 decides whether the carry passes digit k).
-        let mut next_digit = rem_u32(div_u32(run_index, len), b);
-        let (mut base_q, mut base_r) = self.scale(self.numerator(run_index));
-        let mut slots = out.iter_mut().step_by(stride);
-        let mut d0 = low;
-        loop {
-            let thr = threshold(base_r);
-            // The table side first, so that zip never takes a slot it cannot fill.
-            let run = pq.get(d0..l).unwrap_or(&[]);
-            for ((&p, &s), slot) in run.iter().zip(ps.get(d0..l).unwrap_or(&[])).zip(&mut slots) {
-                *slot = base_q
+        let run_index = start - low as u32; // h L
+        let (base_q, base_r) = ri.scale(ri.numerator(run_index));
+        let mut state = RunFill {
+            last: (pq[l - 1], ps[l - 1] as u64 * unit),
+            pq,
+            ps,
+            ri: *ri,
+            len,
+            k,
+            l,
+            unit,
+            // floor((2^64 - 1) / U): ceil(y / U) for y <= B by one multiply-high and a fix.
+            unit_magic: div_u64(u64::MAX, unit),
+            steps: ri.steps(),
+            run_index,
+            // The lowest digit of h (that of h + 1 decides whether a carry passes digit k).
+            next_digit: rem_u32(div_u32(run_index, len), b),
+            base_q,
+            base_r,
+            thr: 0,
+            d0: low,
+        };
+        state.thr = state.threshold();
+        state
+    }
+
+    /// `ceil((B - r) / U)` for the run base's remainder `r`, in `1 ..= L`.
+    #[inline]
+    fn threshold(&self) -> u32 {
+        let (y, unit) = (self.ri.big - self.base_r, self.unit); // 1 ..= B
+        let q0 = ((y as u128 * self.unit_magic as u128) >> 64) as u64; // q - 1 or q
+        let r0 = y - q0 * unit; // < 2 U
+        let (q, r) = if r0 >= unit {
+            (q0 + 1, r0 - unit)
+        } else {
+            (q0, r0)
+        };
+        (q + (r != 0) as u64) as u32
+    }
+
+    /// Moves to the next run; the caller guarantees a value of it is due (so its first
+    /// index fits in `u32`).
+    fn next_run(&mut self) {
+        let ri = &self.ri;
+        // (h + 1) L ends in t >= k zero digits, t > k iff h + 1 ends in 0.
+        self.run_index = self.run_index.wrapping_add(self.len);
+        self.next_digit += 1;
+        let t = if self.next_digit < ri.base {
+            self.k
+        } else {
+            self.next_digit = 0;
+            ri.trailing_zero_digits(self.run_index)
+        };
+        let step = if (t as usize) < STEPS {
+            self.steps[t as usize]
+        } else {
+            ri.step(t)
+        };
+        // The run base moved by the carry step minus the last run's (L - 1) / L part.
+        (self.base_q, self.base_r) = add_exact(
+            add_exact((self.base_q, self.base_r), self.last, ri.big),
+            step,
+            ri.big,
+        );
+        self.thr = self.threshold();
+        self.d0 = 0;
+    }
+
+    /// Writes the next `count` values to `out[0], out[stride], ..` (those in bounds); the
+    /// caller guarantees their indices stay within `u32`.
+    #[inline]
+    pub(crate) fn write(&mut self, out: &mut [u32], stride: usize, count: usize) {
+        let mut done = 0;
+        while done < count {
+            if self.d0 >= self.l {
+                self.next_run();
+            }
+            let (d0, base_q, thr) = (self.d0, self.base_q, self.thr);
+            let n = (self.l - d0).min(count - done);
+            let run = self.pq.get(d0..d0 + n).unwrap_or(&[]);
+            let run_s = self.ps.get(d0..d0 + n).unwrap_or(&[]);
+            let value = |p: u32, s: u8| {
+                base_q
                     .wrapping_add(p)
-                    .wrapping_add((s as u32 >= thr) as u32);
-            }
-            if slots.len() == 0 {
-                break;
-            }
-            // Next run: (h + 1) L ends in t >= k zero digits, t > k iff h + 1 ends in 0.
-            run_index += len; // stays <= u32::MAX: a value of the run is still due
-            next_digit += 1;
-            let t = if next_digit < b {
-                k
-            } else {
-                next_digit = 0;
-                self.trailing_zero_digits(run_index)
+                    .wrapping_add((s as u32 >= thr) as u32)
             };
-            let step = if (t as usize) < STEPS {
-                steps[t as usize]
-            } else {
-                self.step(t)
-            };
-            // The run base moved by the carry step minus the last run's (L - 1) / L part.
-            (base_q, base_r) =
-                add_exact(add_exact((base_q, base_r), last, self.big), step, self.big);
-            d0 = 0;
+            write_run(
+                out,
+                done,
+                stride,
+                run.iter().zip(run_s).map(|(&p, &s)| value(p, s)),
+            );
+            self.d0 = d0 + n;
+            done += n;
+        }
+    }
+}
+
+/// Writes `values` to `out[(done + j) stride]`, `j = 0, 1, ..` (those in bounds): a plain
+/// zip for `stride = 1` (which vectorizes), else indexed stores.
+#[inline(always)]
+fn write_run(out: &mut [u32], done: usize, stride: usize, values: impl Iterator<Item = u32>) {
+    if stride == 1 {
+        for (slot, v) in out
+            .get_mut(done..)
+            .unwrap_or(&mut [])
+            .iter_mut()
+            .zip(values)
+        {
+            *slot = v;
+        }
+    } else {
+        let mut pos = done.saturating_mul(stride);
+        for v in values {
+            if let Some(slot) = out.get_mut(pos) {
+                *slot = v;
+            }
+            pos = pos.saturating_add(stride);
         }
     }
 }
@@ -861,13 +970,15 @@ fn fill_base_2(start: u32, out: &mut [u32], stride: usize) {
     }
     let mut run_index = start & !(RUN_TABLE as u32 - 1);
     let mut d0 = (start - run_index) as usize;
-    let mut slots = out.iter_mut().step_by(stride);
+    let count = out.len().div_ceil(stride); // values due
+    let mut done = 0; // values written
     loop {
         let base = reverse_bits(run_index);
-        for (&p, slot) in rev.get(d0..).unwrap_or(&[]).iter().zip(&mut slots) {
-            *slot = base | p;
-        }
-        if slots.len() == 0 {
+        let n = (RUN_TABLE - d0).min(count - done);
+        let run = rev.get(d0..d0 + n).unwrap_or(&[]);
+        write_run(out, done, stride, run.iter().map(|&p| base | p));
+        done += n;
+        if done >= count {
             break;
         }
         // A value of the next run is still due, so its index fits in u32.
