@@ -752,9 +752,9 @@ impl RadicalInverse {
     ///
     /// so each value is two table loads, a 32-bit compare against the run's threshold and
     /// two adds (no 64-bit work, no chain from value to value). Per run of `L` values: the
-    /// run base steps by the last entry plus the cached carry step for the `t >= k` trailing
-    /// zero digits of `(h + 1) L` (counted only when the next digit above the run wraps,
-    /// probability `1/b`), and the threshold takes one multiply-high and one correction.
+    /// run base steps by the last entry plus the carry step for the `t >= k` trailing zero
+    /// digits of `(h + 1) L` (counted only when the next digit above the run wraps,
+    /// probability `1/b`; cached for `t = k, k + 1`), and the threshold takes one multiply-high and one correction.
     /// Stack: `RUN_TABLE` `u32`s and as many bytes (1280 bytes).
     fn fill_runs(&self, start: u32, out: &mut [u32], stride: usize) {
         let count = out.len().div_ceil(stride);
@@ -778,7 +778,9 @@ pub(crate) struct RunFill {
     unit_magic: u64,
     /// `2^32 (L - 1) / L` as `(P, s U)`: the last entry, exact over `B`.
     last: (u32, u64),
-    steps: [(u32, u64); STEPS],
+    /// The carry steps for `t = k` and `t = k + 1` trailing zero digits (longer carries,
+    /// probability `b^-2` a run, are computed on the spot).
+    steps: [(u32, u64); 2],
     /// The current run: its first index `h L`, the lowest digit of `h`, its base
     /// `q + r / B`, its carry threshold, and the offset of the next value in it.
     run_index: u32,
@@ -849,7 +851,7 @@ impl RunFill {
             unit,
             // floor((2^64 - 1) / U): ceil(y / U) for y <= B by one multiply-high and a fix.
             unit_magic: div_u64(u64::MAX, unit),
-            steps: ri.steps(),
+            steps: [ri.step(k), ri.step(k + 1)], // k + 1 < K: b^(k+1) <= 256 b < 2^32
             run_index,
             // The lowest digit of h (that of h + 1 decides whether a carry passes digit k).
             next_digit: rem_u32(div_u32(run_index, len), b),
@@ -889,10 +891,10 @@ impl RunFill {
             self.next_digit = 0;
             ri.trailing_zero_digits(self.run_index)
         };
-        let step = if (t as usize) < STEPS {
-            self.steps[t as usize]
-        } else {
-            ri.step(t)
+        let step = match t.wrapping_sub(self.k) {
+            0 => self.steps[0],
+            1 => self.steps[1],
+            _ => ri.step(t),
         };
         // The run base moved by the carry step minus the last run's (L - 1) / L part.
         (self.base_q, self.base_r) = add_exact(
