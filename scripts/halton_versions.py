@@ -11,7 +11,8 @@ another, R times in turn (default 4), each with K interleaved rounds (default 40
 times qmckit and the `halton` crate in alternation itself, so each row's ratio peer / qmckit
 comes from one process. The table gives, per binary and row, the ratio of the best times
 over all its runs ("best") and the median of the per-run ratios ("median"), per coordinate
-/ per point (the radical-inverse rows have one qmckit figure).
+and per point for random access, `fill` and `fill` + f64 for sequential rows (the
+radical-inverse rows have one qmckit figure).
 """
 import argparse
 import re
@@ -22,10 +23,14 @@ HALTON = re.compile(
     r"halton d=(\d+)\s+(\w+)\s+per coordinate\s+([\d.]+)\s+per point\s+([\d.]+)\s+peer\s+([\d.]+)"
 )
 RADICAL = re.compile(r"radical inverse base (\d+)\s+(\w+)\s+qmckit\s+([\d.]+)\s+peer\s+([\d.]+)")
+SEQUENTIAL = re.compile(
+    r"sequential halton d=(\d+)\s+fill\s+([\d.]+)\s+fill\+f64\s+([\d.]+)\s+peer\s+([\d.]+)"
+)
 
 
 def rows(text):
-    """(row label, [qmckit per coordinate, qmckit per point, peer]) for each result line."""
+    """(row label, [qmckit A, qmckit B, peer]) for each result line: A, B = per coordinate,
+    per point (random access) or fill, fill + f64 (sequential)."""
     for line in text.splitlines():
         m = HALTON.match(line)
         if m:
@@ -34,6 +39,10 @@ def rows(text):
         m = RADICAL.match(line)
         if m:
             yield f"radical inverse base {m[1]} {m[2]}", [float(m[3]), float(m[3]), float(m[4])]
+            continue
+        m = SEQUENTIAL.match(line)
+        if m:
+            yield f"sequential Halton d={m[1]}", [float(m[2]), float(m[3]), float(m[4])]
 
 
 def main():
