@@ -122,20 +122,19 @@ impl Halton {
     /// [`Error::DimensionOutOfRange`].
     #[inline]
     pub const fn dimension(&self, dim: usize) -> Result<&'static RadicalInverse> {
-        if dim >= self.dims {
-            return Err(Error::DimensionOutOfRange {
-                dim,
-                dims: self.dims,
-            });
+        // `dims <= HALTON_MAX_DIMS` (checked by `new`), so the split never fails; it lets one
+        // comparison per call guard both the dimension and the indexing (no panic path).
+        let bases = match HALTON_BASES.split_at_checked(self.dims) {
+            Some((bases, _)) => bases,
+            None => &HALTON_BASES,
+        };
+        if dim < bases.len() {
+            return Ok(&bases[dim]);
         }
-        if dim >= HALTON_MAX_DIMS {
-            // Unreachable (dims <= HALTON_MAX_DIMS); keeps the indexing free of a panic path.
-            return Err(Error::DimensionOutOfRange {
-                dim,
-                dims: HALTON_MAX_DIMS,
-            });
-        }
-        Ok(&HALTON_BASES[dim])
+        Err(Error::DimensionOutOfRange {
+            dim,
+            dims: self.dims,
+        })
     }
 
     /// Coordinate `dim` of point `index`: `floor(phi_p(index) 2^32)` for the `dim`-th prime
