@@ -76,14 +76,11 @@ fn main() {
                     },
                 ],
             );
-            let ns = |s: f64| s * 1e9 / (N * d) as f64;
-            println!(
-                "halton d={d:<2} {label:<6} per coordinate {:6.2}  per point {:6.2}  peer {:6.2}  ratio {:.2}x / {:.2}x",
-                ns(t[0]),
-                ns(t[1]),
-                ns(t[2]),
-                t[2] / t[0],
-                t[2] / t[1]
+            report(
+                &format!("halton d={d:<2} {label:<6}"),
+                ["per coordinate", "per point"],
+                &t,
+                N * d,
             );
         }
         for base in [3u32, 7, 31] {
@@ -155,14 +152,27 @@ fn sequential(rounds: usize) {
                 },
             ],
         );
-        let ns = |s: f64| s * 1e9 / (N * d) as f64;
-        println!(
-            "sequential halton d={d:<2} fill {:6.2}  fill+f64 {:6.2}  peer {:6.2}  ratio {:.2}x / {:.2}x",
-            ns(t[0]),
-            ns(t[1]),
-            ns(t[2]),
-            t[2] / t[0],
-            t[2] / t[1]
+        report(
+            &format!("sequential halton d={d:<2}"),
+            ["fill", "fill+f64"],
+            &t,
+            N * d,
         );
     }
+}
+
+/// One result line: two qmckit variants and the peer (`t = [a, b, peer]`, seconds for
+/// `values` values) in ns per value, and the ratios peer / a and peer / b.
+fn report(prefix: &str, names: [&str; 2], t: &[f64], values: usize) {
+    let ns = |s: f64| s * 1e9 / values as f64;
+    println!(
+        "{prefix} {} {:6.2}  {} {:6.2}  peer {:6.2}  ratio {:.2}x / {:.2}x",
+        names[0],
+        ns(t[0]),
+        names[1],
+        ns(t[1]),
+        ns(t[2]),
+        t[2] / t[0],
+        t[2] / t[1]
+    );
 }
