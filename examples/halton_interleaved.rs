@@ -5,7 +5,7 @@
 //!
 //! `cargo run --release --example halton_interleaved [-- ROUNDS]` (default 300).
 //! Index sets as in the bench: `lo` = 0..4096, `spread` = k * 1_000_003 over the u32 range.
-//! Last, sequential Halton: `Sampler::fill` against `halton::Sequence`.
+//! Last, sequential Halton: `Sampler::fill` (`u32`) and `Sampler::fill_as` (`f64`) against `halton::Sequence`.
 
 use std::hint::black_box;
 use std::time::Instant;
@@ -118,14 +118,15 @@ fn main() {
 }
 
 /// Sequential Halton, points 1..=N (the peer's `Sequence` starts at index 1): qmckit's
-/// `Sampler::fill` (and its `f64` conversion) against `halton::Sequence` per dimension.
+/// `Sampler::fill` (`u32`) and `Sampler::fill_as` (`f64`, converted as stored) against
+/// `halton::Sequence` (`f64`) per dimension.
 fn sequential(rounds: usize) {
     for d in [2usize, 8, 32] {
         let h = Halton::new(d).expect("dims");
         let primes: Vec<u8> = (0..d)
             .map(|k| qmckit::halton::prime(k).expect("prime") as u8)
             .collect();
-        let (mut a, mut a2) = (vec![0u32; N * d], vec![0u32; N * d]);
+        let mut a = vec![0u32; N * d];
         let (mut b, mut c) = (vec![0f64; N * d], vec![0f64; N * d]);
         let t = race(
             rounds,
@@ -135,10 +136,9 @@ fn sequential(rounds: usize) {
                     black_box(&mut a);
                 },
                 &mut || {
-                    black_box(h).fill(black_box(1), &mut a2).expect("in range");
-                    for (y, &x) in b.iter_mut().zip(&a2) {
-                        *y = qmckit::bits::to_f64(x);
-                    }
+                    black_box(h)
+                        .fill_as(black_box(1), &mut b)
+                        .expect("in range");
                     black_box(&mut b);
                 },
                 &mut || {
@@ -154,7 +154,7 @@ fn sequential(rounds: usize) {
         );
         report(
             &format!("sequential halton d={d:<2}"),
-            ["fill", "fill+f64"],
+            ["fill", "f64"],
             &t,
             N * d,
         );

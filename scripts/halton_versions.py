@@ -11,7 +11,7 @@ another, R times in turn (default 4), each with K interleaved rounds (default 40
 times qmckit and the `halton` crate in alternation itself, so each row's ratio peer / qmckit
 comes from one process. The table gives, per binary and row, the ratio of the best times
 over all its runs ("best") and the median of the per-run ratios ("median"), per coordinate
-and per point for random access, `fill` and `fill` + f64 for sequential rows (the
+and per point for random access, `fill` (u32) and f64 (`fill_as`, or `fill` + a conversion pass in older builds) for sequential rows (the
 radical-inverse rows have one qmckit figure).
 """
 import argparse
@@ -24,7 +24,7 @@ HALTON = re.compile(
 )
 RADICAL = re.compile(r"radical inverse base (\d+)\s+(\w+)\s+qmckit\s+([\d.]+)\s+peer\s+([\d.]+)")
 SEQUENTIAL = re.compile(
-    r"sequential halton d=(\d+)\s+fill\s+([\d.]+)\s+fill\+f64\s+([\d.]+)\s+peer\s+([\d.]+)"
+    r"sequential halton d=(\d+)\s+fill\s+([\d.]+)\s+(?:fill\+f64|f64)\s+([\d.]+)\s+peer\s+([\d.]+)"
 )
 
 

@@ -58,7 +58,9 @@ const INV_2_POW_32: f64 = 1.0 / 4_294_967_296.0;
 /// ```
 #[inline]
 pub const fn to_f64(x: u32) -> f64 {
-    x as f64 * INV_2_POW_32
+    // 2^20 + x 2^-32 has exponent 20 and ulp 2^-32, so its bits are those of 2^20 with `x`
+    // in the low 32 significand bits; subtracting 2^20 is exact.
+    f64::from_bits(0x4130_0000_0000_0000 | x as u64) - 1_048_576.0
 }
 
 /// `x / 2^32` as `f32`, rounded toward zero, so the result is always in `[0, 1)`.
@@ -104,6 +106,57 @@ pub const fn to_f32_via_f64(x: u32) -> f32 {
 #[inline]
 pub const fn to_fixed(x: u32) -> fixed::types::U0F32 {
     fixed::types::U0F32::from_bits(x)
+}
+
+/// A coordinate type that 0.32 fixed-point fractions convert into: `u32` itself (the
+/// identity), `f64` ([`to_f64`], exact), `f32` ([`to_f32`], rounded toward zero, never
+/// `1.0`) and, with feature `fixed`, `U0F32` ([`to_fixed`], same bits). The typed fills
+/// (e.g. [`Sampler::fill_as`](crate::Sampler::fill_as)) convert as they store, so no
+/// second pass over the buffer is needed.
+///
+/// ```
+/// use qmckit::bits::FromFraction;
+/// assert_eq!(f64::from_fraction(0xC000_0000), 0.75);
+/// assert_eq!(f32::from_fraction(u32::MAX), 1.0 - f32::EPSILON / 2.0);
+/// assert_eq!(u32::from_fraction(7), 7);
+/// ```
+pub trait FromFraction: Copy {
+    /// The fraction `x / 2^32` in this type.
+    fn from_fraction(x: u32) -> Self;
+}
+
+impl FromFraction for u32 {
+    #[inline(always)]
+    fn from_fraction(x: u32) -> Self {
+        x
+    }
+}
+
+impl FromFraction for f64 {
+    #[inline(always)]
+    fn from_fraction(x: u32) -> Self {
+        to_f64(x)
+    }
+}
+
+impl FromFraction for f32 {
+    /// [`to_f32`]; on 64-bit targets computed as [`to_f32_via_f64`] (the same bits for all
+    /// 2^32 inputs, and it vectorizes).
+    #[inline(always)]
+    fn from_fraction(x: u32) -> Self {
+        #[cfg(target_pointer_width = "64")]
+        return to_f32_via_f64(x);
+        #[cfg(not(target_pointer_width = "64"))]
+        return to_f32(x);
+    }
+}
+
+#[cfg(feature = "fixed")]
+impl FromFraction for fixed::types::U0F32 {
+    #[inline(always)]
+    fn from_fraction(x: u32) -> Self {
+        to_fixed(x)
+    }
 }
 
 /// `floor(num * 2^32 / den)`: the 0.32 fraction just below `num / den`, exact.

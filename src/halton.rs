@@ -7,6 +7,7 @@
 //! fix that. Unscrambled, it equals SciPy's `qmc.Halton(d, scramble=False)` (which also
 //! starts at index 0, with the point at the origin) to within SciPy's float rounding.
 
+use crate::bits::FromFraction;
 use crate::error::{Error, Result};
 #[cfg(target_pointer_width = "64")]
 use crate::radical_inverse::RunFill;
@@ -227,28 +228,27 @@ impl Sampler for Halton {
                 got: out.len(),
             });
         }
-        let bases = HALTON_BASES.iter();
-        if self.scramble.is_none() {
-            for (slot, ri) in out.iter_mut().zip(bases) {
-                *slot = ri.sample(index);
-            }
-        } else {
-            for (dim, (slot, ri)) in out.iter_mut().zip(bases).enumerate() {
-                *slot = ri.sample_scrambled(index, &self.scramble, dim);
-            }
-        }
+        self.point_as(index, out);
         Ok(())
     }
 
-    /// Sequential fast path: one [`RadicalInverseIter`] per dimension, column by column.
+    /// Sequential fast path, as [`fill_as`](Sampler::fill_as).
     fn fill(&self, start: u32, out: &mut [u32]) -> Result<()> {
+        self.fill_as(start, out)
+    }
+
+    /// Sequential fast path in any coordinate type, converted as stored: one run state
+    /// ([`RadicalInverse::fill_strided_as`]) per dimension, column by column; on 64-bit
+    /// targets from [`BLOCKED_MIN_DIMS`] dimensions on, blocked (see `fill_blocked`).
+    /// Scrambled sequences go point by point. Same values as [`sample`](Sampler::sample).
+    fn fill_as<T: FromFraction>(&self, start: u32, out: &mut [T]) -> Result<()> {
         let rows = self.check_fill(start, out.len())?;
         if rows == 0 {
             return Ok(());
         }
         if !self.scramble.is_none() && self.dims > 0 {
             for (k, row) in out.chunks_exact_mut(self.dims).enumerate() {
-                self.point(start + k as u32, row)?;
+                self.point_as(start + k as u32, row);
             }
             return Ok(());
         }
@@ -258,10 +258,27 @@ impl Sampler for Halton {
         }
         for (dim, ri) in HALTON_BASES.iter().take(self.dims).enumerate() {
             if let Some(column) = out.get_mut(dim..) {
-                ri.fill_strided(start, column, self.dims)?;
+                ri.fill_strided_as(start, column, self.dims)?;
             }
         }
         Ok(())
+    }
+}
+
+impl Halton {
+    /// Point `index` into `out` (the first `min(out.len(), dims)` coordinates), converted.
+    #[inline]
+    fn point_as<T: FromFraction>(&self, index: u32, out: &mut [T]) {
+        let bases = HALTON_BASES.iter().take(self.dims);
+        if self.scramble.is_none() {
+            for (slot, ri) in out.iter_mut().zip(bases) {
+                *slot = T::from_fraction(ri.sample(index));
+            }
+        } else {
+            for (dim, (slot, ri)) in out.iter_mut().zip(bases).enumerate() {
+                *slot = T::from_fraction(ri.sample_scrambled(index, &self.scramble, dim));
+            }
+        }
     }
 }
 
@@ -280,12 +297,20 @@ const BLOCKED_MIN_DIMS: usize = 4;
 /// the `GROUP` columns of a block are written while its rows are in cache (a column at a
 /// time over all rows touches every cache line of the buffer once per dimension), and each
 /// block column is computed contiguously (the run arithmetic vectorizes) into a
-/// `GROUP x BLOCK` scratch (4 KiB) before it is transposed into the rows. Each dimension of
-/// a group keeps its resumable run state ([`RunFill`]); the bases without one (2, and those
-/// above the run table) then fill their whole column with `fill_strided`, over what the
-/// transposition left there. Same values as the column-by-column fill.
+/// `GROUP x BLOCK` scratch of `u32` (4 KiB) before it is transposed into the rows,
+/// converted to `T` on the way (a full group's row is one fixed-size array, which for `f64`
+/// compiles to two-lane conversions; converting in the scratch instead, into 8 KiB of `f64`,
+/// measured slower). Each dimension of a group keeps its resumable run state ([`RunFill`],
+/// base 2 included); the bases without one (above the run table) then fill their whole
+/// column with `fill_strided_as`, over what the transposition left there. Same values as
+/// the column-by-column fill.
 #[cfg(target_pointer_width = "64")]
-fn fill_blocked(dims: usize, start: u32, out: &mut [u32], rows: usize) -> Result<()> {
+fn fill_blocked<T: FromFraction>(
+    dims: usize,
+    start: u32,
+    out: &mut [T],
+    rows: usize,
+) -> Result<()> {
     let bases = HALTON_BASES.get(..dims).unwrap_or(&[]);
     for (g, group) in bases.chunks(GROUP).enumerate() {
         let first = g * GROUP;
@@ -306,31 +331,63 @@ fn fill_blocked(dims: usize, start: u32, out: &mut [u32], rows: usize) -> Result
                 }
             }
             let block = out.get_mut(row * dims..).unwrap_or(&mut []);
-            for (r, point) in block.chunks_mut(dims).take(n).enumerate() {
-                let dst = point.get_mut(first..).unwrap_or(&mut []);
-                for (slot, col) in dst.iter_mut().zip(&tmp) {
-                    if let Some(&v) = col.get(r) {
-                        *slot = v;
-                    }
-                }
-            }
+            transpose(&tmp, block, dims, first, group.len(), n);
             row += n;
         }
         for (j, ri) in group.iter().enumerate() {
             if let Some(col) = out.get_mut(first + j..).filter(|_| !ri.by_runs()) {
-                ri.fill_strided(start, col, dims)?;
+                ri.fill_strided_as(start, col, dims)?;
             }
         }
     }
     Ok(())
 }
 
+/// Rows `0 .. n` of the first `width` scratch columns of a block into its points (`dims`
+/// values each, from coordinate `first` on), converted. A full group (`width == GROUP`)
+/// moves as one fixed-size array a point (8 loads and 8 stores, unrolled) with one bounds
+/// check; a partial last group value by value.
+#[cfg(target_pointer_width = "64")]
+#[inline(always)]
+fn transpose<T: FromFraction>(
+    tmp: &[[u32; BLOCK]; GROUP],
+    block: &mut [T],
+    dims: usize,
+    first: usize,
+    width: usize,
+    n: usize,
+) {
+    let value = |j: usize, r: usize| T::from_fraction(tmp[j % GROUP].get(r).copied().unwrap_or(0));
+    let mut pos = first;
+    if width == GROUP {
+        for r in 0..n.min(BLOCK) {
+            if let Some(dst) = block
+                .get_mut(pos..)
+                .and_then(|s| s.first_chunk_mut::<GROUP>())
+            {
+                *dst = core::array::from_fn(|j| value(j, r));
+            }
+            pos += dims;
+        }
+    } else {
+        for r in 0..n.min(BLOCK) {
+            let dst = block.get_mut(pos..).unwrap_or(&mut []);
+            for (j, slot) in dst.iter_mut().take(width.min(GROUP)).enumerate() {
+                *slot = value(j, r);
+            }
+            pos += dims;
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::bits::to_f64;
 
     /// The sequential fill (column by column, or blocked with the transposition for
-    /// `dims >= 4` on 64-bit targets) against random access for every coordinate: group
+    /// `dims >= 4` on 64-bit targets), in `u32` and `f64`, against random access for every
+    /// coordinate: group
     /// edges (7, 8, 9, 17 dims), the last prime base with a run table (dimension 54, base
     /// 251) and past it, all 1024 dimensions, row counts that are not a multiple of the block,
     /// and a range that ends at index `u32::MAX`.
@@ -346,13 +403,36 @@ mod tests {
                     start
                 };
                 let mut out = vec![7u32; rows * dims];
+                let mut wide = vec![7f64; rows * dims];
                 Sampler::fill(&h, start, &mut out).unwrap();
-                for (k, point) in out.chunks_exact(dims).enumerate() {
-                    for (dim, &x) in point.iter().enumerate() {
+                h.fill_as(start, &mut wide).unwrap();
+                for (k, (point, wide)) in out.chunks_exact(dims).zip(wide.chunks(dims)).enumerate()
+                {
+                    for (dim, (&x, &y)) in point.iter().zip(wide).enumerate() {
                         let i = start + k as u32;
-                        assert_eq!(x, h.sample(i, dim).unwrap(), "d {dims} i {i} dim {dim}");
+                        let u = h.sample(i, dim).unwrap();
+                        assert_eq!(x, u, "d {dims} i {i} dim {dim}");
+                        assert_eq!(
+                            y.to_bits(),
+                            to_f64(u).to_bits(),
+                            "f64: d {dims} i {i} dim {dim}"
+                        );
                     }
                 }
+            }
+        }
+    }
+
+    /// The typed fill of a scrambled sequence (point by point) converts each coordinate.
+    #[test]
+    fn scrambled_typed_fill_matches_random_access() {
+        let h = Halton::with_scramble(5, DigitScramble::Permutations(3)).unwrap();
+        let mut out = vec![0f32; 5 * 40];
+        h.fill_as(11, &mut out).unwrap();
+        for (k, point) in out.chunks(5).enumerate() {
+            for (dim, &y) in point.iter().enumerate() {
+                let u = h.sample(11 + k as u32, dim).unwrap();
+                assert_eq!(y.to_bits(), crate::bits::to_f32(u).to_bits());
             }
         }
     }

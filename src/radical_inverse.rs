@@ -39,7 +39,7 @@
 //! consecutive values do not wait on each other. All paths return the same bits (tested
 //! against each other and against a `u128` rational oracle).
 
-use crate::bits::{div_u32, div_u64, rem_u32, rem_u64, reverse_bits};
+use crate::bits::{FromFraction, div_u32, div_u64, rem_u32, rem_u64, reverse_bits};
 use crate::error::{Error, Result};
 use crate::randomize::digits::DigitScramble;
 
@@ -701,6 +701,30 @@ impl RadicalInverse {
     /// [`Error::IndexOutOfRange`] if the indices pass 2^32; [`Error::BufferLength`] for a
     /// zero stride.
     pub fn fill_strided(&self, start: u32, out: &mut [u32], stride: usize) -> Result<()> {
+        self.fill_strided_as(start, out, stride)
+    }
+
+    /// [`fill_strided`](Self::fill_strided) into any coordinate type (`f64`, `f32`, ...),
+    /// converted as each value is stored ([`FromFraction`]): the same values as converting
+    /// the `u32` fill afterwards, without a second pass.
+    ///
+    /// ```
+    /// use qmckit::RadicalInverse;
+    /// let phi3 = RadicalInverse::new(3)?;
+    /// let mut x = [0f64; 4];
+    /// phi3.fill_strided_as(1, &mut x, 1)?;
+    /// assert_eq!(x[1], qmckit::bits::to_f64(phi3.sample(2))); // 2/3, 32 bits
+    /// # Ok::<(), qmckit::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// As [`fill_strided`](Self::fill_strided).
+    pub fn fill_strided_as<T: FromFraction>(
+        &self,
+        start: u32,
+        out: &mut [T],
+        stride: usize,
+    ) -> Result<()> {
         if stride == 0 {
             return Err(Error::BufferLength {
                 expected: 1,
@@ -721,25 +745,25 @@ impl RadicalInverse {
         let (mut index, mut low, mut q, mut r) = (seq.index, seq.low, seq.q, seq.r);
         let mut slots = out.iter_mut().step_by(stride);
         if let Some(first) = slots.next() {
-            *first = q;
+            *first = T::from_fraction(q);
         }
         for slot in slots {
             (index, low, q, r) = advance(self, &seq.steps, index, low, q, r);
-            *slot = q;
+            *slot = T::from_fraction(q);
         }
         Ok(())
     }
 
-    /// Whether the sequential fill goes by runs ([`RunFill`]): `3 <= b <= RUN_TABLE` (and
+    /// Whether the sequential fill goes by runs ([`RunFill`]): `2 <= b <= RUN_TABLE` (and
     /// `B <= 2^63`, true for these bases: `B < b 2^32`).
     #[inline]
     pub(crate) const fn by_runs(&self) -> bool {
-        self.base >= 3 && self.base as usize <= RUN_TABLE && self.big <= 1 << 63
+        self.base >= 2 && self.base as usize <= RUN_TABLE && self.big <= 1 << 63
     }
 
-    /// Sequential fill for bases `3 ..= RUN_TABLE`, by runs of the lowest `k` digits, with
-    /// `L = b^k` the largest power of `b` up to [`RUN_TABLE`] (243, 125, 49, 121, 169 for
-    /// bases 3, 5, 7, 11, 13; `L = b` for the primes from 17 on). Needs `B <= 2^63`.
+    /// Sequential fill for bases `2 ..= RUN_TABLE`, by runs of the lowest `k` digits, with
+    /// `L = b^k` the largest power of `b` up to [`RUN_TABLE`] (256, 243, 125, 49, 121, 169
+    /// for bases 2, 3, 5, 7, 11, 13; `L = b` for the primes from 17 on). Needs `B <= 2^63`.
     ///
     /// Within a run, `phi_b(h L + e) = phi_b(h L) + n_e / L` exactly, where `n_e` is `e`
     /// with its `k` digits reversed. The table holds `2^32 n_e / L = P_e + s_e / L`
@@ -756,7 +780,7 @@ impl RadicalInverse {
     /// digits of `(h + 1) L` (counted only when the next digit above the run wraps,
     /// probability `1/b`; cached for `t = k, k + 1`), and the threshold takes one multiply-high and one correction.
     /// Stack: `RUN_TABLE` `u32`s and as many bytes (1280 bytes).
-    fn fill_runs(&self, start: u32, out: &mut [u32], stride: usize) {
+    fn fill_runs<T: FromFraction>(&self, start: u32, out: &mut [T], stride: usize) {
         let count = out.len().div_ceil(stride);
         RunFill::new(self, start).write(out, stride, count);
     }
@@ -792,18 +816,18 @@ pub(crate) struct RunFill {
 }
 
 impl RunFill {
-    /// The state at index `start`, for `3 <= base <= RUN_TABLE` and `B <= 2^63`.
+    /// The state at index `start`, for `2 <= base <= RUN_TABLE` and `B <= 2^63`.
     pub(crate) fn new(ri: &RadicalInverse, start: u32) -> Self {
-        // The caller guarantees 3 <= base <= RUN_TABLE; the clamps are no-ops that let the
+        // The caller guarantees 2 <= base <= RUN_TABLE; the clamps are no-ops that let the
         // compiler see every table index below in bounds (no panic path survives
         // inlining; tests/firmware/panic_proof.sh checks this at link time).
-        let b = ri.base.clamp(3, RUN_TABLE as u32);
+        let b = ri.base.clamp(2, RUN_TABLE as u32);
         let (mut len, mut k) = (b, 1u32);
         while len * b <= RUN_TABLE as u32 {
             len *= b;
             k += 1;
         }
-        let l = (len as usize).clamp(3, RUN_TABLE);
+        let l = (len as usize).clamp(2, RUN_TABLE);
         // U = B / L, exact as L = b^k with k <= K.
         let unit = div_u64(ri.big, len as u64);
         // (pq[e], ps[e]) = 2^32 rev_k(e) / L as integer part and remainder over L. Walk
@@ -816,7 +840,7 @@ impl RunFill {
         );
         let (mut q, mut s, mut e) = (0u32, 0u32, 0u32);
         let top = div_u32(len, b); // b^(k-1), the weight of digit 0 of n in e
-        let mut digit = [0u32; 8]; // k <= 5 for b >= 3
+        let mut digit = [0u32; 8]; // k <= 8 (b = 2), 5 for b >= 3
         for _ in 0..l {
             if let (Some(a), Some(c)) = (pq.get_mut(e as usize), ps.get_mut(e as usize)) {
                 (*a, *c) = (q, s as u8); // s < L <= 256
@@ -909,7 +933,7 @@ impl RunFill {
     /// Writes the next `count` values to `out[0], out[stride], ..` (those in bounds); the
     /// caller guarantees their indices stay within `u32`.
     #[inline]
-    pub(crate) fn write(&mut self, out: &mut [u32], stride: usize, count: usize) {
+    pub(crate) fn write<T: FromFraction>(&mut self, out: &mut [T], stride: usize, count: usize) {
         let mut done = 0;
         while done < count {
             if self.d0 >= self.l {
@@ -936,10 +960,15 @@ impl RunFill {
     }
 }
 
-/// Writes `values` to `out[(done + j) stride]`, `j = 0, 1, ..` (those in bounds): a plain
-/// zip for `stride = 1` (which vectorizes), else indexed stores.
+/// Writes `values`, converted, to `out[(done + j) stride]`, `j = 0, 1, ..` (those in
+/// bounds): a plain zip for `stride = 1` (which vectorizes), else indexed stores.
 #[inline(always)]
-fn write_run(out: &mut [u32], done: usize, stride: usize, values: impl Iterator<Item = u32>) {
+fn write_run<T: FromFraction>(
+    out: &mut [T],
+    done: usize,
+    stride: usize,
+    values: impl Iterator<Item = u32>,
+) {
     if stride == 1 {
         for (slot, v) in out
             .get_mut(done..)
@@ -947,13 +976,13 @@ fn write_run(out: &mut [u32], done: usize, stride: usize, values: impl Iterator<
             .iter_mut()
             .zip(values)
         {
-            *slot = v;
+            *slot = T::from_fraction(v);
         }
     } else {
         let mut pos = done.saturating_mul(stride);
         for v in values {
             if let Some(slot) = out.get_mut(pos) {
-                *slot = v;
+                *slot = T::from_fraction(v);
             }
             pos = pos.saturating_add(stride);
         }
@@ -964,8 +993,10 @@ fn write_run(out: &mut [u32], done: usize, stride: usize, values: impl Iterator<
 /// `rev(h L + e) = rev(h L) | rev(e)` (the bit reversal `rev` of 32 bits maps the low 8
 /// bits to the top 8 and the rest below them), with `rev(e)` from a table built by
 /// `rev(e) = rev(e >> 1) >> 1 | (e & 1) << 31`. One load and one OR a value, one reversal a
-/// run. Stack: 1 KiB.
-fn fill_base_2(start: u32, out: &mut [u32], stride: usize) {
+/// run. Stack: 1 KiB. (The general [`RunFill`] also serves base 2 — the blocked Halton fill
+/// uses it to keep one resumable state kind — but with its threshold compare and add it
+/// measured 1.4x slower than this for the column fill of 2D Halton.)
+fn fill_base_2<T: FromFraction>(start: u32, out: &mut [T], stride: usize) {
     let mut rev = [0u32; RUN_TABLE];
     for e in 1..RUN_TABLE {
         rev[e] = rev[e >> 1] >> 1 | ((e as u32 & 1) << 31);

@@ -1,6 +1,10 @@
 //! The interface every construction shares: random access by `(index, dimension)`.
 
+use crate::bits::FromFraction;
 use crate::error::{Error, Result};
+
+/// `u32`s the default [`Sampler::fill_as`] converts a call (4 KiB of stack).
+pub const CONVERT_CHUNK: usize = 1024;
 
 /// 2^32, the number of `u32` indices.
 pub const FULL_RANGE: u64 = 1 << 32;
@@ -68,6 +72,51 @@ pub trait Sampler {
         }
         for (k, row) in out.chunks_exact_mut(dims).enumerate().take(rows) {
             self.point(start + k as u32, row)?;
+        }
+        Ok(())
+    }
+
+    /// [`fill`](Self::fill) into any coordinate type ([`FromFraction`]: `f64`, `f32`,
+    /// `u32`, ...): the same values as converting the `u32` fill. The default fills whole
+    /// points into a stack buffer of [`CONVERT_CHUNK`] `u32`s a call and converts them (point
+    /// by point, through [`sample`](Self::sample), when one point is larger); samplers with
+    /// a sequential fast path convert as they store instead ([`crate::Halton`]). Not
+    /// available through `dyn Sampler` (it is generic); `&S` and `Box<S>` use the default.
+    ///
+    /// ```
+    /// use qmckit::{Halton, Sampler, bits::to_f64};
+    /// let h = Halton::new(3)?;
+    /// let mut x = [0f64; 6];
+    /// h.fill_as(10, &mut x)?; // points 10 and 11
+    /// assert_eq!(x[5], to_f64(h.sample(11, 2)?));
+    /// # Ok::<(), qmckit::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// As [`fill`](Self::fill).
+    fn fill_as<T: FromFraction>(&self, start: u32, out: &mut [T]) -> Result<()>
+    where
+        Self: Sized,
+    {
+        let rows = self.check_fill(start, out.len())?;
+        let dims = self.dims();
+        if dims > CONVERT_CHUNK {
+            for (k, row) in out.chunks_exact_mut(dims).enumerate().take(rows) {
+                for (dim, slot) in row.iter_mut().enumerate() {
+                    *slot = T::from_fraction(self.sample(start + k as u32, dim)?);
+                }
+            }
+            return Ok(());
+        }
+        let per = CONVERT_CHUNK / dims.max(1); // whole points a call
+        let mut buf = [0u32; CONVERT_CHUNK];
+        for (c, chunk) in out.chunks_mut(per * dims).enumerate() {
+            let tmp = buf.get_mut(..chunk.len()).unwrap_or(&mut []);
+            // c * per < rows, so the index is at most the last one check_fill accepted.
+            self.fill(start + (c * per) as u32, tmp)?;
+            for (y, &x) in chunk.iter_mut().zip(tmp.iter()) {
+                *y = T::from_fraction(x);
+            }
         }
         Ok(())
     }

@@ -1,6 +1,8 @@
 //! The 0.32 fixed-point conversions stay in [0, 1) and are faithful.
 
-use qmckit::bits::{fraction, gray, gray_inverse, in_cell, to_f32, to_f32_via_f64, to_f64};
+use qmckit::bits::{
+    FromFraction, fraction, gray, gray_inverse, in_cell, to_f32, to_f32_via_f64, to_f64,
+};
 
 fn check_f32(x: u32, prev: f32) -> f32 {
     let f = to_f32(x);
@@ -38,6 +40,9 @@ fn f32_never_reaches_one_for_any_input() {
     let mut prev = 0.0;
     for x in 0..=u32::MAX {
         prev = check_f32(x, prev);
+        // to_f64 builds 2^20 + x 2^-32 from bits and subtracts 2^20: the same bits as the
+        // plain (exact) conversion and division by 2^32.
+        assert_eq!(to_f64(x).to_bits(), (x as f64 / 4_294_967_296.0).to_bits());
     }
 }
 
@@ -45,6 +50,27 @@ fn f32_never_reaches_one_for_any_input() {
 fn f64_is_exact() {
     for x in [0u32, 1, 12345, 1 << 31, u32::MAX] {
         assert_eq!(to_f64(x) * 4_294_967_296.0, x as f64);
+    }
+    assert_eq!(to_f64(0).to_bits(), 0, "+0.0, not -0.0");
+    for x in (0..=u32::MAX)
+        .step_by(65_521)
+        .chain([u32::MAX - 1, 1 << 20, 3])
+    {
+        assert_eq!(
+            to_f64(x).to_bits(),
+            (x as f64 / 4_294_967_296.0).to_bits(),
+            "{x}"
+        );
+    }
+}
+
+/// The typed fills' conversions are the documented functions.
+#[test]
+fn from_fraction_is_the_conversions() {
+    for x in (0..=u32::MAX).step_by(9_973).chain([u32::MAX]) {
+        assert_eq!(u32::from_fraction(x), x);
+        assert_eq!(f64::from_fraction(x).to_bits(), to_f64(x).to_bits());
+        assert_eq!(f32::from_fraction(x).to_bits(), to_f32(x).to_bits());
     }
 }
 

@@ -44,6 +44,42 @@ fn fill_equals_random_access_for_every_sampler() {
     }
 }
 
+/// The typed fill (`fill_as`, here the trait's default through `Box<dyn Sampler>`:
+/// `u32`s a chunk, converted) equals converting random access: `f64` and `f32`, whole
+/// chunks and a partial last one, and one sampler wider than a chunk (1100 dimensions,
+/// point by point).
+#[test]
+fn typed_fill_equals_converted_random_access() {
+    use qmckit::bits::{to_f32, to_f64};
+    let mut samplers = all_samplers();
+    samplers.push((
+        "independent 1100",
+        Box::new(Independent::new(1100, 5).unwrap()),
+    ));
+    for (name, s) in samplers {
+        let d = s.dims();
+        let rows = s.len().min(700) as usize - 3;
+        let mut x = vec![0f64; rows * d];
+        let mut y = vec![0f32; rows * d];
+        s.fill_as(3, &mut x).unwrap();
+        s.fill_as(3, &mut y).unwrap();
+        for (k, (px, py)) in x.chunks(d).zip(y.chunks(d)).enumerate() {
+            for dim in 0..d {
+                let u = s.sample(3 + k as u32, dim).unwrap();
+                assert_eq!(px[dim].to_bits(), to_f64(u).to_bits(), "{name} {k} {dim}");
+                assert_eq!(py[dim].to_bits(), to_f32(u).to_bits(), "{name} {k} {dim}");
+            }
+        }
+        let mut odd = vec![0f64; d + 1];
+        if d > 1 {
+            assert!(
+                matches!(s.fill_as(0, &mut odd), Err(Error::BufferLength { .. })),
+                "{name}"
+            );
+        }
+    }
+}
+
 #[test]
 fn requests_past_the_end_are_errors_not_panics() {
     for (name, s) in all_samplers() {
