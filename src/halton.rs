@@ -18,7 +18,7 @@ use crate::sampler::{FULL_RANGE, Sampler, check};
 include!(concat!(env!("OUT_DIR"), "/primes.rs"));
 
 /// Radical-inverse constants for the first [`HALTON_MAX_DIMS`] primes, const-evaluated:
-/// 96 bytes a base on 64-bit targets, 48 on 32-bit ones (96 / 48 KiB in all, linked only
+/// 104 bytes a base on 64-bit targets, 48 on 32-bit ones (104 / 48 KiB in all, linked only
 /// when indexed at run time).
 pub static HALTON_BASES: [RadicalInverse; HALTON_MAX_DIMS] = {
     let mut table = [match RadicalInverse::new(2) {

@@ -95,6 +95,35 @@ const fn wide_weights(q: u64, m: u32) -> [u32; WIDE] {
     weight
 }
 
+/// Largest chunk `q` (of one digit, `q = b`) whose indices below `q^3` take the flat
+/// three-digit formula, and largest whose indices below `q^2` take the two-digit one
+/// (exactness: `q^6 <= 2^32`, resp. `q^4 <= 2^32`; see [`RadicalInverse::sample`]).
+#[cfg(target_pointer_width = "64")]
+const FLAT3_MAX: u64 = 40;
+#[cfg(target_pointer_width = "64")]
+const FLAT2_MAX: u64 = 256;
+
+/// [`RadicalInverse::flat`] for the reversal table id and chunk `q`: bases without a table
+/// (`c = 1`) up to [`FLAT3_MAX`]: `(q^2, q^3 - q, q^2 - 1)` up to index `q^3 - 1`; up to
+/// [`FLAT2_MAX`]: `(q, q^2 - 1, 0)` up to `q^2 - 1` (all below 2^16); else zeros.
+#[cfg(target_pointer_width = "64")]
+const fn flat_coefficients(table: u8, q: u64) -> [u16; 4] {
+    if table != 0 {
+        [0; 4]
+    } else if q <= FLAT3_MAX {
+        [
+            (q * q) as u16,
+            (q * q * q - q) as u16,
+            (q * q - 1) as u16,
+            (q * q * q - 1) as u16,
+        ]
+    } else if q <= FLAT2_MAX {
+        [q as u16, (q * q - 1) as u16, 0, (q * q - 1) as u16]
+    } else {
+        [0; 4]
+    }
+}
+
 /// `floor(m x / 2^64)`.
 #[cfg(target_pointer_width = "64")]
 #[inline(always)]
@@ -170,7 +199,7 @@ const fn reversal_for(base: u32) -> (u8, u32) {
 /// A validated base with its precomputed constants: the radical inverse `phi_b` as a cheap,
 /// infallible, `const`-callable function of the index.
 ///
-/// 96 bytes on 64-bit targets, 48 on 32-bit ones (plus the 707-byte shared digit-reversal
+/// 104 bytes on 64-bit targets, 48 on 32-bit ones (plus the 707-byte shared digit-reversal
 /// tables, linked with any run-time use).
 /// Build it once (a `const`, or a table like [`crate::halton::HALTON_BASES`]).
 ///
@@ -203,8 +232,13 @@ pub struct RadicalInverse {
     /// Inverse of the odd part of `chunk` modulo 2^64 (exact division by multiplication).
     #[cfg(not(target_pointer_width = "64"))]
     chunk_inv: u64,
-    /// `min(chunk^3, 2^32) - 1`: indices up to it have at most three chunks.
+    /// `min(chunk^3, 2^32) - 1` for chunks up to `NESTED_CHUNK_MAX`, else 0: indices up to
+    /// it take the nested floors (at most three chunks).
     short_max: u32,
+    /// The coefficients `(A, A', A'')` of the flat short formula (see `flat`) and its last
+    /// index, all below 2^16; all zero where it does not apply.
+    #[cfg(target_pointer_width = "64")]
+    flat: [u16; 4],
     /// `chunk^(m-1-j)` for the `m = K / c <= WIDE` chunks of the wide numerator (0 past `m`),
     /// all below 2^32; all zero when `m > WIDE` (the serial numerator serves those bases).
     #[cfg(target_pointer_width = "64")]
@@ -218,7 +252,7 @@ pub struct RadicalInverse {
 // The sizes the documentation states (they set the Halton table's flash cost), checked
 // at compile time on every target.
 #[cfg(target_pointer_width = "64")]
-const _: () = assert!(core::mem::size_of::<RadicalInverse>() == 96);
+const _: () = assert!(core::mem::size_of::<RadicalInverse>() == 104);
 #[cfg(not(target_pointer_width = "64"))]
 const _: () = assert!(core::mem::size_of::<RadicalInverse>() == 48);
 
@@ -263,12 +297,16 @@ impl RadicalInverse {
             chunk_inv: inverse_mod_2_64(chunk >> chunk_shift),
             short_max: {
                 let cube = chunk as u128 * chunk as u128 * chunk as u128; // no overflow
-                if cube >= TWO_32 as u128 {
+                if chunk > NESTED_CHUNK_MAX as u64 {
+                    0 // index 0 is 0 by any path
+                } else if cube >= TWO_32 as u128 {
                     u32::MAX
                 } else {
                     (cube - 1) as u32
                 }
             },
+            #[cfg(target_pointer_width = "64")]
+            flat: flat_coefficients(table, chunk),
             #[cfg(target_pointer_width = "64")]
             weight: wide_weights(chunk, digits / c),
             big,
@@ -296,9 +334,12 @@ impl RadicalInverse {
 
     /// `floor(phi_b(index) * 2^32)`, exact. Defined for every `u32` index.
     ///
-    /// Indices of up to three chunks of `c` digits (`c = 5, 3, 2, 2, 2` for bases 3, 5, 7,
-    /// 11, 13; 1 otherwise), for `b^c <= 2^16`, go by nested floors (see `nest`): three
-    /// multiplications per chunk, one for the last. Longer indices (and bases above 2^16)
+    /// On 64-bit targets, short indices of bases without a reversal table (`b <= 256`:
+    /// below `b^3` for `b <= 40`, below `b^2` up to 256) take one branch-free formula of four
+    /// or five 64-bit multiplications (see `flat`). Otherwise indices of up to three chunks
+    /// of `c` digits (`c = 5, 3, 2, 2, 2` for bases 3, 5, 7, 11, 13; 1 otherwise), for
+    /// `b^c <= 2^16`, go by nested floors (see `nest`): three multiplications per chunk, one
+    /// for the last. Longer indices (and bases above 2^16)
     /// build the exact numerator `N` over `B = b^K` from all chunk quotients at once (see
     /// `numerator_wide`: about 16 multiplications, none waiting on another, no branch) and
     /// scale it once (two more); that is on 64-bit targets, inline, except for the composite
@@ -306,11 +347,15 @@ impl RadicalInverse {
     /// multiplications per chunk), out of line, for flash. Base 2 is one bit reversal.
     #[inline(always)]
     pub const fn sample(&self, index: u32) -> u32 {
+        #[cfg(target_pointer_width = "64")]
+        if index <= self.flat[3] as u32 {
+            return self.flat(index);
+        }
         if self.base == 2 {
             return reverse_bits(index);
         }
         let q = self.chunk;
-        if q <= NESTED_CHUNK_MAX && index <= self.short_max {
+        if index <= self.short_max {
             // index < q^3: up to three chunks by nested floors, unrolled.
             if index < q {
                 return self.nest(index, 0) as u32;
@@ -323,6 +368,43 @@ impl RadicalInverse {
             return self.three_chunks(r0, r1, n2);
         }
         self.sample_long(index)
+    }
+
+    /// `floor(phi_b(i) 2^32)` for a short index of a base without a reversal table
+    /// (`c = 1`, `q = b`), branch-free. With `Q_1 = floor(i / q)`, `Q_2 = floor(i / q^2)` the
+    /// digits are `i - q Q_1`, `Q_1 - q Q_2`, `Q_2`, so for `i < q^3`
+    ///
+    /// ```text
+    /// phi_b(i) = X / q^3,  X = (i - q Q_1) q^2 + (Q_1 - q Q_2) q + Q_2
+    ///                        = i q^2 - (q^3 - q) Q_1 - (q^2 - 1) Q_2
+    /// ```
+    ///
+    /// and for `i < q^2` (`Q_2 = 0`) `phi_b(i) = X / q^2` with `X = i q - (q^2 - 1) Q_1`; one-
+    /// and two-digit indices need no branch (their high digits are 0), and index 0 gives 0
+    /// for every base (all coefficients are 0 where the formula does not apply).
+    ///
+    /// Every product is a single 64-bit multiplication (the integer multiplier, not the
+    /// number of instructions, bounds this loop): `Q_1 = floor(i M / 2^32)` with
+    /// `M = floor(chunk_magic / 2^32) + 1 = (2^32 + e) / q`, `0 < e <= q`, errs by
+    /// `i e / (q 2^32) < 1 / q` (as `i q < 2^32` here), less than the gap from `i / q` up to
+    /// an integer, so it is exact; `Q_2` likewise from `ceil(2^64 / q^2)`. The result is
+    /// `floor(X M' / 2^32)` for `M' = ceil(2^64 / q^3)` (`q <= 40`) or `ceil(2^64 / q^2)`
+    /// (`q <= 256`), exact as in [`three_chunks`](Self::three_chunks), and `X M' < 2^64`
+    /// (`X < q^3`, `M' < 2^64 / q^3 + 1`), so the low product suffices. Cost: five
+    /// multiplications (four for two digits).
+    #[cfg(target_pointer_width = "64")]
+    #[inline(always)]
+    const fn flat(&self, index: u32) -> u32 {
+        let i = index as u64;
+        let q1 = (i * ((self.chunk_magic >> 32) + 1)) >> 32;
+        let [a, a1, a2, _] = self.flat;
+        let x = (i * a as u64).wrapping_sub(q1 * a1 as u64);
+        if a2 == 0 {
+            return (x.wrapping_mul(self.power_magic[0]) >> 32) as u32; // X / q^2
+        }
+        let q2 = (i * ((self.power_magic[0] >> 32) + 1)) >> 32;
+        let x = x.wrapping_sub(q2 * a2 as u64);
+        (x.wrapping_mul(self.power_magic[1]) >> 32) as u32 // X / q^3
     }
 
     /// `floor(phi_b(i) 2^32)` for an index of two chunks `r0 + q r1` (`q = b^c <= 2^16`).
