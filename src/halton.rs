@@ -266,10 +266,11 @@ impl Sampler for Halton {
 }
 
 impl Halton {
-    /// Point `index` into `out` (the first `min(out.len(), dims)` coordinates), converted.
+    /// Point `index` into `out`, converted: its first `out.len()` coordinates (callers pass
+    /// `dims()` slots; no bound beyond the table's is needed, which keeps the loop simple).
     #[inline]
     fn point_as<T: FromFraction>(&self, index: u32, out: &mut [T]) {
-        let bases = HALTON_BASES.iter().take(self.dims);
+        let bases = HALTON_BASES.iter();
         if self.scramble.is_none() {
             for (slot, ri) in out.iter_mut().zip(bases) {
                 *slot = T::from_fraction(ri.sample(index));
