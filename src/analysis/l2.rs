@@ -819,7 +819,7 @@ fn wrap_around_with(p: Points<'_>, build: Build) -> f64 {
         |x| [x],
         |a, b| {
             let t = (a[0] - b[0]).abs();
-            1.5 - t * (1.0 - t)
+            (-t).mul_add(1.0 - t, 1.5)
         },
         build,
         Loop::Tiles,
