@@ -867,7 +867,7 @@ fn mixture_with(p: Points<'_>, build: Build) -> f64 {
         |x| [x, 15.0 / 16.0 - 0.25 * (x - 0.5).abs()],
         |a, b| {
             let t = (a[0] - b[0]).abs();
-            a[1] + b[1] - t * (0.75 - 0.5 * t)
+            (-t).mul_add((-0.5f64).mul_add(t, 0.75), a[1] + b[1])
         },
         build,
         Loop::Tiles,
@@ -1027,7 +1027,7 @@ fn diaphony_with(p: Points<'_>, build: Build) -> f64 {
         |x| [x],
         |a, b| {
             let t = (a[0] - b[0]).abs();
-            1.0 + TWO_PI2 * (t * t - t + 1.0 / 6.0)
+            TWO_PI2.mul_add((-t).mul_add(1.0 - t, 1.0 / 6.0), 1.0)
         },
         build,
         Loop::Rows,
