@@ -1239,14 +1239,26 @@ mod tests {
     #[test]
     fn detected_build_gives_the_portable_bits() {
         // On an x86-64 CPU with AVX2 and FMA this compares the AVX2 build of the pair sum
-        // with the portable one (elsewhere both are the portable build).
+        // with the portable one (elsewhere both are the portable build). The `f64::mul_add`
+        // of the wrap-around, mixture and diaphony factors is a packed FMA instruction in the
+        // one and an `fma` call in the other; (300, 8) and (301, 2) run several full 8D tile
+        // row blocks and 2D groups of blocks.
         #[cfg(target_arch = "x86_64")]
         eprintln!(
             "avx2+fma: {}",
             std::arch::is_x86_feature_detected!("avx2")
                 && std::arch::is_x86_feature_detected!("fma")
         );
-        for (n, d) in [(1, 1), (7, 3), (9, 2), (33, 2), (100, 8), (257, 5)] {
+        for (n, d) in [
+            (1, 1),
+            (7, 3),
+            (9, 2),
+            (33, 2),
+            (100, 8),
+            (257, 5),
+            (300, 8),
+            (301, 2),
+        ] {
             let data = golden_ratio_points(n * d);
             let p = Points::new(&data, d).unwrap();
             for m in L2Metric::ALL {
