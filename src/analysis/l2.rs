@@ -33,7 +33,12 @@
 //! 14-17x, MD 13-16x but WD only 7-9x (SciPy's cheapest loop) before the 8D tiles. With
 //! them (2026-11-30, four runs, loaded machine): 8D CD 17.2-20.8x, WD 8.6-10.9x, MD
 //! 14.0-20.9x (the previous build, timed in the same session: 11.4-13.5x, 6.2-8.7x,
-//! 10.7-14.4x); the wrap-around loop itself went from 19-22 ms to 12.5-13.1 ms.
+//! 10.7-14.4x); the wrap-around loop itself went from 19-22 ms to 12.5-13.1 ms. With the
+//! fused multiply-adds below (2026-11-30, late evening, three runs, loaded machine): 2D WD
+//! 10.6-15.4x, MD 14.4-18.9x; 8D WD 10.1-10.3x, MD 18.2-18.7x (CD, L2-star unchanged);
+//! timed against the build without them in alternation (`examples/time_l2.rs`, best of
+//! nine runs): WD 1.19x faster in 8D and 1.16x in 2D, MD 1.24x and 1.26x, diaphony 1.17x
+//! and 1.95x.
 //!
 //! | function | name | returns | convention of |
 //! |---|---|---|---|
@@ -61,6 +66,26 @@
 //! and the 8D tiles, of the sums of four products), which is usually more accurate
 //! than SciPy's plain double sums. A squared value that rounds below zero is clamped to
 //! zero before a square root is taken (never a NaN).
+//!
+//! ## Fused multiply-adds
+//!
+//! The wrap-around, mixture and diaphony factors are written with [`f64::mul_add`] (e.g.
+//! `fma(-t, 1 - t, 3/2)` for `3/2 - t (1 - t)`), which moves an addition of these add-bound
+//! loops (for the wrap-around, three additions against two multiplications per coordinate)
+//! to the multipliers, and rounds once fewer. `mul_add` is one correctly rounded operation
+//! in every build: packed FMA instructions (`vfnmadd213pd` and the like) in the AVX2 build,
+//! a call to the runtime library's correctly rounded `fma` in the portable one (on x86-64,
+//! compiler-builtins' `fma`: the FMA instruction where the CPU has one, an exact software
+//! fallback elsewhere), so the two builds still give the same bits (tested). The price is
+//! paid by the portable build, used on x86-64 CPUs without AVX2 and FMA: one scalar call per
+//! factor, about 4-8x slower for these three measures than without the FMA (8D wrap-around
+//! of 4096 points on one thread: 259 ms against 63 ms, measured with the FMA instruction
+//! behind the call; the software fallback is slower still; the AVX2 build: 11-13 ms). Where
+//! the baseline target has an FMA (e.g. aarch64) it is an instruction. The shape of the
+//! expression matters to the vectorizer: `t.mul_add(t - 1, 1.5)`, the same value, compiled
+//! (release profile, 16 codegen units) to a partly scalar 8D loop 2.5x slower than the plain
+//! one, while `(-t).mul_add(1 - t, 1.5)`, the shape of `1.5 - t * (1 - t)`, stays packed:
+//! check the assembly when changing a factor.
 
 use super::Points;
 use rayon::prelude::*;
@@ -209,7 +234,9 @@ enum Build {
     Portable,
     /// On x86-64, the same code compiled with AVX2 and FMA when the CPU has them (detected
     /// at run time); elsewhere the portable build. Same bits as [`Build::Portable`]: Rust
-    /// never contracts `a * b + c` into an FMA, so the instructions differ only in width.
+    /// never contracts `a * b + c` into an FMA, and the explicit [`f64::mul_add`] of some
+    /// factors is one correctly rounded operation in both builds (an FMA instruction here,
+    /// the library's `fma` there), so the instructions differ only in width.
     Detect,
 }
 
@@ -797,7 +824,11 @@ fn centered_with(p: Points<'_>, build: Build) -> f64 {
 ///
 /// (Hickernell 1998; eq. 10 of Zhou, Fang & Ning 2013.) Depends only on the differences of
 /// coordinates modulo 1: invariant under toroidal shifts. Range `[0, (3/2)^d - (4/3)^d]`.
-/// Cost `O(n^2 d)`.
+/// Each pair factor is one fused multiply-add, `fma(-t, 1 - t, 3/2)` with
+/// `t = |x_ik - x_jk|` (see the module documentation: the same bits in every build, one
+/// rounding fewer than `3/2 - t (1 - t)`). Cost `O(n^2 d)`: for 4096 points in 8D about
+/// 11 ms on one thread with AVX2 and FMA, about 260 ms in the portable build (one `fma`
+/// call per factor).
 ///
 /// One point in one dimension, anywhere: `-4/3 + 3/2 = 1/6`:
 ///
@@ -819,7 +850,7 @@ fn wrap_around_with(p: Points<'_>, build: Build) -> f64 {
         |x| [x],
         |a, b| {
             let t = (a[0] - b[0]).abs();
-            1.5 - t * (1.0 - t)
+            (-t).mul_add(1.0 - t, 1.5)
         },
         build,
         Loop::Tiles,
@@ -856,7 +887,8 @@ pub fn mixture(p: Points<'_>) -> f64 {
 }
 
 /// [`mixture`] in the given build. With `m = 15/16 - |x - 1/2| / 4` precomputed, the pair
-/// factor is `m_i + m_j - t (3/4 - t / 2)`, `t = |x_i - x_j|`.
+/// factor `m_i + m_j - t (3/4 - t / 2)`, `t = |x_i - x_j|`, is evaluated as
+/// `fma(-t, fma(-1/2, t, 3/4), m_i + m_j)` (two fused multiply-adds; module documentation).
 fn mixture_with(p: Points<'_>, build: Build) -> f64 {
     let sums = kernel_sums(
         p,
@@ -867,7 +899,7 @@ fn mixture_with(p: Points<'_>, build: Build) -> f64 {
         |x| [x, 15.0 / 16.0 - 0.25 * (x - 0.5).abs()],
         |a, b| {
             let t = (a[0] - b[0]).abs();
-            a[1] + b[1] - t * (0.75 - 0.5 * t)
+            (-t).mul_add((-0.5f64).mul_add(t, 0.75), a[1] + b[1])
         },
         build,
         Loop::Tiles,
@@ -1018,7 +1050,9 @@ pub fn diaphony(p: Points<'_>) -> f64 {
     diaphony_with(p, Build::Detect)
 }
 
-/// [`diaphony`] in the given build.
+/// [`diaphony`] in the given build. The pair factor `1 + 2 pi^2 B2(t)`, `t = |x_i - x_j|`,
+/// is evaluated as `fma(2 pi^2, fma(-t, 1 - t, 1/6), 1)` (two fused multiply-adds; module
+/// documentation).
 fn diaphony_with(p: Points<'_>, build: Build) -> f64 {
     const TWO_PI2: f64 = 2.0 * core::f64::consts::PI * core::f64::consts::PI;
     let sums = kernel_sums(
@@ -1027,7 +1061,7 @@ fn diaphony_with(p: Points<'_>, build: Build) -> f64 {
         |x| [x],
         |a, b| {
             let t = (a[0] - b[0]).abs();
-            1.0 + TWO_PI2 * (t * t - t + 1.0 / 6.0)
+            TWO_PI2.mul_add((-t).mul_add(1.0 - t, 1.0 / 6.0), 1.0)
         },
         build,
         Loop::Rows,
@@ -1205,14 +1239,26 @@ mod tests {
     #[test]
     fn detected_build_gives_the_portable_bits() {
         // On an x86-64 CPU with AVX2 and FMA this compares the AVX2 build of the pair sum
-        // with the portable one (elsewhere both are the portable build).
+        // with the portable one (elsewhere both are the portable build). The `f64::mul_add`
+        // of the wrap-around, mixture and diaphony factors is a packed FMA instruction in the
+        // one and an `fma` call in the other; (300, 8) and (301, 2) run several full 8D tile
+        // row blocks and 2D groups of blocks.
         #[cfg(target_arch = "x86_64")]
         eprintln!(
             "avx2+fma: {}",
             std::arch::is_x86_feature_detected!("avx2")
                 && std::arch::is_x86_feature_detected!("fma")
         );
-        for (n, d) in [(1, 1), (7, 3), (9, 2), (33, 2), (100, 8), (257, 5)] {
+        for (n, d) in [
+            (1, 1),
+            (7, 3),
+            (9, 2),
+            (33, 2),
+            (100, 8),
+            (257, 5),
+            (300, 8),
+            (301, 2),
+        ] {
             let data = golden_ratio_points(n * d);
             let p = Points::new(&data, d).unwrap();
             for m in L2Metric::ALL {
