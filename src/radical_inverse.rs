@@ -390,18 +390,35 @@ impl RadicalInverse {
     /// an integer, so it is exact; `Q_2` likewise from `ceil(2^64 / q^2)`. The result is
     /// `floor(X M' / 2^32)` for `M' = ceil(2^64 / q^3)` (`q <= 40`) or `ceil(2^64 / q^2)`
     /// (`q <= 256`), exact as in [`three_chunks`](Self::three_chunks), and `X M' < 2^64`
-    /// (`X < q^3`, `M' < 2^64 / q^3 + 1`), so the low product suffices. Cost: five
-    /// multiplications (four for two digits).
+    /// (`X < q^3`, `M' < 2^64 / q^3 + 1`), so the low product suffices. Cost: six
+    /// multiplications.
+    ///
+    /// Two digits (`40 < q <= 256`, `i < q^2`) take one widening multiplication instead:
+    /// with `R = ceil(2^64 / q) = (2^64 + e) / q`, `0 <= e < q`, the product
+    /// `i R = 2^64 Q_1 + L` gives `Q_1` as its high half and `L = 2^64 d_0 / q + i e / q` as
+    /// its low half (`d_0 = i - q Q_1`), so with `R_2 = ceil(2^64 / q^2) = (2^64 + e') / q^2`
+    ///
+    /// ```text
+    /// S = L + Q_1 R_2 = 2^64 (d_0 q + Q_1) / q^2 + E,   E = i e / q + Q_1 e' / q^2 < q^2 + q,
+    /// ```
+    ///
+    /// and `floor(S / 2^32) = floor(2^32 X / q^2)` because `E / 2^32 < 1 / q^2` (the gap of
+    /// `2^32 X / q^2` below the next integer) whenever `q^4 + q^3 < 2^32`, i.e. `q <= 255`
+    /// (`q = 256` has `e = e' = 0`); `S < 2^64`, so wrapping addition is exact. Cost: one
+    /// widening multiplication and one 64-bit one (the integer multiplier bounds this loop).
     #[cfg(target_pointer_width = "64")]
     #[inline(always)]
     const fn flat(&self, index: u32) -> u32 {
         let i = index as u64;
-        let q1 = (i * ((self.chunk_magic >> 32) + 1)) >> 32;
         let [a, a1, a2, _] = self.flat;
-        let x = (i * a as u64).wrapping_sub(q1 * a1 as u64);
         if a2 == 0 {
-            return (x.wrapping_mul(self.power_magic[0]) >> 32) as u32; // X / q^2
+            // Two digits, one widening multiplication and one more: see above.
+            let p = i as u128 * self.chunk_magic as u128;
+            let (q1, low) = ((p >> 64) as u64, p as u64);
+            return (low.wrapping_add(q1 * self.power_magic[0]) >> 32) as u32;
         }
+        let q1 = (i * ((self.chunk_magic >> 32) + 1)) >> 32;
+        let x = (i * a as u64).wrapping_sub(q1 * a1 as u64);
         let q2 = (i * ((self.power_magic[0] >> 32) + 1)) >> 32;
         let x = x.wrapping_sub(q2 * a2 as u64);
         (x.wrapping_mul(self.power_magic[1]) >> 32) as u32 // X / q^3
