@@ -335,11 +335,11 @@ impl RadicalInverse {
     /// `floor(phi_b(index) * 2^32)`, exact. Defined for every `u32` index.
     ///
     /// On 64-bit targets, short indices of bases without a reversal table (`b <= 256`:
-    /// below `b^3` for `b <= 40`, below `b^2` up to 256) take one branch-free formula of four
-    /// or five 64-bit multiplications (see `flat`). Otherwise indices of up to three chunks
-    /// of `c` digits (`c = 5, 3, 2, 2, 2` for bases 3, 5, 7, 11, 13; 1 otherwise), for
-    /// `b^c <= 2^16`, go by nested floors (see `nest`): three multiplications per chunk, one
-    /// for the last. Longer indices (and bases above 2^16)
+    /// below `b^3` for `b <= 40`, below `b^2` up to 256) take one branch-free formula (two
+    /// multiplications for two digits, six for three; see `flat`). Otherwise indices of up
+    /// to three chunks of `c` digits (`c = 5, 3, 2, 2, 2` for bases 3, 5, 7, 11, 13; 1
+    /// otherwise), for `b^c <= 2^16`, go by nested floors (see `nest`): three
+    /// multiplications per chunk, one for the last. Longer indices (and bases above 2^16)
     /// build the exact numerator `N` over `B = b^K` from all chunk quotients at once (see
     /// `numerator_wide`: about 16 multiplications, none waiting on another, no branch) and
     /// scale it once (two more); that is on 64-bit targets, inline, except for the composite
