@@ -239,7 +239,7 @@ impl Sampler for Halton {
 
     /// Sequential fast path in any coordinate type, converted as stored: one run state
     /// ([`RadicalInverse::fill_strided_as`]) per dimension, column by column; on 64-bit
-    /// targets from [`BLOCKED_MIN_DIMS`] dimensions on, blocked (see `fill_blocked`).
+    /// targets from 4 dimensions on, blocked (see `fill_blocked`).
     /// Scrambled sequences go point by point. Same values as [`sample`](Sampler::sample).
     fn fill_as<T: FromFraction>(&self, start: u32, out: &mut [T]) -> Result<()> {
         let rows = self.check_fill(start, out.len())?;
