@@ -97,7 +97,7 @@ const fn wide_weights(q: u64, m: u32) -> [u32; WIDE] {
 
 /// Largest chunk `q` (of one digit, `q = b`) whose indices below `q^3` take the flat
 /// three-digit formula, and largest whose indices below `q^2` take the two-digit one
-/// (exactness: `q^6 <= 2^32`, resp. `q^4 <= 2^32`; see [`RadicalInverse::sample`]).
+/// (exactness: `q^6 <= 2^32`, resp. `q^4 + q^3 < 2^32` or `q` a power of 2; see `flat`).
 #[cfg(target_pointer_width = "64")]
 const FLAT3_MAX: u64 = 40;
 #[cfg(target_pointer_width = "64")]
@@ -105,7 +105,8 @@ const FLAT2_MAX: u64 = 256;
 
 /// [`RadicalInverse::flat`] for the reversal table id and chunk `q`: bases without a table
 /// (`c = 1`) up to [`FLAT3_MAX`]: `(q^2, q^3 - q, q^2 - 1)` up to index `q^3 - 1`; up to
-/// [`FLAT2_MAX`]: `(q, q^2 - 1, 0)` up to `q^2 - 1` (all below 2^16); else zeros.
+/// [`FLAT2_MAX`]: `(0, 0, 0)` (the two-digit path needs no coefficients; `A'' = 0` selects
+/// it) up to `q^2 - 1` (all below 2^16); else zeros.
 #[cfg(target_pointer_width = "64")]
 const fn flat_coefficients(table: u8, q: u64) -> [u16; 4] {
     if table != 0 {
@@ -118,7 +119,7 @@ const fn flat_coefficients(table: u8, q: u64) -> [u16; 4] {
             (q * q * q - 1) as u16,
         ]
     } else if q <= FLAT2_MAX {
-        [q as u16, (q * q - 1) as u16, 0, (q * q - 1) as u16]
+        [0, 0, 0, (q * q - 1) as u16]
     } else {
         [0; 4]
     }
@@ -235,8 +236,9 @@ pub struct RadicalInverse {
     /// `min(chunk^3, 2^32) - 1` for chunks up to `NESTED_CHUNK_MAX`, else 0: indices up to
     /// it take the nested floors (at most three chunks).
     short_max: u32,
-    /// The coefficients `(A, A', A'')` of the flat short formula (see `flat`) and its last
-    /// index, all below 2^16; all zero where it does not apply.
+    /// The coefficients `(A, A', A'')` of the flat three-digit formula (zero for the
+    /// two-digit one) and the flat path's last index, all below 2^16; all zero where it does
+    /// not apply (see `flat`).
     #[cfg(target_pointer_width = "64")]
     flat: [u16; 4],
     /// `chunk^(m-1-j)` for the `m = K / c <= WIDE` chunks of the wide numerator (0 past `m`),
@@ -388,10 +390,9 @@ impl RadicalInverse {
     /// `M = floor(chunk_magic / 2^32) + 1 = (2^32 + e) / q`, `0 < e <= q`, errs by
     /// `i e / (q 2^32) < 1 / q` (as `i q < 2^32` here), less than the gap from `i / q` up to
     /// an integer, so it is exact; `Q_2` likewise from `ceil(2^64 / q^2)`. The result is
-    /// `floor(X M' / 2^32)` for `M' = ceil(2^64 / q^3)` (`q <= 40`) or `ceil(2^64 / q^2)`
-    /// (`q <= 256`), exact as in [`three_chunks`](Self::three_chunks), and `X M' < 2^64`
-    /// (`X < q^3`, `M' < 2^64 / q^3 + 1`), so the low product suffices. Cost: six
-    /// multiplications.
+    /// `floor(X M' / 2^32)` for `M' = ceil(2^64 / q^3)` (`q <= 40`), exact as in
+    /// [`three_chunks`](Self::three_chunks), and `X M' < 2^64` (`X < q^3`,
+    /// `M' < 2^64 / q^3 + 1`), so the low product suffices. Cost: six multiplications.
     ///
     /// Two digits (`40 < q <= 256`, `i < q^2`) take one widening multiplication instead:
     /// with `R = ceil(2^64 / q) = (2^64 + e) / q`, `0 <= e < q`, the product
