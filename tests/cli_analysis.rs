@@ -139,6 +139,57 @@ fn star_is_refused_when_too_large_and_skipped_by_all() {
 }
 
 #[test]
+fn max_seconds_sets_the_star_budget() {
+    let csv_of = |n: &str, d: &str| {
+        stdout(
+            &["points", "sobol", "-n", n, "-d", d, "--format", "csv"],
+            "",
+        )
+    };
+    // 2000 3D points are within the default budget (8151) but not within a hundredth of a
+    // second: 0.5 N^2.5 <= 3e6 up to N = 514 (6e6^0.4 = 514.4).
+    let small = csv_of("2000", "3");
+    assert_usage_error(
+        &["discrepancy", "--metric", "star", "--max-seconds", "0.01"],
+        &small,
+        "(at most 514 within --max-seconds 0.01)",
+    );
+    for bad in ["0", "-1", "nan", "inf"] {
+        assert_usage_error(
+            &[
+                "discrepancy",
+                "--metric",
+                "cd",
+                &format!("--max-seconds={bad}"),
+            ],
+            "0.5\n",
+            "--max-seconds must be a positive number of seconds",
+        );
+    }
+    // 300 6D points: refused by default (278), computed with 15 seconds (about 3 s here).
+    let large = csv_of("300", "6");
+    assert_usage_error(
+        &["discrepancy", "--metric", "star"],
+        &large,
+        "(at most 278 within --max-seconds 10)",
+    );
+    let text = stdout(
+        &["discrepancy", "--metric", "star", "--max-seconds", "15"],
+        &large,
+    );
+    let got = values(&text)[0].1;
+    let coords: Vec<f64> = large
+        .lines()
+        .flat_map(|l| l.split(',').map(|v| v.parse::<f64>().unwrap()))
+        .collect();
+    let p = qmckit::analysis::Points::new(&coords, 6).unwrap();
+    let lower = qmckit::analysis::star::star_lower_bound(p, 1, 20_000);
+    assert!(lower <= got && got < lower + 0.01, "{lower} {got}");
+    let want = qmckit::analysis::star::star_exact_within(p, f64::INFINITY, &|_, _| {}).unwrap();
+    assert_eq!(got, want);
+}
+
+#[test]
 fn bad_input_is_one_line_with_the_line_number() {
     let cases = [
         (

@@ -499,3 +499,53 @@ fn dem_refuses_beyond_its_budget() {
         assert_eq!(star_exact(Points::new(&data, d).unwrap()).unwrap_err(), err);
     }
 }
+
+#[test]
+fn dem_within_a_budget_reports_progress() {
+    use qmckit::analysis::dem::{max_points_within, star_dem_within, work_estimate};
+    use qmckit::analysis::star::star_exact_within;
+    use std::sync::Mutex;
+    // A larger budget admits more points; the refusal names the largest N within it.
+    for (d, budget) in [(3, 1e4), (4, 3e10), (6, 1.8e11)] {
+        let max = max_points_within(d, budget) as usize;
+        assert!(work_estimate(max, d) <= budget && work_estimate(max + 1, d) > budget);
+        let data = vec![0.25; (max + 1) * d];
+        let p = Points::new(&data, d).unwrap();
+        let err = star_dem_within(p, budget, &|_, _| {}).unwrap_err();
+        assert_eq!(
+            err,
+            qmckit::Error::TooManyPoints {
+                requested: max as u64 + 1,
+                max: max as u64
+            }
+        );
+        assert_eq!(star_exact_within(p, budget, &|_, _| {}).unwrap_err(), err);
+    }
+    // 120 3D Sobol' points: more than the budget 1e4 admits (52); with a budget, the value
+    // is brute force's, and every slab of the first cut is reported once.
+    let sobol = qmckit::Sobol::new(3).unwrap();
+    let mut u = vec![0u32; 120 * 3];
+    qmckit::Sampler::fill(&sobol, 0, &mut u).unwrap();
+    let data = Points::from_u32(&u);
+    let p = Points::new(&data, 3).unwrap();
+    assert!(star_dem_within(p, 1e4, &|_, _| {}).is_err());
+    let calls = Mutex::new(Vec::new());
+    let got = star_dem_within(p, 1e6, &|done, total| {
+        calls.lock().unwrap().push((done, total))
+    })
+    .unwrap();
+    let want = brute_star(&data, 3);
+    assert!((got - want).abs() < 1e-14, "{got} vs {want}");
+    // Weighted progress in PROGRESS_STEPS, one report per slab and a last one at the total.
+    let calls = calls.into_inner().unwrap();
+    let total = qmckit::analysis::dem::PROGRESS_STEPS;
+    assert!(calls.len() > 5, "{calls:?}");
+    assert!(calls.iter().all(|&(done, t)| t == total && done <= total));
+    assert_eq!(calls.last(), Some(&(total, total)));
+    for bad in [0.0, -1.0, f64::NAN] {
+        assert!(matches!(
+            star_dem_within(p, bad, &|_, _| {}),
+            Err(qmckit::Error::Unsupported { .. })
+        ));
+    }
+}

@@ -56,8 +56,11 @@
 //! Measured (shared 2-core machine, load 3 to 10 from other jobs): Sobol' points
 //! `d = 3`: `N` = 7500 in 4.8 s, 10000 in 13.5 s; `d = 4`: 2000 in 9.5 s; `d = 5`: 600 in
 //! 6.2 s; `d = 6`: 300 in 11.0 s. Uniform random points prune better: 10000 in 10.5 s,
-//! 2000 in 4.1 s, 600 in 3.6 s, 280 in 3.9 s. `N` in the thousands at `d = 6` (`~N^4`) stays
-//! out of reach.
+//! 2000 in 4.1 s, 600 in 3.6 s, 280 in 3.9 s. Later, at load 1.5 (`examples/time_dem.rs`),
+//! `d = 6` Sobol': `N` = 270 in 2.5 s, 450 in 14 s, 600 in 37 s, 800 in 123 s, 1000 in
+//! 289 s, growing like `N^4`, so 2000 points would take over an hour here. The work
+//! estimate that [`star_dem`] checks was fitted under the heavier load and is 3-6 times
+//! the time measured at load 1.5; [`star_dem_within`] takes a larger budget.
 
 use super::Points;
 use crate::{Error, Result};
@@ -72,6 +75,7 @@ use std::sync::atomic::{AtomicU64, Ordering};
 /// Time `O(N^(1 + d/2))` (less with pruning), memory `O(N d)` per thread; measured times in
 /// the [module documentation](self). Results are within a few ulps of the exact value
 /// (volumes are products of grid coordinates in `f64`), exact for dyadic sets with few bits.
+/// [`star_dem_within`] takes a larger budget and reports progress.
 ///
 /// # Errors
 /// [`Error::TooManyPoints`] when [`work_estimate`] exceeds
@@ -85,15 +89,54 @@ use std::sync::atomic::{AtomicU64, Ordering};
 /// # Ok::<(), qmckit::Error>(())
 /// ```
 pub fn star_dem(points: Points<'_>) -> Result<f64> {
-    let (n, d) = (points.len(), points.dims());
-    if work_estimate(n, d) > super::star::STAR_WORK_BUDGET {
-        return Err(Error::TooManyPoints {
-            requested: n as u64,
-            max: max_points(d),
+    star_dem_within(points, super::star::STAR_WORK_BUDGET, &|_, _| {})
+}
+
+/// [`star_dem`] with the work budget `budget` (inner-loop steps, as [`work_estimate`]
+/// counts them; [`super::star::STAR_WORK_BUDGET`] is about ten seconds on a 2-core
+/// machine) and a progress report: `progress(done, PROGRESS_STEPS)` is called, from any
+/// thread, each time one of the slabs of the first cut is finished (and once at the end
+/// with `done = PROGRESS_STEPS`). A slab counts as its estimated share of the work (those
+/// with more points take longer): `done` is a rough fraction of the time, not a count.
+///
+/// # Errors
+/// [`Error::TooManyPoints`] when [`work_estimate`] exceeds `budget` (`max`: the largest
+/// `N` within it); [`Error::Unsupported`] when `budget` is not a positive number.
+///
+/// ```
+/// use qmckit::analysis::{Points, dem::star_dem_within};
+/// use std::sync::atomic::{AtomicUsize, Ordering};
+/// let calls = AtomicUsize::new(0);
+/// let p = Points::new(&[0.5, 0.5, 0.5, 0.25, 0.75, 0.125], 3)?;
+/// let d = star_dem_within(p, 1e6, &|_, _| {
+///     calls.fetch_add(1, Ordering::Relaxed);
+/// })?;
+/// assert!(d >= 0.75 && calls.load(Ordering::Relaxed) >= 1);
+/// # Ok::<(), qmckit::Error>(())
+/// ```
+pub fn star_dem_within(
+    points: Points<'_>,
+    budget: f64,
+    progress: &(dyn Fn(usize, usize) + Sync),
+) -> Result<f64> {
+    if budget.is_nan() || budget <= 0.0 {
+        return Err(Error::Unsupported {
+            what: "a work budget must be a positive number",
         });
     }
-    Ok(dem_unchecked(points))
+    let (n, d) = (points.len(), points.dims());
+    let work = work_estimate(n, d);
+    if work > budget {
+        return Err(Error::TooManyPoints {
+            requested: n as u64,
+            max: max_points_within(d, budget),
+        });
+    }
+    Ok(dem_from(points, progress))
 }
+
+/// The `total` of [`star_dem_within`]'s progress reports.
+pub const PROGRESS_STEPS: usize = 1000;
 
 /// Estimated inner-loop steps of [`star_dem`] for `n` points in `d` dimensions,
 /// `c_d N^(1 + d/2)`, with `c_d` fitted so that [`super::star::STAR_WORK_BUDGET`] is about
@@ -117,10 +160,15 @@ pub fn work_estimate(n: usize, d: usize) -> f64 {
 
 /// Largest `N` whose [`work_estimate`] is within [`super::star::STAR_WORK_BUDGET`].
 pub fn max_points(d: usize) -> u64 {
+    max_points_within(d, super::star::STAR_WORK_BUDGET)
+}
+
+/// Largest `N` whose [`work_estimate`] is within `budget`.
+pub fn max_points_within(d: usize, budget: f64) -> u64 {
     let (mut lo, mut hi) = (1u64, 1u64 << 40);
     while lo < hi {
         let mid = lo + (hi - lo).div_ceil(2);
-        if work_estimate(mid as usize, d) <= super::star::STAR_WORK_BUDGET {
+        if work_estimate(mid as usize, d) <= budget {
             lo = mid;
         } else {
             hi = mid - 1;
@@ -129,8 +177,8 @@ pub fn max_points(d: usize) -> u64 {
     lo
 }
 
-/// [`star_dem`] without the work check.
-pub(crate) fn dem_unchecked(points: Points<'_>) -> f64 {
+/// [`star_dem_within`] without the work check.
+fn dem_from(points: Points<'_>, progress: &(dyn Fn(usize, usize) + Sync)) -> f64 {
     let d = points.dims();
     let n = points.len() as f64;
     let counted: Vec<&[f64]> = points
@@ -162,7 +210,7 @@ pub(crate) fn dem_unchecked(points: Points<'_>) -> f64 {
         step: (n.sqrt().ceil() as usize).max(1),
         best: &best,
     };
-    ctx.run(counted.len() as u32);
+    ctx.run(counted.len() as u32, progress);
     f64::from_bits(best.load(Ordering::Relaxed)) / n
 }
 
@@ -275,22 +323,43 @@ impl Ctx<'_> {
         }
     }
 
-    /// The whole walk over `counted` points; the slabs of the first cut run in parallel.
-    fn run(&self, counted: u32) {
+    /// The whole walk over `counted` points; the slabs of the first cut run in parallel,
+    /// and `progress(done, PROGRESS_STEPS)` follows them, each slab weighted by its
+    /// estimated share of the work.
+    fn run(&self, counted: u32, progress: &(dyn Fn(usize, usize) + Sync)) {
         let d = self.d;
         let all: Vec<u32> = (0..counted).collect();
         if d == 1 {
             self.last(&all, &mut Tail::new(d));
+            progress(PROGRESS_STEPS, PROGRESS_STEPS);
             return;
         }
         let mut first = Level::default();
         self.cut(0, &all, &[], &mut first);
         let first = &first;
-        (0..first.starts.len()).into_par_iter().for_each(|idx| {
+        // A slab leaves a problem on the points it does not exclude in d - 1 coordinates:
+        // weight m^(1 + (d - 1) / 2).
+        let weights: Vec<f64> = (0..first.starts.len())
+            .map(|idx| (self.slab(0, idx, first).inside as f64).powf(0.5 * (d + 1) as f64))
+            .collect();
+        let scale = PROGRESS_STEPS as f64 / weights.iter().sum::<f64>().max(f64::MIN_POSITIVE);
+        let done = AtomicU64::new(0);
+        (0..weights.len()).into_par_iter().for_each(|idx| {
             let mut levels: Vec<Level> = (1..d).map(|_| Level::default()).collect();
             let mut tail = Tail::new(d);
             self.child(0, idx, first, 1.0, &mut levels, &mut tail);
+            let sum = f64::from_bits(
+                done.fetch_update(Ordering::Relaxed, Ordering::Relaxed, |w| {
+                    Some((f64::from_bits(w) + weights[idx]).to_bits())
+                })
+                .unwrap_or_default(),
+            ) + weights[idx];
+            progress(
+                ((sum * scale).round() as usize).min(PROGRESS_STEPS),
+                PROGRESS_STEPS,
+            );
         });
+        progress(PROGRESS_STEPS, PROGRESS_STEPS);
     }
 
     /// Sorts `rem` and `forced` by coordinate `k` into `me` and places the cuts.

@@ -1,0 +1,31 @@
+//! Times the exact star discrepancy (`dem::star_dem_within`) on the first `N` Sobol' points
+//! in `d` dimensions, with no work limit, for the measured rows of `qmckit::analysis::dem`.
+//!
+//! Usage: `cargo run --release --example time_dem -- DIMS N...`
+//!
+//! For each `N` prints `d N D* seconds`.
+
+use qmckit::analysis::Points;
+use qmckit::analysis::dem::star_dem_within;
+use qmckit::{Sampler, Sobol};
+use std::time::Instant;
+
+fn main() -> Result<(), Box<dyn std::error::Error>> {
+    let args: Vec<usize> = std::env::args()
+        .skip(1)
+        .map(|s| s.parse())
+        .collect::<Result<_, _>>()?;
+    let Some((&d, sizes)) = args.split_first() else {
+        return Err("usage: time_dem DIMS N...".into());
+    };
+    let sobol = Sobol::new(d)?;
+    for &n in sizes {
+        let mut values = vec![0f64; n * d];
+        sobol.fill_as(0, &mut values)?;
+        let points = Points::new(&values, d)?;
+        let start = Instant::now();
+        let value = star_dem_within(points, f64::INFINITY, &|_, _| {})?;
+        println!("{d} {n} {value} {:.2}", start.elapsed().as_secs_f64());
+    }
+    Ok(())
+}
