@@ -119,11 +119,7 @@ pub fn star_dem_within(
     budget: f64,
     progress: &(dyn Fn(usize, usize) + Sync),
 ) -> Result<f64> {
-    if budget.is_nan() || budget <= 0.0 {
-        return Err(Error::Unsupported {
-            what: "a work budget must be a positive number",
-        });
-    }
+    super::star::check_budget(budget)?;
     let (n, d) = (points.len(), points.dims());
     let work = work_estimate(n, d);
     if work > budget {

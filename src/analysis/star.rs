@@ -319,11 +319,7 @@ pub fn star_exact_within(
     budget: f64,
     progress: &(dyn Fn(usize, usize) + Sync),
 ) -> Result<f64> {
-    if budget.is_nan() || budget <= 0.0 {
-        return Err(Error::Unsupported {
-            what: "a work budget must be a positive number",
-        });
-    }
+    check_budget(budget)?;
     let n = points.len();
     match points.dims() {
         1 => star_1d(points),
@@ -339,6 +335,17 @@ pub fn star_exact_within(
             Ok(kernel_2d(&pts, &pts, 1.0, nf) / nf)
         }
         _ => super::dem::star_dem_within(points, budget, progress),
+    }
+}
+
+/// `Ok` for a positive work budget (infinity included), else [`Error::Unsupported`].
+pub(crate) fn check_budget(budget: f64) -> Result<()> {
+    if budget > 0.0 {
+        Ok(())
+    } else {
+        Err(Error::Unsupported {
+            what: "a work budget must be a positive number",
+        })
     }
 }
 
