@@ -58,9 +58,10 @@
 //! 6.2 s; `d = 6`: 300 in 11.0 s. Uniform random points prune better: 10000 in 10.5 s,
 //! 2000 in 4.1 s, 600 in 3.6 s, 280 in 3.9 s. Later, at load 1.5 (`examples/time_dem.rs`),
 //! `d = 6` Sobol': `N` = 270 in 2.5 s, 450 in 14 s, 600 in 37 s, 800 in 123 s, 1000 in
-//! 289 s, growing like `N^4`, so 2000 points would take over an hour here. The work
-//! estimate that [`star_dem`] checks was fitted under the heavier load and is 3-6 times
-//! the time measured at load 1.5; [`star_dem_within`] takes a larger budget.
+//! 289 s, growing like `N^4`, so 2000 points would take over an hour here; `d = 3`: 8151 in
+//! 2.4 s, 16000 in 12 s; `d = 4`: 3000 in 11 s; `d = 5`: 1000 in 14 s; `d = 7`: 180 in
+//! 5.5 s; `d = 8`: 100 in 3.8 s. [`work_estimate`] is fitted to these; [`star_dem_within`]
+//! takes a larger budget than [`star_dem`]'s ten seconds.
 
 use super::Points;
 use crate::{Error, Result};
@@ -135,22 +136,17 @@ pub fn star_dem_within(
 pub const PROGRESS_STEPS: usize = 1000;
 
 /// Estimated inner-loop steps of [`star_dem`] for `n` points in `d` dimensions,
-/// `c_d N^(1 + d/2)`, with `c_d` fitted so that [`super::star::STAR_WORK_BUDGET`] is about
-/// ten seconds on Sobol' points (slower than random ones) on the shared 2-core machine:
-/// `c_d` = 0.5, 0.45, 0.5, 0.5 for `d` = 3..6, then doubling per dimension
-/// (conservatively). The budget then admits `N` up to 8151, 1882, 621, 278, 127, 68 for
-/// `d` = 3..8. The estimate ignores ties: a set on a coarse grid runs faster than estimated.
+/// `c N^(1 + d/2)` with `c = 0.15` for `d >= 3`, fitted so that
+/// [`super::star::STAR_WORK_BUDGET`] is at most about ten seconds on Sobol' points (slower
+/// than random ones) on the shared 2-core machine at load 1.5 (`examples/time_dem.rs`): the
+/// budget then admits `N` up to 13195, 2714, 877, 376, 194, 114 for `d` = 3..8, measured
+/// at 8, 8, 9, 9, 8 and 8 s. Larger sets run faster than the `N^(1 + d/2)` rate (1000 6D
+/// points: 289 s against 500 estimated) and so do higher dimensions (`d = 12`, 35 points:
+/// 1 s against 33); a loaded machine runs slower (an earlier fit under load 3 to 10 needed
+/// `c` = 0.5). The estimate ignores ties: a set on a coarse grid runs faster than
+/// estimated.
 pub fn work_estimate(n: usize, d: usize) -> f64 {
-    let c = match d {
-        0..=2 => 1.0,
-        3 => 0.5,
-        4 => 0.45,
-        5 => 0.5,
-        6 => 0.5,
-        // Past the measured range: doubling per dimension (d = 7 measured at 0.9 under
-        // heavy load, d = 8 faster than this predicts).
-        _ => 0.5 * 2f64.powi(d as i32 - 6),
-    };
+    let c = if d <= 2 { 1.0 } else { 0.15 };
     c * (n as f64).powf(1.0 + d as f64 / 2.0)
 }
 

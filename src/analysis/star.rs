@@ -39,7 +39,7 @@
 //! |---|---|---|
 //! | [`star_1d`] | `O(N log N)` | none |
 //! | [`star_2d`] | `O(N^2)` time, `O(N)` memory, parallel over columns | `N <= 50_000` |
-//! | [`star_exact`] | `O(N^2)` in 2D; `O(N^(1 + d/2))` for `d >= 3` (Dobkin–Eppstein–Mitchell, [`super::dem`]), pruned | ≈ `3e9` steps: `N <= 8151, 1882, 621, 278` for `d = 3, 4, 5, 6` |
+//! | [`star_exact`] | `O(N^2)` in 2D; `O(N^(1 + d/2))` for `d >= 3` (Dobkin–Eppstein–Mitchell, [`super::dem`]), pruned | ≈ `3e9` steps, about ten seconds: `N <= 13195, 2714, 877, 376` for `d = 3, 4, 5, 6`; [`star_exact_within`] takes a budget |
 //! | [`extreme_2d`] | `O(N^3)` | `N <= 1200` |
 //! | [`star_lower_bound`] | `O(iterations · N d)` | none |
 //! | [`star_upper_bound`] | Thiémard's cover ([`super::thiemard`]): about `Σ_R (N vol(b_R) + 16)(d + k_R)` over its regions, parallel | ≈ `3e9` steps, estimated first |
@@ -274,10 +274,11 @@ fn sweep_columns(
 ///
 /// The value is `max over the critical grid of max(vol - open/N, closed/N - vol)`, points
 /// with a coordinate equal to 1 never counted (see the module documentation). Measured on
-/// the shared 2-core machine, `N` taking about ten seconds (Sobol' / uniform random
-/// points): `d = 3`: ≈ 9000 / 10000; `d = 4`: 2000 / > 2000; `d = 5`: ≈ 650 / > 600;
-/// `d = 6`: ≈ 290 / > 280 (details in [`super::dem`]). The grid enumeration this replaced
-/// took that long at about 1900, 365, 140 and 70 points.
+/// the shared 2-core machine under load 3 to 10, `N` taking about ten seconds (Sobol' /
+/// uniform random points): `d = 3`: ≈ 9000 / 10000; `d = 4`: 2000 / > 2000; `d = 5`: ≈ 650
+/// / > 600; `d = 6`: ≈ 290 / > 280; at load 1.5 three to five times more work fits (details
+/// in [`super::dem`]). The grid enumeration this replaced took ten seconds at about 1900,
+/// 365, 140 and 70 points (under load).
 /// Beyond that use [`star_lower_bound`] / [`star_upper_bound`].
 ///
 /// # Errors
@@ -300,8 +301,9 @@ pub fn star_exact(points: Points<'_>) -> Result<f64> {
 /// [`super::dem::work_estimate`] for `d >= 3`; [`STAR_WORK_BUDGET`] is about ten seconds on
 /// a 2-core machine) and a progress report for `d >= 3` (see
 /// [`super::dem::star_dem_within`]). With a budget 60 times the default (about ten
-/// minutes by the estimate) `d = 6` takes up to 774 points; 1000 Sobol' points took 4.8
-/// minutes on two cores (the estimate is conservative, see [`super::dem`]).
+/// minutes by the estimate) `d = 6` takes up to 1046 points; 1000 Sobol' points took 4.8
+/// minutes on two cores (the estimate is conservative for large sets, see
+/// [`super::dem::work_estimate`]).
 ///
 /// # Errors
 /// [`Error::TooManyPoints`] when the estimated work exceeds `budget` (`max`: the largest
