@@ -140,7 +140,7 @@ pub const PROGRESS_STEPS: usize = 1000;
 /// [`super::star::STAR_WORK_BUDGET`] is at most about ten seconds on Sobol' points (slower
 /// than random ones) on the shared 2-core machine at load 1.5 (`examples/time_dem.rs`): the
 /// budget then admits `N` up to 13195, 2714, 877, 376, 194, 114 for `d` = 3..8, measured
-/// at 8, 8, 9, 9, 8 and 8 s. Larger sets run faster than the `N^(1 + d/2)` rate (1000 6D
+/// at 7.4, 8.3, 8.4, 7.9, 8.6 and 5.4 s. Larger sets run faster than the `N^(1 + d/2)` rate (1000 6D
 /// points: 289 s against 500 estimated) and so do higher dimensions (`d = 12`, 35 points:
 /// 1 s against 33); a loaded machine runs slower (an earlier fit under load 3 to 10 needed
 /// `c` = 0.5). The estimate ignores ties: a set on a coarse grid runs faster than
