@@ -598,8 +598,10 @@ impl Ctx<'_> {
 fn convolve_max(x: &[f64], y: &[f64], out: &mut Vec<f64>) {
     out.clear();
     out.resize(x.len() + y.len() - 1, 0.0);
-    for (a, &xa) in x.iter().enumerate() {
-        for (o, &yb) in out[a..].iter_mut().zip(y) {
+    // The tables `y` are short (a coordinate's slab points), the prefixes `x` long: the
+    // inner loop runs over `x`, contiguous, so it vectorizes.
+    for (b, &yb) in y.iter().enumerate() {
+        for (o, &xa) in out[b..].iter_mut().zip(x) {
             let p = xa * yb;
             *o = if p > *o { p } else { *o };
         }
@@ -610,8 +612,8 @@ fn convolve_max(x: &[f64], y: &[f64], out: &mut Vec<f64>) {
 fn convolve_min(x: &[f64], y: &[f64], out: &mut Vec<f64>) {
     out.clear();
     out.resize(x.len() + y.len() - 1, f64::INFINITY);
-    for (a, &xa) in x.iter().enumerate() {
-        for (o, &yb) in out[a..].iter_mut().zip(y) {
+    for (b, &yb) in y.iter().enumerate() {
+        for (o, &xa) in out[b..].iter_mut().zip(x) {
             let p = xa * yb;
             *o = if p < *o { p } else { *o };
         }
