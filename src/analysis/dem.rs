@@ -330,26 +330,20 @@ impl Ctx<'_> {
         self.cut(0, &all, &[], &mut first);
         let first = &first;
         // A slab leaves a problem on the points it does not exclude in d - 1 coordinates:
-        // weight m^(1 + (d - 1) / 2).
+        // weight m^(1 + (d - 1) / 2), as a share of the whole in millionths.
         let weights: Vec<f64> = (0..first.starts.len())
             .map(|idx| (self.slab(0, idx, first).inside as f64).powf(0.5 * (d + 1) as f64))
             .collect();
-        let scale = PROGRESS_STEPS as f64 / weights.iter().sum::<f64>().max(f64::MIN_POSITIVE);
+        let sum: f64 = weights.iter().sum();
+        let shares: Vec<u64> = weights.iter().map(|w| (1e6 * w / sum) as u64).collect();
         let done = AtomicU64::new(0);
-        (0..weights.len()).into_par_iter().for_each(|idx| {
+        (0..shares.len()).into_par_iter().for_each(|idx| {
             let mut levels: Vec<Level> = (1..d).map(|_| Level::default()).collect();
             let mut tail = Tail::new(d);
             self.child(0, idx, first, 1.0, &mut levels, &mut tail);
-            let sum = f64::from_bits(
-                done.fetch_update(Ordering::Relaxed, Ordering::Relaxed, |w| {
-                    Some((f64::from_bits(w) + weights[idx]).to_bits())
-                })
-                .unwrap_or_default(),
-            ) + weights[idx];
-            progress(
-                ((sum * scale).round() as usize).min(PROGRESS_STEPS),
-                PROGRESS_STEPS,
-            );
+            let millionths = done.fetch_add(shares[idx], Ordering::Relaxed) + shares[idx];
+            let steps = (millionths as usize * PROGRESS_STEPS / 1_000_000).min(PROGRESS_STEPS);
+            progress(steps, PROGRESS_STEPS);
         });
         progress(PROGRESS_STEPS, PROGRESS_STEPS);
     }

@@ -149,8 +149,14 @@ pub fn star_2d(points: Points<'_>) -> Result<f64> {
             max: STAR_2D_MAX_POINTS,
         });
     }
+    Ok(sweep_2d(points))
+}
+
+/// The 2D sweep of [`star_2d`] without the size check.
+fn sweep_2d(points: Points<'_>) -> f64 {
     let pts: Vec<(f64, f64)> = counted(points).map(|p| (p[0], p[1])).collect();
-    Ok(kernel_2d(&pts, &pts, 1.0, n as f64) / n as f64)
+    let n = points.len() as f64;
+    kernel_2d(&pts, &pts, 1.0, n) / n
 }
 
 /// Points counted by some anchored box: those with every coordinate below 1.
@@ -333,8 +339,7 @@ pub fn star_exact_within(
                     max: budget.sqrt() as u64,
                 });
             }
-            let pts: Vec<(f64, f64)> = counted(points).map(|p| (p[0], p[1])).collect();
-            Ok(kernel_2d(&pts, &pts, 1.0, nf) / nf)
+            Ok(sweep_2d(points))
         }
         _ => super::dem::star_dem_within(points, budget, progress),
     }

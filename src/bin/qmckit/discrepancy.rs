@@ -184,6 +184,7 @@ fn measure(
     p: Points<'_>,
     set: &PointSet,
     args: &DiscrepancyArgs,
+    star_budget: f64,
 ) -> Result<Vec<(String, f64)>, String> {
     let name = value_name(&metric);
     if let Some(l2) = metric.l2() {
@@ -191,11 +192,9 @@ fn measure(
     }
     let value = match metric {
         Metric::Star => {
-            // Checked in `run`.
-            let budget = star_budget(args.max_seconds).map_err(|f| f.message)?;
             let limit = format!(" within --max-seconds {}", args.max_seconds);
             with_progress(&name, |progress| {
-                star::star_exact_within(p, budget, progress)
+                star::star_exact_within(p, star_budget, progress)
             })
             .map_err(|e| refusal(e, "star", set, &limit))
         }
@@ -224,7 +223,7 @@ fn measure(
 
 /// Runs `qmckit discrepancy`.
 pub fn run(args: &DiscrepancyArgs) -> Result<(), Failure> {
-    star_budget(args.max_seconds)?;
+    let budget = star_budget(args.max_seconds)?;
     let (name, text) = read_input(args.file.as_deref())?;
     let sets = parse_point_sets(&text).map_err(|e| Failure::usage(format!("{name}: {e}")))?;
     let all = args.metric.contains(&Metric::All);
@@ -242,7 +241,7 @@ pub fn run(args: &DiscrepancyArgs) -> Result<(), Failure> {
             writeln!(out, "# set {}", k + 1)?;
         }
         for &metric in &metrics {
-            match measure(metric, p, set, args) {
+            match measure(metric, p, set, args, budget) {
                 Ok(lines) => {
                     for (label, value) in lines {
                         writeln!(out, "{label} {value:.16e}")?;
