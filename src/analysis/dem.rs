@@ -249,7 +249,18 @@ struct Tail {
     pre_small: Vec<Vec<f64>>,
     clean_big: usize,
     clean_small: usize,
+    /// Sorted last-coordinate levels of the first `merged` points of the current cut's
+    /// `rem` (the calls of [`Ctx::last`] between two cuts take growing prefixes of it).
     rem: Vec<u32>,
+    merged: usize,
+    /// Scratch: the levels of the points new to `rem`.
+    fresh: Vec<u32>,
+    /// The first `kept_merged` slab points the current cut keeps, sorted by last level.
+    kept: Vec<(u32, u8)>,
+    kept_merged: usize,
+    /// Scratch: the kept points new to `kept`.
+    fresh_kept: Vec<(u32, u8)>,
+    /// The slab points of the node, sorted by last level.
     forced: Vec<(u32, u8)>,
     bj: Vec<f64>,
     sj: Vec<f64>,
@@ -268,6 +279,11 @@ impl Tail {
             clean_big: 0,
             clean_small: 0,
             rem: Vec::new(),
+            merged: 0,
+            fresh: Vec::new(),
+            kept: Vec::new(),
+            kept_merged: 0,
+            fresh_kept: Vec::new(),
             forced: Vec::new(),
             bj: Vec::new(),
             sj: Vec::new(),
@@ -322,7 +338,9 @@ impl Ctx<'_> {
         let d = self.d;
         let all: Vec<u32> = (0..counted).collect();
         if d == 1 {
-            self.last(&all, &mut Tail::new(d));
+            let mut tail = Tail::new(d);
+            self.sorted_for_last(&all, &[], std::iter::empty(), &mut tail);
+            self.last(&mut tail);
             progress(PROGRESS_STEPS, PROGRESS_STEPS);
             return;
         }
@@ -411,10 +429,8 @@ impl Ctx<'_> {
         let new_forced = me.rem[s.below..s.inside].iter().map(|&i| (i, k as u8));
         if k + 2 >= self.d {
             // The last coordinate comes next.
-            tail.forced.clear();
-            tail.forced.extend_from_slice(&me.forced[..s.kept]);
-            tail.forced.extend(new_forced);
-            self.last(rem, tail);
+            self.sorted_for_last(rem, &me.forced[..s.kept], new_forced, tail);
+            self.last(tail);
             return;
         }
         let Some((next, rest)) = levels.split_first_mut() else {
@@ -425,23 +441,78 @@ impl Ctx<'_> {
         forced.extend_from_slice(&me.forced[..s.kept]);
         forced.extend(new_forced);
         self.cut(k + 1, rem, &forced, next);
+        // The last coordinate's calls below take prefixes of the new cut's points.
+        tail.merged = 0;
+        tail.rem.clear();
+        tail.kept_merged = 0;
+        tail.kept.clear();
         next.child = forced;
+        if k == 0 && k + 3 < self.d {
+            // The slabs of the second cut run in parallel too (the first cut's slabs alone,
+            // 17 to 45 of them, the heaviest a tenth of the work, would not keep many cores
+            // busy); each task has its own buffers, with this node's bounds.
+            let next = &*next;
+            let (lo, hi) = (tail.lo[0], tail.hi[0]);
+            let fresh = || {
+                let mut t = Tail::new(self.d);
+                (t.lo[0], t.hi[0]) = (lo, hi);
+                let levels: Vec<Level> = rest.iter().map(|_| Level::default()).collect();
+                (levels, t)
+            };
+            (0..next.starts.len())
+                .into_par_iter()
+                .for_each_init(fresh, |(levels, t), j| {
+                    self.child(k + 1, j, next, vh, levels, t);
+                });
+            return;
+        }
         for j in 0..next.starts.len() {
             self.child(k + 1, j, next, vh, rest, tail);
         }
     }
 
+    /// Fills `tail.rem` with the sorted last-coordinate levels of `rem` (the points below
+    /// in all other coordinates) and `tail.forced` with the slab points `kept` and `new`,
+    /// sorted by their last-coordinate level, for [`last`](Self::last).
+    ///
+    /// Between two cuts, the calls take growing prefixes `rem` and `kept` of the cut's
+    /// lists (its slabs in order), so only the points new to them are sorted and then merged
+    /// into the lists kept from the previous call (`Tail::merged`, `Tail::kept_merged`).
+    fn sorted_for_last(
+        &self,
+        rem: &[u32],
+        kept: &[(u32, u8)],
+        new: impl Iterator<Item = (u32, u8)>,
+        tail: &mut Tail,
+    ) {
+        let l = self.d - 1;
+        tail.fresh.clear();
+        tail.fresh
+            .extend(rem[tail.merged..].iter().map(|&i| self.level(i, l)));
+        tail.fresh.sort_unstable();
+        merge_sorted(&mut tail.rem, &tail.fresh, |&x| x);
+        tail.merged = rem.len();
+        let key = |&(i, _): &(u32, u8)| self.level(i, l);
+        tail.fresh_kept.clear();
+        tail.fresh_kept.extend_from_slice(&kept[tail.kept_merged..]);
+        tail.fresh_kept.sort_unstable_by_key(key);
+        merge_sorted(&mut tail.kept, &tail.fresh_kept, key);
+        tail.kept_merged = kept.len();
+        tail.forced.clear();
+        tail.forced.extend(new);
+        tail.forced.sort_unstable_by_key(key);
+        merge_sorted(&mut tail.forced, &tail.kept, key);
+    }
+
     /// The last coordinate `L = d - 1` of the node with bounds `tail.lo`, `tail.hi` on
-    /// coordinates `0..L`, points `rem` below in all of them and slab points `tail.forced`:
-    /// cut only at the slab points' levels, then evaluate every cell exactly.
-    fn last(&self, rem: &[u32], tail: &mut Tail) {
+    /// coordinates `0..L`, the points below in all of them (`tail.rem`, their sorted levels)
+    /// and slab points `tail.forced` (sorted by level), from
+    /// [`sorted_for_last`](Self::sorted_for_last): cut only at the slab points' levels, then
+    /// evaluate every cell exactly.
+    fn last(&self, tail: &mut Tail) {
         let l = self.d - 1;
         let top = self.grids[l].len() as u32;
-        tail.rem.clear();
-        tail.rem.extend(rem.iter().map(|&i| self.level(i, l)));
-        tail.rem.sort_unstable();
-        let mut forced = std::mem::take(&mut tail.forced);
-        forced.sort_unstable_by_key(|&(i, _)| self.level(i, l));
+        let forced = std::mem::take(&mut tail.forced);
         for j in 0..l {
             tail.active[j].clear();
             tail.tab_big[j].clear();
@@ -481,9 +552,26 @@ impl Ctx<'_> {
             let best = self.best();
             let open_bound = self.n * vol_hi * self.a(l, hi_l) - rr;
             let closed_bound = (inside + n_active) as f64 - self.n * vol_lo * self.b(l, lo_l);
-            let (open, closed) = (open_bound > best, closed_bound > best);
+            let (mut open, mut closed) = (open_bound > best, closed_bound > best);
             if open || closed {
-                let v = self.cell(tail, (lo_l, hi_l), below, inside, (open, closed));
+                let slab = &tail.rem[below..inside];
+                self.tables(l, lo_l, hi_l, slab, &mut tail.bj, &mut tail.sj);
+                // Tighter bounds from the tables (see `open_slack`, `closed_slack`), before
+                // the knapsacks are brought up to date.
+                let margin = 1e-12 * (self.n + open_bound.abs() + closed_bound.abs());
+                if open {
+                    let v = self.n * vol_hi * self.a(l, hi_l);
+                    let slack = open_slack(v, slices(&tail.tab_big[..l]).chain([&tail.bj[..]]));
+                    open = v - rr - slack + margin > best;
+                }
+                let w = self.n * vol_lo * self.b(l, lo_l);
+                if closed && w > 0.0 {
+                    let most = closed_slack(w, slices(&tail.tab_small[..l]).chain([&tail.sj[..]]));
+                    closed = rr - w + most + margin > best;
+                }
+            }
+            if open || closed {
+                let v = self.cell(tail, below, inside, (open, closed));
                 self.offer(v);
             }
             if hi_l >= top {
@@ -501,7 +589,6 @@ impl Ctx<'_> {
     fn cell(
         &self,
         tail: &mut Tail,
-        last: (u32, u32),
         below: usize,
         inside: usize,
         (open, closed): (bool, bool),
@@ -526,7 +613,6 @@ impl Ctx<'_> {
             t.clean_small = l;
         }
         let slab = &t.rem[below..inside];
-        self.tables(l, last.0, last.1, slab, &mut t.bj, &mut t.sj);
         let (na, nb) = (self.n, self.n);
         let base = below as f64;
         let m = slab.len() as f64;
@@ -588,28 +674,192 @@ impl Ctx<'_> {
     }
 }
 
-/// `out[a + b] = max over a, b of x[a] * y[b]` (non-negative entries).
-fn convolve_max(x: &[f64], y: &[f64], out: &mut Vec<f64>) {
-    out.clear();
-    out.resize(x.len() + y.len() - 1, 0.0);
-    // The tables `y` are short (a coordinate's slab points), the prefixes `x` long: the
-    // inner loop runs over `x`, contiguous, so it vectorizes.
-    for (b, &yb) in y.iter().enumerate() {
-        for (o, &xa) in out[b..].iter_mut().zip(x) {
-            let p = xa * yb;
-            *o = if p > *o { p } else { *o };
+/// `S` such that `N vol - count <= V - R - S` for every open box of a cell, where
+/// `V = N prod_k A_k(hi_k)` is its largest volume (times `N`), `R` its points below in every
+/// coordinate, and `tables` its per-coordinate tables `big` (see [`Ctx::tables`]: `big[c]`,
+/// non-decreasing, is the largest `A_k` counting `c` slab points, `big[m] = A_k(hi_k)`).
+///
+/// With `r_k = big_k[c_k] / big_k[m_k]` in `[rho_k, 1]`, `rho_k = big_k[0] / big_k[m_k]`, the
+/// product is at most the linear `1 - a sum_k (1 - r_k)` for
+/// `a = (1 - prod_k rho_k) / sum_k (1 - rho_k)`: the difference is multilinear, so it is
+/// largest at a vertex of the box, where coordinates `S` sit at `rho`, and
+/// `(1 - prod_S rho) / sum_S (1 - rho)` only falls as `S` grows (adding `x = 1 - rho_j` to `S`
+/// keeps the ratio or lowers it exactly when `P (1 + X) <= 1` for `P = prod_S rho`,
+/// `X = sum_S (1 - rho)`, and `P <= e^-X`). So
+/// `N vol - count <= V - R - sum_k (a V (1 - r_k) + c_k)`, and each coordinate gives up at
+/// least `min_c (a V (1 - r_k[c]) + c)`: `S` is the sum of these minima. `V > 0`.
+fn open_slack<'a>(v: f64, tables: impl Iterator<Item = &'a [f64]> + Clone) -> f64 {
+    let (mut prod, mut sum) = (1.0, 0.0);
+    for t in tables.clone() {
+        let rho = t[0] / t[t.len() - 1];
+        prod *= rho;
+        sum += 1.0 - rho;
+    }
+    let av = if sum > 0.0 { v * (1.0 - prod) / sum } else { v };
+    tables
+        .map(|t| {
+            let scale = av / t[t.len() - 1];
+            t.iter()
+                .enumerate()
+                .map(|(c, &x)| av - x * scale + c as f64)
+                .fold(f64::INFINITY, f64::min)
+        })
+        .sum()
+}
+
+/// `M` such that `count - N vol <= R - W + M` for every closed box of a cell, where
+/// `W = N prod_k B_k(lo_k) > 0` is its smallest volume (times `N`), `R` its points below in
+/// every coordinate and `tables` its tables `small` (see [`Ctx::tables`]: `small[c]`,
+/// non-decreasing, is the smallest `B_k` counting `c` slab points, `small[0] = B_k(lo_k)`).
+///
+/// With `w_k = small_k[c_k] / small_k[0] >= 1`, `prod_k w_k >= 1 + sum_k (w_k - 1)` (expand the
+/// product: every other term is non-negative), so
+/// `count - N vol <= R - W + sum_k (c_k - W (w_k - 1))`: `M` is the sum over the coordinates
+/// of the largest `c - W (w_k[c] - 1)` (at most the coordinate's slab count).
+fn closed_slack<'a>(w: f64, tables: impl Iterator<Item = &'a [f64]>) -> f64 {
+    tables
+        .map(|t| {
+            let scale = w / t[0];
+            t.iter()
+                .enumerate()
+                .map(|(c, &x)| c as f64 - (x * scale - w))
+                .fold(f64::NEG_INFINITY, f64::max)
+        })
+        .sum()
+}
+
+/// The tables as slices.
+fn slices(tables: &[Vec<f64>]) -> impl Iterator<Item = &[f64]> + Clone {
+    tables.iter().map(Vec::as_slice)
+}
+
+/// Merges `more` into `list`, both sorted by `key`, from the back, in place.
+fn merge_sorted<T: Copy + Default>(list: &mut Vec<T>, more: &[T], key: impl Fn(&T) -> u32) {
+    let mut i = list.len();
+    list.resize(i + more.len(), T::default());
+    let mut j = more.len();
+    let mut out = list.len();
+    while j > 0 {
+        out -= 1;
+        if i > 0 && key(&list[i - 1]) > key(&more[j - 1]) {
+            i -= 1;
+            list[out] = list[i];
+        } else {
+            j -= 1;
+            list[out] = more[j];
         }
     }
 }
 
+/// `out[a + b] = max over a, b of x[a] * y[b]` (non-negative entries).
+fn convolve_max(x: &[f64], y: &[f64], out: &mut Vec<f64>) {
+    convolve(x, y, out, 0.0, |p, o| if p > o { p } else { o });
+}
+
 /// `out[a + b] = min over a, b of x[a] * y[b]`.
 fn convolve_min(x: &[f64], y: &[f64], out: &mut Vec<f64>) {
+    convolve(x, y, out, f64::INFINITY, |p, o| if p < o { p } else { o });
+}
+
+/// `out[a + b] = pick over a, b of x[a] * y[b]` for the associative `pick` with identity
+/// `none`; `y` is not empty.
+#[inline(always)]
+fn convolve(x: &[f64], y: &[f64], out: &mut Vec<f64>, none: f64, pick: impl Fn(f64, f64) -> f64) {
     out.clear();
-    out.resize(x.len() + y.len() - 1, f64::INFINITY);
-    for (b, &yb) in y.iter().enumerate() {
-        for (o, &xa) in out[b..].iter_mut().zip(x) {
-            let p = xa * yb;
-            *o = if p < *o { p } else { *o };
+    let Some((&y0, rest)) = y.split_first() else {
+        return;
+    };
+    // The first row sets the entries; the tables `y` are short (a coordinate's slab
+    // points), the prefixes `x` long: the inner loop runs over `x`, contiguous, so it
+    // vectorizes.
+    out.extend(x.iter().map(|&xa| xa * y0));
+    out.resize(x.len() + y.len() - 1, none);
+    for (b, &yb) in rest.iter().enumerate() {
+        for (o, &xa) in out[b + 1..].iter_mut().zip(x) {
+            *o = pick(xa * yb, *o);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{closed_slack, open_slack};
+
+    /// Random non-decreasing positive tables from a small LCG.
+    fn tables(seed: u64, count: usize) -> Vec<Vec<f64>> {
+        let mut s = seed;
+        let mut next = move || {
+            s = s
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (s >> 11) as f64 / (1u64 << 53) as f64
+        };
+        (0..count)
+            .map(|_| {
+                let len = 1 + (next() * 4.0) as usize;
+                let mut t: Vec<f64> = (0..len).map(|_| 0.05 + next()).collect();
+                t.sort_by(f64::total_cmp);
+                t
+            })
+            .collect()
+    }
+
+    /// Every choice of one entry per table (its index is its count), as
+    /// `(sum of counts, product of entry / reference)`.
+    fn choices(t: &[Vec<f64>], reference: impl Fn(&[f64]) -> f64) -> Vec<(f64, f64)> {
+        let mut all = vec![(0.0, 1.0)];
+        for table in t {
+            let r = reference(table);
+            all = all
+                .iter()
+                .flat_map(|&(c, p)| {
+                    table
+                        .iter()
+                        .enumerate()
+                        .map(move |(k, &x)| (c + k as f64, p * x / r))
+                })
+                .collect();
+        }
+        all
+    }
+
+    #[test]
+    fn slacks_bound_every_box_and_are_tight_for_one_table() {
+        for seed in 0..300 {
+            let t = tables(seed, 1 + seed as usize % 4);
+            let v = 1.0 + seed as f64 * 0.37;
+            let slices = || t.iter().map(Vec::as_slice);
+            // Open: N vol - count = v prod(r) - sum(c) <= v - slack.
+            let slack = open_slack(v, slices());
+            let open = choices(&t, |x| x[x.len() - 1]);
+            let best = open
+                .iter()
+                .map(|&(c, p)| v * p - c)
+                .fold(f64::MIN, f64::max);
+            assert!(
+                best <= v - slack + 1e-12,
+                "seed {seed}: {best} > {v} - {slack}"
+            );
+            // Closed: count - N vol = sum(c) - w prod(w_k) <= -w + most.
+            let most = closed_slack(v, slices());
+            let closed = choices(&t, |x| x[0]);
+            let best = closed
+                .iter()
+                .map(|&(c, p)| c - v * p)
+                .fold(f64::MIN, f64::max);
+            assert!(
+                best <= most - v + 1e-12,
+                "seed {seed}: {best} > {most} - {v}"
+            );
+            if t.len() == 1 {
+                // One coordinate: both bounds are the exact maxima.
+                let open_max = open
+                    .iter()
+                    .map(|&(c, p)| v * p - c)
+                    .fold(f64::MIN, f64::max);
+                assert!((open_max - (v - slack)).abs() < 1e-9);
+                assert!((best - (most - v)).abs() < 1e-9);
+            }
         }
     }
 }
