@@ -224,7 +224,7 @@ struct Ctx<'a> {
 #[derive(Default)]
 struct Level {
     /// Points below in every earlier coordinate, sorted by this coordinate's level.
-    rem: Vec<u32>,
+    rem: SortedPrefix<u32>,
     /// Slab points (point, slab coordinate), sorted by this coordinate's level.
     forced: Vec<(u32, u8)>,
     /// Lower ends of the slabs of this coordinate.
@@ -249,17 +249,10 @@ struct Tail {
     pre_small: Vec<Vec<f64>>,
     clean_big: usize,
     clean_small: usize,
-    /// Sorted last-coordinate levels of the first `merged` points of the current cut's
-    /// `rem` (the calls of [`Ctx::last`] between two cuts take growing prefixes of it).
-    rem: Vec<u32>,
-    merged: usize,
-    /// Scratch: the levels of the points new to `rem`.
-    fresh: Vec<u32>,
-    /// The first `kept_merged` slab points the current cut keeps, sorted by last level.
-    kept: Vec<(u32, u8)>,
-    kept_merged: usize,
-    /// Scratch: the kept points new to `kept`.
-    fresh_kept: Vec<(u32, u8)>,
+    /// Sorted last-coordinate levels of the points below in all other coordinates.
+    rem: SortedPrefix<u32>,
+    /// The slab points the current node keeps from earlier cuts, sorted by last level.
+    kept: SortedPrefix<(u32, u8)>,
     /// The slab points of the node, sorted by last level.
     forced: Vec<(u32, u8)>,
     bj: Vec<f64>,
@@ -278,12 +271,8 @@ impl Tail {
             pre_small: vec![vec![1.0]; d + 1],
             clean_big: 0,
             clean_small: 0,
-            rem: Vec::new(),
-            merged: 0,
-            fresh: Vec::new(),
-            kept: Vec::new(),
-            kept_merged: 0,
-            fresh_kept: Vec::new(),
+            rem: SortedPrefix::default(),
+            kept: SortedPrefix::default(),
             forced: Vec::new(),
             bj: Vec::new(),
             sj: Vec::new(),
@@ -367,10 +356,12 @@ impl Ctx<'_> {
     }
 
     /// Sorts `rem` and `forced` by coordinate `k` into `me` and places the cuts.
+    ///
+    /// Between two cuts of the parent, the cuts of `me` take growing prefixes `rem` of the
+    /// parent's list (its slabs in order): only the points new to it are sorted and merged
+    /// into `me.rem` (a [`SortedPrefix`], reset by the parent).
     fn cut(&self, k: usize, rem: &[u32], forced: &[(u32, u8)], me: &mut Level) {
-        me.rem.clear();
-        me.rem.extend_from_slice(rem);
-        me.rem.sort_unstable_by_key(|&i| self.level(i, k));
+        me.rem.extend(rem, |&i| i, |&i| self.level(i, k));
         me.forced.clear();
         me.forced.extend_from_slice(forced);
         me.forced.sort_unstable_by_key(|&(i, _)| self.level(i, k));
@@ -441,11 +432,13 @@ impl Ctx<'_> {
         forced.extend_from_slice(&me.forced[..s.kept]);
         forced.extend(new_forced);
         self.cut(k + 1, rem, &forced, next);
+        if let Some(below) = rest.first_mut() {
+            // The next level's cuts take prefixes of this new cut's points.
+            below.rem.reset();
+        }
         // The last coordinate's calls below take prefixes of the new cut's points.
-        tail.merged = 0;
-        tail.rem.clear();
-        tail.kept_merged = 0;
-        tail.kept.clear();
+        tail.rem.reset();
+        tail.kept.reset();
         next.child = forced;
         if k == 0 && k + 3 < self.d {
             // The slabs of the second cut run in parallel too (the first cut's slabs alone,
@@ -477,7 +470,7 @@ impl Ctx<'_> {
     ///
     /// Between two cuts, the calls take growing prefixes `rem` and `kept` of the cut's
     /// lists (its slabs in order), so only the points new to them are sorted and then merged
-    /// into the lists kept from the previous call (`Tail::merged`, `Tail::kept_merged`).
+    /// into the lists kept from the previous call (two [`SortedPrefix`]es).
     fn sorted_for_last(
         &self,
         rem: &[u32],
@@ -486,22 +479,13 @@ impl Ctx<'_> {
         tail: &mut Tail,
     ) {
         let l = self.d - 1;
-        tail.fresh.clear();
-        tail.fresh
-            .extend(rem[tail.merged..].iter().map(|&i| self.level(i, l)));
-        tail.fresh.sort_unstable();
-        merge_sorted(&mut tail.rem, &tail.fresh, |&x| x);
-        tail.merged = rem.len();
+        tail.rem.extend(rem, |&i| self.level(i, l), |&x| x);
         let key = |&(i, _): &(u32, u8)| self.level(i, l);
-        tail.fresh_kept.clear();
-        tail.fresh_kept.extend_from_slice(&kept[tail.kept_merged..]);
-        tail.fresh_kept.sort_unstable_by_key(key);
-        merge_sorted(&mut tail.kept, &tail.fresh_kept, key);
-        tail.kept_merged = kept.len();
+        tail.kept.extend(kept, |&p| p, key);
         tail.forced.clear();
         tail.forced.extend(new);
         tail.forced.sort_unstable_by_key(key);
-        merge_sorted(&mut tail.forced, &tail.kept, key);
+        merge_sorted(&mut tail.forced, &tail.kept.list, key);
     }
 
     /// The last coordinate `L = d - 1` of the node with bounds `tail.lo`, `tail.hi` on
@@ -731,6 +715,47 @@ fn closed_slack<'a>(w: f64, tables: impl Iterator<Item = &'a [f64]>) -> f64 {
 /// The tables as slices.
 fn slices(tables: &[Vec<f64>]) -> impl Iterator<Item = &[f64]> + Clone {
     tables.iter().map(Vec::as_slice)
+}
+
+/// A list sorted by a key, made from a prefix of some source list that grows between
+/// calls of [`extend`](Self::extend): only the items new to the prefix are sorted, then
+/// merged in (`O(new log new + len)` instead of a full sort). [`reset`](Self::reset) when
+/// the source list changes.
+#[derive(Default)]
+struct SortedPrefix<T> {
+    list: Vec<T>,
+    /// Source items already in `list`.
+    merged: usize,
+    /// Scratch: the items new to `list`.
+    fresh: Vec<T>,
+}
+
+impl<T: Copy + Default> SortedPrefix<T> {
+    fn reset(&mut self) {
+        self.list.clear();
+        self.merged = 0;
+    }
+
+    /// Makes `list` the items `map(s)` of `prefix`, sorted by `key`. `prefix` extends the
+    /// previous call's (a shorter one starts over).
+    fn extend<S>(&mut self, prefix: &[S], map: impl Fn(&S) -> T, key: impl Fn(&T) -> u32) {
+        if self.merged > prefix.len() {
+            self.reset();
+        }
+        self.fresh.clear();
+        self.fresh.extend(prefix[self.merged..].iter().map(map));
+        self.fresh.sort_unstable_by_key(&key);
+        merge_sorted(&mut self.list, &self.fresh, key);
+        self.merged = prefix.len();
+    }
+}
+
+impl<T> core::ops::Deref for SortedPrefix<T> {
+    type Target = [T];
+
+    fn deref(&self) -> &[T] {
+        &self.list
+    }
 }
 
 /// Merges `more` into `list`, both sorted by `key`, from the back, in place.
