@@ -123,7 +123,7 @@ fn extreme_in_2d() {
 #[test]
 fn star_is_refused_when_too_large_and_skipped_by_all() {
     let csv = stdout(
-        &["points", "sobol", "-n", "400", "-d", "6", "--format", "csv"],
+        &["points", "sobol", "-n", "600", "-d", "6", "--format", "csv"],
         "",
     );
     assert_usage_error(
@@ -132,7 +132,7 @@ fn star_is_refused_when_too_large_and_skipped_by_all() {
         "too many for the exact star",
     );
     let text = stdout(&["discrepancy"], &csv);
-    assert!(text.starts_with("# star skipped: 400 points"), "{text}");
+    assert!(text.starts_with("# star skipped: 600 points"), "{text}");
     assert_eq!(values(&text).len(), 8);
 }
 
@@ -144,13 +144,13 @@ fn max_seconds_sets_the_star_budget() {
             "",
         )
     };
-    // 2000 3D points are within the default budget (13195) but not within a hundredth of a
-    // second: 0.15 N^2.5 <= 3e6 up to N = 832 (2e7^0.4 = 832.6).
+    // 2000 3D points are within the default budget (48989) but not within a hundredth of a
+    // second: 1.25 N^2 <= 3e6 up to N = 1549 (2.4e6^0.5 = 1549.2).
     let small = csv_of("2000", "3");
     assert_usage_error(
         &["discrepancy", "--metric", "star", "--max-seconds", "0.01"],
         &small,
-        "(at most 832 within --max-seconds 0.01)",
+        "(at most 1549 within --max-seconds 0.01)",
     );
     for bad in ["0", "-1", "nan", "inf"] {
         assert_usage_error(
@@ -164,12 +164,13 @@ fn max_seconds_sets_the_star_budget() {
             "--max-seconds must be a positive number of seconds",
         );
     }
-    // 30 12D points: refused by default (29), computed with 15 seconds (0.5 s here).
-    let large = csv_of("30", "12");
+    // 36 12D points: refused by default (0.05 N^7 <= 3e9 up to N = 34, 6e10^(1/7) = 34.7),
+    // computed with 15 seconds (0.05 36^7 = 3.9e9 <= 4.5e9; about a second here).
+    let large = csv_of("36", "12");
     assert_usage_error(
         &["discrepancy", "--metric", "star"],
         &large,
-        "(at most 29 within --max-seconds 10)",
+        "(at most 34 within --max-seconds 10)",
     );
     let text = stdout(
         &["discrepancy", "--metric", "star", "--max-seconds", "15"],

@@ -47,21 +47,32 @@
 //! costs only linear time in the final combination (the "one-dimensional" last step). With
 //! `O(sqrt N)` slab points per coordinate and cell, this gives `O(N^((d-1)/2))` nodes over
 //! the first `d - 1` coordinates, each costing `O(N^(3/2))`: `O(N^(1 + d/2))` in all, the
-//! bound of Dobkin, Eppstein & Mitchell (the constant grows with `d`). Cells whose value
-//! cannot beat the best so far (bounded by `N vol(hi) - R` and `R + slab - N vol(lo)`, for
-//! the open and the closed half separately) are skipped, the per-coordinate tables and the
-//! knapsack prefixes are updated incrementally along the last coordinate, and the slabs of
-//! the first cut run in parallel (rayon).
+//! bound of Dobkin, Eppstein & Mitchell (the constant grows with `d`).
 //!
-//! Measured (shared 2-core machine, load 3 to 10 from other jobs): Sobol' points
-//! `d = 3`: `N` = 7500 in 4.8 s, 10000 in 13.5 s; `d = 4`: 2000 in 9.5 s; `d = 5`: 600 in
-//! 6.2 s; `d = 6`: 300 in 11.0 s. Uniform random points prune better: 10000 in 10.5 s,
-//! 2000 in 4.1 s, 600 in 3.6 s, 280 in 3.9 s. Later, at load 1.5 (`examples/time_dem.rs`),
-//! `d = 6` Sobol': `N` = 270 in 2.5 s, 450 in 14 s, 600 in 37 s, 800 in 123 s, 1000 in
-//! 289 s, growing like `N^4`, so 2000 points would take over an hour here; `d = 3`: 8151 in
-//! 2.4 s, 16000 in 12 s; `d = 4`: 3000 in 11 s; `d = 5`: 1000 in 14 s; `d = 7`: 180 in
-//! 5.5 s; `d = 8`: 100 in 3.8 s. [`work_estimate`] is fitted to these; [`star_dem_within`]
-//! takes a larger budget than [`star_dem`]'s ten seconds.
+//! # Pruning and the measured cost
+//!
+//! A cell is evaluated only if it can beat the best value so far, checked twice for the
+//! open and the closed half separately. First by `N vol(hi) - R` and
+//! `R + slab - N vol(lo)`. Then by bounds from the cell's per-coordinate tables (`open_slack`,
+//! `closed_slack` below): the product of the volume ratios is bounded by a linear
+//! function of them, so every coordinate's trade of volume against counted points is
+//! bounded on its own. Only then are the knapsacks brought up to date. On 6D Sobol' points
+//! (`N` = 450) the second check leaves 92701 of 77.9 million cells. Before it, the knapsacks
+//! did 9.5e9 multiply-compares; with it, 2.5e6. The cost left is the walk itself: about
+//! `sqrt N` fewer than `N^(1 + d/2)` on the sizes measured (see [`work_estimate`]). The
+//! per-coordinate tables and the knapsack prefixes are updated incrementally along the last
+//! coordinate. The sorted lists of a cut are merged from the previous sibling's, not
+//! re-sorted. The slabs of the first two cuts run in parallel (rayon). On one thread at
+//! `N` = 450 (6D), the heaviest slab of the first cut takes 16% of the time and the heaviest
+//! task of the second cut 2%.
+//!
+//! Measured with `examples/time_dem.rs` (first `N` Sobol' points, two threads, load about
+//! 1.5). 6D: `N` = 500 in 8.4 s, 600 in 17 s, 800 in 43 s, 1000 in 86 s, 2000 in TODO. Before the table
+//! bounds, on the same machine: 600 in 37 s, 800 in 123 s, 1000 in 285 s, growing like `N^4`.
+//! Other dimensions: `d = 3`: 40000 in 5.3 s; `d = 4`: 6000 in 10.5 s; `d = 5`: 1300 in
+//! 9.0 s; `d = 7`: 260 in 10.9 s; `d = 8`: 150 in 8.5 s; `d = 10`: 70 in 8.2 s.
+//! [`work_estimate`] is fitted to these; [`star_dem_within`] takes a larger budget than
+//! [`star_dem`]'s ten seconds.
 
 use super::Points;
 use crate::{Error, Result};
@@ -135,19 +146,30 @@ pub fn star_dem_within(
 /// The `total` of [`star_dem_within`]'s progress reports.
 pub const PROGRESS_STEPS: usize = 1000;
 
-/// Estimated inner-loop steps of [`star_dem`] for `n` points in `d` dimensions,
-/// `c N^(1 + d/2)` with `c = 0.15` for `d >= 3`, fitted so that
-/// [`super::star::STAR_WORK_BUDGET`] is at most about ten seconds on Sobol' points (slower
-/// than random ones) on the shared 2-core machine at load 1.5 (`examples/time_dem.rs`): the
-/// budget then admits `N` up to 13195, 2714, 877, 376, 194, 114 for `d` = 3..8, measured
-/// at 7.4, 8.3, 8.4, 7.9, 8.6 and 5.4 s. Larger sets run faster than the `N^(1 + d/2)` rate (1000 6D
-/// points: 289 s against 500 estimated) and so do higher dimensions (`d = 12`, 35 points:
-/// 1 s against 33); a loaded machine runs slower (an earlier fit under load 3 to 10 needed
-/// `c` = 0.5). The estimate ignores ties: a set on a coarse grid runs faster than
-/// estimated.
+/// Estimated work of [`star_dem`] for `n` points in `d` dimensions, on the scale of
+/// [`super::star::STAR_WORK_BUDGET`] (3e9, about ten seconds on the shared 2-core machine):
+///
+/// * `d <= 2`: `N^(1 + d/2)`;
+/// * `3 <= d <= 7`: `1.25 N^((d + 1)/2)`. The cell bounds of the last coordinate (module
+///   documentation) remove about a factor `sqrt N` from Dobkin, Eppstein & Mitchell's
+///   `N^(1 + d/2)` on these sizes: doubling `N` multiplied the time by `2^1.7` at `d = 3`,
+///   `2^2.1`, `2^2.6`, `2^3.2` (`N` = 600 to 1000) and `2^3.7` at `d = 7`;
+/// * `d >= 8`: `0.05 N^(1 + d/2)` (`d = 8` grew like `N^5.4` from 150 to 190 points).
+///
+/// Fitted to Sobol' points (slower than random ones) with `examples/time_dem.rs`, two
+/// threads, load about 1.5. The budget then admits `N` up to 48989, 5650, 1338, 478, 221,
+/// 143 for `d` = 3..8; measured nearby: 40000 3D points in 5.3 s, 6000 4D in 10.5 s, 1300
+/// 5D in 9.0 s, 500 6D in 8.4 s, 260 7D in 10.9 s, 150 8D in 8.5 s. It is conservative
+/// for high `d` (70 10D points: 8.2 s against 20 estimated; 40 12D: 3.1 s against 27) and
+/// for large sets at `d <= 7` (1000 6D points: 86 s against 132). A loaded machine runs
+/// slower. Ties make a set faster than estimated.
 pub fn work_estimate(n: usize, d: usize) -> f64 {
-    let c = if d <= 2 { 1.0 } else { 0.15 };
-    c * (n as f64).powf(1.0 + d as f64 / 2.0)
+    let n = n as f64;
+    match d {
+        0..=2 => n.powf(1.0 + d as f64 / 2.0),
+        3..=7 => 1.25 * n.powf((d + 1) as f64 / 2.0),
+        _ => 0.05 * n.powf(1.0 + d as f64 / 2.0),
+    }
 }
 
 /// Largest `N` whose [`work_estimate`] is within [`super::star::STAR_WORK_BUDGET`].
@@ -257,6 +279,10 @@ struct Tail {
     forced: Vec<(u32, u8)>,
     bj: Vec<f64>,
     sj: Vec<f64>,
+    /// `1 / A_j(hi_j)` and `1 / B_j(lo_j)` of the node's coordinates `0..L` (the last and
+    /// the first entries of their `big` and `small` tables).
+    inv_top: Vec<f64>,
+    inv_bottom: Vec<f64>,
 }
 
 impl Tail {
@@ -276,6 +302,8 @@ impl Tail {
             forced: Vec::new(),
             bj: Vec::new(),
             sj: Vec::new(),
+            inv_top: Vec::new(),
+            inv_bottom: Vec::new(),
         }
     }
 }
@@ -506,6 +534,12 @@ impl Ctx<'_> {
         }
         tail.clean_big = 0;
         tail.clean_small = 0;
+        tail.inv_top.clear();
+        tail.inv_top
+            .extend((0..l).map(|j| 1.0 / self.a(j, tail.hi[j])));
+        tail.inv_bottom.clear();
+        tail.inv_bottom
+            .extend((0..l).map(|j| 1.0 / self.b(j, tail.lo[j])));
         let vol_hi: f64 = (0..l).map(|j| self.a(j, tail.hi[j])).product();
         let vol_lo: f64 = (0..l).map(|j| self.b(j, tail.lo[j])).product();
         let mut n_active = 0usize;
@@ -542,15 +576,26 @@ impl Ctx<'_> {
                 self.tables(l, lo_l, hi_l, slab, &mut tail.bj, &mut tail.sj);
                 // Tighter bounds from the tables (see `open_slack`, `closed_slack`), before
                 // the knapsacks are brought up to date.
+                // The tables of coordinates 0..L keep their last (open) and first (closed)
+                // entries over the node: their reciprocals are `inv_top`, `inv_bottom`.
                 let margin = 1e-12 * (self.n + open_bound.abs() + closed_bound.abs());
                 if open {
                     let v = self.n * vol_hi * self.a(l, hi_l);
-                    let slack = open_slack(v, slices(&tail.tab_big[..l]).chain([&tail.bj[..]]));
+                    let top = self.a(l, hi_l);
+                    let tables = tail.tab_big[..l].iter().map(Vec::as_slice);
+                    let tables = tables.zip(tail.inv_top.iter().copied());
+                    let tables = tables.chain([(&tail.bj[..], 1.0 / top)]);
+                    // Pruned once the slack reaches `v - rr - best + margin`.
+                    let slack = open_slack(v, v - rr - best + margin, tables);
                     open = v - rr - slack + margin > best;
                 }
                 let w = self.n * vol_lo * self.b(l, lo_l);
                 if closed && w > 0.0 {
-                    let most = closed_slack(w, slices(&tail.tab_small[..l]).chain([&tail.sj[..]]));
+                    let bottom = self.b(l, lo_l);
+                    let tables = tail.tab_small[..l].iter().map(Vec::as_slice);
+                    let tables = tables.zip(tail.inv_bottom.iter().copied());
+                    let tables = tables.chain([(&tail.sj[..], 1.0 / bottom)]);
+                    let most = closed_slack(w, tables);
                     closed = rr - w + most + margin > best;
                 }
             }
@@ -672,23 +717,34 @@ impl Ctx<'_> {
 /// `X = sum_S (1 - rho)`, and `P <= e^-X`). So
 /// `N vol - count <= V - R - sum_k (a V (1 - r_k) + c_k)`, and each coordinate gives up at
 /// least `min_c (a V (1 - r_k[c]) + c)`: `S` is the sum of these minima. `V > 0`.
-fn open_slack<'a>(v: f64, tables: impl Iterator<Item = &'a [f64]> + Clone) -> f64 {
+///
+/// `tables` pairs each table with `1 / big[m]`. Every minimum is non-negative, so the sum
+/// stops once it reaches `enough` (the caller only asks whether `S >= enough`).
+fn open_slack<'a>(
+    v: f64,
+    enough: f64,
+    tables: impl Iterator<Item = (&'a [f64], f64)> + Clone,
+) -> f64 {
     let (mut prod, mut sum) = (1.0, 0.0);
-    for t in tables.clone() {
-        let rho = t[0] / t[t.len() - 1];
+    for (t, inv_top) in tables.clone() {
+        let rho = t[0] * inv_top;
         prod *= rho;
         sum += 1.0 - rho;
     }
     let av = if sum > 0.0 { v * (1.0 - prod) / sum } else { v };
-    tables
-        .map(|t| {
-            let scale = av / t[t.len() - 1];
-            t.iter()
-                .enumerate()
-                .map(|(c, &x)| av - x * scale + c as f64)
-                .fold(f64::INFINITY, f64::min)
-        })
-        .sum()
+    let mut slack = 0.0;
+    for (t, inv_top) in tables {
+        let scale = av * inv_top;
+        slack += t
+            .iter()
+            .enumerate()
+            .map(|(c, &x)| av - x * scale + c as f64)
+            .fold(f64::INFINITY, f64::min);
+        if slack >= enough {
+            break;
+        }
+    }
+    slack
 }
 
 /// `M` such that `count - N vol <= R - W + M` for every closed box of a cell, where
@@ -699,22 +755,18 @@ fn open_slack<'a>(v: f64, tables: impl Iterator<Item = &'a [f64]> + Clone) -> f6
 /// With `w_k = small_k[c_k] / small_k[0] >= 1`, `prod_k w_k >= 1 + sum_k (w_k - 1)` (expand the
 /// product: every other term is non-negative), so
 /// `count - N vol <= R - W + sum_k (c_k - W (w_k - 1))`: `M` is the sum over the coordinates
-/// of the largest `c - W (w_k[c] - 1)` (at most the coordinate's slab count).
-fn closed_slack<'a>(w: f64, tables: impl Iterator<Item = &'a [f64]>) -> f64 {
+/// of the largest `c - W (w_k[c] - 1)` (at most the coordinate's slab count). `tables` pairs
+/// each table with `1 / small[0]`.
+fn closed_slack<'a>(w: f64, tables: impl Iterator<Item = (&'a [f64], f64)>) -> f64 {
     tables
-        .map(|t| {
-            let scale = w / t[0];
+        .map(|(t, inv_bottom)| {
+            let scale = w * inv_bottom;
             t.iter()
                 .enumerate()
                 .map(|(c, &x)| c as f64 - (x * scale - w))
                 .fold(f64::NEG_INFINITY, f64::max)
         })
         .sum()
-}
-
-/// The tables as slices.
-fn slices(tables: &[Vec<f64>]) -> impl Iterator<Item = &[f64]> + Clone {
-    tables.iter().map(Vec::as_slice)
 }
 
 /// A list sorted by a key, made from a prefix of some source list that grows between
@@ -853,9 +905,10 @@ mod tests {
         for seed in 0..300 {
             let t = tables(seed, 1 + seed as usize % 4);
             let v = 1.0 + seed as f64 * 0.37;
-            let slices = || t.iter().map(Vec::as_slice);
+            let tops = || t.iter().map(|x| (&x[..], 1.0 / x[x.len() - 1]));
+            let bottoms = || t.iter().map(|x| (&x[..], 1.0 / x[0]));
             // Open: N vol - count = v prod(r) - sum(c) <= v - slack.
-            let slack = open_slack(v, slices());
+            let slack = open_slack(v, f64::INFINITY, tops());
             let open = choices(&t, |x| x[x.len() - 1]);
             let best = open
                 .iter()
@@ -866,7 +919,7 @@ mod tests {
                 "seed {seed}: {best} > {v} - {slack}"
             );
             // Closed: count - N vol = sum(c) - w prod(w_k) <= -w + most.
-            let most = closed_slack(v, slices());
+            let most = closed_slack(v, bottoms());
             let closed = choices(&t, |x| x[0]);
             let best = closed
                 .iter()

@@ -39,7 +39,7 @@
 //! |---|---|---|
 //! | [`star_1d`] | `O(N log N)` | none |
 //! | [`star_2d`] | `O(N^2)` time, `O(N)` memory, parallel over columns | `N <= 50_000` |
-//! | [`star_exact`] | `O(N^2)` in 2D; `O(N^(1 + d/2))` for `d >= 3` (Dobkin–Eppstein–Mitchell, [`super::dem`]), pruned | ≈ `3e9` steps, about ten seconds: `N <= 13195, 2714, 877, 376` for `d = 3, 4, 5, 6`; [`star_exact_within`] takes a budget |
+//! | [`star_exact`] | `O(N^2)` in 2D; `O(N^(1 + d/2))` for `d >= 3` (Dobkin–Eppstein–Mitchell, [`super::dem`]), pruned | ≈ `3e9` steps, about ten seconds: `N <= 48989, 5650, 1338, 478` for `d = 3, 4, 5, 6`; [`star_exact_within`] takes a budget |
 //! | [`extreme_2d`] | `O(N^3)` | `N <= 1200` |
 //! | [`star_lower_bound`] | `O(iterations · N d)` | none |
 //! | [`star_upper_bound`] | Thiémard's cover ([`super::thiemard`]): about `Σ_R (N vol(b_R) + 16)(d + k_R)` over its regions, parallel | ≈ `3e9` steps, estimated first |

@@ -24,9 +24,9 @@ block is preceded by a '# set K' line (K from 1).
 Conventions:
   star      star discrepancy D*, exact (1D closed form; 2D sweep; d-D by
             Dobkin-Eppstein-Mitchell). Refused with an error when the estimated time
-            exceeds --max-seconds (default 10: N <= 54772 in 2D, 13195 at d = 3, 376 at
-            d = 6; 600 admits 1046 at d = 6). Fitted on 2 cores: 1000 6D Sobol' points
-            took 4.8 minutes (estimated: 8). A bar shows the progress on a terminal.
+            exceeds --max-seconds (default 10: N <= 54772 in 2D, 48989 at d = 3, 478 at
+            d = 6; 600 admits 1542 at d = 6). Fitted on 2 cores: 1000 6D Sobol' points
+            took 86 s (estimated: 132). A bar shows the progress on a terminal.
   star-bounds  guaranteed bounds on D* for sets too large for the exact value: two lines,
             'star-lower' (the best of Thiemard's cover and threshold accepting: a value
             D* reaches) and 'star-upper' (Thiemard's cover: at most D* + delta); --delta
