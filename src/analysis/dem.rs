@@ -51,28 +51,30 @@
 //!
 //! # Pruning and the measured cost
 //!
-//! A cell is evaluated only if it can beat the best value so far, checked twice for the
-//! open and the closed half separately. First by `N vol(hi) - R` and
-//! `R + slab - N vol(lo)`. Then by bounds from the cell's per-coordinate tables (`open_slack`,
-//! `closed_slack` below): the product of the volume ratios is bounded by a linear
-//! function of them, so every coordinate's trade of volume against counted points is
-//! bounded on its own. Only then are the knapsacks brought up to date. On 6D Sobol' points
-//! (`N` = 450) the second check leaves 92701 of 77.9 million cells. Before it, the knapsacks
-//! did 9.5e9 multiply-compares; with it, 2.5e6. The cost left is the walk itself: about
-//! `sqrt N` fewer than `N^(1 + d/2)` on the sizes measured (see [`work_estimate`]). The
-//! per-coordinate tables and the knapsack prefixes are updated incrementally along the last
-//! coordinate. The sorted lists of a cut are merged from the previous sibling's, not
-//! re-sorted. The slabs of the first two cuts run in parallel (rayon). On one thread at
-//! `N` = 450 (6D), the heaviest slab of the first cut takes 16% of the time and the heaviest
-//! task of the second cut 2%.
+//! A cell is evaluated only if it can beat the best value so far, checked twice, for the
+//! open and the closed half separately: first by `N vol(hi) - R` and `R + slab - N vol(lo)`,
+//! then by bounds from the cell's per-coordinate tables (`open_slack` and `closed_slack`
+//! below: the product of the volume ratios is bounded by a linear function of them, so each
+//! coordinate's trade of volume against counted points is bounded on its own). Only then
+//! are the knapsacks brought up to date. On 6D Sobol' points (`N` = 450) the second check
+//! leaves 92701 of 77.9 million cells; the knapsacks did 9.5e9 multiply-compares before it,
+//! 2.5e6 with it. The cost left is the walk over the cells, which grows about `sqrt N`
+//! slower than `N^(1 + d/2)` on the sizes measured (see [`work_estimate`]).
+//!
+//! The per-coordinate tables and the knapsack prefixes are updated incrementally along the
+//! last coordinate, and the sorted lists of a cut are merged from the previous sibling's,
+//! not re-sorted. The slabs of the first two cuts run in parallel (rayon). Timed task by
+//! task on one thread (6D), the heaviest slab of the first cut takes 14% of the time at
+//! `N` = 450 and 12% at 800, the heaviest task of the second cut 1.7% and 1.1%: the first
+//! cut alone would cap the speed-up near 8 whatever the number of cores.
 //!
 //! Measured with `examples/time_dem.rs` (first `N` Sobol' points, two threads, load about
-//! 1.5). 6D: `N` = 500 in 8.4 s, 600 in 17 s, 800 in 43 s, 1000 in 86 s, 2000 in TODO. Before the table
-//! bounds, on the same machine: 600 in 37 s, 800 in 123 s, 1000 in 285 s, growing like `N^4`.
-//! Other dimensions: `d = 3`: 40000 in 5.3 s; `d = 4`: 6000 in 10.5 s; `d = 5`: 1300 in
-//! 9.0 s; `d = 7`: 260 in 10.9 s; `d = 8`: 150 in 8.5 s; `d = 10`: 70 in 8.2 s.
-//! [`work_estimate`] is fitted to these; [`star_dem_within`] takes a larger budget than
-//! [`star_dem`]'s ten seconds.
+//! 1.5). 6D: `N` = 500 in 8.4 s, 600 in 17 s, 800 in 43 s, 1000 in 86 s, 2000 in 17 minutes
+//! (1026 s). Before the table bounds, on the same machine: 600 in 37 s, 800 in 123 s, 1000
+//! in 285 s, growing like `N^4`. Other dimensions: `d = 3`: 40000 in 5.3 s; `d = 4`: 6000
+//! in 10.5 s; `d = 5`: 1300 in 9.0 s; `d = 7`: 260 in 10.9 s; `d = 8`: 150 in 8.5 s;
+//! `d = 10`: 70 in 8.2 s. [`work_estimate`] is fitted to these; [`star_dem_within`] takes a
+//! larger budget than [`star_dem`]'s ten seconds.
 
 use super::Points;
 use crate::{Error, Result};
