@@ -164,16 +164,16 @@ fn max_seconds_sets_the_star_budget() {
             "--max-seconds must be a positive number of seconds",
         );
     }
-    // 36 12D points: refused by default (0.05 N^7 <= 3e9 up to N = 34, 6e10^(1/7) = 34.7),
-    // computed with 15 seconds (0.05 36^7 = 3.9e9 <= 4.5e9; about a second here).
-    let large = csv_of("36", "12");
+    // 40 12D points: refused by default (0.005 N^7.5 <= 3e9 up to N = 37, 6e11^(1/7.5) =
+    // 37.2), computed with 20 seconds (0.005 40^7.5 = 5.2e9 <= 6e9; about 3 s here).
+    let large = csv_of("40", "12");
     assert_usage_error(
         &["discrepancy", "--metric", "star"],
         &large,
-        "(at most 34 within --max-seconds 10)",
+        "(at most 37 within --max-seconds 10)",
     );
     let text = stdout(
-        &["discrepancy", "--metric", "star", "--max-seconds", "15"],
+        &["discrepancy", "--metric", "star", "--max-seconds", "20"],
         &large,
     );
     let got = values(&text)[0].1;

@@ -521,7 +521,7 @@ fn dem_within_a_budget_reports_progress() {
         );
         assert_eq!(star_exact_within(p, budget, &|_, _| {}).unwrap_err(), err);
     }
-    // 120 3D Sobol' points: more than the budget 1e4 admits (52); with a budget, the value
+    // 120 3D Sobol' points: more than the budget 1e4 admits (89: 1.25 N^2 <= 1e4); with a budget, the value
     // is brute force's, and every slab of the first cut is reported once.
     let sobol = qmckit::Sobol::new(3).unwrap();
     let mut u = vec![0u32; 120 * 3];

@@ -63,10 +63,11 @@
 //!
 //! The per-coordinate tables and the knapsack prefixes are updated incrementally along the
 //! last coordinate, and the sorted lists of a cut are merged from the previous sibling's,
-//! not re-sorted. The slabs of the first two cuts run in parallel (rayon). Timed task by
-//! task on one thread (6D), the heaviest slab of the first cut takes 14% of the time at
-//! `N` = 450 and 12% at 800, the heaviest task of the second cut 1.7% and 1.1%: the first
-//! cut alone would cap the speed-up near 8 whatever the number of cores.
+//! not re-sorted. The slabs of the first cut run in parallel (rayon), and from `d = 4` on
+//! those of the second cut too. Timed task by task on one thread (6D), the heaviest slab of
+//! the first cut takes 14% of the time at `N` = 450 and 12% at 800, the heaviest task of
+//! the second cut 1.7% and 1.1%: the first cut alone would cap the speed-up near 8 whatever
+//! the number of cores.
 //!
 //! Measured with `examples/time_dem.rs` (first `N` Sobol' points, two threads, load about
 //! 1.5). 6D: `N` = 500 in 8.4 s, 600 in 17 s, 800 in 43 s, 1000 in 86 s, 2000 in 17 minutes
@@ -156,21 +157,23 @@ pub const PROGRESS_STEPS: usize = 1000;
 ///   documentation) remove about a factor `sqrt N` from Dobkin, Eppstein & Mitchell's
 ///   `N^(1 + d/2)` on these sizes: doubling `N` multiplied the time by `2^1.7` at `d = 3`,
 ///   `2^2.1`, `2^2.6`, `2^3.2` (`N` = 600 to 1000) and `2^3.7` at `d = 7`;
-/// * `d >= 8`: `0.05 N^(1 + d/2)` (`d = 8` grew like `N^5.4` from 150 to 190 points).
+/// * `d >= 8`: `0.005 N^((d + 3)/2)`: here the bounds gain less, `d = 8` grew like `N^5.4`
+///   from 150 to 190 points.
 ///
 /// Fitted to Sobol' points (slower than random ones) with `examples/time_dem.rs`, two
 /// threads, load about 1.5. The budget then admits `N` up to 48989, 5650, 1338, 478, 221,
-/// 143 for `d` = 3..8; measured nearby: 40000 3D points in 5.3 s, 6000 4D in 10.5 s, 1300
-/// 5D in 9.0 s, 500 6D in 8.4 s, 260 7D in 10.9 s, 150 8D in 8.5 s. It is conservative
-/// for high `d` (70 10D points: 8.2 s against 20 estimated; 40 12D: 3.1 s against 27) and
-/// for large sets at `d <= 7` (1000 6D points: 86 s against 132). A loaded machine runs
-/// slower. Ties make a set faster than estimated.
+/// 138 for `d` = 3..8; measured nearby: 40000 3D points in 5.3 s, 6000 4D in 10.5 s, 1300
+/// 5D in 9.0 s, 500 6D in 8.4 s, 260 7D in 10.9 s, 150 8D in 8.5 s (estimated 15.5; 190
+/// 8D: 30 s against 57). It is conservative for high `d` (70 10D points: 8.2 s against 16
+/// estimated; 40 12D: 3.1 s against 17) and for large sets at `d <= 7` (1000 6D points:
+/// 86 s against 132). A loaded machine runs slower. Ties make a set faster than
+/// estimated.
 pub fn work_estimate(n: usize, d: usize) -> f64 {
     let n = n as f64;
     match d {
         0..=2 => n.powf(1.0 + d as f64 / 2.0),
         3..=7 => 1.25 * n.powf((d + 1) as f64 / 2.0),
-        _ => 0.05 * n.powf(1.0 + d as f64 / 2.0),
+        _ => 0.005 * n.powf((d + 3) as f64 / 2.0),
     }
 }
 
@@ -472,8 +475,10 @@ impl Ctx<'_> {
         next.child = forced;
         if k == 0 && k + 3 < self.d {
             // The slabs of the second cut run in parallel too (the first cut's slabs alone,
-            // 17 to 45 of them, the heaviest a tenth of the work, would not keep many cores
-            // busy); each task has its own buffers, with this node's bounds.
+            // 17 to 45 of them, the heaviest 12-14% of the work at 6D, would not keep many
+            // cores busy); each task has its own buffers, with this node's bounds. (For
+            // d = 3 the second cut is the last coordinate's: only the first cut's slabs run
+            // in parallel, and they are many, one per sqrt N points.)
             let next = &*next;
             let (lo, hi) = (tail.lo[0], tail.hi[0]);
             let fresh = || {

@@ -280,11 +280,10 @@ fn sweep_columns(
 ///
 /// The value is `max over the critical grid of max(vol - open/N, closed/N - vol)`, points
 /// with a coordinate equal to 1 never counted (see the module documentation). Measured on
-/// the shared 2-core machine under load 3 to 10, `N` taking about ten seconds (Sobol' /
-/// uniform random points): `d = 3`: ≈ 9000 / 10000; `d = 4`: 2000 / > 2000; `d = 5`: ≈ 650
-/// / > 600; `d = 6`: ≈ 290 / > 280; at load 1.5 three to five times more work fits (details
-/// in [`super::dem`]). The grid enumeration this replaced took ten seconds at about 1900,
-/// 365, 140 and 70 points (under load).
+/// the shared 2-core machine (two threads, load about 1.5, Sobol' points), about ten
+/// seconds: `d = 3`: 40000 points in 5.3 s; `d = 4`: 6000 in 10.5 s; `d = 5`: 1300 in 9.0 s;
+/// `d = 6`: 500 in 8.4 s (details in [`super::dem`]). The grid enumeration this replaced
+/// took ten seconds at about 1900, 365, 140 and 70 points (under load 3 to 10).
 /// Beyond that use [`star_lower_bound`] / [`star_upper_bound`].
 ///
 /// # Errors
@@ -307,8 +306,8 @@ pub fn star_exact(points: Points<'_>) -> Result<f64> {
 /// [`super::dem::work_estimate`] for `d >= 3`; [`STAR_WORK_BUDGET`] is about ten seconds on
 /// a 2-core machine) and a progress report for `d >= 3` (see
 /// [`super::dem::star_dem_within`]). With a budget 60 times the default (about ten
-/// minutes by the estimate) `d = 6` takes up to 1046 points; 1000 Sobol' points took 4.8
-/// minutes on two cores (the estimate is conservative for large sets, see
+/// minutes by the estimate) `d = 6` takes up to 1542 points; 1000 Sobol' points took 86 s
+/// and 2000 took 17 minutes on two cores (the estimate is conservative for large sets, see
 /// [`super::dem::work_estimate`]).
 ///
 /// # Errors
