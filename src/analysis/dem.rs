@@ -575,33 +575,32 @@ impl Ctx<'_> {
             let inside = tail.rem.partition_point(|&x| x <= hi_l);
             let rr = below as f64;
             let best = self.best();
-            let open_bound = self.n * vol_hi * self.a(l, hi_l) - rr;
-            let closed_bound = (inside + n_active) as f64 - self.n * vol_lo * self.b(l, lo_l);
+            // The cell's largest and smallest volumes (times N), at its upper and lower corners.
+            let (a_hi, b_lo) = (self.a(l, hi_l), self.b(l, lo_l));
+            let (v, w) = (self.n * vol_hi * a_hi, self.n * vol_lo * b_lo);
+            let open_bound = v - rr;
+            let closed_bound = (inside + n_active) as f64 - w;
             let (mut open, mut closed) = (open_bound > best, closed_bound > best);
             if open || closed {
                 let slab = &tail.rem[below..inside];
                 self.tables(l, lo_l, hi_l, slab, &mut tail.bj, &mut tail.sj);
                 // Tighter bounds from the tables (see `open_slack`, `closed_slack`), before
-                // the knapsacks are brought up to date.
-                // The tables of coordinates 0..L keep their last (open) and first (closed)
-                // entries over the node: their reciprocals are `inv_top`, `inv_bottom`.
+                // the knapsacks are brought up to date. The tables of coordinates 0..L keep
+                // their last (open) and first (closed) entries over the node: their
+                // reciprocals are `inv_top`, `inv_bottom`.
                 let margin = 1e-12 * (self.n + open_bound.abs() + closed_bound.abs());
                 if open {
-                    let v = self.n * vol_hi * self.a(l, hi_l);
-                    let top = self.a(l, hi_l);
                     let tables = tail.tab_big[..l].iter().map(Vec::as_slice);
                     let tables = tables.zip(tail.inv_top.iter().copied());
-                    let tables = tables.chain([(&tail.bj[..], 1.0 / top)]);
-                    // Pruned once the slack reaches `v - rr - best + margin`.
-                    let slack = open_slack(v, v - rr - best + margin, tables);
-                    open = v - rr - slack + margin > best;
+                    let tables = tables.chain([(&tail.bj[..], 1.0 / a_hi)]);
+                    // Pruned once the slack reaches `open_bound - best + margin`.
+                    let slack = open_slack(v, open_bound - best + margin, tables);
+                    open = open_bound - slack + margin > best;
                 }
-                let w = self.n * vol_lo * self.b(l, lo_l);
                 if closed && w > 0.0 {
-                    let bottom = self.b(l, lo_l);
                     let tables = tail.tab_small[..l].iter().map(Vec::as_slice);
                     let tables = tables.zip(tail.inv_bottom.iter().copied());
-                    let tables = tables.chain([(&tail.sj[..], 1.0 / bottom)]);
+                    let tables = tables.chain([(&tail.sj[..], 1.0 / b_lo)]);
                     let most = closed_slack(w, tables);
                     closed = rr - w + most + margin > best;
                 }
@@ -917,33 +916,29 @@ mod tests {
             // Open: N vol - count = v prod(r) - sum(c) <= v - slack.
             let slack = open_slack(v, f64::INFINITY, tops());
             let open = choices(&t, |x| x[x.len() - 1]);
-            let best = open
+            let open_max = open
                 .iter()
                 .map(|&(c, p)| v * p - c)
                 .fold(f64::MIN, f64::max);
             assert!(
-                best <= v - slack + 1e-12,
-                "seed {seed}: {best} > {v} - {slack}"
+                open_max <= v - slack + 1e-12,
+                "seed {seed}: {open_max} > {v} - {slack}"
             );
             // Closed: count - N vol = sum(c) - w prod(w_k) <= -w + most.
             let most = closed_slack(v, bottoms());
             let closed = choices(&t, |x| x[0]);
-            let best = closed
+            let closed_max = closed
                 .iter()
                 .map(|&(c, p)| c - v * p)
                 .fold(f64::MIN, f64::max);
             assert!(
-                best <= most - v + 1e-12,
-                "seed {seed}: {best} > {most} - {v}"
+                closed_max <= most - v + 1e-12,
+                "seed {seed}: {closed_max} > {most} - {v}"
             );
             if t.len() == 1 {
                 // One coordinate: both bounds are the exact maxima.
-                let open_max = open
-                    .iter()
-                    .map(|&(c, p)| v * p - c)
-                    .fold(f64::MIN, f64::max);
                 assert!((open_max - (v - slack)).abs() < 1e-9);
-                assert!((best - (most - v)).abs() < 1e-9);
+                assert!((closed_max - (most - v)).abs() < 1e-9);
             }
         }
     }
