@@ -273,6 +273,18 @@ fn refuses_infeasible_requests() {
         star_2d(p),
         Err(qmckit::Error::TooManyPoints { .. })
     ));
+    // One 2D limit for every exact entry point: the largest N with N^2 <= 3e9
+    // (54772^2 = 2_999_971_984, 54773^2 = 3_000_081_529).
+    let data = vec![0.5; 54_773 * 2];
+    let p = Points::new(&data, 2).unwrap();
+    let refused = qmckit::Error::TooManyPoints {
+        requested: 54_773,
+        max: 54_772,
+    };
+    assert_eq!(star_2d(p), Err(refused));
+    assert_eq!(star(p), Err(refused));
+    assert_eq!(star_exact(p), Err(refused));
+    assert_eq!(qmckit::analysis::star::STAR_2D_MAX_POINTS, 54_772);
     let data = vec![0.25; 100_000 * 6];
     let mut rng = Rng(5);
     let data: Vec<f64> = data.iter().map(|_| rng.uniform()).collect();

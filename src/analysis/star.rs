@@ -38,7 +38,7 @@
 //! | function | cost | limit |
 //! |---|---|---|
 //! | [`star_1d`] | `O(N log N)` | none |
-//! | [`star_2d`] | `O(N^2)` time, `O(N)` memory, parallel over columns | `N <= 50_000` |
+//! | [`star_2d`] | `O(N^2)` time, `O(N)` memory, parallel over columns | `N^2 <=` [`STAR_WORK_BUDGET`]: `N <= 54_772` |
 //! | [`star_exact`] | `O(N^2)` in 2D; `O(N^(1 + d/2))` for `d >= 3` (Dobkin–Eppstein–Mitchell, [`super::dem`]), pruned | ≈ `3e9` steps, about ten seconds: `N <= 48989, 5650, 1338, 478` for `d = 3, 4, 5, 6`; [`star_exact_within`] takes a budget |
 //! | [`extreme_2d`] | `O(N^3)` | `N <= 1200` |
 //! | [`star_lower_bound`] | `O(iterations · N d)` | none |
@@ -52,17 +52,25 @@ use rayon::prelude::*;
 /// instead of running for minutes: about ten seconds on a 2-core machine.
 pub const STAR_WORK_BUDGET: f64 = 3e9;
 
-/// Largest `N` [`star_2d`] accepts (about ten seconds: `N = 2^14` takes one).
-pub const STAR_2D_MAX_POINTS: u64 = 50_000;
+/// Largest `N` [`star_2d`] (and [`star`], [`star_exact`] in 2D) accepts: the largest `N`
+/// with `N^2 <=` [`STAR_WORK_BUDGET`], about ten seconds (`N = 2^14` takes one).
+pub const STAR_2D_MAX_POINTS: u64 = 54_772;
+
+// The 2D limit is the budget's: one rule for every exact entry point.
+const _: () = assert!(
+    (STAR_2D_MAX_POINTS * STAR_2D_MAX_POINTS) as f64 <= STAR_WORK_BUDGET
+        && ((STAR_2D_MAX_POINTS + 1) * (STAR_2D_MAX_POINTS + 1)) as f64 > STAR_WORK_BUDGET
+);
 
 /// Largest `N` [`extreme_2d`] accepts (`N^3 / 2` sweep steps, about five seconds).
 pub const EXTREME_2D_MAX_POINTS: u64 = 1200;
 
 /// Star discrepancy of `points`, exact: [`star_1d`] in 1D, [`star_2d`] in 2D,
-/// [`star_exact`] otherwise.
+/// Dobkin–Eppstein–Mitchell for `d >= 3`; the same as [`star_exact`] (one work budget,
+/// [`STAR_WORK_BUDGET`], in every dimension).
 ///
 /// # Errors
-/// Those of the function dispatched to (too many points for an exact computation).
+/// [`Error::TooManyPoints`] when the estimated work exceeds the budget.
 ///
 /// ```
 /// use qmckit::analysis::{Points, star::star};
@@ -73,11 +81,7 @@ pub const EXTREME_2D_MAX_POINTS: u64 = 1200;
 /// # Ok::<(), qmckit::Error>(())
 /// ```
 pub fn star(points: Points<'_>) -> Result<f64> {
-    match points.dims() {
-        1 => star_1d(points),
-        2 => star_2d(points),
-        _ => star_exact(points),
-    }
+    star_exact(points)
 }
 
 /// Exact 1D star discrepancy by the closed form (Niederreiter 1992, Thm. 2.6):
@@ -142,14 +146,7 @@ pub fn star_2d(points: Points<'_>) -> Result<f64> {
             what: "star_2d of points that are not 2-dimensional",
         });
     }
-    let n = points.len();
-    if n as u64 > STAR_2D_MAX_POINTS {
-        return Err(Error::TooManyPoints {
-            requested: n as u64,
-            max: STAR_2D_MAX_POINTS,
-        });
-    }
-    Ok(sweep_2d(points))
+    star_exact(points)
 }
 
 /// The 2D sweep of [`star_2d`] without the size check.
