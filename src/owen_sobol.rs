@@ -6,8 +6,9 @@
 //! * [`OwenSobolTable`]: one dimension, 4 KiB, random access.
 //! * [`OwenSobol4`]: four dimensions interleaved (16 KiB), so the four coordinates of a point
 //!   come from four 16-byte table rows and are hashed and converted as one 4-lane vector;
-//!   [`OwenSobol4::fill_f32`] processes many indices and, on x86-64 hosts with `std`,
-//!   dispatches at run time to an AVX2 build of the same code.
+//!   [`OwenSobol4::fill_f32`] processes many indices, four points (16 lanes) at a time,
+//!   and on x86-64 hosts with `std` dispatches at run time to an AVX-512+GFNI or AVX2
+//!   build of the same code.
 
 use crate::bits::{reverse_bits, to_f32_via_f64};
 use crate::error::Result;
@@ -171,9 +172,25 @@ impl OwenSobol4 {
         self.sample(index).map(to_f32_via_f64)
     }
 
-    /// `out[k] = sample_f32(indices[k])` for every `k` (the shorter length wins). On x86-64
-    /// with `std`, uses an AVX2 build of the same code when the CPU has AVX2.
+    /// `out[k] = sample_f32(indices[k])` for every `k` (the shorter length wins), four
+    /// points at a time (see `fill_blocks`). On x86-64 with `std` it picks at run time the
+    /// widest build of the same code the CPU runs: AVX-512 with GFNI (16 lanes a vector,
+    /// one-instruction bit reversal within bytes), else AVX2, else the portable (SSE2) one.
+    /// The same bits on every path (tested against the scalar [`sample_f32`](Self::sample_f32)).
+    /// Measured on an AMD Zen 5 (criterion, 4096 points): 0.26 / 0.50 / 1.8 ns a value for
+    /// the three builds.
     pub fn fill_f32(&self, indices: &[u32], out: &mut [[f32; 4]]) {
+        #[cfg(all(feature = "std", target_arch = "x86_64"))]
+        if has_avx512_gfni() {
+            // SAFETY: `fill_f32_avx512` only requires the CPU features it is compiled for
+            // (avx512f, avx512bw, avx512vl, gfni); `has_avx512_gfni` detected all four at
+            // run time on this CPU.
+            #[allow(unsafe_code)]
+            unsafe {
+                self.fill_f32_avx512(indices, out)
+            };
+            return;
+        }
         #[cfg(all(feature = "std", target_arch = "x86_64"))]
         if std::arch::is_x86_feature_detected!("avx2") {
             // SAFETY: `fill_f32_avx2` only requires the CPU to support AVX2, which was
@@ -189,18 +206,139 @@ impl OwenSobol4 {
 
     /// The portable build of [`fill_f32`](Self::fill_f32) (also what other targets use).
     pub fn fill_f32_portable(&self, indices: &[u32], out: &mut [[f32; 4]]) {
+        self.fill_blocks(indices, out);
+    }
+
+    /// The loop of every build. On 64-bit targets four points at a time: their 16
+    /// coordinates form one array, so the hash, the reversal and the conversion are 16
+    /// lanes of identical work that the compiler maps onto vectors of the build's width
+    /// (4 vectors of 4 lanes with SSE2, 2 of 8 with AVX2, 1 of 16 with AVX-512); the last
+    /// `len % 4` points go one by one. 32-bit targets (microcontrollers, no vector unit) go
+    /// point by point, which keeps the code small.
+    #[inline(always)]
+    fn fill_blocks(&self, indices: &[u32], out: &mut [[f32; 4]]) {
+        let n = indices.len().min(out.len());
+        let (indices, out) = (
+            indices.get(..n).unwrap_or(&[]),
+            out.get_mut(..n).unwrap_or(&mut []),
+        );
+        #[cfg(target_pointer_width = "64")]
+        let (indices, out) = {
+            let (idx4, idx_rest) = indices.as_chunks::<4>();
+            let (out4, out_rest) = out.as_chunks_mut::<4>();
+            for (o, i) in out4.iter_mut().zip(idx4) {
+                *o = self.block_f32(i);
+            }
+            (idx_rest, out_rest)
+        };
         for (o, &i) in out.iter_mut().zip(indices) {
             *o = self.sample_f32(i);
         }
     }
 
-    /// The same loop compiled with AVX2 enabled (the code is identical; the compiler
-    /// vectorizes the 32-bit multiplications and bit reversals with AVX2 instructions).
+    /// [`sample_f32`](Self::sample_f32) of four points, as 16 lanes: point `p`'s table rows
+    /// XORed into lanes `4p .. 4p + 4`, then one hash, reversal and conversion loop over all
+    /// 16, zipped with the keys spread to 16 lanes beforehand (picking `keys[k % 4]` inside
+    /// the loop instead measured 7x slower with AVX-512: the loop was not vectorized).
+    #[cfg(target_pointer_width = "64")]
+    #[inline(always)]
+    fn block_f32(&self, idx: &[u32; 4]) -> [[f32; 4]; 4] {
+        let mut x = [0u32; 16];
+        for (p, &index) in idx.iter().enumerate() {
+            let rows = [
+                &self.t[0][(index & 0xFF) as usize],
+                &self.t[1][((index >> 8) & 0xFF) as usize],
+                &self.t[2][((index >> 16) & 0xFF) as usize],
+                &self.t[3][(index >> 24) as usize],
+            ];
+            for lane in 0..4 {
+                x[(4 * p + lane) % 16] =
+                    rows[0][lane] ^ rows[1][lane] ^ rows[2][lane] ^ rows[3][lane];
+            }
+        }
+        let mut y = [0f32; 16];
+        let keys: [u32; 16] = core::array::from_fn(|k| self.keys[k % 4]);
+        for ((yk, &xk), &key) in y.iter_mut().zip(&x).zip(&keys) {
+            *yk = to_f32_via_f64(reverse_bits(self.owen.scramble_reversed(xk, key)));
+        }
+        core::array::from_fn(|p| core::array::from_fn(|lane| y[(4 * p + lane) % 16]))
+    }
+
+    /// The loop compiled with AVX2 enabled (the code is identical; the compiler maps the
+    /// 16 lanes onto two 8-lane vectors).
     #[cfg(all(feature = "std", target_arch = "x86_64"))]
     #[target_feature(enable = "avx2")]
     fn fill_f32_avx2(&self, indices: &[u32], out: &mut [[f32; 4]]) {
-        for (o, &i) in out.iter_mut().zip(indices) {
-            *o = self.sample_f32(i);
+        self.fill_blocks(indices, out);
+    }
+
+    /// The loop compiled with AVX-512 (F, BW, VL) and GFNI enabled: the 16 lanes are one
+    /// vector, and the bit reversal is a GFNI affine transform plus a byte shuffle.
+    #[cfg(all(feature = "std", target_arch = "x86_64"))]
+    #[target_feature(enable = "avx512f,avx512bw,avx512vl,gfni")]
+    fn fill_f32_avx512(&self, indices: &[u32], out: &mut [[f32; 4]]) {
+        self.fill_blocks(indices, out);
+    }
+}
+
+/// Whether this CPU runs [`OwenSobol4`]'s AVX-512 build (avx512f, avx512bw, avx512vl, gfni).
+#[cfg(all(feature = "std", target_arch = "x86_64"))]
+fn has_avx512_gfni() -> bool {
+    std::arch::is_x86_feature_detected!("avx512f")
+        && std::arch::is_x86_feature_detected!("avx512bw")
+        && std::arch::is_x86_feature_detected!("avx512vl")
+        && std::arch::is_x86_feature_detected!("gfni")
+}
+
+#[cfg(all(test, feature = "std", target_arch = "x86_64"))]
+mod tests {
+    use super::*;
+    use crate::randomize::OwenHash;
+
+    /// Every build the CPU can run (named, so the log says which ran), on lengths that
+    /// leave 0 to 3 points past the blocks of four and on unequal lengths, for both hashes,
+    /// against the scalar path point by point.
+    #[test]
+    fn every_build_matches_the_scalar_path() {
+        type Fill = fn(&OwenSobol4, &[u32], &mut [[f32; 4]]);
+        let mut builds: Vec<(&str, Fill)> = vec![("portable", OwenSobol4::fill_f32_portable)];
+        if std::arch::is_x86_feature_detected!("avx2") {
+            // SAFETY: AVX2 was detected on this CPU just above.
+            #[allow(unsafe_code)]
+            builds.push(("avx2", |s, i, o| unsafe { s.fill_f32_avx2(i, o) }));
+        }
+        if has_avx512_gfni() {
+            // SAFETY: avx512f, avx512bw, avx512vl and gfni were detected just above.
+            #[allow(unsafe_code)]
+            builds.push(("avx512", |s, i, o| unsafe { s.fill_f32_avx512(i, o) }));
+        }
+        println!(
+            "builds run: {:?}",
+            builds.iter().map(|b| b.0).collect::<Vec<_>>()
+        );
+        let dims =
+            [0usize, 5, 33, crate::SOBOL_MAX_DIMS - 1].map(|d| SobolDimension::new(d).unwrap());
+        let indices: Vec<u32> = (0..4099u32)
+            .map(|k| k.wrapping_mul(2_654_435_761) ^ (k >> 3))
+            .chain([0, 1, 255, 256, u32::MAX])
+            .collect();
+        for hash in [OwenHash::Vegdahl, OwenHash::LaineKarras] {
+            let four = OwenSobol4::new(dims, [3, 1, 4, 1], FastOwen::with_hash(77, hash));
+            for len in [0, 1, 2, 3, 4, 5, 6, 7, 4101, 4103, indices.len()] {
+                for (name, fill) in &builds {
+                    let mut out = vec![[-1f32; 4]; len];
+                    fill(&four, &indices[..len], &mut out);
+                    for (k, o) in out.iter().enumerate() {
+                        let want = four.sample_f32(indices[k]).map(f32::to_bits);
+                        assert_eq!(o.map(f32::to_bits), want, "{name} {hash:?} len {len} k {k}");
+                    }
+                    // Unequal lengths: the shorter wins, the rest of `out` is untouched.
+                    let mut long = vec![[-1f32; 4]; len + 3];
+                    fill(&four, &indices[..len], &mut long);
+                    assert_eq!(long[..len], out[..]);
+                    assert!(long[len..].iter().all(|o| *o == [-1f32; 4]));
+                }
+            }
         }
     }
 }
