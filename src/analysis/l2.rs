@@ -17,8 +17,10 @@
 //! `1/2 + |x - 1/2| / 2` for the centered discrepancy) so that a pair factor costs one to
 //! six arithmetic operations, and the features are stored as structure of arrays in blocks
 //! of 8 points. Point `i` is then evaluated against 8 points `j` at a time with fixed-size
-//! array operations that compile to SIMD instructions; on x86-64 CPUs with AVX2 and FMA
-//! (detected at run time) the same code runs compiled for AVX2, with the same bits. In one
+//! array operations that compile to SIMD instructions; on x86-64 CPUs with AVX2 and FMA, or
+//! AVX-512 (detected at run time), the same code runs compiled for them, with the same bits
+//! (L2-star and the generalized L2, whose factor is one minimum, stay with AVX2: see
+//! `Build`). In one
 //! and two dimensions the loop is compiled for the dimension and the products of four
 //! blocks are summed in plain arithmetic before the compensated addition (otherwise the
 //! summation would cost as much as the kernel); in higher dimensions the loop over the
@@ -38,7 +40,9 @@
 //! 10.6-15.4x, MD 14.4-18.9x; 8D WD 10.1-10.3x, MD 18.2-18.7x (CD, L2-star unchanged);
 //! timed against the build without them in alternation (`examples/time_l2.rs`, best of
 //! nine runs): WD 1.19x faster in 8D and 1.16x in 2D, MD 1.24x and 1.26x, diaphony 1.17x
-//! and 1.95x.
+//! and 1.95x. On an idle AMD Zen 5 (2026-12-01, three runs, pinned) with the AVX-512 build:
+//! 2D L2-star 21x, CD 20-22x, WD 20-22x, MD 25x; 8D L2-star 10.0-10.2x (AVX2 build), CD 29x,
+//! WD 28x, MD 33x (before the AVX-512 build, same machine: CD 17x, WD 14x, MD 18x in 8D).
 //!
 //! | function | name | returns | convention of |
 //! |---|---|---|---|
@@ -73,7 +77,7 @@
 //! `fma(-t, 1 - t, 3/2)` for `3/2 - t (1 - t)`), which moves an addition of these add-bound
 //! loops (for the wrap-around, three additions against two multiplications per coordinate)
 //! to the multipliers, and rounds once fewer. `mul_add` is one correctly rounded operation
-//! in every build: packed FMA instructions (`vfnmadd213pd` and the like) in the AVX2 build,
+//! in every build: packed FMA instructions (`vfnmadd213pd` and the like) in the wide builds,
 //! a call to the runtime library's correctly rounded `fma` in the portable one (on x86-64,
 //! compiler-builtins' `fma`: the FMA instruction where the CPU has one, an exact software
 //! fallback elsewhere), so the two builds still give the same bits (tested). The price is
@@ -225,24 +229,32 @@ struct KernelSums {
     s2: Dd,
 }
 
-/// Which build of the pair-sum loop runs.
+/// Which build of the pair-sum loop runs: the same code compiled for wider vectors. A
+/// build the CPU lacks falls back to the next narrower one it has (detected at run time,
+/// x86-64 only; elsewhere every build is the portable one). All builds give the same bits:
+/// Rust never contracts `a * b + c` into an FMA, and the explicit [`f64::mul_add`] of some
+/// factors is one correctly rounded operation in every build (an FMA instruction in the
+/// wide ones, the library's `fma` in the portable one), so the instructions differ only in
+/// width.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Build {
     /// The portable build (baseline target features: SSE2 on x86-64). Only the tests ask
-    /// for it explicitly, to compare it with [`Build::Detect`].
+    /// for it explicitly, to compare it with the others.
     #[cfg_attr(not(test), allow(dead_code))]
     Portable,
-    /// On x86-64, the same code compiled with AVX2 and FMA when the CPU has them (detected
-    /// at run time); elsewhere the portable build. Same bits as [`Build::Portable`]: Rust
-    /// never contracts `a * b + c` into an FMA, and the explicit [`f64::mul_add`] of some
-    /// factors is one correctly rounded operation in both builds (an FMA instruction here,
-    /// the library's `fma` there), so the instructions differ only in width.
-    Detect,
+    /// AVX2 and FMA (4 lanes a register): the measures whose pair factor is one minimum
+    /// (L2-star, generalized L2), for which the AVX-512 build of the generic-dimension loop
+    /// measured slower from 6 dimensions on (8D: 5.1 against 4.3 ms for 4096 points).
+    Avx2,
+    /// AVX-512 (F, VL) and FMA (8 lanes, one register a block of [`LANES`] points): the
+    /// other measures, 1.3-2x faster than AVX2 on a Zen 5 for 4096 points in 2 to 12
+    /// dimensions.
+    Avx512,
 }
 
 /// Points per block of the pair sum: the inner loop evaluates the kernel for one point
 /// `i` against `LANES` points `j` as fixed-size array operations, which the compiler turns
-/// into SIMD instructions (2 AVX2 or 4 SSE2 registers per array).
+/// into SIMD instructions (one AVX-512, 2 AVX2 or 4 SSE2 registers per array).
 const LANES: usize = 8;
 
 /// The points as `F` per-coordinate features (`feat(x_ik)`, precomputed once so that the
@@ -579,7 +591,17 @@ where
     row_pair_portable::<F, D, K>(s, i, k1)
 }
 
-/// [`row_pair_portable`] in the requested build.
+/// [`row_pair_portable`] compiled with AVX-512 (F, VL) and FMA (8 lanes a register).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
+fn row_pair_avx512<const F: usize, const D: usize, K>(s: &Blocked<F>, i: usize, k1: &K) -> Acc
+where
+    K: Fn([f64; F], [f64; F]) -> f64,
+{
+    row_pair_portable::<F, D, K>(s, i, k1)
+}
+
+/// [`row_pair_portable`] in the requested build, or the widest narrower one the CPU runs.
 fn row_pair<const F: usize, const D: usize, K>(
     s: &Blocked<F>,
     i: usize,
@@ -590,14 +612,22 @@ where
     K: Fn([f64; F], [f64; F]) -> f64,
 {
     #[cfg(target_arch = "x86_64")]
-    if build == Build::Detect
-        && std::arch::is_x86_feature_detected!("avx2")
-        && std::arch::is_x86_feature_detected!("fma")
     {
-        // SAFETY: `row_pair_avx2` is safe code whose only requirement is that the CPU
-        // supports AVX2 and FMA, both detected at run time on this very CPU just above.
-        #[allow(unsafe_code)]
-        return unsafe { row_pair_avx2::<F, D, K>(s, i, k1) };
+        use std::arch::is_x86_feature_detected as has;
+        let avx2 = has!("avx2") && has!("fma");
+        if build == Build::Avx512 && avx2 && has!("avx512f") && has!("avx512vl") {
+            // SAFETY: `row_pair_avx512` is safe code whose only requirement is that the
+            // CPU supports AVX-512F, AVX-512VL, AVX2 and FMA, all detected at run time on
+            // this very CPU just above.
+            #[allow(unsafe_code)]
+            return unsafe { row_pair_avx512::<F, D, K>(s, i, k1) };
+        }
+        if build != Build::Portable && avx2 {
+            // SAFETY: `row_pair_avx2` is safe code whose only requirement is that the CPU
+            // supports AVX2 and FMA, both detected at run time on this very CPU just above.
+            #[allow(unsafe_code)]
+            return unsafe { row_pair_avx2::<F, D, K>(s, i, k1) };
+        }
     }
     let _ = build;
     row_pair_portable::<F, D, K>(s, i, k1)
@@ -755,7 +785,7 @@ pub fn l2_star(p: Points<'_>) -> f64 {
 
 /// [`l2_star`] by the `O(n^2 d)` pair sum, whatever the dimension.
 pub fn l2_star_direct(p: Points<'_>) -> f64 {
-    l2_star_direct_with(p, Build::Detect)
+    l2_star_direct_with(p, Build::Avx2)
 }
 
 /// [`l2_star_direct`] in the given build. The pair factor `1 - max(x, y)` is computed as
@@ -795,7 +825,7 @@ fn l2_star_direct_with(p: Points<'_>, build: Build) -> f64 {
 /// # Ok::<(), qmckit::Error>(())
 /// ```
 pub fn centered(p: Points<'_>) -> f64 {
-    centered_with(p, Build::Detect)
+    centered_with(p, Build::Avx512)
 }
 
 /// [`centered`] in the given build. With `h = x / 2` and `a = 1/2 + |x - 1/2| / 2`
@@ -839,7 +869,7 @@ fn centered_with(p: Points<'_>, build: Build) -> f64 {
 /// # Ok::<(), qmckit::Error>(())
 /// ```
 pub fn wrap_around(p: Points<'_>) -> f64 {
-    wrap_around_with(p, Build::Detect)
+    wrap_around_with(p, Build::Avx512)
 }
 
 /// [`wrap_around`] in the given build.
@@ -883,7 +913,7 @@ fn wrap_around_with(p: Points<'_>, build: Build) -> f64 {
 /// # Ok::<(), qmckit::Error>(())
 /// ```
 pub fn mixture(p: Points<'_>) -> f64 {
-    mixture_with(p, Build::Detect)
+    mixture_with(p, Build::Avx512)
 }
 
 /// [`mixture`] in the given build. With `m = 15/16 - |x - 1/2| / 4` precomputed, the pair
@@ -933,7 +963,7 @@ fn mixture_with(p: Points<'_>, build: Build) -> f64 {
 /// # Ok::<(), qmckit::Error>(())
 /// ```
 pub fn symmetric(p: Points<'_>) -> f64 {
-    symmetric_with(p, Build::Detect)
+    symmetric_with(p, Build::Avx512)
 }
 
 /// [`symmetric`] in the given build.
@@ -972,7 +1002,7 @@ fn symmetric_with(p: Points<'_>, build: Build) -> f64 {
 /// # Ok::<(), qmckit::Error>(())
 /// ```
 pub fn unanchored(p: Points<'_>) -> f64 {
-    unanchored_with(p, Build::Detect)
+    unanchored_with(p, Build::Avx512)
 }
 
 /// [`unanchored`] in the given build (`1 - max(x, y) = min(1 - x, 1 - y)`, precomputed).
@@ -1011,7 +1041,7 @@ fn unanchored_with(p: Points<'_>, build: Build) -> f64 {
 /// # Ok::<(), qmckit::Error>(())
 /// ```
 pub fn generalized(p: Points<'_>) -> f64 {
-    generalized_with(p, Build::Detect)
+    generalized_with(p, Build::Avx2)
 }
 
 /// [`generalized`] in the given build (`2 - max(x, y) = min(2 - x, 2 - y)`, precomputed).
@@ -1047,7 +1077,7 @@ fn generalized_with(p: Points<'_>, build: Build) -> f64 {
 /// # Ok::<(), qmckit::Error>(())
 /// ```
 pub fn diaphony(p: Points<'_>) -> f64 {
-    diaphony_with(p, Build::Detect)
+    diaphony_with(p, Build::Avx512)
 }
 
 /// [`diaphony`] in the given build. The pair factor `1 + 2 pi^2 B2(t)`, `t = |x_i - x_j|`,
@@ -1127,12 +1157,18 @@ mod kernel_tests {
                 let s = Blocked::new(p, |x| [x]);
                 let k1 = |a: [f64; 1], b: [f64; 1]| kernel(a[0], b[0]);
                 let portable = off_diagonal(&s, &k1, Build::Portable, lp).dd().value();
-                let detect = off_diagonal(&s, &k1, Build::Detect, lp).dd().value();
                 assert!(
                     (portable - plain).abs() <= 1e-14 * plain.max(1.0),
                     "n={n} d={d} {lp:?}: {portable} vs {plain}"
                 );
-                assert_eq!(portable.to_bits(), detect.to_bits(), "n={n} d={d} {lp:?}");
+                for build in [Build::Avx2, Build::Avx512] {
+                    let wide = off_diagonal(&s, &k1, build, lp).dd().value();
+                    assert_eq!(
+                        portable.to_bits(),
+                        wide.to_bits(),
+                        "n={n} d={d} {lp:?} {build:?}"
+                    );
+                }
             }
         }
     }
@@ -1237,18 +1273,22 @@ mod tests {
     }
 
     #[test]
-    fn detected_build_gives_the_portable_bits() {
-        // On an x86-64 CPU with AVX2 and FMA this compares the AVX2 build of the pair sum
-        // with the portable one (elsewhere both are the portable build). The `f64::mul_add`
-        // of the wrap-around, mixture and diaphony factors is a packed FMA instruction in the
-        // one and an `fma` call in the other; (300, 8) and (301, 2) run several full 8D tile
-        // row blocks and 2D groups of blocks.
+    fn every_build_gives_the_portable_bits() {
+        // On an x86-64 CPU this compares the AVX2+FMA and AVX-512 builds of the pair sum (each
+        // where the CPU has it, else the next narrower one: the log says which ran) with the
+        // portable one; elsewhere all three are the portable build. The `f64::mul_add` of the
+        // wrap-around, mixture and diaphony factors is a packed FMA instruction in the wide
+        // builds and an `fma` call in the portable one; (300, 8) and (301, 2) run several
+        // full 8D tile row blocks and 2D groups of blocks.
         #[cfg(target_arch = "x86_64")]
-        eprintln!(
-            "avx2+fma: {}",
-            std::arch::is_x86_feature_detected!("avx2")
-                && std::arch::is_x86_feature_detected!("fma")
-        );
+        {
+            use std::arch::is_x86_feature_detected as has;
+            eprintln!(
+                "avx2+fma: {}, avx512f+vl: {}",
+                has!("avx2") && has!("fma"),
+                has!("avx512f") && has!("avx512vl")
+            );
+        }
         for (n, d) in [
             (1, 1),
             (7, 3),
@@ -1262,11 +1302,16 @@ mod tests {
             let data = golden_ratio_points(n * d);
             let p = Points::new(&data, d).unwrap();
             for m in L2Metric::ALL {
-                let (a, b) = (
-                    direct_with(m, p, Build::Portable),
-                    direct_with(m, p, Build::Detect),
-                );
-                assert_eq!(a.to_bits(), b.to_bits(), "{} n={n} d={d}", m.name());
+                let portable = direct_with(m, p, Build::Portable);
+                for build in [Build::Avx2, Build::Avx512] {
+                    let wide = direct_with(m, p, build);
+                    assert_eq!(
+                        portable.to_bits(),
+                        wide.to_bits(),
+                        "{} n={n} d={d} {build:?}",
+                        m.name()
+                    );
+                }
             }
         }
     }
@@ -1282,7 +1327,7 @@ mod tests {
                 let p = Points::new(&data, d).unwrap();
                 let plain = neumaier_pair_sum(p, kernel);
                 let s = Blocked::new(p, |x| [x]);
-                for build in [Build::Portable, Build::Detect] {
+                for build in [Build::Portable, Build::Avx2, Build::Avx512] {
                     let got = off_diagonal(
                         &s,
                         &|a: [f64; 1], b: [f64; 1]| kernel(a[0], b[0]),
