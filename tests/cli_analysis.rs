@@ -1,4 +1,4 @@
-//! `qmckit discrepancy` and `qmckit tvalue`: values, output format, one-line errors.
+//! `qmckit discrepancy`, `qmckit spectrum` and `qmckit tvalue`: values, output format, one-line errors.
 #![cfg(feature = "cli")]
 
 use std::path::PathBuf;
@@ -351,5 +351,72 @@ fn star_bounds_bracket_the_exact_value() {
         &["discrepancy", "--metric", "star-bounds", "--delta", "0"],
         &csv,
         "delta",
+    );
+}
+
+#[test]
+fn spectrum_of_the_four_point_sobol_net_lies_on_its_dual_lattice() {
+    // (0, 0), (1/2, 1/2), (3/4, 1/4), (1/4, 3/4): x + y is an integer for every point, so
+    // P(±1, ±1) = 16 / 4 = 4 with equal signs; the other non-zero frequencies in [-1, 1]^2
+    // sum four phasors 1, -1, ±i, ∓i to 0.
+    let csv = stdout(
+        &["points", "sobol", "-n", "4", "-d", "2", "--format", "csv"],
+        "",
+    );
+    let text = stdout(&["spectrum", "--k-max", "1"], &csv);
+    let mut lines = text.lines();
+    assert_eq!(lines.next(), Some("# kx ky power"));
+    let rows: Vec<(i64, i64, f64)> = lines
+        .map(|l| {
+            let f: Vec<&str> = l.split(' ').collect();
+            (
+                f[0].parse().unwrap(),
+                f[1].parse().unwrap(),
+                f[2].parse().unwrap(),
+            )
+        })
+        .collect();
+    assert_eq!(rows.len(), 9);
+    for (kx, ky, p) in rows {
+        let want = if kx == ky { 4.0 } else { 0.0 };
+        assert!((p - want).abs() < 1e-12, "({kx}, {ky}): {p}");
+    }
+    // One point: every annulus has mean 1; two sets, each with its header.
+    let text = stdout(
+        &["spectrum", "--k-max", "2", "--radial"],
+        "0.3 0.6\n#\n0.1 0.2\n",
+    );
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(lines[0], "# set 1");
+    assert_eq!(lines[1], "# radius count mean anisotropy");
+    assert!(
+        lines[2].starts_with("1 8 1.0000000000000000e0 "),
+        "{}",
+        lines[2]
+    );
+    assert!(
+        lines[3].starts_with("2 12 1.0000000000000000e0 "),
+        "{}",
+        lines[3]
+    );
+    assert_eq!(lines.len(), 8);
+    assert_eq!(lines[4], "# set 2");
+}
+
+#[test]
+fn spectrum_refuses_bad_input_in_one_line() {
+    assert_usage_error(
+        &["spectrum"],
+        "0.5 0.5 0.5\n",
+        "needs 2-dimensional points, not 3",
+    );
+    assert_usage_error(&["spectrum", "--k-max", "abc"], "", "--k-max");
+    assert_usage_error(&["spectrum", "--k-max", "5000"], "0.5 0.5\n", "2048");
+    assert_usage_error(&["spectrum"], "0.5 1.5\n", "outside [0, 1]");
+    let many = "0.25 0.75\n".repeat(1192);
+    assert_usage_error(
+        &["spectrum", "--k-max", "2048"],
+        &many,
+        "1192 points are too many for --k-max 2048 (at most 1191)",
     );
 }

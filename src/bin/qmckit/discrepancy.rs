@@ -124,7 +124,7 @@ pub struct DiscrepancyArgs {
 }
 
 /// Reads the input text; `name` is how errors refer to it.
-fn read_input(file: Option<&str>) -> Result<(String, String), Failure> {
+pub(crate) fn read_input(file: Option<&str>) -> Result<(String, String), Failure> {
     let mut bytes = Vec::new();
     let name = match file {
         None | Some("-") => {

@@ -7,6 +7,7 @@ mod discrepancy;
 mod output;
 mod points;
 mod progress;
+mod spectrum;
 mod tvalue;
 mod warp;
 
@@ -30,6 +31,9 @@ enum Command {
     /// Discrepancies of point sets read from a text file or stdin: 'metric value' lines.
     #[command(after_help = discrepancy::AFTER_HELP)]
     Discrepancy(discrepancy::DiscrepancyArgs),
+    /// Fourier power spectrum (periodogram) of 2D point sets read from a file or stdin.
+    #[command(after_help = spectrum::AFTER_HELP)]
+    Spectrum(spectrum::SpectrumArgs),
     /// The t-value of the first 2^m points of a base-2 net or sequence.
     #[command(after_help = tvalue::AFTER_HELP)]
     Tvalue(tvalue::TvalueArgs),
@@ -104,6 +108,7 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Command::Points(args) => points::run(&args),
         Command::Discrepancy(args) => discrepancy::run(&args),
+        Command::Spectrum(args) => spectrum::run(&args),
         Command::Tvalue(args) => tvalue::run(&args),
     };
     match result {

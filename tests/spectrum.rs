@@ -1,0 +1,185 @@
+//! The periodogram of `qmckit::analysis::spectrum` against numpy's complex exponentials and
+//! against closed forms: one point, two points, the regular grid (its dual lattice), and
+//! the expected spectra of white noise (level 1, anisotropy 1) and of jittered sampling
+//! (`1 - |sinc|^2`, near 0 at low frequencies).
+#![cfg(feature = "std")]
+
+use qmckit::analysis::Points;
+use qmckit::analysis::spectrum::{SPECTRUM_MAX_K, spectrum_2d};
+use qmckit::{Independent, Jitter, Sampler, Stratified};
+
+fn sampler_points(s: &dyn Sampler, n: u32) -> Vec<f64> {
+    let mut raw = vec![0u32; n as usize * 2];
+    for i in 0..n {
+        for k in 0..2 {
+            raw[i as usize * 2 + k] = s.sample(i, k).unwrap();
+        }
+    }
+    Points::from_u32(&raw)
+}
+
+#[test]
+fn matches_numpy_on_random_points() {
+    let text = include_str!("golden/spectrum_random_n50_k7.txt");
+    let (mut pts, mut want) = (Vec::new(), Vec::new());
+    for line in text.lines().filter(|l| !l.starts_with('#')) {
+        let f: Vec<&str> = line.split(' ').collect();
+        match f[0] {
+            "point" => pts.extend([f[1].parse::<f64>().unwrap(), f[2].parse().unwrap()]),
+            _ => want.push((
+                f[1].parse::<i64>().unwrap(),
+                f[2].parse::<i64>().unwrap(),
+                f[3].parse::<f64>().unwrap(),
+            )),
+        }
+    }
+    assert_eq!((pts.len(), want.len()), (100, 225));
+    let s = spectrum_2d(Points::new(&pts, 2).unwrap(), 7).unwrap();
+    for (kx, ky, p) in want {
+        let got = s.get(kx, ky).unwrap();
+        // Sums of 50 unit phasors: numpy's and ours round differently, by ~1e-14 of N.
+        assert!((got - p).abs() <= 1e-12, "({kx}, {ky}): {got} vs numpy {p}");
+    }
+}
+
+#[test]
+fn one_point_is_flat_and_two_points_are_a_cosine() {
+    let s = spectrum_2d(Points::new(&[0.123, 0.987], 2).unwrap(), 9).unwrap();
+    assert!(s.iter().all(|(_, _, p)| (p - 1.0).abs() < 1e-12));
+    // |e^(-i a) + e^(-i b)|^2 / 2 = 1 + cos(a - b), a - b = 2 pi k . (x1 - x2).
+    let (x1, x2) = ([0.1, 0.35], [0.72, 0.05]);
+    let s = spectrum_2d(Points::new(&[x1[0], x1[1], x2[0], x2[1]], 2).unwrap(), 11).unwrap();
+    assert_eq!(s.iter().count(), 23 * 23);
+    for (kx, ky, p) in s.iter() {
+        let dot = kx as f64 * (x1[0] - x2[0]) + ky as f64 * (x1[1] - x2[1]);
+        let want = 1.0 + (std::f64::consts::TAU * dot).cos();
+        assert!((p - want).abs() < 1e-12, "({kx}, {ky}): {p} vs {want}");
+    }
+    assert_eq!(s.get(12, 0), None);
+    assert_eq!(s.get(0, -12), None);
+}
+
+#[test]
+fn a_grid_has_power_on_its_dual_lattice_only() {
+    // The n x n grid of cell centres: S(k) = sum over i, j of phases is n^2 times a phase
+    // when n divides kx and ky, else a full geometric sum, 0.
+    let n = 8usize;
+    let pts: Vec<f64> = (0..n * n)
+        .flat_map(|c| {
+            [
+                ((c % n) as f64 + 0.5) / n as f64,
+                ((c / n) as f64 + 0.5) / n as f64,
+            ]
+        })
+        .collect();
+    let s = spectrum_2d(Points::new(&pts, 2).unwrap(), 20).unwrap();
+    for (kx, ky, p) in s.iter() {
+        let on = kx % n as i64 == 0 && ky % n as i64 == 0;
+        let want = if on { (n * n) as f64 } else { 0.0 };
+        assert!((p - want).abs() < 1e-9, "({kx}, {ky}): {p} vs {want}");
+    }
+    // Annulus 8 holds (±8, 0), (0, ±8) at 64 and the other frequencies of |k| in [7.5, 8.5) at 0.
+    let ring = s.radial()[7];
+    assert_eq!(ring.radius, 8);
+    assert!((ring.mean - 4.0 * 64.0 / ring.count as f64).abs() < 1e-9);
+    assert!(ring.anisotropy > 1.0);
+}
+
+#[test]
+fn white_noise_is_flat_and_jittered_sampling_is_blue() {
+    // Uniform random points: E P(k) = 1, and P(k) is about exponentially distributed, so an
+    // annulus's variance / mean^2 is about 1 (averaged over 16 seeds to steady it).
+    let (k_max, seeds) = (32usize, 16u64);
+    let mut mean = vec![0.0; k_max];
+    let mut aniso = vec![0.0; k_max];
+    for seed in 0..seeds {
+        let pts = sampler_points(&Independent::new(2, seed).unwrap(), 1024);
+        let s = spectrum_2d(Points::new(&pts, 2).unwrap(), k_max).unwrap();
+        for (r, b) in s.radial().iter().enumerate() {
+            mean[r] += b.mean / seeds as f64;
+            aniso[r] += b.anisotropy / seeds as f64;
+        }
+    }
+    for r in 4..k_max {
+        assert!(
+            (mean[r] - 1.0).abs() < 0.1,
+            "white r {}: {}",
+            r + 1,
+            mean[r]
+        );
+        assert!(
+            (aniso[r] - 1.0).abs() < 0.25,
+            "white r {}: {}",
+            r + 1,
+            aniso[r]
+        );
+    }
+    // Jittered 32 x 32: E P(k) = 1 - |phi(k)|^2 off the dual lattice (|k| < 32 here), with
+    // phi(k) = sinc(pi kx / 32) sinc(pi ky / 32) the characteristic function of a uniform
+    // offset in a cell of side 1/32: about 3e-3 at |k| = 1, 0.05 at 4, 0.6 at 16. Each
+    // annulus mean (averaged over 8 seeds) against the same average of the formula.
+    let m = 32.0;
+    let sinc = |t: f64| if t == 0.0 { 1.0 } else { t.sin() / t };
+    let expect = |kx: i64, ky: i64| {
+        let phi =
+            sinc(std::f64::consts::PI * kx as f64 / m) * sinc(std::f64::consts::PI * ky as f64 / m);
+        1.0 - phi * phi
+    };
+    let mut got = vec![0.0; k_max];
+    let mut formula = vec![(0.0, 0usize); k_max];
+    for seed in 0..8 {
+        let pts = sampler_points(
+            &Stratified::uniform(32, 2, Jitter::Random(seed)).unwrap(),
+            1024,
+        );
+        let s = spectrum_2d(Points::new(&pts, 2).unwrap(), k_max).unwrap();
+        for (r, b) in s.radial().iter().enumerate() {
+            got[r] += b.mean / 8.0;
+        }
+        if seed == 0 {
+            for (kx, ky, _) in s.iter() {
+                let r = ((kx * kx + ky * ky) as f64).sqrt().round() as usize;
+                if (1..=k_max).contains(&r) {
+                    formula[r - 1].0 += expect(kx, ky);
+                    formula[r - 1].1 += 1;
+                }
+            }
+        }
+    }
+    for r in 0..k_max - 1 {
+        let want = formula[r].0 / formula[r].1 as f64;
+        assert!(
+            (got[r] - want).abs() < 0.15 * want + 1e-3,
+            "jittered r {}: {} vs {want}",
+            r + 1,
+            got[r]
+        );
+    }
+    assert!(got[0] < 0.01 && got[3] < 0.1 && got[15] > 0.3);
+}
+
+#[test]
+fn refuses_what_it_cannot_do() {
+    let p3 = Points::new(&[0.5, 0.5, 0.5], 3).unwrap();
+    assert!(matches!(
+        spectrum_2d(p3, 4),
+        Err(qmckit::Error::Unsupported { .. })
+    ));
+    let p = Points::new(&[0.5, 0.5], 2).unwrap();
+    assert!(matches!(
+        spectrum_2d(p, SPECTRUM_MAX_K + 1),
+        Err(qmckit::Error::Unsupported { .. })
+    ));
+    // 1e10 multiply-adds: K = 2048 allows 1e10 / (2049 * 4097) = 1191 points.
+    let many = vec![0.25; 2 * 1192];
+    assert_eq!(
+        spectrum_2d(Points::new(&many, 2).unwrap(), SPECTRUM_MAX_K),
+        Err(qmckit::Error::TooManyPoints {
+            requested: 1192,
+            max: 1191
+        })
+    );
+    let s = spectrum_2d(p, 0).unwrap();
+    assert_eq!((s.k_max(), s.points(), s.get(0, 0)), (0, 1, Some(1.0)));
+    assert!(s.radial().is_empty());
+}
