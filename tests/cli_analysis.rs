@@ -1,4 +1,4 @@
-//! `qmckit discrepancy`, `qmckit spectrum` and `qmckit tvalue`: values, output format, one-line errors.
+//! `qmckit discrepancy`, `spectrum`, `convergence` and `tvalue`: values, output format, one-line errors.
 #![cfg(feature = "cli")]
 
 use std::path::PathBuf;
@@ -419,4 +419,72 @@ fn spectrum_refuses_bad_input_in_one_line() {
         &many,
         "1192 points are too many for --k-max 2048 (at most 1191)",
     );
+}
+
+#[test]
+fn convergence_reports_the_error_of_each_power_of_two() {
+    let text = stdout(&["convergence", "sobol", "--max-m", "4"], "");
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(lines[0], "# n rmse");
+    let rows: Vec<(u64, f64)> = lines[1..]
+        .iter()
+        .map(|l| {
+            let (n, e) = l.split_once(' ').unwrap();
+            (n.parse().unwrap(), e.parse().unwrap())
+        })
+        .collect();
+    assert_eq!(
+        rows.iter().map(|r| r.0).collect::<Vec<_>>(),
+        [1, 2, 4, 8, 16]
+    );
+    // N = 1: Sobol' point 0 is the origin, where the Gaussian peak exp(-16 |x - c|^2) is
+    // e^-8; its integral is (sqrt(pi) erf(2) / 4)^2, erf(2) = 0.99532226501895273 (tables).
+    let integral = (std::f64::consts::PI.sqrt() * 0.995_322_265_018_952_7 / 4.0).powi(2);
+    assert!(
+        (rows[0].1 - (integral - (-8.0f64).exp())).abs() < 1e-12,
+        "{}",
+        rows[0].1
+    );
+    // Stratified sets come in sizes k^d.
+    let text = stdout(
+        &[
+            "convergence",
+            "stratified",
+            "--max-m",
+            "6",
+            "--integrand",
+            "ball",
+        ],
+        "",
+    );
+    let sizes: Vec<&str> = text
+        .lines()
+        .skip(1)
+        .map(|l| l.split(' ').next().unwrap())
+        .collect();
+    assert_eq!(sizes, ["1", "4", "16", "64"]);
+}
+
+#[test]
+fn convergence_refuses_bad_requests_in_one_line() {
+    assert_usage_error(&["convergence", "sobol", "--max-m", "25"], "", "at most 24");
+    assert_usage_error(&["convergence", "sobol", "--seeds", "0"], "", "--seeds");
+    assert_usage_error(
+        &["convergence", "sobol", "--integrand", "nosuch"],
+        "",
+        "nosuch",
+    );
+    assert_usage_error(
+        &[
+            "convergence",
+            "independent",
+            "--seeds",
+            "100",
+            "--max-m",
+            "24",
+        ],
+        "",
+        "lower --seeds, --max-m or -d",
+    );
+    assert_usage_error(&["convergence", "lp", "-d", "3"], "", "lp");
 }

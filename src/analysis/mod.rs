@@ -12,11 +12,13 @@
 //! | [`thiemard`] | guaranteed lower and upper bounds on the star discrepancy (Thiémard's δ-bracketing cover) |
 //! | [`tvalue`] | t-values of base-2 digital nets (generator matrices) and of point sets (elementary intervals) |
 //! | [`distance`] | minimum distance, optionally on the torus |
+//! | [`integration`] | integration error on test integrands with closed-form integrals (Genz's Gaussian peak and oscillatory, ball and half-space indicators) |
 //! | [`spectrum`] | Fourier power spectrum of 2D point sets (periodogram), radial average and anisotropy |
 //! | [`pointfile`] | reading point sets from text (the `qmckit discrepancy` input format) |
 
 pub mod dem;
 pub mod distance;
+pub mod integration;
 pub mod l2;
 pub mod pointfile;
 pub mod spectrum;

@@ -3,6 +3,7 @@
 //! Errors go to stderr as one line, `qmckit: error: ...`, with exit code 2 for bad usage or
 //! input and 1 for failures of the environment (e.g. an unwritable output).
 
+mod convergence;
 mod discrepancy;
 mod output;
 mod points;
@@ -31,6 +32,9 @@ enum Command {
     /// Discrepancies of point sets read from a text file or stdin: 'metric value' lines.
     #[command(after_help = discrepancy::AFTER_HELP)]
     Discrepancy(discrepancy::DiscrepancyArgs),
+    /// Integration error of a sampler on a test integrand against the number of points.
+    #[command(after_help = convergence::AFTER_HELP)]
+    Convergence(convergence::ConvergenceArgs),
     /// Fourier power spectrum (periodogram) of 2D point sets read from a file or stdin.
     #[command(after_help = spectrum::AFTER_HELP)]
     Spectrum(spectrum::SpectrumArgs),
@@ -108,6 +112,7 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Command::Points(args) => points::run(&args),
         Command::Discrepancy(args) => discrepancy::run(&args),
+        Command::Convergence(args) => convergence::run(&args),
         Command::Spectrum(args) => spectrum::run(&args),
         Command::Tvalue(args) => tvalue::run(&args),
     };
