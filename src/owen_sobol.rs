@@ -332,11 +332,16 @@ mod tests {
                         let want = four.sample_f32(indices[k]).map(f32::to_bits);
                         assert_eq!(o.map(f32::to_bits), want, "{name} {hash:?} len {len} k {k}");
                     }
-                    // Unequal lengths: the shorter wins, the rest of `out` is untouched.
+                    // Unequal lengths: the shorter wins, the rest of `out` is untouched;
+                    // indices past the end of `out` are ignored.
                     let mut long = vec![[-1f32; 4]; len + 3];
                     fill(&four, &indices[..len], &mut long);
                     assert_eq!(long[..len], out[..]);
                     assert!(long[len..].iter().all(|o| *o == [-1f32; 4]));
+                    let mut short = vec![[-1f32; 4]; len];
+                    let more = (len + 3).min(indices.len());
+                    fill(&four, &indices[..more], &mut short);
+                    assert_eq!(short, out);
                 }
             }
         }

@@ -101,6 +101,20 @@ fn monte_carlo_error_is_sigma_over_root_n_and_qmc_beats_it() {
 }
 
 #[test]
+fn half_space_weights_are_sqrt_k_plus_2() {
+    // The quadrature above cannot see the weights (any plane through the centre halves the
+    // cube), so pin them by hand: the sign of sum_k sqrt(k + 2) (x_k - 1/2).
+    // 0.1 sqrt(2) - 0.05 sqrt(3) - 0.02 sqrt(4) = 0.0148 >= 0.
+    assert_eq!(Integrand::Heaviside.eval(&[0.6, 0.45, 0.48]), 1.0);
+    // 0.1 sqrt(2) - 0.05 sqrt(3) - 0.04 sqrt(4) = -0.0252 < 0.
+    assert_eq!(Integrand::Heaviside.eval(&[0.6, 0.45, 0.46]), 0.0);
+    // -0.01 sqrt(2) - 0.01 sqrt(3) + 0.02 sqrt(5) = 0.0133 >= 0.
+    assert_eq!(Integrand::Heaviside.eval(&[0.49, 0.49, 0.5, 0.52]), 1.0);
+    // -0.02 sqrt(2) - 0.01 sqrt(3) + 0.01 sqrt(4) + 0.005 sqrt(5) = -0.0144 < 0.
+    assert_eq!(Integrand::Heaviside.eval(&[0.48, 0.49, 0.51, 0.505]), 0.0);
+}
+
+#[test]
 fn error_is_the_signed_difference() {
     let e = integration_error(
         Points::new(&[0.5, 0.5, 0.99, 0.99], 2).unwrap(),

@@ -57,6 +57,8 @@ fn one_point_is_flat_and_two_points_are_a_cosine() {
     }
     assert_eq!(s.get(12, 0), None);
     assert_eq!(s.get(0, -12), None);
+    assert_eq!(s.get(i64::MIN, 0), None);
+    assert_eq!(s.get(0, i64::MAX), None);
 }
 
 #[test]

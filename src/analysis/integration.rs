@@ -138,7 +138,8 @@ impl Integrand {
 ///
 /// ```
 /// use qmckit::analysis::{Points, integration::{Integrand, integration_error}};
-/// // The centre alone: the Gaussian peak's value 1 against its integral (0.2207...)^2.
+/// // The centre alone: the Gaussian peak's value 1 against its integral
+/// // (sqrt(pi) erf(2) / 4)^2 = 0.4410...^2 = 0.1945...
 /// let e = integration_error(Points::new(&[0.5, 0.5], 2)?, Integrand::Gaussian);
 /// assert!((e - (1.0 - Integrand::Gaussian.exact(2))).abs() < 1e-15);
 /// # Ok::<(), qmckit::Error>(())

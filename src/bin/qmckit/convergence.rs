@@ -8,7 +8,7 @@ use qmckit::analysis::Points;
 use qmckit::analysis::integration::{Integrand, integration_error};
 
 use crate::Failure;
-use crate::points::{SamplerName, ScrambleName, Spec, samples_u32, value_name};
+use crate::points::{SamplerName, ScrambleName, Spec, build, value_name};
 use crate::progress::with_spinner;
 
 /// Text shown after the options of `qmckit convergence --help`.
@@ -72,20 +72,45 @@ const MAX_VALUES: f64 = 1e9;
 /// The set sizes: powers of two up to `2^m`, or for stratified sets `k^d`, `k` doubling.
 fn sizes(sampler: SamplerName, d: usize, m: u32) -> Vec<u64> {
     let top = 1u64 << m;
+    let power = u32::try_from(d).unwrap_or(u32::MAX);
     let mut sizes = Vec::new();
     let mut k = 1u64;
-    loop {
+    while k <= top {
         let n = if sampler == SamplerName::Stratified {
-            k.checked_pow(d as u32).unwrap_or(u64::MAX)
+            k.checked_pow(power).unwrap_or(u64::MAX)
         } else {
             k
         };
         if n > top {
-            return sizes;
+            break;
         }
         sizes.push(n);
         k *= 2;
     }
+    sizes
+}
+
+/// Coordinates generated at once (bounded memory for any set size).
+const BATCH_VALUES: usize = 1 << 20;
+
+/// The integration error of the set `spec` names, its points generated in batches: the
+/// batches' errors weighted by their sizes, `sum_b N_b (mean_b - I) / N = mean - I`.
+fn error_of(spec: &Spec, f: Integrand) -> Result<f64, Failure> {
+    let sampler = build(spec)?;
+    let dims = sampler.dims();
+    let rows = (BATCH_VALUES / dims).max(1);
+    let mut raw = vec![0u32; rows * dims];
+    let (mut weighted, mut start) = (0.0, 0u64);
+    while start < spec.n {
+        let take = rows.min((spec.n - start) as usize);
+        let buf = &mut raw[..take * dims];
+        let first = u32::try_from(start).map_err(|_| Failure::usage("index past 2^32"))?;
+        sampler.fill(first, buf)?;
+        let data = Points::from_u32(buf);
+        weighted += take as f64 * integration_error(Points::new(&data, dims)?, f);
+        start += take as u64;
+    }
+    Ok(weighted / spec.n as f64)
 }
 
 /// Runs `qmckit convergence`.
@@ -132,12 +157,8 @@ pub fn run(args: &ConvergenceArgs) -> Result<(), Failure> {
         for &n in &sizes {
             let mut squares = 0.0;
             for k in 0..args.seeds {
-                let mut spec =
-                    Spec::base2(args.sampler, n, d, args.scramble, args.seed.wrapping_add(k));
-                spec.d = Some(d);
-                let (samples, dims) = samples_u32(&spec)?;
-                let data = Points::from_u32(&samples);
-                let e = integration_error(Points::new(&data, dims)?, f);
+                let seed = args.seed.wrapping_add(k);
+                let e = error_of(&Spec::base2(args.sampler, n, d, args.scramble, seed), f)?;
                 squares += e * e;
             }
             rows.push((n, (squares / args.seeds as f64).sqrt()));
