@@ -149,21 +149,26 @@ impl OwenSobol4 {
         OwenSobol4 { t, owen, keys }
     }
 
-    /// The four scrambled coordinates of point `index`, as 0.32 fractions.
+    /// The four unscrambled, bit-reversed coordinates of point `index`: the XOR of the
+    /// table rows of its four bytes.
     #[inline(always)]
-    pub fn sample(&self, index: u32) -> [u32; 4] {
+    fn reversed(&self, index: u32) -> [u32; 4] {
         let rows = [
             &self.t[0][(index & 0xFF) as usize],
             &self.t[1][((index >> 8) & 0xFF) as usize],
             &self.t[2][((index >> 16) & 0xFF) as usize],
             &self.t[3][(index >> 24) as usize],
         ];
-        let mut x = [0u32; 4];
-        for (lane, xl) in x.iter_mut().enumerate() {
-            let rev = rows[0][lane] ^ rows[1][lane] ^ rows[2][lane] ^ rows[3][lane];
-            *xl = reverse_bits(self.owen.scramble_reversed(rev, self.keys[lane]));
-        }
-        x
+        core::array::from_fn(|lane| rows[0][lane] ^ rows[1][lane] ^ rows[2][lane] ^ rows[3][lane])
+    }
+
+    /// The four scrambled coordinates of point `index`, as 0.32 fractions.
+    #[inline(always)]
+    pub fn sample(&self, index: u32) -> [u32; 4] {
+        let rev = self.reversed(index);
+        core::array::from_fn(|lane| {
+            reverse_bits(self.owen.scramble_reversed(rev[lane], self.keys[lane]))
+        })
     }
 
     /// The four scrambled coordinates of point `index` as `f32` in `[0, 1)`.
@@ -243,17 +248,13 @@ impl OwenSobol4 {
     #[cfg(target_pointer_width = "64")]
     #[inline(always)]
     fn block_f32(&self, idx: &[u32; 4]) -> [[f32; 4]; 4] {
+        // Filled by this plain loop: gathering the lanes with `array::from_fn` instead
+        // measured 4x slower with AVX-512 (the block no longer vectorized).
         let mut x = [0u32; 16];
         for (p, &index) in idx.iter().enumerate() {
-            let rows = [
-                &self.t[0][(index & 0xFF) as usize],
-                &self.t[1][((index >> 8) & 0xFF) as usize],
-                &self.t[2][((index >> 16) & 0xFF) as usize],
-                &self.t[3][(index >> 24) as usize],
-            ];
+            let rev = self.reversed(index);
             for lane in 0..4 {
-                x[(4 * p + lane) % 16] =
-                    rows[0][lane] ^ rows[1][lane] ^ rows[2][lane] ^ rows[3][lane];
+                x[(4 * p + lane) % 16] = rev[lane];
             }
         }
         let mut y = [0f32; 16];

@@ -9,6 +9,9 @@ use qmckit::analysis::integration::{Integrand, integration_error};
 use qmckit::randomize::{FastOwen, Scrambled};
 use qmckit::{Independent, Sampler, Sobol};
 
+mod common;
+use common::sampler_points;
+
 /// The midpoint rule on the `m^d` grid of cell centres: `(mean of f, mean of f^2)`.
 fn midpoint(f: Integrand, d: usize, m: usize) -> (f64, f64) {
     let cells = m.pow(d as u32);
@@ -76,10 +79,7 @@ fn monte_carlo_error_is_sigma_over_root_n_and_qmc_beats_it() {
             let seeds = 64;
             let total: f64 = (0..seeds)
                 .map(|seed| {
-                    let s = s(seed);
-                    let mut raw = vec![0u32; 2 * n];
-                    s.fill(0, &mut raw).unwrap();
-                    let pts = Points::from_u32(&raw);
+                    let pts = sampler_points(s(seed).as_ref(), n as u32);
                     integration_error(Points::new(&pts, 2).unwrap(), f).powi(2)
                 })
                 .sum();

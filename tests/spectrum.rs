@@ -6,17 +6,10 @@
 
 use qmckit::analysis::Points;
 use qmckit::analysis::spectrum::{SPECTRUM_MAX_K, spectrum_2d};
-use qmckit::{Independent, Jitter, Sampler, Stratified};
+use qmckit::{Independent, Jitter, Stratified};
 
-fn sampler_points(s: &dyn Sampler, n: u32) -> Vec<f64> {
-    let mut raw = vec![0u32; n as usize * 2];
-    for i in 0..n {
-        for k in 0..2 {
-            raw[i as usize * 2 + k] = s.sample(i, k).unwrap();
-        }
-    }
-    Points::from_u32(&raw)
-}
+mod common;
+use common::sampler_points;
 
 #[test]
 fn matches_numpy_on_random_points() {

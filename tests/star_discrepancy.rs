@@ -11,18 +11,7 @@ use qmckit::analysis::star::{
 use qmckit::{Hammersley, Independent, Jitter, LarcherPillichshammer, Sampler, Sobol, Stratified};
 
 mod common;
-use common::Rng;
-
-fn sampler_points(s: &dyn Sampler, n: u32) -> Vec<f64> {
-    let d = s.dims();
-    let mut raw = vec![0u32; n as usize * d];
-    for i in 0..n {
-        for k in 0..d {
-            raw[i as usize * d + k] = s.sample(i, k).unwrap();
-        }
-    }
-    Points::from_u32(&raw)
-}
+use common::{Rng, sampler_points};
 
 /// Brute force from the definition, `O(N^(d+1))`: every corner `y` of the critical grid
 /// (each `y_k` in `{x_ik} ∪ {1}`), the half-open box `[0, y)` (`vol - open/N`) and the limit

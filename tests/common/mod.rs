@@ -7,6 +7,19 @@ pub mod cli;
 
 use qmckit::Sampler;
 
+/// Points `0..n` of a sampler by random access, as `f64` coordinates (exact), row-major.
+#[cfg(feature = "std")]
+pub fn sampler_points(s: &dyn Sampler, n: u32) -> Vec<f64> {
+    let d = s.dims();
+    let mut raw = vec![0u32; n as usize * d];
+    for i in 0..n {
+        for k in 0..d {
+            raw[i as usize * d + k] = s.sample(i, k).unwrap();
+        }
+    }
+    qmckit::analysis::Points::from_u32(&raw)
+}
+
 /// Points `0..n` of dimensions `dims` of a sampler, as `Vec<[u32; 2]>` for 2D checks.
 pub fn points_2d(s: &dyn Sampler, n: u32, dims: (usize, usize)) -> Vec<[u32; 2]> {
     (0..n)

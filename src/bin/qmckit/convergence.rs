@@ -124,11 +124,7 @@ pub fn run(args: &ConvergenceArgs) -> Result<(), Failure> {
     if args.seeds == 0 {
         return Err(Failure::usage("--seeds must be at least 1"));
     }
-    let d = args.d.unwrap_or(if args.sampler == SamplerName::Vdc {
-        1
-    } else {
-        2
-    });
+    let d = args.sampler.dims(args.d);
     if d == 0 {
         return Err(Failure::usage("-d must be at least 1"));
     }

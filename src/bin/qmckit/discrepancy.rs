@@ -1,14 +1,15 @@
 //! `qmckit discrepancy [--metric M[,M..]] [FILE|-]`: measure point sets read from text.
 
-use std::io::{BufWriter, Read, Write};
+use std::io::{BufWriter, Write};
 
 use clap::{Args, ValueEnum};
 use qmckit::analysis::Points;
 use qmckit::analysis::l2::L2Metric;
-use qmckit::analysis::pointfile::{PointSet, parse_point_sets};
+use qmckit::analysis::pointfile::PointSet;
 use qmckit::analysis::{star, thiemard};
 
 use crate::Failure;
+use crate::input::{read_point_sets, set_label};
 use crate::points::value_name;
 use crate::progress::{with_progress, with_spinner};
 
@@ -123,31 +124,6 @@ pub struct DiscrepancyArgs {
     file: Option<String>,
 }
 
-/// Reads the input text; `name` is how errors refer to it.
-pub(crate) fn read_input(file: Option<&str>) -> Result<(String, String), Failure> {
-    let mut bytes = Vec::new();
-    let name = match file {
-        None | Some("-") => {
-            std::io::stdin()
-                .lock()
-                .read_to_end(&mut bytes)
-                .map_err(|e| Failure::usage(format!("<stdin>: {e}")))?;
-            "<stdin>".to_owned()
-        }
-        Some(path) => {
-            bytes = std::fs::read(path).map_err(|e| Failure::usage(format!("{path}: {e}")))?;
-            path.to_owned()
-        }
-    };
-    let text = String::from_utf8(bytes).map_err(|e| {
-        Failure::usage(format!(
-            "{name}: not UTF-8 text (byte {})",
-            e.utf8_error().valid_up_to()
-        ))
-    })?;
-    Ok((name, text))
-}
-
 /// Why an exact measure refused, as the command reports it; `limit` names what set the
 /// limit, if an option did.
 fn refusal(e: qmckit::Error, what: &str, set: &PointSet, limit: &str) -> String {
@@ -224,8 +200,7 @@ fn measure(
 /// Runs `qmckit discrepancy`.
 pub fn run(args: &DiscrepancyArgs) -> Result<(), Failure> {
     let budget = star_budget(args.max_seconds)?;
-    let (name, text) = read_input(args.file.as_deref())?;
-    let sets = parse_point_sets(&text).map_err(|e| Failure::usage(format!("{name}: {e}")))?;
+    let (name, sets) = read_point_sets(args.file.as_deref())?;
     let all = args.metric.contains(&Metric::All);
     let metrics: Vec<Metric> = if all {
         ALL.to_vec()
@@ -252,11 +227,7 @@ pub fn run(args: &DiscrepancyArgs) -> Result<(), Failure> {
                 }
                 Err(reason) => {
                     out.flush()?;
-                    let set = if sets.len() > 1 {
-                        format!("set {}: ", k + 1)
-                    } else {
-                        String::new()
-                    };
+                    let set = set_label(k, sets.len());
                     return Err(Failure::usage(format!("{name}: {set}{reason}")));
                 }
             }

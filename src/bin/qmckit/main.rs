@@ -5,6 +5,7 @@
 
 mod convergence;
 mod discrepancy;
+mod input;
 mod output;
 mod points;
 mod progress;

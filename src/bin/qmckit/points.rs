@@ -37,6 +37,13 @@ pub enum SamplerName {
     Sobol,
 }
 
+impl SamplerName {
+    /// `-d` as given, else the construction's default: 1 for vdc, 2 otherwise.
+    pub fn dims(self, d: Option<usize>) -> usize {
+        d.unwrap_or(if self == SamplerName::Vdc { 1 } else { 2 })
+    }
+}
+
 /// Randomization (`--scramble`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub enum ScrambleName {
@@ -253,11 +260,7 @@ pub fn build(args: &Spec) -> Result<Box<dyn Sampler>, Failure> {
 
 /// Builds the construction itself (digit scrambles are part of the radical inverse).
 fn construct(args: &Spec, digits: DigitScramble) -> Result<Box<dyn Sampler>, Failure> {
-    let d = args.d.unwrap_or(if args.sampler == SamplerName::Vdc {
-        1
-    } else {
-        2
-    });
+    let d = args.sampler.dims(args.d);
     let total = args.total.unwrap_or(args.n);
     if args.order == OrderName::Gray && args.sampler != SamplerName::Sobol {
         return Err(Failure::usage(

@@ -4,11 +4,10 @@
 use std::io::{BufWriter, Write};
 
 use clap::Args;
-use qmckit::analysis::pointfile::parse_point_sets;
 use qmckit::analysis::spectrum::spectrum_2d;
 
 use crate::Failure;
-use crate::discrepancy::read_input;
+use crate::input::{read_point_sets, set_label};
 use crate::progress::with_spinner;
 
 /// Text shown after the options of `qmckit spectrum --help`.
@@ -46,15 +45,10 @@ pub struct SpectrumArgs {
 
 /// Runs `qmckit spectrum`.
 pub fn run(args: &SpectrumArgs) -> Result<(), Failure> {
-    let (name, text) = read_input(args.file.as_deref())?;
-    let sets = parse_point_sets(&text).map_err(|e| Failure::usage(format!("{name}: {e}")))?;
+    let (name, sets) = read_point_sets(args.file.as_deref())?;
     let mut out = BufWriter::new(std::io::stdout().lock());
     for (k, set) in sets.iter().enumerate() {
-        let which = if sets.len() > 1 {
-            format!("set {}: ", k + 1)
-        } else {
-            String::new()
-        };
+        let which = set_label(k, sets.len());
         let fail = |reason: String| Failure::usage(format!("{name}: {which}{reason}"));
         if set.dims != 2 {
             return Err(fail(format!(

@@ -142,11 +142,7 @@ pub fn run(args: &TvalueArgs) -> Result<(), Failure> {
             "-m {m}: at most 32 (2^m points of 32-bit coordinates)"
         )));
     }
-    let d = args.d.unwrap_or(if args.sampler == SamplerName::Vdc {
-        1
-    } else {
-        2
-    });
+    let d = args.sampler.dims(args.d);
     if d == 0 {
         return Err(Failure::usage("-d must be at least 1"));
     }
