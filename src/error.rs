@@ -92,6 +92,38 @@ pub enum Error {
         /// Dimension of a point.
         dims: usize,
     },
+    /// A count, product or allocation derived from the input that is larger than the crate
+    /// admits (it would overflow, or exceed a memory limit); see [`crate::size`].
+    TooLarge {
+        /// What was counted (`"coordinates"`, `"bytes"`, ...).
+        what: &'static str,
+        /// The size asked for (saturated at `u64::MAX` when it overflows).
+        requested: u64,
+        /// The largest admitted.
+        max: u64,
+    },
+    /// A computation whose estimated running time exceeds its time budget (see
+    /// `analysis::budget`).
+    OverBudget {
+        /// The computation.
+        what: &'static str,
+        /// Estimated running time, in milliseconds (saturated).
+        estimated_ms: u64,
+        /// The budget, in milliseconds.
+        budget_ms: u64,
+    },
+    /// A result that exists mathematically but is not representable in `f64` (it would
+    /// overflow or underflow to zero), reported instead of a wrong number.
+    NotRepresentable {
+        /// What could not be represented.
+        what: &'static str,
+    },
+    /// A geometric or numeric parameter that is not finite, or outside the range where the
+    /// computation is defined (e.g. a degenerate triangle, edges that are not perpendicular).
+    InvalidParameter {
+        /// What is wrong, as a short phrase.
+        what: &'static str,
+    },
 }
 
 /// Shorthand for `core::result::Result<T, qmckit::Error>`.
@@ -139,7 +171,41 @@ impl fmt::Display for Error {
                 f,
                 "{len} coordinates do not make whole points of {dims} dimension(s)"
             ),
+            Error::TooLarge {
+                what,
+                requested,
+                max,
+            } => {
+                if requested == u64::MAX {
+                    write!(f, "too many {what}: the count overflows (at most {max})")
+                } else {
+                    write!(f, "too many {what}: {requested} requested, at most {max}")
+                }
+            }
+            Error::OverBudget {
+                what,
+                estimated_ms,
+                budget_ms,
+            } => {
+                write!(f, "{what}: estimated ")?;
+                write_seconds(f, estimated_ms)?;
+                write!(f, ", more than the time budget of ")?;
+                write_seconds(f, budget_ms)
+            }
+            Error::NotRepresentable { what } => {
+                write!(f, "{what} is not representable as an f64")
+            }
+            Error::InvalidParameter { what } => write!(f, "invalid parameter: {what}"),
         }
+    }
+}
+
+/// `ms` milliseconds as seconds with one decimal (`12.3 s`), or `more than 10^15 s`.
+fn write_seconds(f: &mut fmt::Formatter<'_>, ms: u64) -> fmt::Result {
+    if ms == u64::MAX {
+        write!(f, "more than 10^15 s")
+    } else {
+        write!(f, "{}.{} s", ms / 1000, (ms % 1000) / 100)
     }
 }
 

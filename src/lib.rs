@@ -74,6 +74,7 @@ pub mod owen_sobol;
 pub mod radical_inverse;
 pub mod randomize;
 pub mod sampler;
+pub mod size;
 pub mod sobol;
 pub mod stratified;
 pub mod van_der_corput;

@@ -6,6 +6,7 @@
 //!
 //! | module | measures |
 //! |---|---|
+//! | [`budget`] | cost estimates, time budgets and progress reports shared by the super-linear measures |
 //! | [`l2`] | L2-star (Warnock), centered, wrap-around, mixture, symmetric, unanchored, generalized L2 discrepancies, diaphony |
 //! | [`star`] | star discrepancy: exact (1D closed form, 2D, d-D), extreme discrepancy in 2D |
 //! | [`dem`] | exact star discrepancy in d dimensions by the Dobkin–Eppstein–Mitchell decomposition |
@@ -16,6 +17,7 @@
 //! | [`spectrum`] | Fourier power spectrum of 2D point sets (periodogram), radial average and anisotropy |
 //! | [`pointfile`] | reading point sets from text (the `qmckit discrepancy` input format) |
 
+pub mod budget;
 pub mod dem;
 pub mod distance;
 pub mod integration;
