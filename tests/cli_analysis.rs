@@ -417,7 +417,7 @@ fn spectrum_refuses_bad_input_in_one_line() {
     assert_usage_error(
         &["spectrum", "--k-max", "2048"],
         &many,
-        "1192 points are too many for --k-max 2048 (at most 1191)",
+        "1192 points are too many for --k-max 2048 (at most 1191 within --max-seconds 10)",
     );
 }
 

@@ -17,7 +17,23 @@
 //!   ("set K has no points"), reported at the separator that closes the empty set, or at
 //!   the last line for the final set (line 1 for empty input).
 //!
-//! A UTF-8 byte-order mark at the start is skipped; `\r\n` line ends are accepted.
+//! * Line ends: `\n`, `\r\n` or a lone `\r` (old Mac files). A UTF-8 byte-order mark at the
+//!   start is skipped. Only ASCII spaces and tabs separate numbers: another white-space or
+//!   control character (no-break space, vertical tab, form feed) inside a line is an error
+//!   that names it, rather than a silently different split.
+//! * A first line that is not numbers (a header such as `x,y`, as pandas writes) is an error
+//!   with a hint: make it a comment with `#`.
+//!
+//! # Encodings
+//!
+//! Coordinates are read as real numbers ([`Encoding::Real`]) or as 0.32 numerators, the
+//! integers `x * 2^32` that `qmckit points --format u32` writes ([`Encoding::U32`]: each an
+//! integer in `0..=4294967295`, read exactly as `x / 2^32`). [`Encoding::Auto`], the default
+//! of [`parse_point_sets`], reads a text as `u32` when every coordinate in it is written as
+//! a whole number (digits only) and at least one of them exceeds 1, and as real numbers
+//! otherwise: a real-valued file can only hold the whole numbers 0 and 1, so the rule never
+//! misreads one; a `u32` file whose every value is 0 or 1 (at most the point at index 0 of
+//! most constructions) is read as reals, and [`Encoding::U32`] forces the other reading.
 //!
 //! ```
 //! use qmckit::analysis::pointfile::parse_point_sets;
@@ -27,12 +43,27 @@
 //! assert_eq!((sets[1].dims, sets[1].len()), (1, 1));
 //! let err = parse_point_sets("0.5 0.5\n0.5 1.5\n").unwrap_err();
 //! assert_eq!(err.to_string(), "line 2: \"1.5\" is outside [0, 1]");
+//! // qmckit's u32 output reads back as the exact fractions.
+//! let u = parse_point_sets("0 0\n2147483648 1431655765\n")?;
+//! assert_eq!(u[0].data[2], 0.5);
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 use std::fmt;
 
 use super::Points;
+
+/// How a point file writes its coordinates (see [the module docs](self#encodings)).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Encoding {
+    /// `U32` when every coordinate is a whole number and one exceeds 1, else `Real`.
+    #[default]
+    Auto,
+    /// Real numbers in `[0, 1]`.
+    Real,
+    /// 0.32 numerators: integers in `0..=4294967295`, read as `x / 2^32`.
+    U32,
+}
 
 /// One point set read from text: `len()` points of `dims` coordinates, row-major.
 #[derive(Clone, Debug, PartialEq)]
@@ -93,8 +124,76 @@ fn quote(token: &str) -> String {
     }
 }
 
-/// Parses one coordinate.
-fn parse_value(token: &str) -> Result<f64, String> {
+/// The lines of `text`: ends are `\n`, `\r\n` or a lone `\r`.
+fn lines(text: &str) -> impl Iterator<Item = &str> {
+    let mut rest = Some(text);
+    std::iter::from_fn(move || {
+        let t = rest?;
+        match t.find(['\n', '\r']) {
+            Some(i) => {
+                let skip = if t[i..].starts_with("\r\n") { 2 } else { 1 };
+                rest = Some(&t[i + skip..]);
+                Some(&t[..i])
+            }
+            None => {
+                rest = None;
+                // A final line end leaves an empty tail: not a line.
+                (!t.is_empty()).then_some(t)
+            }
+        }
+    })
+}
+
+/// The separators between numbers (besides commas).
+fn is_separator(c: char) -> bool {
+    c == ' ' || c == '\t'
+}
+
+/// The tokens of one comment-free line, field by field: `Err` for an empty field.
+fn fields(text: &str) -> impl Iterator<Item = Result<Vec<&str>, String>> {
+    text.split(',').map(|field| {
+        let tokens: Vec<&str> = field.split(is_separator).filter(|t| !t.is_empty()).collect();
+        if tokens.is_empty() {
+            Err("empty field (two commas in a row, or a comma at the start or end \
+                 of the line)"
+                .to_owned())
+        } else {
+            Ok(tokens)
+        }
+    })
+}
+
+/// `Some(name)` when `token` holds a white-space or control character that is not a
+/// separator (it would otherwise be misread as part of a number).
+fn stray_space(token: &str) -> Option<String> {
+    token
+        .chars()
+        .find(|c| c.is_whitespace() || c.is_control())
+        .map(|c| match c {
+            '\u{a0}' => "U+00A0 (no-break space)".to_owned(),
+            '\u{b}' => "U+000B (vertical tab)".to_owned(),
+            '\u{c}' => "U+000C (form feed)".to_owned(),
+            c => format!("U+{:04X}", c as u32),
+        })
+}
+
+/// Parses one coordinate in `encoding` (`Real` or `U32`).
+fn parse_value(token: &str, encoding: Encoding) -> Result<f64, String> {
+    if let Some(c) = stray_space(token) {
+        return Err(format!(
+            "{} contains {c}, which does not separate numbers: use spaces, tabs or commas",
+            quote(token)
+        ));
+    }
+    if encoding == Encoding::U32 {
+        return match token.parse::<u32>() {
+            Ok(x) if is_whole(token) => Ok(crate::bits::to_f64(x)),
+            _ => Err(format!(
+                "{} is not a 0.32 numerator (an integer in 0..=4294967295)",
+                quote(token)
+            )),
+        };
+    }
     let x: f64 = token
         .parse()
         .map_err(|_| format!("{} is not a number", quote(token)))?;
@@ -107,24 +206,52 @@ fn parse_value(token: &str) -> Result<f64, String> {
     Ok(x)
 }
 
+/// `true` for a token of ASCII digits only.
+fn is_whole(token: &str) -> bool {
+    !token.is_empty() && token.bytes().all(|b| b.is_ascii_digit())
+}
+
 /// Appends the coordinates of one (comment-free, non-blank) line to `out`; returns how many.
-fn parse_row(text: &str, out: &mut Vec<f64>) -> Result<usize, String> {
+fn parse_row(text: &str, encoding: Encoding, out: &mut Vec<f64>) -> Result<usize, String> {
     let mut count = 0;
-    for field in text.split(',') {
-        let mut tokens = field.split_whitespace().peekable();
-        if tokens.peek().is_none() {
-            return Err(
-                "empty field (two commas in a row, or a comma at the start or end \
-                        of the line)"
-                    .to_owned(),
-            );
-        }
-        for token in tokens {
-            out.push(parse_value(token)?);
+    for field in fields(text) {
+        for token in field? {
+            out.push(parse_value(token, encoding)?);
             count += 1;
         }
     }
     Ok(count)
+}
+
+/// The part of a line before its comment.
+fn content(raw: &str) -> &str {
+    raw.split('#').next().unwrap_or("")
+}
+
+/// `true` for a line that separates point sets: only `#`, between spaces or tabs.
+fn is_set_separator(raw: &str) -> bool {
+    raw.trim_matches(is_separator) == "#"
+}
+
+/// The encoding [`Encoding::Auto`] picks for `text` (see [the module docs](self#encodings)).
+pub fn detect_encoding(text: &str) -> Encoding {
+    let mut above_one = false;
+    for raw in lines(text) {
+        for field in fields(content(raw)).flatten() {
+            for token in field {
+                if !is_whole(token) {
+                    return Encoding::Real;
+                }
+                above_one |= token.trim_start_matches('0').len() > 1
+                    || token.trim_start_matches('0').parse::<u8>().is_ok_and(|v| v > 1);
+            }
+        }
+    }
+    if above_one {
+        Encoding::U32
+    } else {
+        Encoding::Real
+    }
 }
 
 /// The set being read: its points and where its first point was.
@@ -158,33 +285,59 @@ impl Current {
     }
 }
 
-/// Parses point sets in the [format](self) above: one [`PointSet`] per `#`-separated block.
+/// Parses point sets in the [format](self) above, in the encoding [`Encoding::Auto`]
+/// detects: one [`PointSet`] per `#`-separated block.
 ///
 /// # Errors
 /// A [`ParseError`] naming the first offending line: a token that is not a number, NaN or
-/// infinity, a value outside `[0, 1]`, an empty comma-separated field, a point with a
-/// different number of coordinates than its set's first point, or a set with no points.
-/// Never panics.
+/// infinity, a value outside `[0, 1]`, an empty comma-separated field, a stray white-space
+/// character, a point with a different number of coordinates than its set's first point,
+/// or a set with no points. Never panics. Cost: linear in the text.
 pub fn parse_point_sets(text: &str) -> Result<Vec<PointSet>, ParseError> {
+    parse_point_sets_as(text, Encoding::Auto)
+}
+
+/// [`parse_point_sets`] in a chosen [`Encoding`].
+///
+/// # Errors
+/// As [`parse_point_sets`]; in [`Encoding::U32`] a token that is not an integer in
+/// `0..=4294967295`.
+pub fn parse_point_sets_as(text: &str, encoding: Encoding) -> Result<Vec<PointSet>, ParseError> {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    let encoding = match encoding {
+        Encoding::Auto => detect_encoding(text),
+        chosen => chosen,
+    };
     let mut sets = Vec::new();
     let mut current = Current::new();
     let mut last_line = 0;
-    for (index, raw) in text.lines().enumerate() {
+    for (index, raw) in lines(text).enumerate() {
         let line = index + 1;
         last_line = line;
-        let trimmed = raw.trim();
-        if trimmed == "#" {
+        if is_set_separator(raw) {
             current.close(&mut sets, line)?;
             continue;
         }
-        let content = raw.split('#').next().unwrap_or("");
-        if content.trim().is_empty() {
+        let content = content(raw);
+        if content.trim_matches(is_separator).is_empty() {
             continue;
         }
-        let error = |message| ParseError { line, message };
+        let first_of_input = sets.is_empty() && current.first_line == 0;
+        // A header names columns: its first token starts with a letter.
+        let header = first_of_input
+            && content
+                .trim_start_matches(is_separator)
+                .starts_with(|c: char| c.is_alphabetic() || c == '"' || c == '_');
+        let error = |mut message: String| {
+            if header && message.ends_with("is not a number") {
+                message.push_str(
+                    " (a header line? Start it with '#' to make it a comment)",
+                );
+            }
+            ParseError { line, message }
+        };
         let before = current.set.data.len();
-        let count = parse_row(content, &mut current.set.data).map_err(error)?;
+        let count = parse_row(content, encoding, &mut current.set.data).map_err(error)?;
         if current.first_line == 0 {
             current.set.dims = count;
             current.first_line = line;
@@ -287,10 +440,78 @@ mod tests {
     }
 
     #[test]
+    fn line_ends_of_every_kind() {
+        for text in ["0.1 0.2\r0.3 0.4\r", "0.1 0.2\r\n0.3 0.4", "0.1 0.2\n0.3 0.4\n"] {
+            let sets = parse_point_sets(text).unwrap();
+            assert_eq!((sets[0].len(), sets[0].dims), (2, 2), "{text:?}");
+        }
+        // A blank line between CR line ends is one blank line, not a separator.
+        let sets = parse_point_sets("0.5\r\r0.25\r#\r0.75").unwrap();
+        assert_eq!(sets.len(), 2);
+        assert_eq!(sets[0].data, [0.5, 0.25]);
+    }
+
+    #[test]
+    fn only_spaces_tabs_and_commas_separate() {
+        for (text, name) in [
+            ("0.1\u{a0}0.2\n", "U+00A0"),
+            ("0.1\u{b}0.2\n", "U+000B"),
+            ("0.1\u{c}0.2\n", "U+000C"),
+            ("0.1\u{2003}0.2\n", "U+2003"),
+        ] {
+            let e = err(text);
+            assert!(e.message.contains(name), "{e}");
+            assert!(e.message.contains("does not separate"), "{e}");
+        }
+    }
+
+    #[test]
+    fn a_header_gets_a_hint() {
+        let e = err("x,y\n0.1,0.2\n");
+        assert_eq!(e.line, 1);
+        assert!(e.message.contains("header"), "{e}");
+        // Not on later lines: there it is a bad value.
+        assert!(!err("0.1,0.2\nx,y\n").message.contains("header"));
+        assert_eq!(parse_point_sets("# x,y\n0.1,0.2\n").unwrap()[0].len(), 1);
+    }
+
+    #[test]
+    fn u32_numerators_are_detected_and_exact() {
+        let sets = parse_point_sets("0 0\n2147483648 1431655765\n4294967295 1\n").unwrap();
+        assert_eq!(
+            sets[0].data,
+            [
+                0.0,
+                0.0,
+                0.5,
+                1431655765.0 / 4294967296.0,
+                4294967295.0 / 4294967296.0,
+                1.0 / 4294967296.0
+            ]
+        );
+        // Only 0 and 1: real numbers.
+        assert_eq!(detect_encoding("0 1\n1 0\n"), Encoding::Real);
+        assert_eq!(detect_encoding("0 1\n2 0\n"), Encoding::U32);
+        assert_eq!(detect_encoding("0.5 2\n"), Encoding::Real);
+        assert_eq!(detect_encoding("00000002\n"), Encoding::U32);
+        assert_eq!(detect_encoding("0001\n"), Encoding::Real);
+        // Forced readings.
+        let one = parse_point_sets_as("1 0\n", Encoding::U32).unwrap();
+        assert_eq!(one[0].data, [1.0 / 4294967296.0, 0.0]);
+        assert!(
+            err("4294967296 0\n")
+                .message
+                .contains("not a 0.32 numerator")
+        );
+        assert!(parse_point_sets_as("0.5\n", Encoding::U32).is_err());
+        assert!(parse_point_sets_as("2\n", Encoding::Real).is_err());
+    }
+
+    #[test]
     fn never_panics_on_junk() {
         let alphabet = [
             "0", "1", "0.5", ".", "e", "-", "+", ",", " ", "\t", "#", "\n", "\r", "é", "NaN",
-            "inf", "\u{feff}",
+            "inf", "\u{feff}", "\u{a0}", "4294967296", "7",
         ];
         // A small deterministic enumeration of short strings over the alphabet.
         let mut state = 0x2545_f491_4f6c_dd1du64;

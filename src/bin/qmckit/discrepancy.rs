@@ -9,7 +9,8 @@ use qmckit::analysis::pointfile::PointSet;
 use qmckit::analysis::{star, thiemard};
 
 use crate::Failure;
-use crate::input::{read_point_sets, set_label};
+use crate::budget::BudgetArgs;
+use crate::input::{InputArgs, read_point_sets, set_label};
 use crate::points::value_name;
 use crate::progress::{with_progress, with_spinner};
 
@@ -117,11 +118,10 @@ pub struct DiscrepancyArgs {
     /// Gap between the bounds of star-bounds, in (0, 1].
     #[arg(long, default_value_t = 0.05)]
     delta: f64,
-    /// Estimated running time, in seconds, past which the exact star discrepancy is refused.
-    #[arg(long, default_value_t = 10.0, value_name = "SECONDS")]
-    max_seconds: f64,
-    /// Point file; '-' or none reads standard input.
-    file: Option<String>,
+    #[command(flatten)]
+    budget: BudgetArgs,
+    #[command(flatten)]
+    input: InputArgs,
 }
 
 /// Why an exact measure refused, as the command reports it; `limit` names what set the
@@ -168,7 +168,7 @@ fn measure(
     }
     let value = match metric {
         Metric::Star => {
-            let limit = format!(" within --max-seconds {}", args.max_seconds);
+            let limit = format!(" within --max-seconds {}", args.budget.max_seconds);
             with_progress(&name, |progress| {
                 star::star_exact_within(p, star_budget, progress)
             })
@@ -197,16 +197,27 @@ fn measure(
     Ok(vec![(name, value)])
 }
 
+/// The metrics to compute, in the order given: `all` stands for its nine, and a metric
+/// named twice (or inside `all` and again) is computed once.
+fn expand(asked: &[Metric]) -> Vec<Metric> {
+    let mut out = Vec::new();
+    for &m in asked {
+        let items: &[Metric] = if m == Metric::All { &ALL } else { &[m] };
+        for &item in items {
+            if !out.contains(&item) {
+                out.push(item);
+            }
+        }
+    }
+    out
+}
+
 /// Runs `qmckit discrepancy`.
 pub fn run(args: &DiscrepancyArgs) -> Result<(), Failure> {
-    let budget = star_budget(args.max_seconds)?;
-    let (name, sets) = read_point_sets(args.file.as_deref())?;
+    let budget = star_budget(args.budget.max_seconds)?;
+    let (name, sets) = read_point_sets(&args.input)?;
     let all = args.metric.contains(&Metric::All);
-    let metrics: Vec<Metric> = if all {
-        ALL.to_vec()
-    } else {
-        args.metric.clone()
-    };
+    let metrics = expand(&args.metric);
     let mut out = BufWriter::new(std::io::stdout().lock());
     for (k, set) in sets.iter().enumerate() {
         let p = set

@@ -3,6 +3,7 @@
 //! Errors go to stderr as one line, `qmckit: error: ...`, with exit code 2 for bad usage or
 //! input and 1 for failures of the environment (e.g. an unwritable output).
 
+mod budget;
 mod convergence;
 mod discrepancy;
 mod input;
@@ -29,6 +30,7 @@ struct Cli {
 #[derive(Subcommand, Debug)]
 enum Command {
     /// Write N points of a sampler, one point per line (natural order: line k is index start+k).
+    #[command(after_help = points::AFTER_HELP)]
     Points(points::PointsArgs),
     /// Discrepancies of point sets read from a text file or stdin: 'metric value' lines.
     #[command(after_help = discrepancy::AFTER_HELP)]
@@ -90,6 +92,12 @@ fn one_line(err: &clap::Error) -> String {
     parts.join(" ")
 }
 
+/// Writes `qmckit: error: MESSAGE` on stderr, ignoring a stderr that cannot be written (a
+/// full disk, a closed descriptor): the exit code still tells.
+fn report(message: &str) {
+    let _ = writeln!(std::io::stderr().lock(), "qmckit: error: {message}");
+}
+
 fn main() -> ExitCode {
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
@@ -106,7 +114,7 @@ fn main() -> ExitCode {
                 let _ = err.print();
                 return ExitCode::from(2);
             }
-            eprintln!("qmckit: error: {}", one_line(&err));
+            report(&one_line(&err));
             return ExitCode::from(2);
         }
     };
@@ -122,7 +130,7 @@ fn main() -> ExitCode {
         Err(f) if f.code == 1 && f.message.contains("Broken pipe") => ExitCode::SUCCESS,
         Err(f) => {
             let _ = std::io::stdout().flush();
-            eprintln!("qmckit: error: {}", f.message);
+            report(&f.message);
             ExitCode::from(f.code)
         }
     }

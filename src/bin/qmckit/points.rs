@@ -16,22 +16,42 @@ use crate::Failure;
 use crate::output::{Format, PointWriter};
 use crate::warp::{Warp, WarpArgs};
 
+/// Text shown after the options of `qmckit points --help`.
+pub const AFTER_HELP: &str = "\
+Options that apply (any other is an error that names it):
+  --seed      independent, latin, stratified (without --centered), and every --scramble
+  --base      vdc            --strata, --centered   stratified
+  --total     the finite sets: stratified, latin, hammersley, lp
+  --order     sobol (gray: SciPy's order)
+  --scramble  xor, rotate, fast-owen, fast-owen-lk, lms: base-2 constructions (sobol, lp,
+              vdc base 2); owen: those and halton, hammersley, vdc (in base b);
+              shuffle-owen: sobol, lp; perm, faure: halton, hammersley, vdc
+
+Limits: indices start..start+n-1 must lie in the construction (2^32 for the sequences;
+--total for the sets); a point holds at most 2^27 coordinates (1 GiB at 8 bytes each);
+halton at most 1024 dimensions, sobol as many as compiled in (21201 in the command).
+Output is written in batches of about 1 MiB, so memory stays bounded for any N.
+
+Formats: u32 (default), one point a line, the integers x * 2^32 separated by spaces;
+csv, decimals that parse back to the exact value; npy, float64 of shape (N, D).
+'qmckit discrepancy' and 'qmckit spectrum' read all three back with default options.";
+
 /// The constructions `points` knows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub enum SamplerName {
     /// Independent uniform random points (hash of seed, index, dimension).
     Independent,
-    /// Jittered stratified grid: n must be k^d, or give --strata.
+    /// Jittered stratified grid, one point in each of k^d cells.
     Stratified,
     /// Latin hypercube: one point in each of the n slabs of every axis.
     Latin,
-    /// Van der Corput sequence, 1D, in base --base (default 2).
+    /// Van der Corput sequence, 1D (base 2 unless `points --base` says otherwise).
     Vdc,
     /// Halton sequence: radical inverses in the first d primes.
     Halton,
-    /// Hammersley set of --total points (default n): (i/N, phi_2(i), phi_3(i), ...).
+    /// Hammersley set of N points: (i/N, phi_2(i), phi_3(i), ...).
     Hammersley,
-    /// Larcher–Pillichshammer (0,m,2)-net, 2D, --total (default n) a power of two.
+    /// Larcher–Pillichshammer (0,m,2)-net, 2D, N a power of two.
     Lp,
     /// Sobol' sequence, Joe–Kuo direction numbers, up to 21201 dimensions.
     Sobol,
@@ -89,28 +109,29 @@ pub struct PointsArgs {
     /// Dimensions per point [default: 1 for vdc, 2 otherwise].
     #[arg(short = 'd', value_name = "D")]
     d: Option<usize>,
-    /// Index of the first point written.
-    #[arg(long, default_value_t = 0)]
-    start: u32,
+    /// Index of the first point written [default: 0].
+    #[arg(long, value_name = "I")]
+    start: Option<u64>,
     /// Size of the point set for finite sets (stratified, latin, hammersley, lp) [default: n].
     /// Points start..start+n-1 of it are written.
     #[arg(long)]
     total: Option<u64>,
-    /// Seed of the randomized samplers (independent, stratified, latin).
-    #[arg(long, default_value_t = 0)]
-    seed: u64,
+    /// Seed of the randomized samplers (independent, stratified, latin) and of --scramble
+    /// [default: 0].
+    #[arg(long)]
+    seed: Option<u64>,
     /// Randomization; which kinds apply depends on the sampler (see the list below).
     #[arg(long, value_enum, default_value_t = ScrambleName::None)]
     scramble: ScrambleName,
-    /// Point order; gray applies to sobol only.
-    #[arg(long, value_enum, default_value_t = OrderName::Natural)]
-    order: OrderName,
+    /// Point order (sobol only) [default: natural].
+    #[arg(long, value_enum)]
+    order: Option<OrderName>,
     /// Output format.
     #[arg(long, value_enum, default_value_t = Format::U32)]
     format: Format,
-    /// Base of the van der Corput sequence.
-    #[arg(long, default_value_t = 2)]
-    base: u32,
+    /// Base of the van der Corput sequence (vdc only) [default: 2].
+    #[arg(long)]
+    base: Option<u32>,
     /// Strata per dimension for stratified, e.g. 8x4 (their product is the set size).
     #[arg(long)]
     strata: Option<String>,
@@ -121,8 +142,8 @@ pub struct PointsArgs {
     warp: WarpArgs,
 }
 
-/// Points written per batch (bounded memory for any n).
-const BATCH: usize = 1 << 14;
+/// Bytes of coordinates generated per batch (bounded memory for any n and d).
+const BATCH_BYTES: usize = 1 << 20;
 
 /// What [`build`] needs to construct a sampler: shared by `points` and `tvalue`.
 #[derive(Clone, Debug)]
@@ -174,20 +195,73 @@ impl Spec {
 }
 
 impl PointsArgs {
-    /// The sampler part of the arguments.
-    fn spec(&self) -> Spec {
-        Spec {
-            sampler: self.sampler,
+    /// The sampler part of the arguments, after refusing every option that does not apply
+    /// to the chosen sampler and randomization.
+    fn spec(&self) -> Result<Spec, Failure> {
+        use SamplerName as S;
+        let sampler = self.sampler;
+        let name = value_name(&sampler);
+        let refuse = |option: &str, why: &str| {
+            Err(Failure::usage(format!(
+                "{option} does not apply to {name}{why}"
+            )))
+        };
+        let randomized = matches!(sampler, S::Independent | S::Latin)
+            || (sampler == S::Stratified && !self.centered)
+            || self.scramble != ScrambleName::None;
+        if self.seed.is_some() && !randomized {
+            return refuse(
+                "--seed",
+                if sampler == S::Stratified {
+                    " with --centered (nothing is random)"
+                } else {
+                    " without --scramble (it is deterministic)"
+                },
+            );
+        }
+        if self.base.is_some() && sampler != S::Vdc {
+            return refuse("--base", " (only vdc takes a base)");
+        }
+        if self.total.is_some() && !sampler.is_finite_set() {
+            return refuse(
+                "--total",
+                " (a sequence; only stratified, latin, hammersley and lp are sets)",
+            );
+        }
+        if self.strata.is_some() && sampler != S::Stratified {
+            return refuse("--strata", " (only stratified has strata)");
+        }
+        if self.centered && sampler != S::Stratified {
+            return refuse("--centered", " (only stratified has cells)");
+        }
+        if self.order.is_some() && sampler != S::Sobol {
+            return refuse("--order", " (only sobol has a Gray-code order)");
+        }
+        Ok(Spec {
+            sampler,
             n: self.n,
             d: self.d,
             total: self.total,
-            seed: self.seed,
+            seed: self.seed.unwrap_or(0),
             scramble: self.scramble,
-            order: self.order,
-            base: self.base,
+            order: self.order.unwrap_or(OrderName::Natural),
+            base: self.base.unwrap_or(2),
             strata: self.strata.clone(),
             centered: self.centered,
-        }
+        })
+    }
+}
+
+impl SamplerName {
+    /// `true` for the finite point sets (sized by `--total`).
+    pub fn is_finite_set(self) -> bool {
+        matches!(
+            self,
+            SamplerName::Stratified
+                | SamplerName::Latin
+                | SamplerName::Hammersley
+                | SamplerName::Lp
+        )
     }
 }
 
@@ -327,9 +401,15 @@ fn construct(args: &Spec, digits: DigitScramble) -> Result<Box<dyn Sampler>, Fai
 /// `k` with `k^d == n`, or a usage error.
 fn root(n: u64, d: usize) -> Result<u32, Failure> {
     let guess = (n as f64).powf(1.0 / d as f64).round() as u64;
-    for k in guess.saturating_sub(1)..=guess + 1 {
-        if k > 0 && k.checked_pow(d as u32) == Some(n) {
-            return Ok(k as u32);
+    let power = u32::try_from(d).unwrap_or(u32::MAX);
+    for k in guess.saturating_sub(1)..=guess.saturating_add(1) {
+        if k > 0 && k.checked_pow(power) == Some(n) {
+            return u32::try_from(k).map_err(|_| {
+                Failure::usage(format!(
+                    "stratified: {n} points need {k} strata per axis, at most {} allowed",
+                    u32::MAX
+                ))
+            });
         }
     }
     Err(Failure::usage(format!(
@@ -355,17 +435,17 @@ pub fn run(args: &PointsArgs) -> Result<(), Failure> {
     if args.n == 0 {
         return Err(Failure::usage("-n must be at least 1"));
     }
-    let sampler = build(&args.spec())?;
+    let sampler = build(&args.spec()?)?;
     let dims = sampler.dims();
-    let end = args.start as u64 + args.n;
-    if end > sampler.len() {
-        return Err(Failure::usage(format!(
-            "points {}..{} are past the end: this set has {} points (see --total)",
-            args.start,
-            end - 1,
-            sampler.len()
-        )));
-    }
+    let start = args.start.unwrap_or(0);
+    let end = qmckit::size::end(start, args.n, sampler.len()).map_err(|e| match e {
+        qmckit::Error::IndexOutOfRange { index, len } => Failure::usage(format!(
+            "points {start}..{index} are past the end: this {} has {len} points{}",
+            if args.sampler.is_finite_set() { "set" } else { "sequence" },
+            if args.sampler.is_finite_set() { " (see --total)" } else { "" },
+        )),
+        other => Failure::from(other),
+    })?;
     let warp = match args.warp.warp {
         Some(name) => {
             if args.format == Format::U32 {
@@ -378,20 +458,31 @@ pub fn run(args: &PointsArgs) -> Result<(), Failure> {
         None => None,
     };
     let width = warp.as_ref().map_or(dims, |w| w.width(dims));
+    // One row of the widest form must fit the allocation limit.
+    let max_dims = qmckit::size::MAX_ALLOC_BYTES / 8;
+    if dims.max(width) as u64 > max_dims {
+        return Err(Failure::usage(format!(
+            "a point of {} coordinates is too large: at most {max_dims}",
+            dims.max(width)
+        )));
+    }
+    let batch = qmckit::size::rows_within(BATCH_BYTES, dims.max(width), 8);
+    let rows_first = batch.min(usize::try_from(args.n).unwrap_or(usize::MAX));
+    let mut buf: Vec<u32> = qmckit::size::vec_zeroed(qmckit::size::coordinates(rows_first as u64, dims)?)?;
     let stdout = std::io::stdout().lock();
     let mut writer = PointWriter::new(BufWriter::new(stdout), args.format, args.n, width)?;
-    let mut buf = vec![0u32; BATCH.min(args.n as usize) * dims];
     let mut warped = Vec::new();
-    let mut index = args.start as u64;
+    let mut u = vec![0f32; dims];
+    let mut index = start;
     while index < end {
-        let rows = ((end - index) as usize).min(BATCH);
+        let rows = usize::try_from(end - index).map_or(batch, |left| left.min(batch));
         let chunk = &mut buf[..rows * dims];
+        // index < end <= 2^32, so it is a u32.
         sampler.fill(index as u32, chunk)?;
         match &warp {
             None => writer.write(chunk, dims)?,
             Some(w) => {
                 warped.clear();
-                let mut u = vec![0f32; dims];
                 for row in chunk.chunks_exact(dims) {
                     for (uk, &x) in u.iter_mut().zip(row) {
                         *uk = qmckit::bits::to_f32(x);
@@ -411,11 +502,7 @@ pub fn run(args: &PointsArgs) -> Result<(), Failure> {
 pub fn samples_u32(spec: &Spec) -> Result<(Vec<u32>, usize), Failure> {
     let sampler = build(spec)?;
     let dims = sampler.dims();
-    let len = usize::try_from(spec.n)
-        .ok()
-        .and_then(|n| n.checked_mul(dims))
-        .ok_or_else(|| Failure::usage(format!("{} points do not fit in memory", spec.n)))?;
-    let mut buf = vec![0u32; len];
+    let mut buf = qmckit::size::vec_zeroed(qmckit::size::coordinates(spec.n, dims)?)?;
     sampler.fill(0, &mut buf)?;
     Ok((buf, dims))
 }

@@ -4,10 +4,11 @@
 use std::io::{BufWriter, Write};
 
 use clap::Args;
-use qmckit::analysis::spectrum::spectrum_2d;
+use qmckit::analysis::spectrum::spectrum_2d_within;
 
 use crate::Failure;
-use crate::input::{read_point_sets, set_label};
+use crate::budget::BudgetArgs;
+use crate::input::{InputArgs, read_point_sets, set_label};
 use crate::progress::with_spinner;
 
 /// Text shown after the options of `qmckit spectrum --help`.
@@ -26,8 +27,9 @@ r = 1..K, over the frequencies with round(|k|) = r; anisotropy = variance / mean
 annulus (1 for white noise; 10 log10 of it is Ulichney's anisotropy in dB).
 
 Values in scientific notation with 17 significant digits; with several point sets, each
-block is preceded by a '# set K' line. Cost N (K + 1)(2K + 1) complex multiply-adds,
-refused past 1e10 (e.g. K = 64: at most 1.2 million points); K at most 2048. Errors:
+block is preceded by a '# set K' line. Cost N (K + 1)(2K + 1) complex multiply-adds at
+about 1e9 a second, refused when that exceeds --max-seconds (default 10: K = 64 admits 1.2
+million points); K at most 2048. Errors:
 'qmckit: error: FILE: reason', exit code 2.";
 
 /// Arguments of `qmckit spectrum`.
@@ -39,13 +41,16 @@ pub struct SpectrumArgs {
     /// Print the radial average and anisotropy instead of the periodogram.
     #[arg(long)]
     radial: bool,
-    /// Point file; '-' or none reads standard input.
-    file: Option<String>,
+    #[command(flatten)]
+    budget: BudgetArgs,
+    #[command(flatten)]
+    input: InputArgs,
 }
 
 /// Runs `qmckit spectrum`.
 pub fn run(args: &SpectrumArgs) -> Result<(), Failure> {
-    let (name, sets) = read_point_sets(args.file.as_deref())?;
+    let budget = args.budget.budget()?;
+    let (name, sets) = read_point_sets(&args.input)?;
     let mut out = BufWriter::new(std::io::stdout().lock());
     for (k, set) in sets.iter().enumerate() {
         let which = set_label(k, sets.len());
@@ -57,12 +62,14 @@ pub fn run(args: &SpectrumArgs) -> Result<(), Failure> {
             )));
         }
         let p = set.points().map_err(|e| fail(e.to_string()))?;
-        let s = with_spinner("spectrum", || spectrum_2d(p, args.k_max)).map_err(|e| {
+        let s = with_spinner("spectrum", || spectrum_2d_within(p, args.k_max, &budget)).map_err(|e| {
             fail(match e {
                 qmckit::Error::TooManyPoints { max, .. } => format!(
-                    "{} points are too many for --k-max {} (at most {max})",
+                    "{} points are too many for --k-max {} (at most {max} within \
+                     --max-seconds {})",
                     set.len(),
-                    args.k_max
+                    args.k_max,
+                    args.budget.max_seconds
                 ),
                 other => other.to_string(),
             })

@@ -1,0 +1,36 @@
+//! `--max-seconds`: the one time budget of every command whose cost grows faster than its
+//! input (`discrepancy`, `tvalue`, `convergence`, `spectrum`).
+
+use clap::Args;
+use qmckit::analysis::budget::{Budget, DEFAULT_SECONDS};
+
+use crate::Failure;
+
+/// The time budget option, flattened into each command that needs it.
+#[derive(Args, Debug, Clone, Copy)]
+pub struct BudgetArgs {
+    /// Refuse, before starting, any computation whose estimated running time exceeds this
+    /// many seconds ('inf': no limit). Accepted work shows progress on a terminal.
+    #[arg(long, default_value_t = DEFAULT_SECONDS, value_name = "SECONDS")]
+    pub max_seconds: f64,
+}
+
+impl BudgetArgs {
+    /// The budget, or a usage error for a value that is not a positive number.
+    pub fn budget(&self) -> Result<Budget, Failure> {
+        Budget::seconds(self.max_seconds).map_err(|_| {
+            Failure::usage(format!(
+                "--max-seconds must be a positive number of seconds, not {}",
+                self.max_seconds
+            ))
+        })
+    }
+}
+
+/// The message of a refusal by the budget: the library's reason and the way out.
+pub fn over_budget(e: qmckit::Error) -> String {
+    match e {
+        qmckit::Error::OverBudget { .. } => format!("{e} (raise --max-seconds to run it)"),
+        other => other.to_string(),
+    }
+}
