@@ -4,7 +4,7 @@
 //!
 //! Output digit `j` of `y` (weight `2^-j`) is the parity of the index digits `j..m`, i.e.
 //! `y = reverse_bits(gray_inverse(i))`. Among 2D digital nets it has about the lowest star
-//! discrepancy known: `D* = 21/512` for `N = 64` (the lecture's 0.041).
+//! discrepancy known: `D* = 21/512 ≈ 0.041` for `N = 64`.
 
 use crate::bits::{gray_inverse, reverse_bits};
 use crate::error::{Error, Result};

@@ -15,7 +15,7 @@ use crate::sampler::{FULL_RANGE, Sampler, check};
 /// use qmckit::{VanDerCorput, Sampler};
 /// let v = VanDerCorput::new(2)?;
 /// let xs: Vec<f64> = (0..8).map(|i| qmckit::bits::to_f64(v.value(i))).collect();
-/// assert_eq!(xs, [0.0, 0.5, 0.25, 0.75, 0.125, 0.625, 0.375, 0.875]); // the lecture's table
+/// assert_eq!(xs, [0.0, 0.5, 0.25, 0.75, 0.125, 0.625, 0.375, 0.875]); // phi_2(0..8)
 /// # Ok::<(), qmckit::Error>(())
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

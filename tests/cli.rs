@@ -1,4 +1,4 @@
-//! The `qmckit` command's contract (DESIGN.md §4): formats, exit codes, one-line errors.
+//! The `qmckit` command's contract: formats, exit codes, one-line errors.
 #![cfg(feature = "cli")]
 
 use std::process::{Command, Output};

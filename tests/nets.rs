@@ -38,7 +38,7 @@ fn the_net_checker_can_fail() {
 
 #[test]
 fn lp_star_discrepancy_matches_the_published_values() {
-    // D* of the LP net for m = 2..6 (the lecture: 0.041 for 64 points).
+    // D* of the LP net for m = 2..6 (0.041 for 64 points).
     let want = [
         (2, 7, 16),
         (3, 1, 4),

@@ -152,11 +152,16 @@ fn is_separator(c: char) -> bool {
 /// The tokens of one comment-free line, field by field: `Err` for an empty field.
 fn fields(text: &str) -> impl Iterator<Item = Result<Vec<&str>, String>> {
     text.split(',').map(|field| {
-        let tokens: Vec<&str> = field.split(is_separator).filter(|t| !t.is_empty()).collect();
+        let tokens: Vec<&str> = field
+            .split(is_separator)
+            .filter(|t| !t.is_empty())
+            .collect();
         if tokens.is_empty() {
-            Err("empty field (two commas in a row, or a comma at the start or end \
+            Err(
+                "empty field (two commas in a row, or a comma at the start or end \
                  of the line)"
-                .to_owned())
+                    .to_owned(),
+            )
         } else {
             Ok(tokens)
         }
@@ -243,7 +248,10 @@ pub fn detect_encoding(text: &str) -> Encoding {
                     return Encoding::Real;
                 }
                 above_one |= token.trim_start_matches('0').len() > 1
-                    || token.trim_start_matches('0').parse::<u8>().is_ok_and(|v| v > 1);
+                    || token
+                        .trim_start_matches('0')
+                        .parse::<u8>()
+                        .is_ok_and(|v| v > 1);
             }
         }
     }
@@ -330,9 +338,7 @@ pub fn parse_point_sets_as(text: &str, encoding: Encoding) -> Result<Vec<PointSe
                 .starts_with(|c: char| c.is_alphabetic() || c == '"' || c == '_');
         let error = |mut message: String| {
             if header && message.ends_with("is not a number") {
-                message.push_str(
-                    " (a header line? Start it with '#' to make it a comment)",
-                );
+                message.push_str(" (a header line? Start it with '#' to make it a comment)");
             }
             ParseError { line, message }
         };
@@ -441,7 +447,11 @@ mod tests {
 
     #[test]
     fn line_ends_of_every_kind() {
-        for text in ["0.1 0.2\r0.3 0.4\r", "0.1 0.2\r\n0.3 0.4", "0.1 0.2\n0.3 0.4\n"] {
+        for text in [
+            "0.1 0.2\r0.3 0.4\r",
+            "0.1 0.2\r\n0.3 0.4",
+            "0.1 0.2\n0.3 0.4\n",
+        ] {
             let sets = parse_point_sets(text).unwrap();
             assert_eq!((sets[0].len(), sets[0].dims), (2, 2), "{text:?}");
         }
@@ -510,8 +520,26 @@ mod tests {
     #[test]
     fn never_panics_on_junk() {
         let alphabet = [
-            "0", "1", "0.5", ".", "e", "-", "+", ",", " ", "\t", "#", "\n", "\r", "é", "NaN",
-            "inf", "\u{feff}", "\u{a0}", "4294967296", "7",
+            "0",
+            "1",
+            "0.5",
+            ".",
+            "e",
+            "-",
+            "+",
+            ",",
+            " ",
+            "\t",
+            "#",
+            "\n",
+            "\r",
+            "é",
+            "NaN",
+            "inf",
+            "\u{feff}",
+            "\u{a0}",
+            "4294967296",
+            "7",
         ];
         // A small deterministic enumeration of short strings over the alphabet.
         let mut state = 0x2545_f491_4f6c_dd1du64;

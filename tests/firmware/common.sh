@@ -1,6 +1,6 @@
 # Shared by run.sh, size_report.sh and panic_proof.sh (sourced, not run): the offline
 # cross toolchain (Debian's rustc-web + rust-web-src with -Zbuild-std, rustup's rust-lld;
-# see shared/DESIGN.md §6), one cross-build function, and ELF section sizes.
+# the README's firmware section), one cross-build function, and ELF section sizes.
 #
 # After sourcing: $HERE (this directory, also the cwd), $LLD, and the functions below.
 # Host-side cargo/rustc are rustup's, whatever the environment says.

@@ -4,7 +4,7 @@
 use clap::Args;
 use qmckit::analysis::budget::{Budget, DEFAULT_SECONDS};
 
-use crate::Failure;
+use super::Failure;
 
 /// The time budget option, flattened into each command that needs it.
 #[derive(Args, Debug, Clone, Copy)]

@@ -9,10 +9,10 @@ use qmckit::analysis::integration::{Integrand, integration_error};
 
 use qmckit::analysis::budget::{Cost, Rate};
 
-use crate::Failure;
-use crate::budget::BudgetArgs;
-use crate::points::{SamplerName, ScrambleName, Spec, build, value_name};
-use crate::progress::with_progress;
+use super::Failure;
+use super::budget::BudgetArgs;
+use super::points::{SamplerName, ScrambleName, Spec, build, value_name};
+use super::progress::with_progress;
 
 /// Text shown after the options of `qmckit convergence --help`.
 pub const AFTER_HELP: &str = "\
@@ -174,7 +174,8 @@ pub fn run(args: &ConvergenceArgs) -> Result<(), Failure> {
         IntegrandName::Ball => Integrand::Ball,
         IntegrandName::Heaviside => Integrand::Heaviside,
     };
-    let spec = |n: u64, k: u64| Spec::base2(args.sampler, n, d, args.scramble, args.seed.wrapping_add(k));
+    let spec =
+        |n: u64, k: u64| Spec::base2(args.sampler, n, d, args.scramble, args.seed.wrapping_add(k));
     // Validates the request (sampler, d, scramble) before anything is timed.
     build(&spec(sizes[0], 0))?;
     let values: Vec<f64> = sizes
@@ -192,7 +193,10 @@ pub fn run(args: &ConvergenceArgs) -> Result<(), Failure> {
         .map_err(over)?;
     let rate = probe_rate(&spec, f, &sizes, d)?;
     budget
-        .check("the convergence curve", Cost::steps(total * PROBE_SLACK, rate))
+        .check(
+            "the convergence curve",
+            Cost::steps(total * PROBE_SLACK, rate),
+        )
         .map_err(over)?;
     let label = format!(
         "{} on {}",

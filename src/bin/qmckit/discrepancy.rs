@@ -8,11 +8,11 @@ use qmckit::analysis::l2::L2Metric;
 use qmckit::analysis::pointfile::PointSet;
 use qmckit::analysis::{star, thiemard};
 
-use crate::Failure;
-use crate::budget::BudgetArgs;
-use crate::input::{InputArgs, read_point_sets, set_label};
-use crate::points::value_name;
-use crate::progress::{with_progress, with_spinner};
+use super::Failure;
+use super::budget::BudgetArgs;
+use super::input::{InputArgs, read_point_sets, set_label};
+use super::points::value_name;
+use super::progress::{with_progress, with_spinner};
 
 /// Text shown after the options of `qmckit discrepancy --help`.
 pub const AFTER_HELP: &str = "\

@@ -7,7 +7,7 @@ use std::io::Read;
 use clap::{Args, ValueEnum};
 use qmckit::analysis::pointfile::{Encoding, PointSet, parse_point_sets_as};
 
-use crate::Failure;
+use super::Failure;
 
 /// How text input writes its coordinates (`--input-format`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, ValueEnum)]
@@ -35,22 +35,33 @@ pub struct InputArgs {
 /// The first bytes of every NumPy `.npy` file.
 const NPY_MAGIC: &[u8] = b"\x93NUMPY";
 
-/// Reads the input bytes; the name errors give them.
+/// The largest input read: the crate's allocation limit (an endless input such as
+/// `/dev/zero` is refused once it passes it).
+const MAX_INPUT_BYTES: u64 = qmckit::size::MAX_ALLOC_BYTES;
+
+/// Reads the input bytes (at most [`MAX_INPUT_BYTES`]); the name errors give them.
 fn read_input(file: Option<&str>) -> Result<(String, Vec<u8>), Failure> {
     let mut bytes = Vec::new();
-    let name = match file {
-        None | Some("-") => {
+    let (name, result) = match file {
+        None | Some("-") => (
+            "<stdin>".to_owned(),
             std::io::stdin()
                 .lock()
-                .read_to_end(&mut bytes)
-                .map_err(|e| Failure::usage(format!("<stdin>: {e}")))?;
-            "<stdin>".to_owned()
-        }
-        Some(path) => {
-            bytes = std::fs::read(path).map_err(|e| Failure::usage(format!("{path}: {e}")))?;
-            path.to_owned()
-        }
+                .take(MAX_INPUT_BYTES + 1)
+                .read_to_end(&mut bytes),
+        ),
+        Some(path) => (
+            path.to_owned(),
+            std::fs::File::open(path)
+                .and_then(|f| f.take(MAX_INPUT_BYTES + 1).read_to_end(&mut bytes)),
+        ),
     };
+    result.map_err(|e| Failure::usage(format!("{name}: {e}")))?;
+    if bytes.len() as u64 > MAX_INPUT_BYTES {
+        return Err(Failure::usage(format!(
+            "{name}: more than {MAX_INPUT_BYTES} bytes of input; split it into smaller files"
+        )));
+    }
     Ok((name, bytes))
 }
 
@@ -62,7 +73,11 @@ fn read_npy(bytes: &[u8]) -> Result<PointSet, String> {
     let (n, dims) = match shape[..] {
         [n] => (n, 1),
         [n, d] => (n, d),
-        _ => return Err(format!("a .npy array of shape {shape:?}: points need (N, D)")),
+        _ => {
+            return Err(format!(
+                "a .npy array of shape {shape:?}: points need (N, D)"
+            ));
+        }
     };
     if n == 0 || dims == 0 {
         return Err(format!("a .npy array of shape {shape:?} holds no points"));
@@ -70,7 +85,11 @@ fn read_npy(bytes: &[u8]) -> Result<PointSet, String> {
     let fortran = file.order() == npyz::Order::Fortran;
     let item = match file.dtype() {
         npyz::DType::Plain(t) => t.size_field(),
-        other => return Err(format!("a .npy array of dtype {other:?}: needs float64 or float32")),
+        other => {
+            return Err(format!(
+                "a .npy array of dtype {other:?}: needs float64 or float32"
+            ));
+        }
     };
     // The header's count must be backed by data before anything is allocated for it.
     let len = qmckit::size::coordinates(n, dims as usize).map_err(|e| e.to_string())?;

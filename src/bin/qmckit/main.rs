@@ -99,7 +99,17 @@ fn report(message: &str) {
 }
 
 fn main() -> ExitCode {
-    let cli = match Cli::try_parse() {
+    ExitCode::from(run_cli(std::env::args_os()))
+}
+
+/// Runs the command line `args` (the program name first) and returns the exit code: 0,
+/// 1 (the environment failed) or 2 (bad usage or input, one line on stderr).
+pub fn run_cli<I, T>(args: I) -> u8
+where
+    I: IntoIterator<Item = T>,
+    T: Into<std::ffi::OsString> + Clone,
+{
+    let cli = match Cli::try_parse_from(args) {
         Ok(cli) => cli,
         Err(err) => {
             use clap::error::ErrorKind;
@@ -108,14 +118,17 @@ fn main() -> ExitCode {
                 ErrorKind::DisplayHelp | ErrorKind::DisplayVersion
             ) {
                 let _ = err.print();
-                return ExitCode::SUCCESS;
+                return 0;
             }
             if err.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand {
-                let _ = err.print();
-                return ExitCode::from(2);
+                report(
+                    "a command is needed: points, discrepancy, convergence, spectrum or \
+                     tvalue (see 'qmckit --help')",
+                );
+                return 2;
             }
             report(&one_line(&err));
-            return ExitCode::from(2);
+            return 2;
         }
     };
     let result = match cli.command {
@@ -126,12 +139,12 @@ fn main() -> ExitCode {
         Command::Tvalue(args) => tvalue::run(&args),
     };
     match result {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(f) if f.code == 1 && f.message.contains("Broken pipe") => ExitCode::SUCCESS,
+        Ok(()) => 0,
+        Err(f) if f.code == 1 && f.message.contains("Broken pipe") => 0,
         Err(f) => {
             let _ = std::io::stdout().flush();
             report(&f.message);
-            ExitCode::from(f.code)
+            f.code
         }
     }
 }

@@ -1,10 +1,10 @@
-//! Point output formats (DESIGN.md §4): `u32`, `csv`, `npy`.
+//! Point output formats: `u32`, `csv`, `npy`.
 
 use std::io::Write;
 
 use clap::ValueEnum;
 
-use crate::Failure;
+use super::Failure;
 
 /// How points are written.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]

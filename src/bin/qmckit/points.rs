@@ -12,9 +12,9 @@ use qmckit::{
     Stratified, VanDerCorput,
 };
 
-use crate::Failure;
-use crate::output::{Format, PointWriter};
-use crate::warp::{Warp, WarpArgs};
+use super::Failure;
+use super::output::{Format, PointWriter};
+use super::warp::{Warp, WarpArgs};
 
 /// Text shown after the options of `qmckit points --help`.
 pub const AFTER_HELP: &str = "\
@@ -441,8 +441,16 @@ pub fn run(args: &PointsArgs) -> Result<(), Failure> {
     let end = qmckit::size::end(start, args.n, sampler.len()).map_err(|e| match e {
         qmckit::Error::IndexOutOfRange { index, len } => Failure::usage(format!(
             "points {start}..{index} are past the end: this {} has {len} points{}",
-            if args.sampler.is_finite_set() { "set" } else { "sequence" },
-            if args.sampler.is_finite_set() { " (see --total)" } else { "" },
+            if args.sampler.is_finite_set() {
+                "set"
+            } else {
+                "sequence"
+            },
+            if args.sampler.is_finite_set() {
+                " (see --total)"
+            } else {
+                ""
+            },
         )),
         other => Failure::from(other),
     })?;
@@ -468,7 +476,8 @@ pub fn run(args: &PointsArgs) -> Result<(), Failure> {
     }
     let batch = qmckit::size::rows_within(BATCH_BYTES, dims.max(width), 8);
     let rows_first = batch.min(usize::try_from(args.n).unwrap_or(usize::MAX));
-    let mut buf: Vec<u32> = qmckit::size::vec_zeroed(qmckit::size::coordinates(rows_first as u64, dims)?)?;
+    let mut buf: Vec<u32> =
+        qmckit::size::vec_zeroed(qmckit::size::coordinates(rows_first as u64, dims)?)?;
     let stdout = std::io::stdout().lock();
     let mut writer = PointWriter::new(BufWriter::new(stdout), args.format, args.n, width)?;
     let mut warped = Vec::new();

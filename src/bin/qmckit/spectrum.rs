@@ -6,10 +6,10 @@ use std::io::{BufWriter, Write};
 use clap::Args;
 use qmckit::analysis::spectrum::spectrum_2d_within;
 
-use crate::Failure;
-use crate::budget::BudgetArgs;
-use crate::input::{InputArgs, read_point_sets, set_label};
-use crate::progress::with_spinner;
+use super::Failure;
+use super::budget::BudgetArgs;
+use super::input::{InputArgs, read_point_sets, set_label};
+use super::progress::with_spinner;
 
 /// Text shown after the options of `qmckit spectrum --help`.
 pub const AFTER_HELP: &str = "\
@@ -62,18 +62,20 @@ pub fn run(args: &SpectrumArgs) -> Result<(), Failure> {
             )));
         }
         let p = set.points().map_err(|e| fail(e.to_string()))?;
-        let s = with_spinner("spectrum", || spectrum_2d_within(p, args.k_max, &budget)).map_err(|e| {
-            fail(match e {
-                qmckit::Error::TooManyPoints { max, .. } => format!(
-                    "{} points are too many for --k-max {} (at most {max} within \
+        let s = with_spinner("spectrum", || spectrum_2d_within(p, args.k_max, &budget)).map_err(
+            |e| {
+                fail(match e {
+                    qmckit::Error::TooManyPoints { max, .. } => format!(
+                        "{} points are too many for --k-max {} (at most {max} within \
                      --max-seconds {})",
-                    set.len(),
-                    args.k_max,
-                    args.budget.max_seconds
-                ),
-                other => other.to_string(),
-            })
-        })?;
+                        set.len(),
+                        args.k_max,
+                        args.budget.max_seconds
+                    ),
+                    other => other.to_string(),
+                })
+            },
+        )?;
         if sets.len() > 1 {
             writeln!(out, "# set {}", k + 1)?;
         }

@@ -8,9 +8,9 @@ use qmckit::analysis::tvalue::{
     DigitalNet2, IntervalFailure, elementary_interval_failures_u32, t_value, t_value_u32,
 };
 
-use crate::Failure;
-use crate::points::{SamplerName, ScrambleName, Spec, samples_u32, value_name};
-use crate::progress::with_spinner;
+use super::Failure;
+use super::points::{SamplerName, ScrambleName, Spec, samples_u32, value_name};
+use super::progress::with_spinner;
 
 /// Text shown after the options of `qmckit tvalue --help`.
 pub const AFTER_HELP: &str = "\

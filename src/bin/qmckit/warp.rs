@@ -3,7 +3,7 @@
 use clap::{Args, ValueEnum};
 use qmckit::warp::{disk, gaussian, sphere, spherical, triangle};
 
-use crate::Failure;
+use super::Failure;
 
 /// The warps `points --warp` knows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
