@@ -61,6 +61,8 @@ pub mod analysis;
 pub mod bits;
 #[cfg(feature = "heapless")]
 pub mod buffer;
+#[cfg(feature = "std")]
+pub mod collect;
 pub mod error;
 #[cfg(feature = "fixed")]
 pub mod fixed_warp;
