@@ -53,6 +53,7 @@
 //! | `libm` | the float warps ([`warp`]), also in `no_std`; implied by `std` |
 //! | `defmt` | `defmt::Format` on the public types |
 #![cfg_attr(not(feature = "std"), no_std)]
+#![cfg_attr(docsrs, feature(doc_cfg))]
 #![deny(unsafe_code)]
 #![warn(missing_docs)]
 
