@@ -184,7 +184,12 @@ fn max_seconds_sets_the_star_budget() {
     let p = qmckit::analysis::Points::new(&coords, 12).unwrap();
     let lower = qmckit::analysis::star::star_lower_bound(p, 1, 20_000);
     assert!(lower <= got + 1e-12 && got < lower + 0.01, "{lower} {got}");
-    let want = qmckit::analysis::star::star_exact_within(p, f64::INFINITY, &|_, _| {}).unwrap();
+    let want = qmckit::analysis::star::star_exact_within(
+        p,
+        &qmckit::analysis::budget::Budget::UNLIMITED,
+        &qmckit::analysis::budget::no_progress,
+    )
+    .unwrap();
     assert_eq!(got, want);
 }
 

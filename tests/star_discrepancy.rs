@@ -4,7 +4,7 @@
 #![cfg(feature = "std")]
 
 use qmckit::analysis::Points;
-use qmckit::analysis::dem::star_dem;
+use qmckit::analysis::star::dem::star_dem;
 use qmckit::analysis::star::{
     extreme_2d, star, star_1d, star_2d, star_exact, star_lower_bound, star_upper_bound,
 };
@@ -482,12 +482,15 @@ fn dem_on_nets_matches_brute_force() {
 
 #[test]
 fn dem_refuses_beyond_its_budget() {
-    use qmckit::analysis::dem::{max_points, work_estimate};
-    use qmckit::analysis::star::STAR_WORK_BUDGET;
+    use qmckit::analysis::star::STAR_RATE;
+    use qmckit::analysis::star::dem::{max_points, work_estimate};
+    // The default budget: ten seconds at STAR_RATE, 3e9 steps.
+    let steps = 3e9;
+    assert_eq!(STAR_RATE.steps_per_second() * 10.0, steps);
     for d in 3..=8 {
         let max = max_points(d) as usize;
-        assert!(work_estimate(max, d) <= STAR_WORK_BUDGET);
-        assert!(work_estimate(max + 1, d) > STAR_WORK_BUDGET);
+        assert!(work_estimate(max, d) <= steps);
+        assert!(work_estimate(max + 1, d) > steps);
         let data = vec![0.5; (max + 1) * d];
         let err = star_dem(Points::new(&data, d).unwrap()).unwrap_err();
         assert_eq!(
@@ -503,16 +506,20 @@ fn dem_refuses_beyond_its_budget() {
 
 #[test]
 fn dem_within_a_budget_reports_progress() {
-    use qmckit::analysis::dem::{max_points_within, star_dem_within, work_estimate};
-    use qmckit::analysis::star::star_exact_within;
+    use qmckit::analysis::budget::{Budget, no_progress};
+    use qmckit::analysis::star::dem::{max_points_within, star_dem_within, work_estimate};
+    use qmckit::analysis::star::{STAR_RATE, star_exact_within};
     use std::sync::Mutex;
+    // Budgets in steps at STAR_RATE.
+    let within = |steps: f64| Budget::seconds(steps / STAR_RATE.steps_per_second()).unwrap();
     // A larger budget admits more points; the refusal names the largest N within it.
-    for (d, budget) in [(3, 1e4), (4, 3e10), (6, 1.8e11)] {
-        let max = max_points_within(d, budget) as usize;
-        assert!(work_estimate(max, d) <= budget && work_estimate(max + 1, d) > budget);
+    for (d, steps) in [(3, 1e4), (4, 3e10), (6, 1.8e11)] {
+        let budget = within(steps);
+        let max = max_points_within(d, &budget) as usize;
+        assert!(work_estimate(max, d) <= steps && work_estimate(max + 1, d) > steps);
         let data = vec![0.25; (max + 1) * d];
         let p = Points::new(&data, d).unwrap();
-        let err = star_dem_within(p, budget, &|_, _| {}).unwrap_err();
+        let err = star_dem_within(p, &budget, &no_progress).unwrap_err();
         assert_eq!(
             err,
             qmckit::Error::TooManyPoints {
@@ -520,7 +527,10 @@ fn dem_within_a_budget_reports_progress() {
                 max: max as u64
             }
         );
-        assert_eq!(star_exact_within(p, budget, &|_, _| {}).unwrap_err(), err);
+        assert_eq!(
+            star_exact_within(p, &budget, &no_progress).unwrap_err(),
+            err
+        );
     }
     // 120 3D Sobol' points: more than the budget 1e4 admits (89: 1.25 N^2 <= 1e4); with a budget, the value
     // is brute force's, and every slab of the first cut is reported once.
@@ -529,9 +539,9 @@ fn dem_within_a_budget_reports_progress() {
     qmckit::Sampler::fill(&sobol, 0, &mut u).unwrap();
     let data = Points::from_u32(&u);
     let p = Points::new(&data, 3).unwrap();
-    assert!(star_dem_within(p, 1e4, &|_, _| {}).is_err());
+    assert!(star_dem_within(p, &within(1e4), &no_progress).is_err());
     let calls = Mutex::new(Vec::new());
-    let got = star_dem_within(p, 1e6, &|done, total| {
+    let got = star_dem_within(p, &within(1e6), &|done, total| {
         calls.lock().unwrap().push((done, total))
     })
     .unwrap();
@@ -539,14 +549,14 @@ fn dem_within_a_budget_reports_progress() {
     assert!((got - want).abs() < 1e-14, "{got} vs {want}");
     // Weighted progress in PROGRESS_STEPS, one report per slab and a last one at the total.
     let calls = calls.into_inner().unwrap();
-    let total = qmckit::analysis::dem::PROGRESS_STEPS;
+    let total = qmckit::analysis::star::dem::PROGRESS_STEPS;
     assert!(calls.len() > 5, "{calls:?}");
     assert!(calls.iter().all(|&(done, t)| t == total && done <= total));
     assert_eq!(calls.last(), Some(&(total, total)));
     for bad in [0.0, -1.0, f64::NAN] {
         assert!(matches!(
-            star_dem_within(p, bad, &|_, _| {}),
-            Err(qmckit::Error::Unsupported { .. })
+            Budget::seconds(bad),
+            Err(qmckit::Error::InvalidParameter { .. })
         ));
     }
 }

@@ -1,13 +1,13 @@
 //! `star_lower_bound` (threshold accepting after Gnewuch, Wahlström & Winzen 2012): never
 //! above the exact star discrepancy (`star_exact`, itself checked against brute force in
 //! `star_discrepancy.rs`), usually equal to it on small sets, and in 20D close to the lower
-//! bound of Thiémard's bracketing cover (`thiemard::bounds`), an independent algorithm.
+//! bound of Thiémard's bracketing cover (`star::thiemard::bounds`), an independent algorithm.
 #![cfg(feature = "std")]
 
 use qmckit::Sobol;
 use qmckit::analysis::Points;
+use qmckit::analysis::star::thiemard::bounds;
 use qmckit::analysis::star::{star, star_lower_bound};
-use qmckit::analysis::thiemard::bounds;
 
 mod common;
 use common::Rng;

@@ -5,8 +5,8 @@
 #![cfg(feature = "std")]
 
 use qmckit::analysis::Points;
+use qmckit::analysis::star::thiemard::bounds;
 use qmckit::analysis::star::{star, star_upper_bound};
-use qmckit::analysis::thiemard::bounds;
 use qmckit::{Error, LarcherPillichshammer};
 
 mod common;

@@ -4,9 +4,11 @@ use std::io::{BufWriter, Write};
 
 use clap::{Args, ValueEnum};
 use qmckit::analysis::Points;
+use qmckit::analysis::budget::Budget;
 use qmckit::analysis::l2::L2Metric;
 use qmckit::analysis::pointfile::PointSet;
-use qmckit::analysis::{star, thiemard};
+use qmckit::analysis::star;
+use qmckit::analysis::star::thiemard;
 
 use crate::Failure;
 use crate::input::{read_point_sets, set_label};
@@ -137,15 +139,13 @@ fn refusal(e: qmckit::Error, what: &str, set: &PointSet, limit: &str) -> String 
     }
 }
 
-/// The exact star discrepancy's work budget for `--max-seconds seconds`.
-fn star_budget(seconds: f64) -> Result<f64, Failure> {
-    if seconds.is_finite() && seconds > 0.0 {
-        // STAR_WORK_BUDGET is calibrated to about ten seconds.
-        Ok(star::STAR_WORK_BUDGET * seconds / 10.0)
-    } else {
-        Err(Failure::usage(format!(
+/// The time budget of `--max-seconds seconds`.
+fn star_budget(seconds: f64) -> Result<Budget, Failure> {
+    match Budget::seconds(seconds) {
+        Ok(budget) if seconds.is_finite() => Ok(budget),
+        _ => Err(Failure::usage(format!(
             "--max-seconds must be a positive number of seconds, not {seconds}"
-        )))
+        ))),
     }
 }
 
@@ -160,7 +160,7 @@ fn measure(
     p: Points<'_>,
     set: &PointSet,
     args: &DiscrepancyArgs,
-    star_budget: f64,
+    budget: &Budget,
 ) -> Result<Vec<(String, f64)>, String> {
     let name = value_name(&metric);
     if let Some(l2) = metric.l2() {
@@ -170,18 +170,28 @@ fn measure(
         Metric::Star => {
             let limit = format!(" within --max-seconds {}", args.max_seconds);
             with_progress(&name, |progress| {
-                star::star_exact_within(p, star_budget, progress)
+                star::star_exact_within(p, budget, progress)
             })
             .map_err(|e| refusal(e, "star", set, &limit))
         }
         Metric::StarBounds => {
-            let b = with_spinner(&name, || thiemard::bounds(p, args.delta))
-                .map_err(|e| refusal(e, "star-bounds", set, ""))?;
+            let b = with_spinner(&name, || thiemard::bounds_within(p, args.delta, budget))
+                .map_err(|e| match e {
+                    qmckit::Error::TooManyPoints { max: 0, .. } => format!(
+                        "star-bounds: Thiemard's cover at --delta {} takes longer than \
+                         --max-seconds {} for {} dimensions; take a larger delta",
+                        args.delta, args.max_seconds, set.dims
+                    ),
+                    e => refusal(e, "star-bounds", set, ""),
+                })?;
             let ta = with_spinner(&name, || {
-                star::star_lower_bound(p, 0, lower_bound_iterations(p))
-            });
+                star::star_lower_bound_within(p, 0, lower_bound_iterations(p), budget)
+            })
+            .map_err(|e| e.to_string())?;
+            // Both are valid lower bounds, the cover's upper bound is valid too: D* lies
+            // between, so their order only breaks by rounding.
             return Ok(vec![
-                ("star-lower".to_owned(), b.lower.max(ta)),
+                ("star-lower".to_owned(), b.lower.max(ta).min(b.upper)),
                 ("star-upper".to_owned(), b.upper),
             ]);
         }
@@ -216,7 +226,7 @@ pub fn run(args: &DiscrepancyArgs) -> Result<(), Failure> {
             writeln!(out, "# set {}", k + 1)?;
         }
         for &metric in &metrics {
-            match measure(metric, p, set, args, budget) {
+            match measure(metric, p, set, args, &budget) {
                 Ok(lines) => {
                     for (label, value) in lines {
                         writeln!(out, "{label} {value:.16e}")?;

@@ -4,13 +4,15 @@
 use std::io::Write;
 
 use clap::Args;
+use qmckit::analysis::budget::{Budget, Cost};
 use qmckit::analysis::tvalue::{
-    DigitalNet2, IntervalFailure, elementary_interval_failures_u32, t_value, t_value_u32,
+    COUNT_RATE, DigitalNet2, IntervalFailure, count_steps, elementary_interval_failures_u32_within,
+    t_value_u32_within, t_value_within,
 };
 
 use crate::Failure;
 use crate::points::{SamplerName, ScrambleName, Spec, samples_u32, value_name};
-use crate::progress::with_spinner;
+use crate::progress::{with_progress, with_spinner};
 
 /// Text shown after the options of `qmckit tvalue --help`.
 pub const AFTER_HELP: &str = "\
@@ -18,11 +20,13 @@ Samplers (base 2 only): sobol (any d), lp (d = 2), hammersley (d = 2: (i/2^m, ph
 vdc (d = 1, base 2). Other samplers are refused.
 
 Method: without --scramble, the rank test on the generator matrices (exact, m <= 32; its
-cost grows like C(m - t + 1 + d, d), fast for small d). With --scramble KIND (any kind
-`qmckit points` accepts for the sampler), the 2^m points are generated and counted in
-elementary intervals (exact; m <= 21, 2^m * d <= 2^25, and 2^m d C(m + d - 1, d - 1) <= 1e8
-steps, e.g. m <= 21 in 2D, m <= 17 in 3D; larger requests are refused). --explain counts too,
-so it has the same limits.
+cost grows like C(m - t + 1 + d, d), fast for small d; estimated first and refused when the
+estimate exceeds --max-seconds, e.g. -m 32 -d 50 or -m 20 -d 1000). With --scramble KIND
+(any kind `qmckit points` accepts for the sampler), the 2^m points are generated and counted
+in elementary intervals (exact; m <= 21 and 2^m * d <= 2^25, and an estimated
+log2(m) C(m + d - 1, d - 1) 2^m (d + 1) steps at 1e8 a second within --max-seconds: e.g.
+m <= 21 in 2D, m <= 15 in 4D by default; larger requests are refused). --explain counts
+too, so it has the same limits.
 
 Output, one 'key value' line each:
   sampler NAME
@@ -55,15 +59,15 @@ pub struct TvalueArgs {
     /// Name up to five elementary intervals that break t-1.
     #[arg(long)]
     explain: bool,
+    /// Estimated running time, in seconds, past which the computation is refused.
+    #[arg(long, default_value_t = 10.0, value_name = "SECONDS")]
+    max_seconds: f64,
 }
 
 /// Largest `m` whose points are generated and counted.
 const COUNT_MAX_M: u32 = 21;
 /// Largest number of coordinates (`2^m d`) generated for counting.
 const COUNT_MAX_VALUES: u64 = 1 << 25;
-
-/// Largest [`count_work`] accepted: seconds on two cores.
-const COUNT_MAX_WORK: f64 = 1e8;
 
 /// Failures listed by `--explain`.
 const EXPLAIN_LIMIT: usize = 5;
@@ -108,15 +112,8 @@ fn net(sampler: SamplerName, m: u32, d: usize) -> Result<DigitalNet2, Failure> {
     })
 }
 
-/// Estimated steps of counting `2^m` points of `d` dimensions into the cells of every
-/// interval shape of size up to `m`: `2^m d C(m + d - 1, d - 1)`.
-fn count_work(m: u32, d: usize) -> f64 {
-    let shapes = (1..d).fold(1.0, |c, k| c * (m as f64 + k as f64) / k as f64);
-    (1u64 << m) as f64 * d as f64 * shapes
-}
-
 /// Refuses point counts too large to generate and count in reasonable time and memory.
-fn check_countable(m: u32, d: usize, why: &str) -> Result<(), Failure> {
+fn check_countable(m: u32, d: usize, why: &str, budget: &Budget) -> Result<(), Failure> {
     let values = (1u64 << m).saturating_mul(d as u64);
     if m > COUNT_MAX_M || values > COUNT_MAX_VALUES {
         return Err(Failure::usage(format!(
@@ -124,11 +121,12 @@ fn check_countable(m: u32, d: usize, why: &str) -> Result<(), Failure> {
              (m <= {COUNT_MAX_M} and 2^m * d <= 2^25)"
         )));
     }
-    let work = count_work(m, d);
-    if work > COUNT_MAX_WORK {
+    let levels = u32::BITS - m.leading_zeros();
+    let cost = Cost::steps(count_steps(1u64 << m, d, m, levels), COUNT_RATE);
+    if let Err(e) = budget.check("counting", cost) {
         return Err(Failure::usage(format!(
             "{why} counts points: 2^{m} points of {d} dimensions take too long to count \
-             (about {work:.1e} steps, at most {COUNT_MAX_WORK:.0e}); lower -m or -d"
+             ({e}); lower -m or -d, or raise --max-seconds"
         )));
     }
     Ok(())
@@ -136,6 +134,15 @@ fn check_countable(m: u32, d: usize, why: &str) -> Result<(), Failure> {
 
 /// Runs `qmckit tvalue`.
 pub fn run(args: &TvalueArgs) -> Result<(), Failure> {
+    let budget = match Budget::seconds(args.max_seconds) {
+        Ok(b) if args.max_seconds.is_finite() => b,
+        _ => {
+            return Err(Failure::usage(format!(
+                "--max-seconds must be a positive number of seconds, not {}",
+                args.max_seconds
+            )));
+        }
+    };
     let m = args.m;
     if m > 32 {
         return Err(Failure::usage(format!(
@@ -150,16 +157,21 @@ pub fn run(args: &TvalueArgs) -> Result<(), Failure> {
     let net = net(args.sampler, m, d)?;
     let counting = args.scramble != ScrambleName::None;
     if args.explain {
-        check_countable(m, d, "--explain")?;
+        check_countable(m, d, "--explain", &budget)?;
     }
     let (t, samples) = if counting {
-        check_countable(m, d, "--scramble")?;
+        check_countable(m, d, "--scramble", &budget)?;
         let spec = Spec::base2(args.sampler, 1u64 << m, d, args.scramble, args.seed);
         let (samples, dims) = samples_u32(&spec)?;
-        let t = with_spinner("t-value (counting)", || t_value_u32(&samples, dims, m))?;
+        let t = with_spinner("t-value (counting)", || {
+            t_value_u32_within(&samples, dims, m, &Budget::UNLIMITED)
+        })?;
         (t, Some(samples))
     } else {
-        (with_spinner("t-value (rank test)", || t_value(&net)), None)
+        let t = with_progress("t-value (rank test)", |progress| {
+            t_value_within(&net, &budget, progress)
+        })?;
+        (t, None)
     };
     let mut out = std::io::stdout().lock();
     writeln!(out, "sampler {}", value_name(&args.sampler))?;
@@ -173,7 +185,14 @@ pub fn run(args: &TvalueArgs) -> Result<(), Failure> {
             None => net.points()?,
         };
         let failures: Vec<IntervalFailure> = with_spinner("elementary intervals", || {
-            elementary_interval_failures_u32(&samples, d, m, t - 1, EXPLAIN_LIMIT)
+            elementary_interval_failures_u32_within(
+                &samples,
+                d,
+                m,
+                t - 1,
+                EXPLAIN_LIMIT,
+                &Budget::UNLIMITED,
+            )
         })?;
         for f in failures {
             writeln!(out, "fail {f}")?;
