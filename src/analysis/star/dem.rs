@@ -80,9 +80,10 @@
 use super::cells::{
     SortedPrefix, closed_slack, convolve_max, convolve_min, merge_sorted, open_slack,
 };
-use super::cost::STAR_RATE;
+use super::cost::within;
+pub use super::cost::{max_points, max_points_within, work_estimate};
 use crate::analysis::Points;
-use crate::analysis::budget::{Budget, Cost, Progress, no_progress};
+use crate::analysis::budget::{Budget, Progress, no_progress};
 use crate::{Error, Result};
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicU64, Ordering};
@@ -184,63 +185,8 @@ fn single_point(x: Option<&[f64]>, n: f64) -> f64 {
     (n - 1.0).max(n * largest).max(1.0 - n * vol) / n
 }
 
-/// Whether `steps` of [`work_estimate`] fit in `budget`.
-fn within(steps: f64, budget: &Budget) -> bool {
-    budget
-        .check("the exact star discrepancy", Cost::steps(steps, STAR_RATE))
-        .is_ok()
-}
-
 /// The `total` of [`star_dem_within`]'s progress reports.
 pub const PROGRESS_STEPS: usize = 1000;
-
-/// Estimated work of [`star_dem`] for `n` points in `d` dimensions, in steps of
-/// [`STAR_RATE`] (`3e8` a second: the default budget of ten seconds admits `3e9`):
-///
-/// * `d <= 2`: `N^(1 + d/2)`;
-/// * `3 <= d <= 7`: `1.25 N^((d + 1)/2)`. The cell bounds of the last coordinate (module
-///   documentation) remove about a factor `sqrt N` from Dobkin, Eppstein & Mitchell's
-///   `N^(1 + d/2)` on these sizes: doubling `N` multiplied the time by `2^1.7` at `d = 3`,
-///   `2^2.1`, `2^2.6`, `2^3.2` (`N` = 600 to 1000) and `2^3.7` at `d = 7`;
-/// * `d >= 8`: `0.005 N^((d + 3)/2)`: here the bounds gain less, `d = 8` grew like `N^5.4`
-///   from 150 to 190 points.
-///
-/// Fitted to Sobol' points (slower than random ones) with `examples/time_dem.rs`, two
-/// threads, load about 1.5. The budget then admits `N` up to 48989, 5650, 1338, 478, 221,
-/// 138 for `d` = 3..8; measured nearby: 40000 3D points in 5.3 s, 6000 4D in 10.5 s, 1300
-/// 5D in 9.0 s, 500 6D in 8.4 s, 260 7D in 10.9 s, 150 8D in 8.5 s (estimated 15.5; 190
-/// 8D: 30 s against 57). It is conservative for high `d` (70 10D points: 8.2 s against 16
-/// estimated; 40 12D: 3.1 s against 17) and for large sets at `d <= 7` (1000 6D points:
-/// 86 s against 132). A loaded machine runs slower. Ties make a set faster than
-/// estimated.
-pub fn work_estimate(n: usize, d: usize) -> f64 {
-    let n = n as f64;
-    match d {
-        0..=2 => n.powf(1.0 + d as f64 / 2.0),
-        3..=7 => 1.25 * n.powf((d + 1) as f64 / 2.0),
-        _ => 0.005 * n.powf((d + 3) as f64 / 2.0),
-    }
-}
-
-/// Largest `N` whose [`work_estimate`] is within [`Budget::DEFAULT`].
-pub fn max_points(d: usize) -> u64 {
-    max_points_within(d, &Budget::DEFAULT)
-}
-
-/// Largest `N` (at least 1, at most `2^40`) whose [`work_estimate`] is within `budget`, by
-/// a binary search of 40 estimates.
-pub fn max_points_within(d: usize, budget: &Budget) -> u64 {
-    let (mut lo, mut hi) = (1u64, 1u64 << 40);
-    while lo < hi {
-        let mid = lo + (hi - lo).div_ceil(2);
-        if within(work_estimate(mid as usize, d), budget) {
-            lo = mid;
-        } else {
-            hi = mid - 1;
-        }
-    }
-    lo
-}
 
 /// [`star_dem_within`] without the work check.
 fn dem_from(points: Points<'_>, progress: Progress<'_>) -> f64 {

@@ -38,11 +38,15 @@
 //! | function | cost | limit |
 //! |---|---|---|
 //! | [`star_1d`] | `O(N log N)` | none |
-//! | [`star_2d`] | `O(N^2)` time, `O(N)` memory, parallel over columns | `N^2 <=` [`STAR_WORK_BUDGET`]: `N <= 54_772` |
+//! | [`star_2d`] | `O(N^2)` time, `O(N)` memory, parallel over columns | `N^2` steps at [`STAR_RATE`] within the budget: `N <= 54_772` in ten seconds |
 //! | [`star_exact`] | `O(N^2)` in 2D; `O(N^(1 + d/2))` for `d >= 3` (Dobkin–Eppstein–Mitchell, [`dem`]), pruned | ≈ `3e9` steps, about ten seconds: `N <= 48989, 5650, 1338, 478` for `d = 3, 4, 5, 6`; [`star_exact_within`] takes a budget |
 //! | [`extreme_2d`] | `O(N^3)` | `N <= 1200` |
-//! | [`star_lower_bound`] | `O(iterations · N d)` | none |
-//! | [`star_upper_bound`] | Thiémard's cover ([`thiemard`]): about `Σ_R (N vol(b_R) + 16)(d + k_R)` over its regions, parallel | ≈ `3e9` steps, estimated first |
+//! | [`star_lower_bound`] | `O(iterations · (N + 32) d)` ([`lower_bound_steps`]) | none; [`star_lower_bound_within`] takes a budget, at [`LOWER_BOUND_RATE`] |
+//! | [`star_upper_bound`] | Thiémard's cover ([`thiemard`]): about `Σ_R (N vol(b_R) + 16)(d + k_R) + 2 d (k_R - 1)` over its regions, parallel | ten seconds at [`THIEMARD_RATE`], estimated first; [`thiemard::bounds_within`] takes a budget |
+//!
+//! Every budgeted function estimates its cost before it allocates anything that grows with
+//! the input, and none recurses deeper than a constant: the searches keep their state on the
+//! heap.
 
 mod cells;
 pub mod cost;
@@ -55,7 +59,7 @@ mod thiemard_cost;
 
 pub use cost::{LOWER_BOUND_RATE, STAR_RATE, THIEMARD_RATE};
 pub use extreme::{EXTREME_2D_MAX_POINTS, extreme_2d};
-pub use lower_bound::{star_lower_bound, star_lower_bound_within};
+pub use lower_bound::{lower_bound_steps, star_lower_bound, star_lower_bound_within};
 
 use super::Points;
 use super::budget::{Budget, Progress, no_progress};
@@ -282,8 +286,8 @@ pub fn max_points_within(d: usize, budget: &Budget) -> u64 {
 ///
 /// # Errors
 /// Those of [`thiemard::bounds`](thiemard::bounds): [`Error::Unsupported`] for `δ`
-/// not in `(0, 1]`; [`Error::TooManyPoints`] when the estimated work exceeds
-/// [`STAR_WORK_BUDGET`] (take a larger `δ`).
+/// not in `(0, 1]`; [`Error::TooManyPoints`] when the estimated time exceeds
+/// [`Budget::DEFAULT`] (take a larger `δ`; [`thiemard::bounds_within`] takes a budget).
 ///
 /// ```
 /// use qmckit::analysis::{Points, star::star_upper_bound};

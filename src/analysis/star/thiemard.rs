@@ -112,17 +112,22 @@ const MAX_POINTS: u64 = u32::MAX as u64;
 /// [`THIEMARD_RATE`]. Before anything is allocated, the root chain alone gives a lower
 /// bound in `O(1)` memory (about `2 d^2` per step: two points in 1000 dimensions, or one in
 /// 20000, are refused in microseconds); then a pass over the regions without points
-/// estimates the whole, in at most about a tenth of the budget's time. Measured on a shared
-/// 2-core machine:
+/// estimates the whole, in at most about a tenth of the budget's time. Measured with the
+/// `time_thiemard` example (release build, two shared cores; random points from
+/// [`crate::Independent`] with seed 1), the default budget of ten seconds accepting the
+/// first five rows and refusing the last four:
 ///
 /// | `d`, `N`, points | `δ` | time | lower | upper | exact |
 /// |---|---|---|---|---|---|
-/// | 2, 1000, Sobol' | 0.0002 | 9.9 s | 0.005717 | 0.005758 | 0.005717 |
-/// | 2, 10000, random | 0.0004 | 9.2 s | 0.01247 | 0.01282 | 0.01257 |
-/// | 5, 1000, random | 0.08 | 12.7 s | 0.055 | 0.132 | |
-/// | 5, 10000, Sobol' | 0.15 | 9.9 s | 0.0024 | 0.152 | |
-/// | 10, 1000, random | 0.4 | 2.8 s | 0.060 | 0.450 | |
-/// | 20, 10000, random | 0.7 | 7.5 s | 0.023 | 0.714 | |
+/// | 2, 1000, Sobol' | 0.0002 | 2.7 s | 0.005717 | 0.005758 | 0.005717 |
+/// | 5, 1000, random | 0.08 | 3.7 s | 0.0766 | 0.152 | |
+/// | 5, 10000, Sobol' | 0.15 | 3.8 s | 0.0024 | 0.152 | |
+/// | 10, 1000, random | 0.4 | 1.2 s | 0.0765 | 0.463 | |
+/// | 20, 10000, random | 0.7 | 3.1 s | 0.0215 | 0.711 | |
+/// | 2, 1000, Sobol' | 0.00012 | 11.1 s | 0.005717 | 0.005763 | 0.005717 |
+/// | 5, 1000, random | 0.06 | 17.8 s | 0.0793 | 0.137 | |
+/// | 10, 1000, random | 0.3 | 26.7 s | 0.0795 | 0.370 | |
+/// | 20, 1000, random | 0.6 | 10.0 s | 0.0807 | 0.664 | |
 ///
 /// So the upper bound is informative in 2D–3D; from about 5D on it is close to `δ` itself
 /// for any reasonable `N`, and [`lower`](Bounds::lower) is the more useful number.
