@@ -700,3 +700,27 @@ fn exact_refusals_report_the_largest_set_within_the_budget() {
     // d >= 3: 1.25 N^2 <= 3e9 in 3D (N = 48989, as the CLI documents).
     assert_eq!(max_points_within(3, &Budget::DEFAULT), 48_989);
 }
+
+#[test]
+fn extreme_within_a_budget() {
+    use qmckit::analysis::budget::Budget;
+    use qmckit::analysis::star::extreme_2d_within;
+    // N^3 / 2 steps at 1.7e8 a second: 1503 points within ten seconds (1503^3 / 2 =
+    // 1.698e9 <= 1.7e9 < 1504^3 / 2), refused at once past it.
+    let data = vec![0.5; 2 * 1504];
+    let p = Points::new(&data, 2).unwrap();
+    let start = std::time::Instant::now();
+    assert_eq!(
+        extreme_2d_within(p, &Budget::DEFAULT),
+        Err(qmckit::Error::TooManyPoints {
+            requested: 1504,
+            max: 1503
+        })
+    );
+    assert!(start.elapsed().as_secs_f64() < 0.1);
+    // Within it, the same value as extreme_2d: one point, the degenerate closed box on it
+    // holds it with volume 0, so D = 1.
+    let one = Points::new(&[0.5, 0.5], 2).unwrap();
+    assert_eq!(extreme_2d_within(one, &Budget::DEFAULT), extreme_2d(one));
+    assert_eq!(extreme_2d(one), Ok(1.0));
+}

@@ -69,13 +69,13 @@
 //! the second cut 1.7% and 1.1%: the first cut alone would cap the speed-up near 8 whatever
 //! the number of cores.
 //!
-//! Measured with `examples/time_dem.rs` (first `N` Sobol' points, two threads, load about
+//! Measured with the `time_dem` example (first `N` Sobol' points, two threads, load about
 //! 1.5). 6D: `N` = 500 in 8.4 s, 600 in 17 s, 800 in 43 s, 1000 in 86 s, 2000 in 17 minutes
-//! (1026 s). Before the table bounds, on the same machine: 600 in 37 s, 800 in 123 s, 1000
-//! in 285 s, growing like `N^4`. Other dimensions: `d = 3`: 40000 in 5.3 s; `d = 4`: 6000
+//! (1026 s); without the table bounds the time grows like `N^4` (1000 points: 285 s).
+//! Other dimensions: `d = 3`: 40000 in 5.3 s; `d = 4`: 6000
 //! in 10.5 s; `d = 5`: 1300 in 9.0 s; `d = 7`: 260 in 10.9 s; `d = 8`: 150 in 8.5 s;
-//! `d = 10`: 70 in 8.2 s. [`work_estimate`] is fitted to these; [`star_dem_within`] takes a
-//! larger budget than [`star_dem`]'s ten seconds.
+//! `d = 10`: 70 in 8.2 s. [`work_estimate`] is fitted to these; [`star_dem_within`] takes
+//! another budget than [`star_dem`]'s ten seconds.
 
 use super::cells::{
     SortedPrefix, closed_slack, convolve_max, convolve_min, merge_sorted, open_slack,
@@ -120,7 +120,7 @@ pub fn star_dem(points: Points<'_>) -> Result<f64> {
 }
 
 /// [`star_dem`] within the time budget `budget` ([`work_estimate`] steps at
-/// [`STAR_RATE`], checked in `O(1)` before anything is allocated) with a progress report:
+/// [`STAR_RATE`](super::STAR_RATE), checked in `O(1)` before anything is allocated) with a progress report:
 /// `progress(done, PROGRESS_STEPS)` is called, from any thread, each time one of the slabs
 /// of the first cut is finished (and once at the end with `done = PROGRESS_STEPS`). A slab
 /// counts as its estimated share of the work (those with more points take longer): `done`

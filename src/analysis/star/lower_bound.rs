@@ -44,7 +44,7 @@ fn splitmix(state: &mut u64) -> u64 {
 /// `closed(y')/N - vol(y')` of a critical box `y'`, counts exact and the volume a product
 /// of `f64`s, so the result is **guaranteed `<= D*_N`** up to the rounding of the volume
 /// (a few ulps). On 100 small random sets (`d = 2..5`, `N = 5..40`, 4000 iterations) it
-/// equals [`star_exact`] in 93 (the misses: uniform sets in 4D–5D, up to 0.03 below).
+/// equals [`star_exact`](super::star_exact) in 93 (the misses: uniform sets in 4D–5D, up to 0.03 below).
 /// Deterministic for a given `seed`. Cost `O((iterations + walks) · N d)`: about two passes
 /// over the coordinates for an open box, less for a closed one. Measured at 20000
 /// iterations on a shared 2-core machine (Thiémard's [`lower`](super::thiemard::Bounds)

@@ -40,7 +40,7 @@
 //! | [`star_1d`] | `O(N log N)` | none |
 //! | [`star_2d`] | `O(N^2)` time, `O(N)` memory, parallel over columns | `N^2` steps at [`STAR_RATE`] within the budget: `N <= 54_772` in ten seconds |
 //! | [`star_exact`] | `O(N^2)` in 2D; `O(N^(1 + d/2))` for `d >= 3` (Dobkin–Eppstein–Mitchell, [`dem`]), pruned | ≈ `3e9` steps, about ten seconds: `N <= 48989, 5650, 1338, 478` for `d = 3, 4, 5, 6`; [`star_exact_within`] takes a budget |
-//! | [`extreme_2d`] | `O(N^3)` | `N <= 1200` |
+//! | [`extreme_2d`] | `O(N^3)` | `N <= 1200`; [`extreme_2d_within`] takes a budget, at [`EXTREME_RATE`] |
 //! | [`star_lower_bound`] | `O(iterations · (N + 32) d)` ([`lower_bound_steps`]) | none; [`star_lower_bound_within`] takes a budget, at [`LOWER_BOUND_RATE`] |
 //! | [`star_upper_bound`] | Thiémard's cover ([`thiemard`]): about `Σ_R (N vol(b_R) + 16)(d + k_R) + 2 d (k_R - 1)` over its regions, parallel | ten seconds at [`THIEMARD_RATE`], estimated first; [`thiemard::bounds_within`] takes a budget |
 //!
@@ -58,7 +58,7 @@ pub mod thiemard;
 mod thiemard_cost;
 
 pub use cost::{LOWER_BOUND_RATE, STAR_RATE, THIEMARD_RATE};
-pub use extreme::{EXTREME_2D_MAX_POINTS, extreme_2d};
+pub use extreme::{EXTREME_2D_MAX_POINTS, EXTREME_RATE, extreme_2d, extreme_2d_within};
 pub use lower_bound::{lower_bound_steps, star_lower_bound, star_lower_bound_within};
 
 use super::Points;
@@ -173,8 +173,8 @@ pub fn star_2d(points: Points<'_>) -> Result<f64> {
 /// with a coordinate equal to 1 never counted (see the module documentation). Measured on
 /// the shared 2-core machine (two threads, load about 1.5, Sobol' points), about ten
 /// seconds: `d = 3`: 40000 points in 5.3 s; `d = 4`: 6000 in 10.5 s; `d = 5`: 1300 in 9.0 s;
-/// `d = 6`: 500 in 8.4 s (details in [`dem`]). The grid enumeration this replaced
-/// took ten seconds at about 1900, 365, 140 and 70 points (under load 3 to 10).
+/// `d = 6`: 500 in 8.4 s (details in [`dem`]); enumerating the critical grid takes ten
+/// seconds at about 1900, 365, 140 and 70 points.
 /// Beyond that use [`star_lower_bound`] / [`star_upper_bound`].
 ///
 /// # Errors
@@ -270,7 +270,7 @@ pub fn max_points_within(d: usize, budget: &Budget) -> u64 {
 }
 
 /// A guaranteed upper bound on `D*_N`, at most `D*_N + δ`: the upper end of
-/// [`thiemard::bounds`](thiemard::bounds), Thiémard's δ-bracketing cover (E.
+/// [`thiemard::bounds`], Thiémard's δ-bracketing cover (E.
 /// Thiémard 2001, "An algorithm to compute bounds for the star discrepancy", J. Complexity
 /// 17(4)).
 ///
@@ -285,7 +285,7 @@ pub fn max_points_within(d: usize, budget: &Budget) -> u64 {
 /// `N = 1000` (so from 5D on the bound is little more than `δ`).
 ///
 /// # Errors
-/// Those of [`thiemard::bounds`](thiemard::bounds): [`Error::Unsupported`] for `δ`
+/// Those of [`thiemard::bounds`]: [`Error::Unsupported`] for `δ`
 /// not in `(0, 1]`; [`Error::TooManyPoints`] when the estimated time exceeds
 /// [`Budget::DEFAULT`] (take a larger `δ`; [`thiemard::bounds_within`] takes a budget).
 ///

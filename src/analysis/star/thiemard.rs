@@ -108,7 +108,7 @@ const MAX_POINTS: u64 = u32::MAX as u64;
 /// For evenly spread points about `Σ_R (N vol(b_R) + 16)(d + k_R) + 2 d (k_R - 1)`
 /// comparisons over the regions `R` of the decomposition with `k_R >= 2` free coordinates,
 /// plus a sort of `N vol(b)` values per chain along the last coordinate and `16 + 3 d` per
-/// bracket in it (see [`super::thiemard_cost`](self) for the model), at
+/// bracket in it, at
 /// [`THIEMARD_RATE`]. Before anything is allocated, the root chain alone gives a lower
 /// bound in `O(1)` memory (about `2 d^2` per step: two points in 1000 dimensions, or one in
 /// 20000, are refused in microseconds); then a pass over the regions without points

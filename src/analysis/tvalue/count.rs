@@ -331,7 +331,7 @@ fn digits_f64(points: Points, base: u32, m: u32) -> Result<Digits> {
 /// counting points in elementary intervals; exact (the digits are the bits).
 ///
 /// `t` is the smallest value such that every elementary interval of volume `2^(t - m)`
-/// holds exactly `2^t` points (see the [module docs](self)). Works for any point set,
+/// holds exactly `2^t` points (see the [module docs](super)). Works for any point set,
 /// scrambled or not; only the top `m` bits of each coordinate matter.
 ///
 /// Cost: a binary search over the interval size `rho = m - t`, about `log2 m` levels; a
