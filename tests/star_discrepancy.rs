@@ -724,3 +724,13 @@ fn extreme_within_a_budget() {
     assert_eq!(extreme_2d_within(one, &Budget::DEFAULT), extreme_2d(one));
     assert_eq!(extreme_2d(one), Ok(1.0));
 }
+
+#[test]
+#[allow(deprecated)]
+fn old_module_paths_still_work() {
+    // One point at the center of the cube: 1 - 1/8 (see dem_one_point_by_hand).
+    let p = Points::new(&[0.5, 0.5, 0.5], 3).unwrap();
+    assert_eq!(qmckit::analysis::dem::star_dem(p), Ok(0.875));
+    let b = qmckit::analysis::thiemard::bounds(p, 0.05).unwrap();
+    assert!(b.lower <= 0.875 && 0.875 <= b.upper);
+}
