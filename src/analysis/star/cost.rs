@@ -2,8 +2,10 @@
 //! [`crate::analysis::budget`] for the mechanism).
 //!
 //! Each rate converts a counted number of inner-loop steps into seconds. They were measured
-//! with the release build on two cores shared with other work, so they are conservative for
-//! an idle machine.
+//! with the release build on two cores shared with other work (load average about 1.5), so
+//! they are conservative for an idle machine; a busier machine runs proportionally slower
+//! (the 6D row of [`super::dem`], 500 Sobol' points, took 20.5 s instead of 8.4 s at a load
+//! average of 7).
 
 use crate::analysis::budget::{Budget, Cost, Rate};
 
