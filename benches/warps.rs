@@ -1,5 +1,5 @@
 //! Warp throughput: qmckit's `f32` warps (`warp`, through `libm`), its fixed-point warps
-//! (`fixed_warp`, feature `fixed`), and disk points against the `lds-rs` crate (0.1.11).
+//! (`warp::fixed`, feature `fixed`), and disk points against the `lds-rs` crate (0.1.11).
 //!
 //! Every benchmark maps `N` points per iteration and reports per-point throughput
 //! (`Throughput::Elements(N)`). Inputs are precomputed outside the timed loop: the first `N`
@@ -230,7 +230,7 @@ fn warp_f32(c: &mut Criterion) {
 #[cfg(feature = "fixed")]
 fn warp_fixed(c: &mut Criterion) {
     use fixed::types::U0F32;
-    use qmckit::fixed_warp as fw;
+    use qmckit::warp::fixed as fw;
 
     let u: Vec<[U0F32; 2]> = owen_sobol()
         .into_iter()

@@ -4,7 +4,7 @@
 use fixed::types::{I2F30, U0F32};
 use qmckit::Sobol;
 use qmckit::bits::to_f32;
-use qmckit::fixed_warp as fx;
+use qmckit::warp::fixed as fx;
 use qmckit::warp::{disk, sphere, triangle};
 
 fn grid() -> Vec<[u32; 2]> {

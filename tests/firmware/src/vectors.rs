@@ -660,7 +660,7 @@ fn warp_inputs() -> impl Iterator<Item = [u32; 2]> {
 /// M4F's FPU and the host's SSE): digests of outputs, pdfs and inverses.
 fn warps<W: Write>(out: &mut W) -> fmt::Result {
     use qmckit::bits::{to_f32, to_fixed};
-    use qmckit::{fixed_warp as fw, warp};
+    use qmckit::warp::{self, fixed as fw};
     let (mut fixed, mut fixed_inv, mut float, mut float_inv) =
         (Digest::new(), Digest::new(), Digest::new(), Digest::new());
     for [x, y] in warp_inputs() {
