@@ -361,7 +361,7 @@ fn scrambled_samplers_fill_like_they_sample() {
 #[test]
 fn cached_lms_is_the_same_scramble() {
     let lms = Lms::new(42);
-    let cache = lms.cached(3);
+    let cache = lms.cached(3).unwrap();
     for dim in 0..5 {
         for x in [0u32, 1, 0x8000_0000, 0xDEAD_BEEF, u32::MAX] {
             assert_eq!(cache.apply(x, dim), lms.apply(x, dim));
@@ -430,11 +430,11 @@ fn base2_randomizers_keep_nets_up_to_m16_for_1000_seeds() {
                 let mut buf = vec![0u32; 2 << 16];
                 let mut count = vec![0u32; 1 << 16];
                 for seed in (t as u64..1000).step_by(threads) {
-                    let lms = (Lms::new(seed).cached(2), DigitalShift::new(seed));
+                    let lms = (Lms::new(seed).cached(2).unwrap(), DigitalShift::new(seed));
                     let mut rs = randomizers(seed);
                     rs.retain(|(name, _)| !name.starts_with("lms"));
                     rs.push(("lms+xor (cached)", Box::new(lms)));
-                    rs.push(("lms (cached)", Box::new(Lms::new(seed).cached(2))));
+                    rs.push(("lms (cached)", Box::new(Lms::new(seed).cached(2).unwrap())));
                     for (name, r) in &rs {
                         Scrambled::new(Sobol::new(2).unwrap(), &**r)
                             .fill(0, &mut buf)

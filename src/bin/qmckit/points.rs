@@ -247,7 +247,7 @@ pub fn build(args: &Spec) -> Result<Box<dyn Sampler>, Failure> {
             FastOwen::with_hash(seed, OwenHash::LaineKarras),
         )),
         K::Lms => {
-            let lms = Lms::new(seed).cached(sampler.dims());
+            let lms = Lms::new(seed).cached(sampler.dims())?;
             Box::new(Scrambled::new(sampler, (lms, DigitalShift::new(seed))))
         }
         K::ShuffleOwen => Box::new(Shuffled::new(

@@ -595,7 +595,9 @@ fn sobol<W: Write>(out: &mut W) -> fmt::Result {
             d4.push(x);
         }
         let mut f = [[0f32; 4]; 1];
-        OWEN_SOBOL4.fill_f32(&[i], &mut f);
+        if let Err(e) = OWEN_SOBOL4.fill_f32(&[i], &mut f) {
+            return writeln!(out, "owen_sobol4_f32 err {e}");
+        }
         for x in f[0] {
             df.push(x.to_bits());
         }
