@@ -39,6 +39,14 @@ pub mod triangle;
 #[cfg(feature = "libm")]
 pub(crate) const PI: f32 = core::f32::consts::PI;
 
+/// The largest coordinate magnitude the geometric warps accept ([`triangle::Triangle`],
+/// [`spherical::SphericalRectangle`], [`spherical::SphericalTriangle`]): `2^64`. Every
+/// point they produce (a convex combination of vertices, or a corner plus fractions of
+/// two edges) is then a finite `f32`, and every product of up to six coordinates stays far
+/// inside the `f64` range used for the spherical maps.
+#[cfg(feature = "libm")]
+pub const MAX_COORDINATE: f32 = 18_446_744_073_709_551_616.0;
+
 /// The largest `f32` below 1: `1 - 2^-24`.
 pub const ONE_MINUS_EPSILON: f32 = 1.0 - f32::EPSILON / 2.0;
 

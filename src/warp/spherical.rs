@@ -32,12 +32,10 @@
 
 use libm::{acos, atan2, cos, sin, sqrt};
 
+use super::MAX_COORDINATE;
 use crate::error::{Error, Result};
 
 type V = [f64; 3];
-
-/// The largest coordinate magnitude the spherical warps accept: `2^64`.
-pub const MAX_COORDINATE: f32 = 18_446_744_073_709_551_616.0;
 
 /// Relative tolerance of the degeneracy checks: `2^-20`.
 pub const RELATIVE_TOLERANCE: f64 = 1.0 / 1_048_576.0;

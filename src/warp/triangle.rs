@@ -5,6 +5,8 @@
 //! neighbouring strata stay neighbours (the classic `sqrt` map folds them). The density is
 //! uniform: `1 / area` on a triangle of that area (2 on the reference triangle).
 
+use super::MAX_COORDINATE;
+
 /// Barycentric coordinates `(b0, b1, b2)`, `b0 + b1 + b2 = 1`, of a uniform point:
 /// `b0 = u0 / 2, b1 = u1 - b0` when `u0 < u1`, otherwise `b1 = u1 / 2, b0 = u0 - b1`.
 ///
@@ -65,10 +67,6 @@ pub fn triangle_area<const N: usize>(p: [[f32; N]; 3]) -> f32 {
     0.5 * libm::sqrtf(c[0] * c[0] + c[1] * c[1] + c[2] * c[2])
 }
 
-/// The largest coordinate magnitude [`Triangle::new`] accepts: `2^64` (a point, a convex
-/// combination of the vertices, is then far from the `f32` range's end).
-pub const MAX_COORDINATE: f32 = 18_446_744_073_709_551_616.0;
-
 /// A triangle in 2D or 3D (`N` = 2 or 3), validated once for uniform sampling by
 /// [`sample_uniform_triangle`].
 ///
@@ -91,7 +89,7 @@ impl<const N: usize> Triangle<N> {
     ///
     /// # Errors
     /// [`crate::Error::InvalidParameter`] when `N` is not 2 or 3, a coordinate is not
-    /// finite or larger than [`MAX_COORDINATE`] in magnitude, the triangle is degenerate
+    /// finite or larger than [`MAX_COORDINATE`] (`2^64`) in magnitude, the triangle is degenerate
     /// (twice its area below `2^-20` of its longest edge squared: collinear to about `f32`
     /// rounding), or its density `1 / area` is not a finite `f32`. The area is computed in
     /// `f64`.
