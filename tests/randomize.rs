@@ -686,6 +686,21 @@ mod properties {
         }
 
         #[test]
+        fn permutations_are_bijections_and_total(n in prop_oneof![1u64..600, Just(FULL), Just(FULL + 1), Just(u64::MAX)],
+                                                 key in any::<u64>(), index in any::<u32>()) {
+            use qmckit::hash::permute;
+            let bound = n.min(FULL);
+            prop_assert!((permute(index, n, key) as u64) < bound);
+            if n < 600 {
+                let mut seen = vec![false; n as usize];
+                for i in 0..n as u32 {
+                    seen[permute(i, n, key) as usize] = true;
+                }
+                prop_assert!(seen.iter().all(|&s| s), "not a bijection of 0..{}", n);
+            }
+        }
+
+        #[test]
         fn lms_caches(seed in any::<u64>(), small in 0usize..64,
                       huge in prop::sample::select(vec![(1usize << 23) + 1, 1 << 40, usize::MAX / 128 + 1, usize::MAX])) {
             let lms = Lms::new(seed);
@@ -708,6 +723,17 @@ mod properties {
             let owen = FastOwen::new(seed);
             let (a, b) = (owen.scramble(sd.sample(x), dim), owen.scramble(sd.sample(x) ^ 1, dim));
             prop_assert_eq!(a ^ b, 1);
+            // Sobol' strided fills at the end of the index range and with any stride.
+            let mut out = [0u32; 5];
+            for stride in [1usize, 2, 4, 5, usize::MAX] {
+                let count = out.len().div_ceil(stride) as u64;
+                let fits = x as u64 + count <= FULL;
+                prop_assert_eq!(sd.fill_strided(x, &mut out, stride).is_ok(), fits);
+                if fits {
+                    prop_assert_eq!(out[0], sd.sample(x));
+                }
+            }
+            prop_assert!(sd.fill_strided(x, &mut out, 0).is_err());
             for digit in [0u32, 1, 2, u32::MAX] {
                 for base in [2u32, 3, 29, u32::MAX] {
                     let y = faure(base, digit % base);
