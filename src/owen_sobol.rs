@@ -96,7 +96,7 @@ impl OwenSobol4 {
     /// 16 KiB of tables into flash.
     ///
     /// # Errors
-    /// [`Error::DimensionOutOfRange`](crate::Error::DimensionOutOfRange) for a dimension past
+    /// [`Error::DimensionOutOfRange`] for a dimension past
     /// [`SOBOL_MAX_DIMS`](crate::SOBOL_MAX_DIMS).
     ///
     /// ```

@@ -220,7 +220,16 @@ mod properties {
 
     fn u32s() -> impl Strategy<Value = u32> {
         prop_oneof![
-            prop::sample::select(vec![0, 1, 2, (1 << 31) - 1, 1 << 31, (1 << 31) + 1, u32::MAX - 1, u32::MAX]),
+            prop::sample::select(vec![
+                0,
+                1,
+                2,
+                (1 << 31) - 1,
+                1 << 31,
+                (1 << 31) + 1,
+                u32::MAX - 1,
+                u32::MAX
+            ]),
             any::<u32>(),
         ]
     }
@@ -247,7 +256,17 @@ mod properties {
 
     fn i64s() -> impl Strategy<Value = i64> {
         prop_oneof![
-            prop::sample::select(vec![i64::MIN, i64::MIN + 1, -(1 << 62), -1, 0, 1, 1 << 62, i64::MAX - 1, i64::MAX]),
+            prop::sample::select(vec![
+                i64::MIN,
+                i64::MIN + 1,
+                -(1 << 62),
+                -1,
+                0,
+                1,
+                1 << 62,
+                i64::MAX - 1,
+                i64::MAX
+            ]),
             any::<i64>(),
             -1000i64..1000,
         ]
@@ -365,4 +384,17 @@ mod properties {
             }
         }
     }
+}
+
+/// The old path `qmckit::fixed_warp` still names the same functions (deprecated).
+#[test]
+#[allow(deprecated)]
+fn the_deprecated_path_still_works() {
+    use qmckit::fixed_warp as old;
+    let u = uq([0x1234_5678, 0x9ABC_DEF0]);
+    assert_eq!(
+        old::sample_uniform_disk_concentric(u),
+        fx::sample_uniform_disk_concentric(u)
+    );
+    assert_eq!(old::UNIFORM_DISK_PDF, fx::UNIFORM_DISK_PDF);
 }

@@ -480,7 +480,9 @@ mod properties {
     use super::*;
     use proptest::prelude::*;
     use qmckit::stratified::STRATIFIED_MAX_DIMS;
-    use qmckit::{HALTON_MAX_DIMS, Independent, Jitter, LatinHypercube, SOBOL_MAX_DIMS, Stratified};
+    use qmckit::{
+        HALTON_MAX_DIMS, Independent, Jitter, LatinHypercube, SOBOL_MAX_DIMS, Stratified,
+    };
 
     const FULL: u64 = 1 << 32;
 
@@ -525,7 +527,17 @@ mod properties {
 
     fn u32s() -> impl Strategy<Value = u32> {
         prop_oneof![
-            prop::sample::select(vec![0, 1, 2, 3, 1 << 16, (1 << 31) - 1, 1 << 31, u32::MAX - 1, u32::MAX]),
+            prop::sample::select(vec![
+                0,
+                1,
+                2,
+                3,
+                1 << 16,
+                (1 << 31) - 1,
+                1 << 31,
+                u32::MAX - 1,
+                u32::MAX
+            ]),
             any::<u32>(),
         ]
     }

@@ -595,16 +595,25 @@ mod properties {
         )
             .prop_map(|(axis, angle, [kx, ky], off, ks)| {
                 // A frame from a rotation of the standard one about `axis` (Rodrigues).
-                let l = (axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]).sqrt().max(1e-9);
+                let l = (axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2])
+                    .sqrt()
+                    .max(1e-9);
                 let k = axis.map(|a| a / l);
                 let rot = |e: [f64; 3]| {
                     let (s, c) = angle.sin_cos();
-                    let kxe = [k[1] * e[2] - k[2] * e[1], k[2] * e[0] - k[0] * e[2], k[0] * e[1] - k[1] * e[0]];
+                    let kxe = [
+                        k[1] * e[2] - k[2] * e[1],
+                        k[2] * e[0] - k[0] * e[2],
+                        k[0] * e[1] - k[1] * e[0],
+                    ];
                     let kd = k[0] * e[0] + k[1] * e[1] + k[2] * e[2];
                     [0, 1, 2].map(|i| e[i] * c + kxe[i] * s + k[i] * kd * (1.0 - c))
                 };
                 let scale = 2f64.powi(ks);
-                let (ex, ey) = (rot([2f64.powi(kx), 0.0, 0.0]), rot([0.0, 2f64.powi(ky), 0.0]));
+                let (ex, ey) = (
+                    rot([2f64.powi(kx), 0.0, 0.0]),
+                    rot([0.0, 2f64.powi(ky), 0.0]),
+                );
                 let corner = off.map(|x| x * scale);
                 let o = [0.0f32; 3];
                 let f = |a: [f64; 3]| a.map(|x| (x * scale) as f32);
@@ -656,7 +665,7 @@ mod properties {
             for x in u {
                 let n = sample_normal(x);
                 prop_assert!(n.is_finite() && n.abs() < 6.5, "normal {x} -> {n}");
-                if x >= 1e-6 && x <= 1.0 - 1e-6 {
+                if (1e-6..=1.0 - 1e-6).contains(&x) {
                     prop_assert!((normal_cdf(n) - x).abs() < 1e-6 * x.max(1e-6).max(1.0 - x) + 1e-7);
                 }
             }
@@ -703,7 +712,7 @@ mod properties {
                 }
                 Err(_) => prop_assert!(
                     !p.iter().flatten().all(|x| x.is_finite() && x.abs() <= 1.8e19)
-                        || !(area > 0.0)
+                        || area.is_nan() || area <= 0.0
                         || area * 2.0 < 1e-6 * p.iter().flatten().map(|x| (*x as f64).abs()).fold(0.0, f64::max).powi(2)
                         || !((1.0 / area) as f32).is_finite(),
                     "{p:?} refused, area {area}"

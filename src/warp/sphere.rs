@@ -139,6 +139,7 @@ pub fn invert_uniform_cone(w: [f32; 3], cos_theta_max: f32) -> [f32; 2] {
 /// # Ok::<(), qmckit::Error>(())
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct UniformCone {
     cos_theta_max: f32,
 }

@@ -116,6 +116,7 @@ fn fraction(x: f64) -> f32 {
 
 /// A rectangle seen from a point, in the rectangle's frame (Ureña et al. 2013, §3).
 #[derive(Clone, Copy, Debug)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 struct RectFrame {
     x: V,
     y: V,
@@ -218,6 +219,7 @@ impl RectFrame {
 /// # Ok::<(), qmckit::Error>(())
 /// ```
 #[derive(Clone, Copy, Debug)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct SphericalRectangle {
     o: V,
     corner: V,
@@ -407,6 +409,7 @@ pub fn spherical_triangle_solid_angle(v: [[f32; 3]; 3], o: [f32; 3]) -> f32 {
 /// # Ok::<(), qmckit::Error>(())
 /// ```
 #[derive(Clone, Copy, Debug)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct SphericalTriangle {
     a: V,
     b: V,
@@ -486,7 +489,10 @@ impl SphericalTriangle {
         let q = ((vv * t - uu * s) * cos(alpha) - vv) / ((vv * s + uu * t) * sin(alpha));
         // 0 / 0 only where the sub-triangle is empty: C' = A.
         let q = if q.is_nan() { 1.0 } else { q.clamp(-1.0, 1.0) };
-        let c1 = add(scale(a, q), scale(self.c_perp, sqrt((1.0 - q * q).max(0.0))));
+        let c1 = add(
+            scale(a, q),
+            scale(self.c_perp, sqrt((1.0 - q * q).max(0.0))),
+        );
         // A point on the arc B C', uniform in z = w . B.
         let z = 1.0 - u[1] as f64 * (1.0 - dot(c1, b));
         let c1_perp = normalize(sub(c1, scale(b, dot(c1, b))));

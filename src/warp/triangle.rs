@@ -79,6 +79,7 @@ pub fn triangle_area<const N: usize>(p: [[f32; N]; 3]) -> f32 {
 /// # Ok::<(), qmckit::Error>(())
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct Triangle<const N: usize> {
     p: [[f32; N]; 3],
     pdf: f32,

@@ -3,8 +3,8 @@
 //! `SphericalRectangle`); what they refuse is a one-line usage error.
 
 use clap::{Args, ValueEnum};
-use qmckit::warp::spherical::{SphericalRectangle, SphericalTriangle};
 use qmckit::warp::sphere::UniformCone;
+use qmckit::warp::spherical::{SphericalRectangle, SphericalTriangle};
 use qmckit::warp::triangle::Triangle;
 use qmckit::warp::{disk, gaussian, sphere, triangle};
 
