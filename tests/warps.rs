@@ -425,6 +425,94 @@ mod spherical_polygons {
         assert!(sample_spherical_triangle([[0.0, 0.0, 1.0]; 3], o, [0.5, 0.5]).is_err());
     }
 
+    /// Each validation rule, at and just past its limit: `InvalidParameter` past it, a
+    /// finite sample on the domain before it.
+    #[test]
+    fn geometry_rules_refuse_exactly_past_their_limits() {
+        use qmckit::Error;
+        use qmckit::warp::MAX_COORDINATE;
+        let invalid =
+            |r: Result<SphericalRectangle, Error>| matches!(r, Err(Error::InvalidParameter { .. }));
+        let (c, ex, ey) = ([-0.5f32, -0.5, 1.0], [1.0f32, 0.0, 0.0], [0.0f32, 1.0, 0.0]);
+        assert!(SphericalRectangle::new([0.0; 3], c, ex, ey).is_ok());
+        // Coordinates: 2^64 is accepted, the next f32 up is not; NaN and inf never.
+        let big = MAX_COORDINATE;
+        assert!(
+            SphericalRectangle::new(
+                [0.0, 0.0, -big],
+                [-big, -big, 0.0],
+                [big, 0.0, 0.0],
+                [0.0, big, 0.0]
+            )
+            .is_ok()
+        );
+        let past = f32::from_bits(big.to_bits() + 1);
+        assert!(invalid(SphericalRectangle::new(
+            [0.0; 3],
+            [-0.5, -0.5, past],
+            ex,
+            ey
+        )));
+        for bad in [f32::NAN, f32::INFINITY, f32::NEG_INFINITY] {
+            assert!(invalid(SphericalRectangle::new([0.0, 0.0, bad], c, ex, ey)));
+            assert!(invalid(SphericalRectangle::new(
+                [0.0; 3],
+                c,
+                [bad, 0.0, 0.0],
+                ey
+            )));
+        }
+        // Perpendicular within 2^-16: cos = 2^-17 accepted, 2^-15 refused.
+        let tilt = |cos: f32| [cos, (1.0 - cos * cos).sqrt(), 0.0];
+        assert!(SphericalRectangle::new([0.0; 3], c, ex, tilt(1.0 / 131_072.0)).is_ok());
+        assert!(invalid(SphericalRectangle::new(
+            [0.0; 3],
+            c,
+            ex,
+            tilt(1.0 / 32_768.0)
+        )));
+        // The viewpoint's height over the plane: 2^-19 of the distance accepted, 2^-21 not.
+        let r = SphericalRectangle::new([0.0, 0.0, 1.0 - 1.0 / 524_288.0], [0.0, 0.0, 1.0], ex, ey)
+            .unwrap();
+        let (p, pdf) = r.sample([0.3, 0.7]);
+        assert!(p[2] == 1.0 && pdf.is_finite());
+        assert!(invalid(SphericalRectangle::new(
+            [0.0, 0.0, 1.0 - 1.0 / 2_097_152.0],
+            [0.0, 0.0, 1.0],
+            ex,
+            ey
+        )));
+        // Solid angle 2^-24 sr: a unit square at distance d subtends about 1 / d^2.
+        assert!(SphericalRectangle::new([0.0, 0.0, -2000.0], c, ex, ey).is_ok());
+        assert!(invalid(SphericalRectangle::new(
+            [0.0, 0.0, -8000.0],
+            c,
+            ex,
+            ey
+        )));
+        // Triangles: a vertex at the viewpoint, collinear vertices, a viewpoint in the plane.
+        let tri = [[0.0f32, 0.0, 1.0], [1.0, 0.0, 1.0], [0.0, 1.0, 1.0]];
+        assert!(SphericalTriangle::new(tri, [0.0; 3]).is_ok());
+        for (v, o) in [
+            (tri, [0.0, 0.0, 1.0]),
+            (
+                [[0.0, 0.0, 1.0], [1.0, 0.0, 1.0], [3.0, 0.0, 1.0]],
+                [0.0; 3],
+            ),
+            (tri, [0.3, 0.3, 1.0]),
+            (tri, [0.0, 0.0, -1e5]),
+            ([[f32::NAN, 0.0, 1.0], tri[1], tri[2]], [0.0; 3]),
+        ] {
+            assert!(
+                matches!(
+                    SphericalTriangle::new(v, o),
+                    Err(Error::InvalidParameter { .. })
+                ),
+                "{v:?} {o:?}"
+            );
+        }
+    }
+
     /// Irradiance at the origin (normal +z) from a unit-radiance square light of side 1 at
     /// height 1, by solid-angle sampling of the spherical rectangle, n = 16. Exact value by
     /// Lambert's polygon formula: E = 1/2 sum_i angle(v_i, v_i+1) (n . unit(v_i x v_i+1)).
