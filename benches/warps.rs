@@ -15,7 +15,8 @@
 //!   quantile of each coordinate. The spherical polygon warps go through the free functions,
 //!   which validate and build their frame every call, and their geometry goes through
 //!   `black_box` per point, as when the shading point moves, so the set-up cannot be hoisted
-//!   out of the loop.
+//!   out of the loop; the `_prepared` entries sample a `SphericalTriangle` /
+//!   `SphericalRectangle` built once (a fixed light seen from a fixed point).
 //! * `warp_fixed`: the same ids for the five fixed-point warps and their inverses (needs
 //!   `--features fixed`; without it the group is skipped with a note).
 //! * `disk_peers`: the polar and concentric maps on the same inputs; a "pbrt-style" textbook
@@ -154,6 +155,16 @@ fn warp_f32(c: &mut Criterion) {
             x,
         )
         .ok()
+    });
+    // The prepared values: validation and frame once, outside the loop.
+    let tri = spherical::SphericalTriangle::new(TRIANGLE, [0.0; 3]).expect("valid triangle");
+    bench_map(&mut group, "sample/spherical_triangle_prepared", &u, |x| {
+        black_box(&tri).sample(x)
+    });
+    let rect = spherical::SphericalRectangle::new([0.0; 3], RECT_CORNER, RECT_EX, RECT_EY)
+        .expect("valid rectangle");
+    bench_map(&mut group, "sample/spherical_rectangle_prepared", &u, |x| {
+        black_box(&rect).sample(x)
     });
     bench_map(
         &mut group,

@@ -836,6 +836,9 @@ mod properties {
             };
             let (p, pdf) = r.sample(u);
             prop_assert!(p.iter().all(|x| x.is_finite()) && pdf.is_finite());
+            for edge in [[1.0, 1.0], [0.0, 1.0], [1.0, 0.0]] {
+                prop_assert!(r.sample(edge).0.iter().all(|x| x.is_finite()));
+            }
             // On the plane and within the rectangle: p - corner = s ex + t ey + n h, h ~ 0.
             let (ex, ey, q) = (v(ex), v(ey), sub(v(p), v(corner)));
             let (lx, ly) = (len(ex), len(ey));
@@ -874,6 +877,9 @@ mod properties {
             let (w, pdf) = t.sample(u);
             prop_assert!(w.iter().all(|x| x.is_finite()) && pdf.is_finite());
             prop_assert!((norm(w) - 1.0).abs() < 1e-6);
+            for edge in [[1.0, 1.0], [0.0, 1.0], [1.0, 0.0]] {
+                prop_assert!((norm(t.sample(edge).0) - 1.0).abs() < 1e-6);
+            }
             // Inside the cone of the three vertex directions: same side of every edge plane.
             let dirs = tri.map(|p| sub(v(p), v(o)));
             let cross = |a: [f64; 3], b: [f64; 3]| [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
