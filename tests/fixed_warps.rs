@@ -312,18 +312,27 @@ mod properties {
                 prop_assert_eq!(t, 0.0);
             } else {
                 let want = turn(y as f64, x as f64);
-                prop_assert!(turn_gap(t, want) < 1e-8, "atan2({y}, {x}) = {t} turns, want {want}");
+                prop_assert!(
+                    turn_gap(t, want) < 1e-8,
+                    "atan2({y}, {x}) = {t} turns, want {want}"
+                );
             }
         }
 
         #[test]
         fn inverses_take_any_q30(x in q30s(), y in q30s(), z in q30s()) {
-            let (p, fz) = ([I2F30::from_bits(x), I2F30::from_bits(y)], I2F30::from_bits(z));
+            let (p, fz) = (
+                [I2F30::from_bits(x), I2F30::from_bits(y)],
+                I2F30::from_bits(z),
+            );
             let (xf, yf, zf) = (f(p[0]), f(p[1]), f(fz));
             let r2 = xf * xf + yf * yf;
             // Polar: u = (angle turn, r^2).
             let polar = fx::invert_uniform_disk_polar(p);
-            prop_assert!((frac(polar[1]) - saturate(r2)).abs() <= 1.0 / TWO32 + 1e-12, "polar {p:?}: {polar:?}");
+            prop_assert!(
+                (frac(polar[1]) - saturate(r2)).abs() <= 1.0 / TWO32 + 1e-12,
+                "polar {p:?}: {polar:?}"
+            );
             if r2 > 0.0 {
                 prop_assert!(turn_gap(frac(polar[0]), turn(yf, xf)) < 1e-8);
             }
@@ -350,8 +359,14 @@ mod properties {
             // the unit circle).
             let near_edge = (phi * 4.0 / pi - (phi * 4.0 / pi).round()).abs() < 1e-7;
             if !near_edge {
-                for (g, w) in [frac(c[0]), frac(c[1])].iter().zip([saturate((a + 1.0) / 2.0), saturate((b + 1.0) / 2.0)]) {
-                    prop_assert!((g - w).abs() < 1e-7 * r.max(1.0), "concentric {p:?}: {c:?} vs {a} {b}");
+                for (g, w) in [frac(c[0]), frac(c[1])]
+                    .iter()
+                    .zip([saturate((a + 1.0) / 2.0), saturate((b + 1.0) / 2.0)])
+                {
+                    prop_assert!(
+                        (g - w).abs() < 1e-7 * r.max(1.0),
+                        "concentric {p:?}: {c:?} vs {a} {b}"
+                    );
                 }
             }
             // Hemispheres: u0 = z saturated, u1 the turn.
@@ -361,9 +376,19 @@ mod properties {
             prop_assert_eq!(cos, c);
             // Triangle: u = (2 b0, b0 + b1) or (b0 + b1, 2 b1), saturated.
             let t = fx::invert_uniform_triangle([p[0], p[1], fz]);
-            let (w0, w1) = if xf < yf { (2.0 * xf, xf + yf) } else { (xf + yf, 2.0 * yf) };
-            prop_assert!((frac(t[0]) - saturate(w0)).abs() <= 4.0 / TWO32, "triangle {p:?}: {t:?}");
-            prop_assert!((frac(t[1]) - saturate(w1)).abs() <= 4.0 / TWO32, "triangle {p:?}: {t:?}");
+            let (w0, w1) = if xf < yf {
+                (2.0 * xf, xf + yf)
+            } else {
+                (xf + yf, 2.0 * yf)
+            };
+            prop_assert!(
+                (frac(t[0]) - saturate(w0)).abs() <= 4.0 / TWO32,
+                "triangle {p:?}: {t:?}"
+            );
+            prop_assert!(
+                (frac(t[1]) - saturate(w1)).abs() <= 4.0 / TWO32,
+                "triangle {p:?}: {t:?}"
+            );
             // Density: cos / pi, 0 below the horizon.
             let pdf = f(fx::cosine_hemisphere_pdf(fz));
             prop_assert!((pdf - zf.max(0.0) / pi).abs() < 4e-9);
@@ -373,11 +398,24 @@ mod properties {
         fn inverses_invert_the_samples(u in [u32s(), u32s()]) {
             let back = |v: [U0F32; 2]| [v[0].to_bits(), v[1].to_bits()];
             let gap = |a: u32, b: u32| (a.wrapping_sub(b) as i32).unsigned_abs() as f64 / TWO32;
-            let tri = back(fx::invert_uniform_triangle(fx::sample_uniform_triangle(uq(u))));
-            prop_assert!(gap(tri[0], u[0]) < 1e-8 && gap(tri[1], u[1]) < 1e-8, "{u:?} -> {tri:?}");
-            let c = back(fx::invert_uniform_disk_concentric(fx::sample_uniform_disk_concentric(uq(u))));
-            prop_assert!((c[0] as f64 - u[0] as f64).abs() / TWO32 < 1e-6 && (c[1] as f64 - u[1] as f64).abs() / TWO32 < 1e-6, "{u:?} -> {c:?}");
-            let p = back(fx::invert_uniform_disk_polar(fx::sample_uniform_disk_polar(uq(u))));
+            let tri = back(fx::invert_uniform_triangle(fx::sample_uniform_triangle(
+                uq(u),
+            )));
+            prop_assert!(
+                gap(tri[0], u[0]) < 1e-8 && gap(tri[1], u[1]) < 1e-8,
+                "{u:?} -> {tri:?}"
+            );
+            let c = back(fx::invert_uniform_disk_concentric(
+                fx::sample_uniform_disk_concentric(uq(u)),
+            ));
+            prop_assert!(
+                (c[0] as f64 - u[0] as f64).abs() / TWO32 < 1e-6
+                    && (c[1] as f64 - u[1] as f64).abs() / TWO32 < 1e-6,
+                "{u:?} -> {c:?}"
+            );
+            let p = back(fx::invert_uniform_disk_polar(
+                fx::sample_uniform_disk_polar(uq(u)),
+            ));
             prop_assert!((p[1] as f64 - u[1] as f64).abs() / TWO32 < 1e-6);
             if u[1] as f64 / TWO32 > 1e-6 {
                 prop_assert!(gap(p[0], u[0]) < 1e-6, "{u:?} -> {p:?}");

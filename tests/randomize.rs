@@ -579,7 +579,10 @@ mod properties {
         #[test]
         fn halton_and_sobol(d in dims(SOBOL_MAX_DIMS.max(HALTON_MAX_DIMS)), seed in any::<u64>()) {
             match Halton::new(d) {
-                Ok(h) => { prop_assert!((1..=HALTON_MAX_DIMS).contains(&d)); probe(&h)?; }
+                Ok(h) => {
+                    prop_assert!((1..=HALTON_MAX_DIMS).contains(&d));
+                    probe(&h)?;
+                }
                 Err(_) => prop_assert!(d == 0 || d > HALTON_MAX_DIMS),
             }
             match Halton::with_scramble(d, DigitScramble::Owen(seed)) {
@@ -592,7 +595,10 @@ mod properties {
                     probe(&s)?;
                     probe(&Scrambled::new(s, FastOwen::new(seed)))?;
                     probe(&Scrambled::new(s, Owen::new(seed)))?;
-                    probe(&Scrambled::new(s, (Lms::new(seed), DigitalShift::new(seed))))?;
+                    probe(&Scrambled::new(
+                        s,
+                        (Lms::new(seed), DigitalShift::new(seed)),
+                    ))?;
                     probe(&Scrambled::new(s, CranleyPatterson::new(seed)))?;
                     for group in [0, 1, usize::MAX] {
                         probe(&Shuffled::new(s, seed, group).unwrap())?;
@@ -616,15 +622,24 @@ mod properties {
                 Err(_) => prop_assert!(!(n_ok && d >= 1)),
             }
             match Hammersley::new(n, d) {
-                Ok(h) => { prop_assert!(n_ok && (1..=HALTON_MAX_DIMS + 1).contains(&d)); probe(&h)?; }
+                Ok(h) => {
+                    prop_assert!(n_ok && (1..=HALTON_MAX_DIMS + 1).contains(&d));
+                    probe(&h)?;
+                }
                 Err(_) => prop_assert!(!(n_ok && (1..=HALTON_MAX_DIMS + 1).contains(&d))),
             }
             match Independent::new(d, seed) {
-                Ok(i) => { prop_assert!(d >= 1); probe(&i)?; }
+                Ok(i) => {
+                    prop_assert!(d >= 1);
+                    probe(&i)?;
+                }
                 Err(_) => prop_assert_eq!(d, 0),
             }
             match LarcherPillichshammer::with_points(n) {
-                Ok(lp) => { prop_assert!(n_ok && n.is_power_of_two()); probe(&lp)?; }
+                Ok(lp) => {
+                    prop_assert!(n_ok && n.is_power_of_two());
+                    probe(&lp)?;
+                }
                 Err(_) => prop_assert!(!(n_ok && n.is_power_of_two())),
             }
             // A shuffle needs a power-of-two length.
@@ -634,14 +649,27 @@ mod properties {
         }
 
         #[test]
-        fn stratified(strata in prop_oneof![
-                          prop::collection::vec(u32s(), 0..STRATIFIED_MAX_DIMS + 3),
-                          // Powers of two: products that land on 2^32 exactly, and just past.
-                          prop::collection::vec(prop::sample::select(vec![1u32, 2, 4, 1 << 8, 1 << 16]), 1..STRATIFIED_MAX_DIMS + 2),
-                          prop::collection::vec(prop::sample::select(vec![1u32, 2, 3, 65_535, 65_536, 65_537]), 1..4),
-                      ],
-                      seed in any::<u64>(), center in any::<bool>()) {
-            let jitter = if center { Jitter::Center } else { Jitter::Random(seed) };
+        fn stratified(
+            strata in prop_oneof![
+                prop::collection::vec(u32s(), 0..STRATIFIED_MAX_DIMS + 3),
+                // Powers of two: products that land on 2^32 exactly, and just past.
+                prop::collection::vec(
+                    prop::sample::select(vec![1u32, 2, 4, 1 << 8, 1 << 16]),
+                    1..STRATIFIED_MAX_DIMS + 2,
+                ),
+                prop::collection::vec(
+                    prop::sample::select(vec![1u32, 2, 3, 65_535, 65_536, 65_537]),
+                    1..4,
+                ),
+            ],
+            seed in any::<u64>(),
+            center in any::<bool>(),
+        ) {
+            let jitter = if center {
+                Jitter::Center
+            } else {
+                Jitter::Random(seed)
+            };
             let product = strata.iter().try_fold(1u128, |p, &s| {
                 let p = p * s as u128;
                 (p <= FULL as u128).then_some(p)
@@ -662,7 +690,9 @@ mod properties {
             let d = strata.len();
             let ok = (1..=STRATIFIED_MAX_DIMS).contains(&d)
                 && per > 0
-                && (per as u128).checked_pow(d as u32).is_some_and(|p| p <= FULL as u128);
+                && (per as u128)
+                    .checked_pow(d as u32)
+                    .is_some_and(|p| p <= FULL as u128);
             prop_assert_eq!(Stratified::uniform(per, d, jitter).is_ok(), ok);
             prop_assert!(Stratified::uniform(per, usize::MAX, jitter).is_err());
         }
@@ -698,8 +728,11 @@ mod properties {
         }
 
         #[test]
-        fn permutations_are_bijections_and_total(n in prop_oneof![1u64..600, Just(FULL), Just(FULL + 1), Just(u64::MAX)],
-                                                 key in any::<u64>(), index in any::<u32>()) {
+        fn permutations_are_bijections_and_total(
+            n in prop_oneof![1u64..600, Just(FULL), Just(FULL + 1), Just(u64::MAX)],
+            key in any::<u64>(),
+            index in any::<u32>(),
+        ) {
             use qmckit::hash::permute;
             let bound = n.min(FULL);
             prop_assert!((permute(index, n, key) as u64) < bound);
@@ -713,8 +746,13 @@ mod properties {
         }
 
         #[test]
-        fn lms_caches(seed in any::<u64>(), small in 0usize..64,
-                      huge in prop::sample::select(vec![(1usize << 23) + 1, 1 << 40, usize::MAX / 128 + 1, usize::MAX])) {
+        fn lms_caches(
+            seed in any::<u64>(),
+            small in 0usize..64,
+            huge in prop::sample::select(
+                vec![(1usize << 23) + 1, 1 << 40, usize::MAX / 128 + 1, usize::MAX],
+            ),
+        ) {
             let lms = Lms::new(seed);
             let cache = lms.cached(small).unwrap();
             for dim in [0, small, small + 1, usize::MAX] {
@@ -733,7 +771,10 @@ mod properties {
             // two values differing only in the last bit still differ only in the last bit.
             let sd = SobolDimension::new(dim % SOBOL_MAX_DIMS).unwrap();
             let owen = FastOwen::new(seed);
-            let (a, b) = (owen.scramble(sd.sample(x), dim), owen.scramble(sd.sample(x) ^ 1, dim));
+            let (a, b) = (
+                owen.scramble(sd.sample(x), dim),
+                owen.scramble(sd.sample(x) ^ 1, dim),
+            );
             prop_assert_eq!(a ^ b, 1);
             // Sobol' strided fills at the end of the index range and with any stride.
             let mut out = [0u32; 5];

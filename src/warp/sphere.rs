@@ -154,7 +154,8 @@ impl UniformCone {
             Ok(UniformCone { cos_theta_max })
         } else if cos_theta_max == 1.0 {
             Err(crate::Error::InvalidParameter {
-                what: "the cone is degenerate: cos(theta_max) is 1 in f32 (a half-angle below about 2.5e-4 rad, 0.014 degrees)",
+                what: "the cone is degenerate: cos(theta_max) rounds to 1 in f32 \
+                       (a half-angle below about 2.5e-4 rad, 0.014 degrees)",
             })
         } else {
             Err(crate::Error::InvalidParameter {

@@ -214,8 +214,9 @@ impl RectFrame {
 /// let u = light.invert(p);
 /// assert!((u[0] - 0.5).abs() < 1e-6 && (u[1] - 0.5).abs() < 1e-6);
 /// // Edges that are not perpendicular, a viewpoint in the plane: refused.
-/// assert!(SphericalRectangle::new([0.0; 3], [0.0; 3], [1.0, 0.0, 0.0], [1.0, 1.0, 0.0]).is_err());
-/// assert!(SphericalRectangle::new([2.0, 0.0, 0.0], [0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]).is_err());
+/// let (ex, ey) = ([1.0, 0.0, 0.0], [0.0, 1.0, 0.0]);
+/// assert!(SphericalRectangle::new([0.0, 0.0, 1.0], [0.0; 3], ex, [1.0, 1.0, 0.0]).is_err());
+/// assert!(SphericalRectangle::new([2.0, 0.0, 0.0], [0.0; 3], ex, ey).is_err());
 /// # Ok::<(), qmckit::Error>(())
 /// ```
 #[derive(Clone, Copy, Debug)]
@@ -398,14 +399,16 @@ pub fn spherical_triangle_solid_angle(v: [[f32; 3]; 3], o: [f32; 3]) -> f32 {
 ///
 /// ```
 /// use qmckit::warp::spherical::SphericalTriangle;
-/// let tri = SphericalTriangle::new([[0.0, 0.0, 1.0], [1.0, 0.0, 1.0], [0.0, 1.0, 1.0]], [0.0; 3])?;
+/// let v = [[0.0, 0.0, 1.0], [1.0, 0.0, 1.0], [0.0, 1.0, 1.0]];
+/// let tri = SphericalTriangle::new(v, [0.0; 3])?;
 /// let (w, pdf) = tri.sample([0.3, 0.6]);
 /// assert!(pdf > 0.0 && (w[0] * w[0] + w[1] * w[1] + w[2] * w[2] - 1.0).abs() < 1e-6);
 /// let u = tri.invert(w);
 /// assert!((u[0] - 0.3).abs() < 1e-4 && (u[1] - 0.6).abs() < 1e-4);
 /// // Collinear vertices, a viewpoint in the triangle's plane: refused.
-/// assert!(SphericalTriangle::new([[0.0, 0.0, 1.0], [1.0, 0.0, 1.0], [2.0, 0.0, 1.0]], [0.0; 3]).is_err());
-/// assert!(SphericalTriangle::new([[0.0, 0.0, 1.0], [1.0, 0.0, 1.0], [0.0, 1.0, 1.0]], [5.0, 5.0, 1.0]).is_err());
+/// let line = [[0.0, 0.0, 1.0], [1.0, 0.0, 1.0], [2.0, 0.0, 1.0]];
+/// assert!(SphericalTriangle::new(line, [0.0; 3]).is_err());
+/// assert!(SphericalTriangle::new(v, [5.0, 5.0, 1.0]).is_err());
 /// # Ok::<(), qmckit::Error>(())
 /// ```
 #[derive(Clone, Copy, Debug)]
