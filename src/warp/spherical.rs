@@ -16,7 +16,9 @@
 //!   polygon is a finite `f32`;
 //! * a rectangle's edges of length at least [`RELATIVE_TOLERANCE`]` R` (`2^-20 R`) and
 //!   perpendicular within [`PERPENDICULAR_TOLERANCE`] (`|ex . ey| <= 2^-16 |ex| |ey|`, about
-//!   the rounding of a rotated frame to `f32`); a triangle whose doubled area is at least
+//!   the rounding of a rotated frame to `f32`; within it the map treats the edges as
+//!   perpendicular, so hit points stay on the parallelogram `corner + s ex + t ey` and the
+//!   density is exact to about `2^-16` relative); a triangle whose doubled area is at least
 //!   `2^-20` of its longest edge squared;
 //! * the viewpoint off the polygon's plane by at least `2^-20 R`;
 //! * a solid angle of at least [`MIN_SOLID_ANGLE`] (`2^-24` sr): both maps compute it as a
