@@ -321,7 +321,7 @@ pub fn build(args: &Spec) -> Result<Box<dyn Sampler>, Failure> {
             FastOwen::with_hash(seed, OwenHash::LaineKarras),
         )),
         K::Lms => {
-            let lms = Lms::new(seed).cached(sampler.dims());
+            let lms = Lms::new(seed).cached(sampler.dims())?;
             Box::new(Scrambled::new(sampler, (lms, DigitalShift::new(seed))))
         }
         K::ShuffleOwen => Box::new(Shuffled::new(
@@ -435,7 +435,9 @@ pub fn run(args: &PointsArgs) -> Result<(), Failure> {
     if args.n == 0 {
         return Err(Failure::usage("-n must be at least 1"));
     }
-    let sampler = build(&args.spec()?)?;
+    let spec = args.spec()?;
+    args.warp.check_options()?;
+    let sampler = build(&spec)?;
     let dims = sampler.dims();
     let start = args.start.unwrap_or(0);
     let end = qmckit::size::end(start, args.n, sampler.len()).map_err(|e| match e {
