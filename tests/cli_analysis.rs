@@ -152,7 +152,16 @@ fn max_seconds_sets_the_star_budget() {
         &small,
         "(at most 1549 within --max-seconds 0.01)",
     );
-    for bad in ["0", "-1", "nan", "inf"] {
+    // 'inf' is no limit; zero, negatives and NaN are refused.
+    assert_eq!(
+        values(&stdout(
+            &["discrepancy", "--metric", "cd", "--max-seconds=inf"],
+            "0.5\n"
+        ))
+        .len(),
+        1
+    );
+    for bad in ["0", "-1", "nan"] {
         assert_usage_error(
             &[
                 "discrepancy",
@@ -312,7 +321,11 @@ fn tvalue_refusals() {
         "",
         "too many",
     );
-    assert_usage_error(&["tvalue", "halton", "-m", "4"], "", "base-2");
+    assert_usage_error(
+        &["tvalue", "halton", "-m", "4"],
+        "",
+        "possible values: sobol, lp, hammersley, vdc",
+    );
     assert_usage_error(&["tvalue", "lp", "-m", "4", "-d", "3"], "", "-d must be 2");
     assert_usage_error(&["tvalue", "sobol", "-m", "4", "-d", "0"], "", "-d");
     assert_usage_error(

@@ -45,7 +45,7 @@ pub enum SamplerName {
     Stratified,
     /// Latin hypercube: one point in each of the n slabs of every axis.
     Latin,
-    /// Van der Corput sequence, 1D (base 2 unless `points --base` says otherwise).
+    /// Van der Corput sequence, 1D (base 2; other bases in `points`).
     Vdc,
     /// Halton sequence: radical inverses in the first d primes.
     Halton,
