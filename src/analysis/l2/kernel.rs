@@ -213,8 +213,8 @@ where
 /// underflows as long as every factor is zero or of magnitude at least `2^-127` (true for
 /// every measure of this module except the unanchored kernel, whose factor
 /// `min(x, y) min(1 - x, 1 - y)` is smaller where a coordinate is below about `2^-74`).
-/// The product carries the same roundings as [`block_products`]' (one per
-/// multiplication; the renormalizations are exact). With `e` the largest exponent of a
+/// The product carries as many roundings as [`block_products`]' (one per
+/// multiplication, in a different order; the renormalizations are exact). With `e` the largest exponent of a
 /// diagonal product, every result is at most about 2: a product kernel that is positive
 /// definite in each coordinate, as all eight are, has `|K(x, y)|^2 <= K(x, x) K(y, y)`.
 /// Cost: [`block_products`]' plus about 8 integer operations per chunk and lane.
@@ -234,10 +234,25 @@ where
     let mut m = [1.0f64; LANES];
     let mut ex = [0i64; LANES];
     for (ca, cb) in a.chunks(CHUNK).zip(b.chunks(CHUNK)) {
-        for (&ak, bk) in ca.iter().zip(cb) {
-            for (x, f) in m.iter_mut().zip(factors(ak, bk, k1)) {
-                *x *= f;
+        // Two chains of multiplications (even and odd coordinates), as in
+        // `block_products`, joined into the running product once per chunk.
+        let (mut even, mut odd) = ([1.0f64; LANES], [1.0f64; LANES]);
+        let pairs = ca.chunks_exact(2).zip(cb.chunks_exact(2));
+        for (a2, b2) in pairs {
+            let (fe, fo) = (factors(a2[0], &b2[0], k1), factors(a2[1], &b2[1], k1));
+            for ((e, o), (x, y)) in even.iter_mut().zip(&mut odd).zip(fe.into_iter().zip(fo)) {
+                *e *= x;
+                *o *= y;
             }
+        }
+        if ca.len() % 2 == 1 {
+            let last = ca.len() - 1;
+            for (e, x) in even.iter_mut().zip(factors(ca[last], &cb[last], k1)) {
+                *e *= x;
+            }
+        }
+        for ((x, e), o) in m.iter_mut().zip(even).zip(odd) {
+            *x *= e * o;
         }
         for (x, k) in m.iter_mut().zip(&mut ex) {
             let bits = x.to_bits();
@@ -554,7 +569,7 @@ impl<'a> Ticker<'a> {
     fn tick(&self) {
         let done = self.done.fetch_add(1, Ordering::Relaxed) + 1;
         let step = self.tasks.div_ceil(100);
-        if done % step == 0 || done == self.tasks {
+        if done.is_multiple_of(step) || done == self.tasks {
             let rows = (done as u128 * self.rows as u128 / self.tasks as u128) as usize;
             (self.progress)(rows, self.rows);
         }

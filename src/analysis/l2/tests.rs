@@ -195,3 +195,73 @@ fn names_round_trip() {
         );
     }
 }
+
+/// Where both paths can run (`d <= FAST_D`), the wide path (tracked exponents, products
+/// in chunks of eight coordinates) gives the plain path's sums up to the rounding of the
+/// products: the centered, mixture and unanchored kernels (two features), the diaphony's
+/// (negative factors), every `n mod LANES`, odd and even `d`, chunk remainders.
+#[test]
+fn wide_path_equals_plain_path_where_both_run() {
+    use super::arith::Wide;
+    use super::sums::{combine, combine_wide, kernel_sums, wide_kernel_sums};
+    const TWO_PI2: f64 = 2.0 * core::f64::consts::PI * core::f64::consts::PI;
+    let rel = |a: f64, b: f64| if a == b { 0.0 } else { (a - b).abs() / b.abs() };
+    for (n, d) in [
+        (1, 3),
+        (9, 1),
+        (13, 2),
+        (30, 8),
+        (21, 17),
+        (40, 100),
+        (17, 301),
+    ] {
+        let data = golden_ratio_points(n * d);
+        let p = Points::new(&data, d).unwrap();
+        let cd_g1 = |x: f64| 1.0 + 0.5 * (x - 0.5).abs() - 0.5 * (x - 0.5) * (x - 0.5);
+        let cd_feat = |x: f64| [0.5 * x, 0.5 + 0.5 * (x - 0.5).abs()];
+        let cd_pair = |a: [f64; 2], b: [f64; 2]| a[1] + b[1] - (a[0] - b[0]).abs();
+        let ul2_pair = |a: [f64; 2], b: [f64; 2]| min2(a[0], b[0]) * min2(a[1], b[1]);
+        let dia_pair = |a: [f64; 1], b: [f64; 1]| {
+            let t = (a[0] - b[0]).abs();
+            TWO_PI2.mul_add((-t).mul_add(1.0 - t, 1.0 / 6.0), 1.0)
+        };
+        for build in [Build::Portable, Build::Avx512] {
+            let plain = kernel_sums(p, cd_g1, cd_feat, cd_pair, build, Loop::Rows, &mut quiet(n));
+            let wide = wide_kernel_sums(p, cd_g1, cd_feat, cd_pair, build, &mut quiet(n));
+            // The sums alone (c = 0): -2 s1 / n + s2 / n^2, no cancellation of size.
+            let c0 = super::arith::Dd { hi: 0.0, lo: 0.0 };
+            let a = combine(c0, 2.0, 0.0, &plain, n);
+            let b = combine(c0, 0.0, 1.0, &plain, n);
+            let wa = combine_wide(Wide::ZERO, Wide::TWO, Wide::ZERO, &wide, n);
+            let wb = combine_wide(Wide::ZERO, Wide::ZERO, Wide::ONE, &wide, n);
+            assert!(
+                rel(wa.to_f64("s1").unwrap(), a) <= 1e-13,
+                "cd s1 n={n} d={d}"
+            );
+            assert!(
+                rel(wb.to_f64("s2").unwrap(), b) <= 1e-13,
+                "cd s2 n={n} d={d}"
+            );
+            let g = |x: f64| x * (1.0 - x);
+            let f = |x: f64| [x, 1.0 - x];
+            let plain = kernel_sums(p, g, f, ul2_pair, build, Loop::Rows, &mut quiet(n));
+            let wide = wide_kernel_sums(p, g, f, ul2_pair, build, &mut quiet(n));
+            let b = combine(c0, 0.0, 1.0, &plain, n);
+            let wb = combine_wide(Wide::ZERO, Wide::ZERO, Wide::ONE, &wide, n);
+            assert!(rel(wb.to_f64("s2").unwrap(), b) <= 1e-13, "ul2 n={n} d={d}");
+            let (g, f) = (|_: f64| 0.0, |x: f64| [x]);
+            let plain = kernel_sums(p, g, f, dia_pair, build, Loop::Rows, &mut quiet(n));
+            let wide = wide_kernel_sums(p, g, f, dia_pair, build, &mut quiet(n));
+            let b = combine(c0, 0.0, 1.0, &plain, n);
+            let wb = combine_wide(Wide::ZERO, Wide::ZERO, Wide::ONE, &wide, n);
+            assert!(
+                rel(wb.to_f64("s2").unwrap(), b) <= 1e-13,
+                "diaphony n={n} d={d}"
+            );
+        }
+    }
+}
+
+fn min2(a: f64, b: f64) -> f64 {
+    a.min(b)
+}
