@@ -504,3 +504,116 @@ fn metric_list_dispatches_to_the_functions() {
         assert!(v.is_finite() && v > 0.0, "{}: {v}", m.name());
     }
 }
+
+// ---------------------------------------------------------------------------------------
+// High dimension: an extended-precision reference (tests/golden/gen_l2_high_d.py, mpmath).
+// ---------------------------------------------------------------------------------------
+
+/// The points of a high-dimensional golden case: SplitMix64 from `seed`, the top 32 bits of
+/// each output over 2^32, `u`, row-major; for `spread = 16`, `15/32 + u / 16` (the script's
+/// generator; every value exact).
+fn splitmix_points(len: usize, seed: u64, spread: u32) -> Vec<f64> {
+    let mut s = seed;
+    (0..len)
+        .map(|_| {
+            s = s.wrapping_add(0x9E37_79B9_7F4A_7C15);
+            let mut z = s;
+            z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+            z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+            z ^= z >> 31;
+            let u = (z >> 32) as f64 / 4_294_967_296.0;
+            if spread == 16 {
+                15.0 / 32.0 + u / 16.0
+            } else {
+                u
+            }
+        })
+        .collect()
+}
+
+/// Every measure in 600 to 4000 dimensions against the mpmath reference: within 1e-11
+/// relative where the reference is a normal `f64`, `NotRepresentable` exactly where it is
+/// not. These dimensions are where plain `f64` products of `d` factors overflow or
+/// underflow: before the wide path the 1000- and 2000-dimensional cases gave 0 for the
+/// symmetric, unanchored and generalized L2 discrepancies and the diaphony (600 dimensions
+/// too for the unanchored one and the diaphony), NaN for the wrap-around and mixture
+/// discrepancies at 2000 and for the centered one at 4000 (which the last case, points near
+/// the center, keeps representable).
+#[test]
+fn high_dimensions_match_extended_precision_reference() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/golden/l2_high_d.txt");
+    let text = std::fs::read_to_string(path).unwrap();
+    let mut cases = 0;
+    let (mut values, mut refused) = (0, 0);
+    let mut data = Vec::new();
+    let mut d = 0;
+    let mut failures = Vec::new();
+    let mut worst = 0.0f64;
+    for line in text.lines().filter(|l| !l.starts_with('#')) {
+        let f: Vec<&str> = line.split(' ').collect();
+        if f[0] == "case" {
+            d = f[1].parse().unwrap();
+            let n: usize = f[2].parse().unwrap();
+            data = splitmix_points(n * d, f[3].parse().unwrap(), f[4].parse().unwrap());
+            cases += 1;
+            continue;
+        }
+        let p = Points::new(&data, d).unwrap();
+        let m = *L2Metric::ALL.iter().find(|m| m.name() == f[0]).unwrap();
+        let got = m.eval(p);
+        if f[1] == "not-representable" {
+            refused += 1;
+            if !matches!(got, Err(qmckit::Error::NotRepresentable { .. })) {
+                failures.push(format!("{} d={d}: {got:?}, want NotRepresentable", f[0]));
+            }
+        } else {
+            values += 1;
+            let want: f64 = f[1].parse().unwrap();
+            if let Ok(v) = got {
+                worst = worst.max(rel(v, want));
+            }
+            match got {
+                Ok(v) if rel(v, want) <= 1e-11 => {}
+                other => failures.push(format!("{} d={d}: {other:?}, want {want:e}", f[0])),
+            }
+        }
+    }
+    eprintln!("largest relative difference from the reference: {worst:e}");
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    assert_eq!(cases, 5);
+    assert!(
+        values >= 16 && refused >= 8,
+        "{values} values, {refused} refusals"
+    );
+}
+
+#[test]
+fn budgets_refuse_before_working_and_progress_ends_at_n() {
+    use qmckit::analysis::budget::{Budget, no_progress};
+    use std::sync::Mutex;
+    let pts = uniform(3 * 500, 21);
+    let p = Points::new(&pts, 3).unwrap();
+    let tiny = Budget::seconds(1e-9).unwrap();
+    for m in L2Metric::ALL {
+        assert!(
+            matches!(
+                m.eval_within(p, &tiny, &no_progress),
+                Err(qmckit::Error::OverBudget { .. })
+            ),
+            "{}",
+            m.name()
+        );
+        let reports = Mutex::new(Vec::new());
+        let record = |done: usize, total: usize| reports.lock().unwrap().push((done, total));
+        let v = m.eval_within(p, &Budget::DEFAULT, &record).unwrap();
+        assert_eq!(v, m.eval(p).unwrap(), "{}", m.name());
+        let mut r = reports.into_inner().unwrap();
+        assert!(r.len() >= 2, "{}: {r:?}", m.name());
+        assert_eq!(r[0], (0, 500));
+        r.sort();
+        assert_eq!(*r.last().unwrap(), (500, 500), "{}", m.name());
+    }
+    // 10^6 points in 10 dimensions: hours of pair sums, refused by the default budget.
+    let est = L2Metric::WrapAround.cost(1_000_000, 10).seconds();
+    assert!(est > 100.0, "{est}");
+}
