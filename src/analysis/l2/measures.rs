@@ -12,10 +12,12 @@ use crate::analysis::budget::no_progress;
 
 /// The largest dimension computed in plain `f64` products by the L2-star, centered,
 /// wrap-around, mixture, symmetric and generalized L2 discrepancies (above it, with
-/// tracked exponents). Up to it no kernel product, term or constant leaves
-/// `[2^-900, 2^600]` except by a factor near zero: the largest factors are `15/8`
-/// (mixture: `(15/8)^512 < 2^465`) and `2` (generalized L2, `2^512`), the smallest
-/// constant `3^-512 > 2^-812` (L2-star).
+/// tracked exponents). Up to it no product, sum or constant overflows (the largest
+/// factors are `15/8`, mixture: `(15/8)^512 < 2^465`, and `2`, generalized L2: `2^512`;
+/// sums of `n^2` of them stay below `2^996` for any feasible `n`), and the constants stay
+/// above `2^-812` (L2-star, `3^-512`); a product that underflows is below `2^-1022` in
+/// absolute value, which changes the result by less than its rounding unless the result
+/// itself is below about `2^-960`.
 pub(super) const FAST_D: usize = 512;
 
 /// [`FAST_D`] for the unanchored discrepancy, whose constant is `12^-d` (`12^-224 > 2^-804`)
