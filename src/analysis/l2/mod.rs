@@ -78,10 +78,11 @@
 //! A result that is nonzero and outside the normal range of `f64` (above `f64::MAX`, or
 //! below `2^-1022`, e.g. the L2-star discrepancy of a few points in 2000 dimensions,
 //! about `2^-1400`) is [`Error::NotRepresentable`](crate::Error::NotRepresentable), never
-//! an infinity, a NaN or a silent zero. The wide path costs up to about 2x more time per
-//! pair and coordinate than the plain one (measured on one thread, 1024 points in 1000
-//! against 500 dimensions: the same for the wrap-around discrepancy and the diaphony,
-//! 1.3-2.1x for the others).
+//! an infinity, a NaN or a silent zero. The wide path costs 1.2-3.4x more time per pair
+//! and coordinate than the plain one (measured on one thread, 1024 points in 1000 against
+//! 500 dimensions: 1.2x for the mixture discrepancy, 1.6-1.8x for the centered,
+//! wrap-around, symmetric and unanchored discrepancies and the diaphony, 2.7x and 3.4x
+//! for the L2-star and generalized L2, whose plain factor is a single minimum).
 //!
 //! ## Fused multiply-adds
 //!
@@ -122,18 +123,19 @@ use kernel::{Build, Ticker};
 
 /// The throughput of the pair sum in the plain `f64` path, in pair steps of
 /// [`L2Metric::cost`] (one pair `(i, j)` and one coordinate, plus two per pair for its
-/// accumulation): 1e9 a second, below the slowest of the eight measures on one thread
-/// with AVX-512 on a loaded two-core x86-64 machine (1.15e9: the mixture discrepancy of
-/// 1024 points in 500 dimensions, 2.6e8 steps in 0.23 s; 1.8e9 to 1.2e10 in 2 to 40
-/// dimensions, e.g. 3.5e9 for the wrap-around discrepancy of 4096 points in 8D, 6.7e7
-/// steps in 19 ms), so that an estimate errs on the long side also on two threads and
-/// in the AVX2 build. The portable build of the measures with fused multiply-adds
+/// accumulation): 1e9 a second. Measured on one thread of an x86-64 CPU with AVX-512,
+/// the slowest of the eight measures is the mixture discrepancy of 1024 points in 500
+/// dimensions: 2.6e8 steps in 0.10 s (2.6e9 a second) on an idle machine, 0.23 s
+/// (1.15e9) on one loaded by other work; in 2 to 40 dimensions 4e9 to 2e10 (e.g. the
+/// wrap-around discrepancy of 4096 points in 8D, 8.4e7 steps in 9.1 ms). So the
+/// estimate errs on the long side on a loaded machine and by 2-5x on an idle one with
+/// two threads. The portable build of the measures with fused multiply-adds
 /// (wrap-around, mixture, diaphony), used on x86-64 CPUs without FMA, runs 4-8x slower.
 pub const PAIR_RATE: Rate = Rate::per_second(1.0e9);
 
 /// [`PAIR_RATE`] for the wide path (tracked exponents) used in high dimension: 5e8 steps
-/// a second, below the slowest measured on one thread (6.7e8: the mixture discrepancy of
-/// 1024 points in 1000 dimensions, 5.2e8 steps in 0.79 s; the others 8e8 to 1.9e9).
+/// a second. Measured on one thread, 1024 points in 1000 dimensions (5.2e8 steps): the
+/// slowest measures (unanchored, mixture) at 2.1e9 a second idle, 6.7e8 loaded.
 pub const WIDE_PAIR_RATE: Rate = Rate::per_second(5.0e8);
 
 /// The throughput of [`l2_star_fast`]'s divide and conquer in row operations of its cost
