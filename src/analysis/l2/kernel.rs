@@ -554,6 +554,7 @@ impl<'a> Ticker<'a> {
 
     fn start(&mut self, tasks: usize) {
         self.tasks = tasks.max(1);
+        self.done = AtomicUsize::new(0);
         (self.progress)(0, self.rows);
     }
 
