@@ -513,8 +513,13 @@ pub(super) fn diaphony_with(p: Points<'_>, build: Build, t: &mut Ticker<'_>) -> 
     if d > DIAPHONY_FAST_D {
         let sums = wide_kernel_sums(p, g1, feat, pair, build, t);
         let sq = combine_wide(Wide::ONE.neg(), Wide::ZERO, Wide::ONE, &sums, n);
-        let base = Dd::ONE.add(Dd::ratio(TWO_PI2, 6.0));
-        let norm = Wide::from_dd(base).powi(d).add(Wide::ONE.neg());
+        // The normalization `(1 + pi^2/3)^d - 1` from the diagonal factor as the kernel
+        // computes it (`pair` at `t = 0`), so that the diagonal terms, which dominate in
+        // high dimension, and the normalization carry the same rounding of the base.
+        let base = pair(feat(0.0), feat(0.0));
+        let norm = Wide::from_dd(Dd { hi: base, lo: 0.0 })
+            .powi(d)
+            .add(Wide::ONE.neg());
         return sq.div(norm).sqrt().to_f64(DIAPHONY);
     }
     let sums = kernel_sums(p, g1, feat, pair, build, Loop::Rows, t);
