@@ -509,10 +509,8 @@ fn metric_list_dispatches_to_the_functions() {
 // High dimension: an extended-precision reference (tests/golden/gen_l2_high_d.py, mpmath).
 // ---------------------------------------------------------------------------------------
 
-/// The points of a high-dimensional golden case: SplitMix64 from `seed`, the top 32 bits of
-/// each output over 2^32, `u`, row-major; for `spread = 16`, `15/32 + u / 16` (the script's
-/// generator; every value exact).
-fn splitmix_points(len: usize, seed: u64, spread: u32) -> Vec<f64> {
+/// The top 32 bits of `len` SplitMix64 outputs from `seed`.
+fn splitmix_u32(len: usize, seed: u64) -> Vec<u32> {
     let mut s = seed;
     (0..len)
         .map(|_| {
@@ -521,14 +519,38 @@ fn splitmix_points(len: usize, seed: u64, spread: u32) -> Vec<f64> {
             z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
             z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
             z ^= z >> 31;
-            let u = (z >> 32) as f64 / 4_294_967_296.0;
-            if spread == 16 {
-                15.0 / 32.0 + u / 16.0
-            } else {
-                u
-            }
+            (z >> 32) as u32
         })
         .collect()
+}
+
+/// The points of a high-dimensional golden case, as the script makes them (every value
+/// exact): `uniform`, `u = v / 2^32` for the SplitMix64 outputs' top bits `v`; `center`,
+/// `15/32 + u / 16`; `cluster`, a base point from the first `d` outputs and each point
+/// within `2^-32` of it, `(b_k >> 3) / 2^29 + (v >> 24) / 2^40`.
+fn golden_points(n: usize, d: usize, seed: u64, kind: &str) -> Vec<f64> {
+    let two = |e: i32| 2f64.powi(e);
+    match kind {
+        "uniform" => splitmix_u32(n * d, seed)
+            .iter()
+            .map(|&v| f64::from(v) * two(-32))
+            .collect(),
+        "center" => splitmix_u32(n * d, seed)
+            .iter()
+            .map(|&v| 15.0 / 32.0 + f64::from(v) * two(-36))
+            .collect(),
+        "cluster" => {
+            let raw = splitmix_u32((n + 1) * d, seed);
+            let (base, rest) = raw.split_at(d);
+            rest.iter()
+                .enumerate()
+                .map(|(j, &v)| {
+                    f64::from(base[j % d] >> 3) * two(-29) + f64::from(v >> 24) * two(-40)
+                })
+                .collect()
+        }
+        _ => panic!("unknown kind {kind}"),
+    }
 }
 
 /// Every measure in 600 to 4000 dimensions against the mpmath reference: within 1e-12
@@ -537,8 +559,9 @@ fn splitmix_points(len: usize, seed: u64, spread: u32) -> Vec<f64> {
 /// underflow: before the wide path the 1000- and 2000-dimensional cases gave 0 for the
 /// symmetric, unanchored and generalized L2 discrepancies and the diaphony (600 dimensions
 /// too for the unanchored one and the diaphony), NaN for the wrap-around and mixture
-/// discrepancies at 2000 and for the centered one at 4000 (which the last case, points near
-/// the center, keeps representable).
+/// discrepancies at 2000 and for the centered one at 4000 (which the points near the
+/// center keep representable). In the clustered cases the pair terms weigh as much as the
+/// diagonal ones; elsewhere the diagonal terms dominate in these dimensions.
 #[test]
 fn high_dimensions_match_extended_precision_reference() {
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/golden/l2_high_d.txt");
@@ -554,7 +577,7 @@ fn high_dimensions_match_extended_precision_reference() {
         if f[0] == "case" {
             d = f[1].parse().unwrap();
             let n: usize = f[2].parse().unwrap();
-            data = splitmix_points(n * d, f[3].parse().unwrap(), f[4].parse().unwrap());
+            data = golden_points(n, d, f[3].parse().unwrap(), f[4]);
             cases += 1;
             continue;
         }
@@ -580,7 +603,7 @@ fn high_dimensions_match_extended_precision_reference() {
     }
     eprintln!("largest relative difference from the reference: {worst:e}");
     assert!(failures.is_empty(), "{}", failures.join("\n"));
-    assert_eq!(cases, 5);
+    assert_eq!(cases, 7);
     assert!(
         values >= 16 && refused >= 8,
         "{values} values, {refused} refusals"

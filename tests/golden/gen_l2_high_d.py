@@ -6,11 +6,14 @@ Run: `pip install mpmath && python3 tests/golden/gen_l2_high_d.py` (from anywher
 minutes). Writes tests/golden/l2_high_d.txt, read by tests/golden_discrepancy.rs
 (`cargo test` never runs Python).
 
-Points: coordinate k of point i of a case is the k-th output, in row-major order, of
-SplitMix64 seeded with the case's seed, keeping the top 32 bits: `u = (z >> 32) / 2^32` in
-[0, 1) for spread 1, and `15/32 + u / 16` in [15/32, 17/32) for spread 16 (points near the
-center, where the centered discrepancy stays representable in 4000 dimensions). These are
-exact in float64 and in mpmath, so both sides evaluate the formulas on the same points.
+Points: `z` runs through SplitMix64 seeded with the case's seed, one output per
+coordinate, row-major. Kind `uniform`: `u = (z >> 32) / 2^32` in [0, 1). Kind `center`:
+`15/32 + u / 16` in [15/32, 17/32) (points near the center, where the centered discrepancy
+stays representable in 4000 dimensions). Kind `cluster`: the first `d` outputs `b_k` give
+a base point, then coordinate k of point i is `(b_k >> 35) / 2^29 + (z >> 56) / 2^40`
+(all points within 2.4e-10 of the base in every coordinate, so that the pairs weigh as
+much as the diagonal in every sum). All are exact in float64 and in mpmath, so both sides
+evaluate the formulas on the same points.
 
 Formulas (the conventions of the crate's documentation: SciPy's `qmc.discrepancy` for
 L2-star, CD, WD, MD; UTK for the symmetric, unanchored and generalized L2 discrepancies
@@ -40,12 +43,14 @@ from mpmath import mp, mpf
 mp.prec = 160
 HERE = Path(__file__).resolve().parent
 MASK = (1 << 64) - 1
-CASES = [  # (d, n, seed, spread)
-    (600, 64, 600, 1),
-    (1000, 32, 1000, 1),
-    (2000, 32, 2000, 1),
-    (4000, 32, 4000, 1),
-    (4000, 32, 4001, 16),
+CASES = [  # (d, n, seed, kind)
+    (600, 64, 600, "uniform"),
+    (1000, 32, 1000, "uniform"),
+    (2000, 32, 2000, "uniform"),
+    (4000, 32, 4000, "uniform"),
+    (4000, 32, 4001, "center"),
+    (1000, 16, 1001, "cluster"),
+    (2000, 16, 2001, "cluster"),
 ]
 NAMES = ["l2-star", "cd", "wd", "md", "sl2", "ul2", "gl2", "diaphony"]
 F64_MAX = mpf(2) ** 1024 - mpf(2) ** 971
@@ -65,13 +70,19 @@ def splitmix64(seed, count):
     return out
 
 
-def points(d, n, seed, spread):
-    raw = splitmix64(seed, n * d)
-    if spread == 1:
-        coords = [mpf(v) / mpf(2) ** 32 for v in raw]
+def points(d, n, seed, kind):
+    if kind == "cluster":
+        raw = splitmix64(seed, (n + 1) * d)
+        base, rest = raw[:d], raw[d:]
+        coords = [
+            mpf(base[j % d] >> 3) / mpf(2) ** 29 + mpf(v >> 24) / mpf(2) ** 40
+            for j, v in enumerate(rest)
+        ]
+    elif kind == "center":
+        coords = [mpf(15) / 32 + mpf(v) / mpf(2) ** 36 for v in splitmix64(seed, n * d)]
     else:
-        assert spread == 16
-        coords = [mpf(15) / 32 + mpf(v) / mpf(2) ** 36 for v in raw]
+        assert kind == "uniform"
+        coords = [mpf(v) / mpf(2) ** 32 for v in splitmix64(seed, n * d)]
     return [coords[i * d:(i + 1) * d] for i in range(n)]
 
 
@@ -138,12 +149,12 @@ def show(v):
 def main():
     lines = [
         "# qmckit::analysis::l2 in high dimension: tests/golden/gen_l2_high_d.py (mpmath,",
-        "# 160-bit mantissas). Points: SplitMix64(seed), top 32 bits / 2^32, row-major.",
-        "# case d n seed spread, then one line per measure: name value (or not-representable).",
+        "# 160-bit mantissas). Points: SplitMix64(seed), by kind (see the script), row-major.",
+        "# case d n seed kind, then one line per measure: name value (or not-representable).",
     ]
-    for d, n, seed, spread in CASES:
-        vals = measures(points(d, n, seed, spread))
-        lines.append(f"case {d} {n} {seed} {spread}")
+    for d, n, seed, kind in CASES:
+        vals = measures(points(d, n, seed, kind))
+        lines.append(f"case {d} {n} {seed} {kind}")
         for name in NAMES:
             lines.append(f"{name} {show(vals[name])}")
         print(d, n, {k: show(v) for k, v in vals.items()}, flush=True)
