@@ -158,7 +158,10 @@ fn measure(
 ) -> Result<Vec<(String, f64)>, String> {
     let name = value_name(&metric);
     if let Some(l2) = metric.l2() {
-        return Ok(vec![(name.clone(), with_spinner(&name, || l2.eval(p)))]);
+        let budget = Budget::seconds(args.max_seconds).map_err(|e| e.to_string())?;
+        let value = with_progress(&name, |progress| l2.eval_within(p, &budget, progress))
+            .map_err(|e| e.to_string())?;
+        return Ok(vec![(name.clone(), value)]);
     }
     let value = match metric {
         Metric::Star => {
