@@ -146,7 +146,6 @@ fn refusal(e: qmckit::Error, what: &str, set: &PointSet, limit: &str) -> String 
     }
 }
 
-
 /// Threshold-accepting iterations for star-bounds: about 3e8 point-coordinate steps.
 fn lower_bound_iterations(p: Points<'_>) -> u64 {
     (3e8 / (p.len() * p.dims()).max(1) as f64).clamp(1000.0, 100_000.0) as u64
