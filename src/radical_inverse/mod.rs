@@ -50,7 +50,9 @@ mod tables;
 #[cfg(test)]
 mod tests;
 
-pub(crate) use fill::{RunFill, check_range};
+#[cfg(target_pointer_width = "64")]
+pub(crate) use fill::RunFill;
+pub(crate) use fill::check_range;
 pub use sequential::RadicalInverseIter;
 use sequential::Sequential;
 use tables::*;

@@ -1,6 +1,7 @@
 //! Constants of the random-access paths: magics for division by powers of the chunk, the
 //! flat formulas' coefficients and the digit-reversal tables, all computed in `const fn`.
 
+#[cfg(target_pointer_width = "64")]
 use super::*;
 
 /// Most chunks the wide numerator handles (every prime base: at most 8 chunks, for 17, 19
