@@ -23,17 +23,16 @@ pub const FULL_RANGE: u64 = 1 << 32;
 /// assert_eq!(pts[2..4], [h.sample(1, 0)?, h.sample(1, 1)?]);
 /// # Ok::<(), qmckit::Error>(())
 /// ```
+// `len` counts valid indices and is never 0 (every constructor refuses empty sets), so
+// there is no `is_empty`.
+#[allow(clippy::len_without_is_empty)]
 pub trait Sampler {
     /// Number of coordinates of each point.
     fn dims(&self) -> usize;
 
-    /// Number of valid indices: the size of a finite point set, or 2^32 for a sequence.
+    /// Number of valid indices, at least 1: the size of a finite point set, or 2^32
+    /// ([`FULL_RANGE`]) for a sequence.
     fn len(&self) -> u64;
-
-    /// Always false: every sampler holds at least one point.
-    fn is_empty(&self) -> bool {
-        false
-    }
 
     /// Coordinate `dim` of point `index`.
     ///
@@ -65,7 +64,7 @@ pub trait Sampler {
     /// # Errors
     /// [`Error::BufferLength`], [`Error::IndexOutOfRange`].
     fn fill(&self, start: u32, out: &mut [u32]) -> Result<()> {
-        let rows = self.check_fill(start, out.len())?;
+        let rows = check_fill(self, start, out.len())?;
         let dims = self.dims();
         if dims == 0 {
             return Ok(()); // unreachable: check_fill refuses zero dimensions
@@ -98,7 +97,7 @@ pub trait Sampler {
     where
         Self: Sized,
     {
-        let rows = self.check_fill(start, out.len())?;
+        let rows = check_fill(self, start, out.len())?;
         let dims = self.dims();
         if dims > CONVERT_CHUNK {
             for (k, row) in out.chunks_exact_mut(dims).enumerate().take(rows) {
@@ -120,31 +119,54 @@ pub trait Sampler {
         }
         Ok(())
     }
-
-    /// Validates a `fill` request and returns its number of points.
-    ///
-    /// # Errors
-    /// [`Error::BufferLength`] unless `len` is a multiple of `dims()`;
-    /// [`Error::IndexOutOfRange`] if the last index is `len()` or beyond.
-    fn check_fill(&self, start: u32, len: usize) -> Result<usize> {
-        let dims = self.dims();
-        if dims == 0 || !len.is_multiple_of(dims) {
-            return Err(Error::BufferLength {
-                expected: dims,
-                got: len,
-            });
-        }
-        let rows = len / dims;
-        let end = start as u64 + rows as u64;
-        if end > self.len() {
-            return Err(Error::IndexOutOfRange {
-                index: end - 1,
-                len: self.len(),
-            });
-        }
-        Ok(rows)
-    }
 }
+
+/// Validates a [`Sampler::fill`] request of `len` values from index `start` and returns its
+/// number of points (for implementors of `fill`).
+///
+/// # Errors
+/// [`Error::BufferLength`] unless `len` is a multiple of `dims()`;
+/// [`Error::IndexOutOfRange`] if the last index is `len()` or beyond.
+///
+/// ```
+/// use qmckit::{Sobol, sampler::check_fill};
+/// let s = Sobol::new(2)?;
+/// assert_eq!(check_fill(&s, 0, 8)?, 4);
+/// assert!(check_fill(&s, 0, 7).is_err());
+/// assert!(check_fill(&s, u32::MAX, 4).is_err()); // index 2^32 does not exist
+/// # Ok::<(), qmckit::Error>(())
+/// ```
+pub fn check_fill<S: Sampler + ?Sized>(s: &S, start: u32, len: usize) -> Result<usize> {
+    let dims = s.dims();
+    if dims == 0 || !len.is_multiple_of(dims) {
+        return Err(Error::BufferLength {
+            expected: dims,
+            got: len,
+        });
+    }
+    let rows = len / dims;
+    let end = start as u64 + rows as u64;
+    if end > s.len() {
+        return Err(Error::IndexOutOfRange {
+            index: end - 1,
+            len: s.len(),
+        });
+    }
+    Ok(rows)
+}
+
+/// A base-2 digital construction: every coordinate is `C_d i` over GF(2) for a generator
+/// matrix `C_d` (Sobol', Larcher–Pillichshammer, van der Corput in base 2 as
+/// [`crate::Sobol`]'s dimension 0). The base-2 digital randomizations
+/// ([`crate::randomize::DigitalShift`], [`crate::randomize::ExactOwen`],
+/// [`crate::randomize::FastOwen`], [`crate::randomize::Lms`]) keep its nets and apply only
+/// to these (`Scrambled<S, R>` requires `R: Randomizes<S>`).
+pub trait Base2Digital: Sampler {}
+
+impl<S: Base2Digital + ?Sized> Base2Digital for &S {}
+
+#[cfg(feature = "std")]
+impl<S: Base2Digital + ?Sized> Base2Digital for Box<S> {}
 
 /// Validates a finite set's size, `1 <= n <= 2^32`, and its dimension count, `dims >= 1`.
 pub(crate) const fn check_set(n: u64, dims: usize) -> Result<()> {
