@@ -25,10 +25,10 @@ use crate::sampler::{Base2Digital, FULL_RANGE, Sampler, check};
 mod owen;
 mod table;
 
-pub use owen::{OwenSobol, owen_sobol, owen_sobol_f32};
 pub(crate) use owen::fill_blocks as owen_fill_blocks;
-pub(crate) use table::byte_tables;
+pub use owen::{OwenSobol, owen_sobol, owen_sobol_f32};
 pub use table::SobolTable;
+pub(crate) use table::byte_tables;
 
 include!(concat!(env!("OUT_DIR"), "/sobol.rs"));
 

@@ -1,0 +1,139 @@
+//! Run-time CPU-feature dispatch: the only module of the crate with `unsafe` code.
+//!
+//! A kernel is written once as safe, `#[inline(always)]` Rust and compiled here several
+//! times inside `#[target_feature]` functions (the compiler vectorizes it to each build's
+//! width). Calling a `#[target_feature]` function is `unsafe` because running it on a CPU
+//! without those features is undefined behaviour; every call below is made only after
+//! [`std::arch::is_x86_feature_detected!`] reported all of the function's features on the
+//! running CPU, which is the whole safety condition (the functions take only safe,
+//! bounds-checked slices). Without `std` or off x86-64 only the portable build exists.
+//!
+//! To add a kernel: a safe dispatcher function, one `#[target_feature]` wrapper per build,
+//! each call behind the matching detection, and a test that runs every build the CPU has
+//! against the portable one.
+#![allow(unsafe_code)]
+
+use crate::sobol::{OwenSobol, owen_fill_blocks};
+
+/// The widest build this CPU runs.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Level {
+    /// The target's baseline (SSE2 on x86-64).
+    Portable,
+    /// AVX2.
+    #[cfg(all(feature = "std", target_arch = "x86_64"))]
+    Avx2,
+    /// AVX-512 F, BW, VL with GFNI.
+    #[cfg(all(feature = "std", target_arch = "x86_64"))]
+    Avx512Gfni,
+}
+
+/// Detects the widest build (the standard library caches the CPUID answers).
+#[inline]
+pub(crate) fn level() -> Level {
+    #[cfg(all(feature = "std", target_arch = "x86_64"))]
+    {
+        if std::arch::is_x86_feature_detected!("avx512f")
+            && std::arch::is_x86_feature_detected!("avx512bw")
+            && std::arch::is_x86_feature_detected!("avx512vl")
+            && std::arch::is_x86_feature_detected!("gfni")
+        {
+            return Level::Avx512Gfni;
+        }
+        if std::arch::is_x86_feature_detected!("avx2") {
+            return Level::Avx2;
+        }
+    }
+    Level::Portable
+}
+
+/// [`OwenSobol::fill_f32`] at the given level; a level the CPU lacks runs the portable build.
+#[inline]
+pub(crate) fn owen_sobol4_fill_f32_at(
+    level: Level,
+    s: &OwenSobol,
+    indices: &[u32],
+    out: &mut [[f32; 4]],
+) {
+    let detected = self::level();
+    match level {
+        #[cfg(all(feature = "std", target_arch = "x86_64"))]
+        Level::Avx512Gfni if detected == Level::Avx512Gfni => {
+            // SAFETY: `owen_sobol4_avx512` requires avx512f, avx512bw, avx512vl and gfni;
+            // `level()` detected all four on this CPU.
+            unsafe { owen_sobol4_avx512(s, indices, out) }
+        }
+        #[cfg(all(feature = "std", target_arch = "x86_64"))]
+        Level::Avx2 | Level::Avx512Gfni if detected != Level::Portable => {
+            // SAFETY: `owen_sobol4_avx2` requires avx2; `level()` returns Avx2 or
+            // Avx512Gfni only when avx2 was detected on this CPU (every AVX-512 CPU
+            // has AVX2, and the Avx2 answer is its own detection).
+            unsafe { owen_sobol4_avx2(s, indices, out) }
+        }
+        _ => owen_fill_blocks(s, indices, out),
+    }
+}
+
+/// [`OwenSobol::fill_f32`]: the widest build this CPU runs.
+#[inline]
+pub(crate) fn owen_sobol4_fill_f32(s: &OwenSobol, indices: &[u32], out: &mut [[f32; 4]]) {
+    owen_sobol4_fill_f32_at(level(), s, indices, out);
+}
+
+#[cfg(all(feature = "std", target_arch = "x86_64"))]
+#[target_feature(enable = "avx2")]
+fn owen_sobol4_avx2(s: &OwenSobol, indices: &[u32], out: &mut [[f32; 4]]) {
+    owen_fill_blocks(s, indices, out);
+}
+
+/// With AVX-512 the 16 lanes are one vector, and the bit reversal is a GFNI affine
+/// transform plus a byte shuffle.
+#[cfg(all(feature = "std", target_arch = "x86_64"))]
+#[target_feature(enable = "avx512f,avx512bw,avx512vl,gfni")]
+fn owen_sobol4_avx512(s: &OwenSobol, indices: &[u32], out: &mut [[f32; 4]]) {
+    owen_fill_blocks(s, indices, out);
+}
+
+#[cfg(all(test, feature = "std"))]
+mod tests {
+    use super::*;
+    use crate::randomize::OwenHash;
+
+    /// Every build the CPU runs, on lengths leaving 0 to 3 points past the blocks of four
+    /// and on unequal lengths, for both hashes, against the scalar `sample4_f32`.
+    #[test]
+    fn every_build_matches_the_scalar_path() {
+        let mut levels = vec![Level::Portable];
+        #[cfg(target_arch = "x86_64")]
+        {
+            if level() != Level::Portable {
+                levels.push(Level::Avx2);
+            }
+            if level() == Level::Avx512Gfni {
+                levels.push(Level::Avx512Gfni);
+            }
+        }
+        println!("builds run: {levels:?}");
+        let indices: Vec<u32> = (0..4099u32)
+            .map(|k| k.wrapping_mul(2_654_435_761) ^ (k >> 3))
+            .chain([0, 1, 255, 256, u32::MAX])
+            .collect();
+        for hash in [OwenHash::Vegdahl, OwenHash::LaineKarras] {
+            let s = OwenSobol::with_hash(4, 77, hash).unwrap();
+            for len in [0, 1, 2, 3, 4, 5, 6, 7, 4101, 4103, indices.len()] {
+                for &lv in &levels {
+                    let mut out = vec![[-1f32; 4]; len];
+                    owen_sobol4_fill_f32_at(lv, &s, &indices[..len], &mut out);
+                    for (k, o) in out.iter().enumerate() {
+                        let want = s.sample4_f32(indices[k]).map(f32::to_bits);
+                        assert_eq!(o.map(f32::to_bits), want, "{lv:?} {hash:?} len {len} k {k}");
+                    }
+                    let mut long = vec![[-1f32; 4]; len + 3];
+                    owen_sobol4_fill_f32_at(lv, &s, &indices[..len], &mut long);
+                    assert_eq!(long[..len], out[..]);
+                    assert!(long[len..].iter().all(|o| *o == [-1f32; 4]));
+                }
+            }
+        }
+    }
+}
