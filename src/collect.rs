@@ -101,7 +101,10 @@ mod tests {
         let h = Halton::with_scramble(2, DigitScramble::Permutations(4)).unwrap();
         let a: Vec<[u32; 2]> = arrays(&h, 50).unwrap();
         assert_eq!(a[49], [h.sample(49, 0).unwrap(), h.sample(49, 1).unwrap()]);
-        assert_eq!(halton_scrambled(50, 2, 4).unwrap()[98], crate::bits::to_f64(a[49][0]));
+        assert_eq!(
+            halton_scrambled(50, 2, 4).unwrap()[98],
+            crate::bits::to_f64(a[49][0])
+        );
     }
 
     #[test]

@@ -13,6 +13,7 @@
 //! against the portable one.
 #![allow(unsafe_code)]
 
+use crate::randomize::Scrambler;
 use crate::sobol::{OwenSobol, owen_fill_blocks};
 
 /// The widest build this CPU runs.
@@ -47,16 +48,18 @@ pub(crate) fn level() -> Level {
     Level::Portable
 }
 
-/// [`OwenSobol::fill_f32`] at the given level; a level the CPU lacks runs the portable build.
+/// [`OwenSobol::fill_f32`] with the widest build that is at most `want` and that the CPU
+/// runs (for tests and benchmarks of each build).
 #[inline]
 pub(crate) fn owen_sobol4_fill_f32_at(
-    level: Level,
+    want: Level,
     s: &OwenSobol,
     indices: &[u32],
     out: &mut [[f32; 4]],
 ) {
-    let detected = self::level();
-    match level {
+    #[cfg(all(feature = "std", target_arch = "x86_64"))]
+    let detected = level();
+    match want {
         #[cfg(all(feature = "std", target_arch = "x86_64"))]
         Level::Avx512Gfni if detected == Level::Avx512Gfni => {
             // SAFETY: `owen_sobol4_avx512` requires avx512f, avx512bw, avx512vl and gfni;
@@ -94,6 +97,55 @@ fn owen_sobol4_avx512(s: &OwenSobol, indices: &[u32], out: &mut [[f32; 4]]) {
     owen_fill_blocks(s, indices, out);
 }
 
+/// `x = s.scramble(x)` for every `x` in `xs`: one prepared scrambler over a contiguous
+/// column (what `Scrambled`'s fills run), in the widest build this CPU runs, so the
+/// scrambler's per-value arithmetic is vectorized (16 lanes with AVX-512, 8 with AVX2).
+#[inline]
+pub(crate) fn scramble_slice<S: Scrambler>(s: S, xs: &mut [u32]) {
+    scramble_slice_at(level(), s, xs);
+}
+
+/// [`scramble_slice`] with the widest build that is at most `want` and that the CPU runs.
+#[inline]
+pub(crate) fn scramble_slice_at<S: Scrambler>(want: Level, s: S, xs: &mut [u32]) {
+    #[cfg(all(feature = "std", target_arch = "x86_64"))]
+    let detected = level();
+    match want {
+        #[cfg(all(feature = "std", target_arch = "x86_64"))]
+        Level::Avx512Gfni if detected == Level::Avx512Gfni => {
+            // SAFETY: `scramble_slice_avx512` requires avx512f, avx512bw, avx512vl and gfni;
+            // `level()` detected all four on this CPU.
+            unsafe { scramble_slice_avx512(s, xs) }
+        }
+        #[cfg(all(feature = "std", target_arch = "x86_64"))]
+        Level::Avx2 | Level::Avx512Gfni if detected != Level::Portable => {
+            // SAFETY: `scramble_slice_avx2` requires avx2, which `level()` detected on this
+            // CPU whenever it answers Avx2 or Avx512Gfni.
+            unsafe { scramble_slice_avx2(s, xs) }
+        }
+        _ => scramble_slice_portable(s, xs),
+    }
+}
+
+#[inline(always)]
+fn scramble_slice_portable<S: Scrambler>(s: S, xs: &mut [u32]) {
+    for x in xs {
+        *x = s.scramble(*x);
+    }
+}
+
+#[cfg(all(feature = "std", target_arch = "x86_64"))]
+#[target_feature(enable = "avx2")]
+fn scramble_slice_avx2<S: Scrambler>(s: S, xs: &mut [u32]) {
+    scramble_slice_portable(s, xs);
+}
+
+#[cfg(all(feature = "std", target_arch = "x86_64"))]
+#[target_feature(enable = "avx512f,avx512bw,avx512vl,gfni")]
+fn scramble_slice_avx512<S: Scrambler>(s: S, xs: &mut [u32]) {
+    scramble_slice_portable(s, xs);
+}
+
 #[cfg(all(test, feature = "std"))]
 mod tests {
     use super::*;
@@ -114,6 +166,46 @@ mod tests {
             }
         }
         println!("builds run: {levels:?}");
+        // Prepared scramblers over columns: every build against the one-value path.
+        {
+            use crate::randomize::{
+                CranleyPatterson, DigitalShift, ExactOwen, FastOwen, Lms, Randomizer,
+            };
+            let xs: Vec<u32> = (0..1000u32).map(|k| k.wrapping_mul(0x9E37_79B9)).collect();
+            let check = |name: &str,
+                         r: &dyn Fn(usize, u32) -> u32,
+                         run: &dyn Fn(Level, usize, &mut [u32])| {
+                for &lv in &levels {
+                    for dim in [0usize, 3] {
+                        let mut got = xs.clone();
+                        run(lv, dim, &mut got);
+                        for (k, (&g, &x)) in got.iter().zip(&xs).enumerate() {
+                            assert_eq!(g, r(dim, x), "{name} {lv:?} dim {dim} k {k}");
+                        }
+                    }
+                }
+            };
+            let fo = FastOwen::with_hash(5, OwenHash::LaineKarras);
+            check("fast-owen-lk", &|d, x| fo.apply(x, d), &|lv, d, v| {
+                scramble_slice_at(lv, fo.scrambler(d), v)
+            });
+            let fo = FastOwen::new(6);
+            check("fast-owen", &|d, x| fo.apply(x, d), &|lv, d, v| {
+                scramble_slice_at(lv, fo.scrambler(d), v)
+            });
+            let ex = ExactOwen::new(7);
+            check("exact-owen", &|d, x| ex.apply(x, d), &|lv, d, v| {
+                scramble_slice_at(lv, ex.scrambler(d), v)
+            });
+            let pair = (Lms::new(8), DigitalShift::new(8));
+            check("lms+xor", &|d, x| pair.apply(x, d), &|lv, d, v| {
+                scramble_slice_at(lv, pair.scrambler(d), v)
+            });
+            let cp = CranleyPatterson::new(9);
+            check("rotate", &|d, x| cp.apply(x, d), &|lv, d, v| {
+                scramble_slice_at(lv, cp.scrambler(d), v)
+            });
+        }
         let indices: Vec<u32> = (0..4099u32)
             .map(|k| k.wrapping_mul(2_654_435_761) ^ (k >> 3))
             .chain([0, 1, 255, 256, u32::MAX])

@@ -6,6 +6,30 @@ use crate::error::{Error, Result};
 /// `u32`s the default [`Sampler::fill_as`] converts a call (4 KiB of stack).
 pub const CONVERT_CHUNK: usize = 1024;
 
+/// `u32`s of the smaller buffer [`Sampler::fill_as`] uses for requests of at most this many
+/// values.
+const SMALL_CHUNK: usize = 64;
+
+/// [`Sampler::fill_as`]'s conversion through a stack buffer of `N` `u32`s (`dims <= N`).
+fn convert_via<const N: usize, S: Sampler + ?Sized, T: FromFraction>(
+    s: &S,
+    start: u32,
+    out: &mut [T],
+    dims: usize,
+) -> Result<()> {
+    let per = N / dims.max(1); // whole points a call
+    let mut buf = [0u32; N];
+    for (c, chunk) in out.chunks_mut((per * dims).max(1)).enumerate() {
+        let tmp = buf.get_mut(..chunk.len()).unwrap_or(&mut []);
+        // c * per < rows, so the index is at most the last one check_fill accepted.
+        s.fill(start + (c * per) as u32, tmp)?;
+        for (y, &x) in chunk.iter_mut().zip(tmp.iter()) {
+            *y = T::from_fraction(x);
+        }
+    }
+    Ok(())
+}
+
 /// 2^32, the number of `u32` indices.
 pub const FULL_RANGE: u64 = 1 << 32;
 
@@ -107,17 +131,12 @@ pub trait Sampler {
             }
             return Ok(());
         }
-        let per = CONVERT_CHUNK / dims.max(1); // whole points a call
-        let mut buf = [0u32; CONVERT_CHUNK];
-        for (c, chunk) in out.chunks_mut(per * dims).enumerate() {
-            let tmp = buf.get_mut(..chunk.len()).unwrap_or(&mut []);
-            // c * per < rows, so the index is at most the last one check_fill accepted.
-            self.fill(start + (c * per) as u32, tmp)?;
-            for (y, &x) in chunk.iter_mut().zip(tmp.iter()) {
-                *y = T::from_fraction(x);
-            }
+        // A small buffer for small requests (no 4 KiB to clear for a pixel's samples).
+        if out.len() <= SMALL_CHUNK {
+            convert_via::<SMALL_CHUNK, _, _>(self, start, out, dims)
+        } else {
+            convert_via::<CONVERT_CHUNK, _, _>(self, start, out, dims)
         }
-        Ok(())
     }
 }
 
