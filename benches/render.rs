@@ -45,7 +45,9 @@ fn render(c: &mut Criterion) {
     // The fast type and the generic path give the same bits.
     for p in [0u32, 1, 12345, SIDE * SIDE - 1] {
         let mut a = [[0f32; D]; SPP];
-        base.with_seed(pixel_seed(p)).fill_f32(&indices, &mut a);
+        base.with_seed(pixel_seed(p))
+            .fill_f32(&indices, &mut a)
+            .expect("lengths");
         let mut b = [0f32; SPP * D];
         Scrambled::new(sobol, FastOwen::new(pixel_seed(p)))
             .fill_as(0, &mut b)
@@ -59,7 +61,7 @@ fn render(c: &mut Criterion) {
             let mut px = [[0f32; D]; SPP];
             for p in 0..SIDE * SIDE {
                 s.reseed(pixel_seed(p));
-                s.fill_f32(black_box(&indices), &mut px);
+                s.fill_f32(black_box(&indices), &mut px).expect("lengths");
                 black_box(&mut px);
             }
         })
@@ -111,7 +113,9 @@ fn render(c: &mut Criterion) {
     group.bench_function("qmckit_owen_sobol_fill_f32", |bch| {
         let mut out = vec![[0f32; D]; 4096];
         bch.iter(|| {
-            black_box(&seeded).fill_f32(black_box(&seq), &mut out);
+            black_box(&seeded)
+                .fill_f32(black_box(&seq), &mut out)
+                .expect("lengths");
             black_box(&mut out);
         })
     });

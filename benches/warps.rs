@@ -1,5 +1,5 @@
 //! Warp throughput: qmckit's `f32` warps (`warp`, through `libm`), its fixed-point warps
-//! (`fixed_warp`, feature `fixed`), and disk points against the `lds-rs` crate (0.1.11).
+//! (`warp::fixed`, feature `fixed`), and disk points against the `lds-rs` crate (0.1.11).
 //!
 //! Every benchmark maps `N` points per iteration and reports per-point throughput
 //! (`Throughput::Elements(N)`). Inputs are precomputed outside the timed loop: the first `N`
@@ -12,9 +12,11 @@
 //! * `warp_f32`: every `sample_*` of `qmckit::warp`, and the inverses of the disk (polar,
 //!   concentric), hemisphere (uniform, cosine), sphere and triangle maps. The Gaussian
 //!   entries both produce two normals a point: `box_muller` one pair, `normal_inv_cdf` the
-//!   quantile of each coordinate. The spherical polygon warps rebuild their frame every call
-//!   (the API has no cached frame), and their geometry goes through `black_box` per point, as
-//!   when the shading point moves, so the set-up cannot be hoisted out of the loop.
+//!   quantile of each coordinate. The spherical polygon warps go through the free functions,
+//!   which validate and build their frame every call, and their geometry goes through
+//!   `black_box` per point, as when the shading point moves, so the set-up cannot be hoisted
+//!   out of the loop; the `_prepared` entries sample a `SphericalTriangle` /
+//!   `SphericalRectangle` built once (a fixed light seen from a fixed point).
 //! * `warp_fixed`: the same ids for the five fixed-point warps and their inverses (needs
 //!   `--features fixed`; without it the group is skipped with a note).
 //! * `disk_peers`: the polar and concentric maps on the same inputs; a "pbrt-style" textbook
@@ -142,7 +144,7 @@ fn warp_f32(c: &mut Criterion) {
         triangle::sample_uniform_triangle,
     );
     bench_map(&mut group, "sample/spherical_triangle", &u, |x| {
-        spherical::sample_spherical_triangle(black_box(TRIANGLE), black_box([0.0; 3]), x)
+        spherical::sample_spherical_triangle(black_box(TRIANGLE), black_box([0.0; 3]), x).ok()
     });
     bench_map(&mut group, "sample/spherical_rectangle", &u, |x| {
         spherical::sample_spherical_rectangle(
@@ -152,6 +154,17 @@ fn warp_f32(c: &mut Criterion) {
             black_box(RECT_EY),
             x,
         )
+        .ok()
+    });
+    // The prepared values: validation and frame once, outside the loop.
+    let tri = spherical::SphericalTriangle::new(TRIANGLE, [0.0; 3]).expect("valid triangle");
+    bench_map(&mut group, "sample/spherical_triangle_prepared", &u, |x| {
+        black_box(&tri).sample(x)
+    });
+    let rect = spherical::SphericalRectangle::new([0.0; 3], RECT_CORNER, RECT_EX, RECT_EY)
+        .expect("valid rectangle");
+    bench_map(&mut group, "sample/spherical_rectangle_prepared", &u, |x| {
+        black_box(&rect).sample(x)
     });
     bench_map(
         &mut group,
@@ -230,7 +243,7 @@ fn warp_f32(c: &mut Criterion) {
 #[cfg(feature = "fixed")]
 fn warp_fixed(c: &mut Criterion) {
     use fixed::types::U0F32;
-    use qmckit::fixed_warp as fw;
+    use qmckit::warp::fixed as fw;
 
     let u: Vec<[U0F32; 2]> = owen_sobol()
         .into_iter()

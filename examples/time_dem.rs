@@ -1,12 +1,13 @@
-//! Times the exact star discrepancy (`dem::star_dem_within`) on the first `N` Sobol' points
-//! in `d` dimensions, with no work limit, for the measured rows of `qmckit::analysis::dem`.
+//! Times the exact star discrepancy (`star::dem::star_dem_within`) on the first `N` Sobol' points
+//! in `d` dimensions, with no work limit, for the measured rows of `qmckit::analysis::star::dem`.
 //!
 //! Usage: `cargo run --release --example time_dem -- DIMS N...`
 //!
 //! For each `N` prints `d N D* seconds`.
 
 use qmckit::analysis::Points;
-use qmckit::analysis::dem::star_dem_within;
+use qmckit::analysis::budget::{Budget, no_progress};
+use qmckit::analysis::star::dem::star_dem_within;
 use qmckit::{Sampler, Sobol};
 use std::time::Instant;
 
@@ -24,7 +25,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         sobol.fill_as(0, &mut values)?;
         let points = Points::new(&values, d)?;
         let start = Instant::now();
-        let value = star_dem_within(points, f64::INFINITY, &|_, _| {})?;
+        let value = star_dem_within(points, &Budget::UNLIMITED, &no_progress)?;
         println!("{d} {n} {value} {:.2}", start.elapsed().as_secs_f64());
     }
     Ok(())

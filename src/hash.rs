@@ -42,7 +42,10 @@ pub const fn uniform(seed: u64, index: u32, dim: u64) -> u32 {
 /// sampling"). Since the mixer permutes `[0, 2^k)`, the walk stays on the cycle through
 /// `index` and returns to `[0, n)`; fewer than two rounds are expected because `n > 2^k / 2`.
 ///
-/// Requires `index < n <= 2^32`; returns 0 for `n <= 1`.
+/// A bijection for `index < n <= 2^32`; returns 0 for `n <= 1`, and reads `n > 2^32` as
+/// `2^32` (every `u32` index), so the result always fits a `u32` and is below `n`. An
+/// `index >= n` is first reduced into the mixer's domain (the result is then some value
+/// below `n`, not part of the bijection). `O(1)` expected.
 ///
 /// ```
 /// use qmckit::hash::permute;
@@ -54,6 +57,7 @@ pub const fn permute(index: u32, n: u64, key: u64) -> u32 {
     if n <= 1 {
         return 0;
     }
+    let n = if n > 1 << 32 { 1 << 32 } else { n };
     let bits = 64 - (n - 1).leading_zeros();
     let mask = if bits >= 64 {
         u64::MAX

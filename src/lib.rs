@@ -47,10 +47,10 @@
 //! | `std` (default) | [`analysis`] (discrepancies, t-values, distances; rayon), `std::error::Error` for [`Error`] |
 //! | `cli` | the `qmckit` command (clap, npyz); implies `sobol-dims-21201` |
 //! | `sobol-dims-1024`, `sobol-dims-21201` | more Sobol' dimensions than the default 64 |
-//! | `fixed` | [`bits::to_fixed`] to `fixed::types::U0F32`, fixed-point warps ([`fixed_warp`]) |
+//! | `fixed` | [`bits::to_fixed`] to `fixed::types::U0F32`, fixed-point warps ([`warp::fixed`]) |
 //! | `rand_core` | seeding from any `rand_core::Rng`, [`independent::fill_from_rng`] |
 //! | `heapless` | [`buffer::points`]: fixed-capacity point buffers |
-//! | `libm` | the float warps ([`warp`]), also in `no_std`; implied by `std` |
+//! | `libm` | the float warps ([`warp`]: disk, sphere, triangle, spherical, gaussian), also in `no_std`; implied by `std` |
 //! | `defmt` | `defmt::Format` on the public types |
 #![cfg_attr(not(feature = "std"), no_std)]
 #![cfg_attr(docsrs, feature(doc_cfg))]
@@ -66,8 +66,12 @@ pub mod buffer;
 pub mod collect;
 pub(crate) mod dispatch;
 pub mod error;
+/// Deprecated path of the fixed-point warps: use [`warp::fixed`].
 #[cfg(feature = "fixed")]
-pub mod fixed_warp;
+#[deprecated(note = "the fixed-point warps moved to `qmckit::warp::fixed`")]
+pub mod fixed_warp {
+    pub use crate::warp::fixed::*;
+}
 pub mod halton;
 pub mod hammersley;
 pub mod hash;
@@ -86,7 +90,7 @@ pub mod size;
 pub mod sobol;
 pub mod stratified;
 pub mod van_der_corput;
-#[cfg(feature = "libm")]
+#[cfg(any(feature = "libm", feature = "fixed"))]
 pub mod warp;
 
 pub use error::{Error, Result};

@@ -403,3 +403,90 @@ fn bad_input_is_one_line_and_exit_2() {
     assert_usage_error(&["points", "halton", "-n", "-3"], "-3");
     assert_usage_error(&["frobnicate"], "frobnicate");
 }
+
+/// Warp geometry that cannot be computed is refused in one line naming the flag and the
+/// reason; geometry at the edge of what is accepted gives finite points on the domain.
+#[test]
+fn warp_geometry_is_validated() {
+    let warp = |name: &str, extra: &[&str]| -> Vec<String> {
+        let mut args = vec![
+            "points", "sobol", "-n", "16", "--warp", name, "--format", "csv",
+        ];
+        args.extend_from_slice(extra);
+        args.into_iter().map(String::from).collect()
+    };
+    let refused = |name: &str, extra: &[&str], needle: &str| {
+        let args = warp(name, extra);
+        let args: Vec<&str> = args.iter().map(String::as_str).collect();
+        assert_usage_error(&args, needle);
+    };
+    let rect = "spherical-rectangle";
+    refused(rect, &["--rect", "-1e38,-1e38,1;2e38,0,0;0,2e38,0"], "2^64");
+    refused(
+        rect,
+        &["--rect", "-0.5,-0.5,1;1,0,0;0.5,1,0"],
+        "not perpendicular",
+    );
+    refused(
+        rect,
+        &["--rect", "-0.5,-0.5,1;1,0,0;0,1,0", "--origin", "0,0,1e38"],
+        "2^64",
+    );
+    refused(
+        rect,
+        &["--rect", "-0.5,-0.5,1;1,0,0;0,1,0", "--origin", "0,0,1"],
+        "plane",
+    );
+    refused(
+        rect,
+        &["--rect", "-0.5,-0.5,1;1,0,0;0,1,0", "--origin", "0,0,-1e6"],
+        "solid angle",
+    );
+    refused(rect, &["--rect", "-0.5,-0.5,1;0,0,0;0,1,0"], "zero length");
+    refused(rect, &["--rect", "-0.5,-0.5,nan;1,0,0;0,1,0"], "finite");
+    let tri = "spherical-triangle";
+    refused(tri, &["--vertices", "0,0,1;1,0,1;2,0,1"], "collinear");
+    refused(
+        tri,
+        &["--vertices", "0,0,1;1,0,1;0,1,1", "--origin", "5,5,1"],
+        "plane",
+    );
+    refused(
+        tri,
+        &["--vertices", "0,0,1;1,0,1;0,1,1", "--origin", "0,0,1"],
+        "vertex",
+    );
+    refused(tri, &["--vertices", "0,0,3e38;1,0,1;0,1,1"], "2^64");
+    refused("triangle", &["--vertices", "0,0;1,1;2,2"], "collinear");
+    refused("triangle", &["--vertices", "-3e38,0;3e38,0;0,3e38"], "2^64");
+    refused("cone", &["--cone-angle", "nan"], "cone-angle");
+    refused("cone", &["--cone-angle", "0.001"], "degenerate");
+    // Accepted: a unit light 1000 away, seen from below: every hit exactly on z = 1.
+    let args = warp(
+        rect,
+        &[
+            "--rect",
+            "-0.5,-0.5,1;1,0,0;0,1,0",
+            "--origin",
+            "0.3,-0.2,-1000",
+        ],
+    );
+    let args: Vec<&str> = args.iter().map(String::as_str).collect();
+    for line in stdout(&args).lines() {
+        let p: Vec<f64> = line.split(',').map(|x| x.parse().unwrap()).collect();
+        assert!(
+            p[0].abs() <= 0.5 && p[1].abs() <= 0.5 && p[2] == 1.0,
+            "{line}"
+        );
+    }
+    // A cone of 180 degrees is the whole sphere; 0.02 degrees is still a cone.
+    for angle in ["180", "0.02"] {
+        let args = warp("cone", &["--cone-angle", angle]);
+        let args: Vec<&str> = args.iter().map(String::as_str).collect();
+        for line in stdout(&args).lines() {
+            let w: Vec<f64> = line.split(',').map(|x| x.parse().unwrap()).collect();
+            let n = (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]).sqrt();
+            assert!((n - 1.0).abs() < 1e-6, "{angle}: {line}");
+        }
+    }
+}

@@ -152,7 +152,16 @@ fn max_seconds_sets_the_star_budget() {
         &small,
         "(at most 1549 within --max-seconds 0.01)",
     );
-    for bad in ["0", "-1", "nan", "inf"] {
+    // 'inf' is no limit; zero, negatives and NaN are refused.
+    assert_eq!(
+        values(&stdout(
+            &["discrepancy", "--metric", "cd", "--max-seconds=inf"],
+            "0.5\n"
+        ))
+        .len(),
+        1
+    );
+    for bad in ["0", "-1", "nan"] {
         assert_usage_error(
             &[
                 "discrepancy",
@@ -184,7 +193,12 @@ fn max_seconds_sets_the_star_budget() {
     let p = qmckit::analysis::Points::new(&coords, 12).unwrap();
     let lower = qmckit::analysis::star::star_lower_bound(p, 1, 20_000);
     assert!(lower <= got + 1e-12 && got < lower + 0.01, "{lower} {got}");
-    let want = qmckit::analysis::star::star_exact_within(p, f64::INFINITY, &|_, _| {}).unwrap();
+    let want = qmckit::analysis::star::star_exact_within(
+        p,
+        &qmckit::analysis::budget::Budget::UNLIMITED,
+        &qmckit::analysis::budget::no_progress,
+    )
+    .unwrap();
     assert_eq!(got, want);
 }
 
@@ -307,7 +321,11 @@ fn tvalue_refusals() {
         "",
         "too many",
     );
-    assert_usage_error(&["tvalue", "halton", "-m", "4"], "", "base-2");
+    assert_usage_error(
+        &["tvalue", "halton", "-m", "4"],
+        "",
+        "possible values: sobol, lp, hammersley, vdc",
+    );
     assert_usage_error(&["tvalue", "lp", "-m", "4", "-d", "3"], "", "-d must be 2");
     assert_usage_error(&["tvalue", "sobol", "-m", "4", "-d", "0"], "", "-d");
     assert_usage_error(
@@ -487,4 +505,91 @@ fn convergence_refuses_bad_requests_in_one_line() {
         "lower --seeds, --max-m or -d",
     );
     assert_usage_error(&["convergence", "lp", "-d", "3"], "", "lp");
+}
+
+/// Runs the CLI and returns (exit code, stdout, stderr, seconds).
+fn timed(args: &[&str], input: &str) -> (i32, String, String, f64) {
+    let start = std::time::Instant::now();
+    let out = qmckit_with(args, input);
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+        start.elapsed().as_secs_f64(),
+    )
+}
+
+#[test]
+fn star_in_huge_dimensions_answers_or_refuses_at_once() {
+    let row = |d: usize, x: &str| vec![x; d].join(" ");
+    // One point in 10000 dimensions (about 40 KB): star is 1 - 2^-10000 = 1.
+    let one = row(10_000, "0.5") + "\n";
+    let text = stdout(&["discrepancy", "--metric", "star"], &one);
+    assert_eq!(values(&text), vec![("star".to_owned(), 1.0)]);
+    let text = stdout(&["discrepancy"], &one);
+    assert!(text.starts_with("star 1.0000000000000000e0\n"), "{text}");
+    // Two points in 1000 and 20000 dimensions: star and star-bounds refused in well under a
+    // second, with one line.
+    for d in [1000, 20_000] {
+        let two = row(d, "0.5") + "\n" + &row(d, "0.25") + "\n";
+        for metric in ["star", "star-bounds"] {
+            let (code, out, err, secs) = timed(&["discrepancy", "--metric", metric], &two);
+            assert_eq!((code, out.as_str()), (2, ""), "{metric} d = {d}: {err}");
+            assert_eq!(err.lines().count(), 1, "{err}");
+            assert!(!err.contains("panicked"), "{err}");
+            assert!(secs < 1.0, "{metric} d = {d}: {secs} s");
+        }
+    }
+}
+
+#[test]
+fn star_upper_never_exceeds_one() {
+    // delta = 1: the whole cube is one bracket, worth exactly 1 = the largest possible D*.
+    let text = stdout(
+        &["discrepancy", "--metric", "star-bounds", "--delta", "1"],
+        "0.25 0.75\n0.5 0.5\n",
+    );
+    let v = values(&text);
+    assert_eq!(v[1], ("star-upper".to_owned(), 1.0), "{text}");
+    assert!(v[0].1 <= v[1].1);
+}
+
+#[test]
+fn tvalue_in_huge_dimensions_and_past_the_budget() {
+    // m = 2 in 10057 and 21201 dimensions: t = 1 (see tests/tvalue.rs), at once.
+    for d in ["10057", "21201"] {
+        let (code, out, err, secs) = timed(&["tvalue", "sobol", "-m", "2", "-d", d], "");
+        assert_eq!(code, 0, "{err}");
+        assert!(out.contains("\nt 1\n"), "{out}");
+        assert!(secs < 2.0, "{secs} s");
+    }
+    // Minutes or more by the estimate: refused in well under a second.
+    for (m, d) in [("32", "50"), ("20", "1000")] {
+        let (code, _, err, secs) = timed(&["tvalue", "sobol", "-m", m, "-d", d], "");
+        assert_eq!(code, 2, "{err}");
+        assert!(err.contains("time budget"), "{err}");
+        assert_eq!(err.lines().count(), 1, "{err}");
+        assert!(secs < 1.0, "-m {m} -d {d}: {secs} s");
+    }
+    assert_usage_error(
+        &["tvalue", "sobol", "-m", "4", "--max-seconds", "0"],
+        "",
+        "--max-seconds must be a positive number of seconds",
+    );
+    // A larger budget admits what the default refuses (counting 2^16 points in 4D, about
+    // 16 s by the estimate).
+    assert_usage_error(
+        &[
+            "tvalue",
+            "sobol",
+            "-m",
+            "16",
+            "-d",
+            "4",
+            "--scramble",
+            "owen",
+        ],
+        "",
+        "--max-seconds",
+    );
 }

@@ -4,7 +4,7 @@
 use fixed::types::{I2F30, U0F32};
 use qmckit::Sobol;
 use qmckit::bits::to_f32;
-use qmckit::fixed_warp as fx;
+use qmckit::warp::fixed as fx;
 use qmckit::warp::{disk, sphere, triangle};
 
 fn grid() -> Vec<[u32; 2]> {
@@ -204,4 +204,235 @@ fn fixed_densities() {
     let half = I2F30::from_num(0.5);
     assert!((f(fx::cosine_hemisphere_pdf(half)) - 0.5 / pi).abs() < 2e-9);
     assert_eq!(f(fx::cosine_hemisphere_pdf(I2F30::from_num(-0.5))), 0.0);
+}
+
+/// Property tests over the whole input types: samples at any `u` (0, 1, `2^32 - 1` and
+/// random) against the f64 oracle; inverses at any `I2F30` (including `i32::MIN` and
+/// `i32::MAX`, far off the domain), which must not overflow and must equal the f64 formula
+/// saturated into `[0, 1)`; `atan2_turns` at any `i64` pair (including `i64::MIN`) against
+/// `f64::atan2`. With overflow checks off (release) an overflow would show up as a wrapped,
+/// far-off value.
+mod properties {
+    use super::*;
+    use proptest::prelude::*;
+
+    const TWO32: f64 = 4_294_967_296.0;
+
+    fn u32s() -> impl Strategy<Value = u32> {
+        prop_oneof![
+            prop::sample::select(vec![
+                0,
+                1,
+                2,
+                (1 << 31) - 1,
+                1 << 31,
+                (1 << 31) + 1,
+                u32::MAX - 1,
+                u32::MAX
+            ]),
+            any::<u32>(),
+        ]
+    }
+
+    fn q30s() -> impl Strategy<Value = i32> {
+        prop_oneof![
+            prop::sample::select(vec![
+                i32::MIN,
+                i32::MIN + 1,
+                -(1 << 30) - 1,
+                -(1 << 30),
+                -1,
+                0,
+                1,
+                1 << 30,
+                (1 << 30) + 1,
+                i32::MAX - 1,
+                i32::MAX,
+            ]),
+            any::<i32>(),
+            -(1i32 << 30)..=(1 << 30),
+        ]
+    }
+
+    fn i64s() -> impl Strategy<Value = i64> {
+        prop_oneof![
+            prop::sample::select(vec![
+                i64::MIN,
+                i64::MIN + 1,
+                -(1 << 62),
+                -1,
+                0,
+                1,
+                1 << 62,
+                i64::MAX - 1,
+                i64::MAX
+            ]),
+            any::<i64>(),
+            -1000i64..1000,
+        ]
+    }
+
+    /// `x` (a fraction) saturated into `[0, 1)` as 0.32 bits, as the inverses promise.
+    fn saturate(x: f64) -> f64 {
+        x.clamp(0.0, (TWO32 - 1.0) / TWO32)
+    }
+
+    fn frac(x: U0F32) -> f64 {
+        x.to_bits() as f64 / TWO32
+    }
+
+    fn turn_gap(a: f64, b: f64) -> f64 {
+        let d = (a - b).rem_euclid(1.0);
+        d.min(1.0 - d)
+    }
+
+    fn turn(y: f64, x: f64) -> f64 {
+        (y.atan2(x) / std::f64::consts::TAU).rem_euclid(1.0)
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(4000))]
+
+        #[test]
+        fn samples_match_the_exact_maps_everywhere(u in [u32s(), u32s()]) {
+            for k in 0..5 {
+                let (got, want) = (fixed(k, u), oracle(k, u));
+                for (g, w) in got.iter().zip(&want) {
+                    prop_assert!((g - w).abs() < 1e-7, "warp {k} {u:?}: {got:?} vs {want:?}");
+                }
+            }
+            let d = fx::sample_uniform_disk_concentric(uq(u)).map(f);
+            prop_assert!(d[0].hypot(d[1]) <= 1.0 + 1e-7);
+        }
+
+        #[test]
+        fn atan2_turns_takes_any_pair(y in i64s(), x in i64s()) {
+            let t = fx::atan2_turns(y, x) as f64 / TWO32;
+            if x == 0 && y == 0 {
+                prop_assert_eq!(t, 0.0);
+            } else {
+                let want = turn(y as f64, x as f64);
+                prop_assert!(
+                    turn_gap(t, want) < 1e-8,
+                    "atan2({y}, {x}) = {t} turns, want {want}"
+                );
+            }
+        }
+
+        #[test]
+        fn inverses_take_any_q30(x in q30s(), y in q30s(), z in q30s()) {
+            let (p, fz) = (
+                [I2F30::from_bits(x), I2F30::from_bits(y)],
+                I2F30::from_bits(z),
+            );
+            let (xf, yf, zf) = (f(p[0]), f(p[1]), f(fz));
+            let r2 = xf * xf + yf * yf;
+            // Polar: u = (angle turn, r^2).
+            let polar = fx::invert_uniform_disk_polar(p);
+            prop_assert!(
+                (frac(polar[1]) - saturate(r2)).abs() <= 1.0 / TWO32 + 1e-12,
+                "polar {p:?}: {polar:?}"
+            );
+            if r2 > 0.0 {
+                prop_assert!(turn_gap(frac(polar[0]), turn(yf, xf)) < 1e-8);
+            }
+            // Concentric: the f32 warp's inverse formula in f64, then saturated.
+            let r = r2.sqrt();
+            let mut phi = yf.atan2(xf);
+            let pi = std::f64::consts::PI;
+            if phi < -pi / 4.0 {
+                phi += 2.0 * pi;
+            }
+            let k = 4.0 / pi;
+            let (a, b) = if phi < pi / 4.0 {
+                (r, phi * k * r)
+            } else if phi < 3.0 * pi / 4.0 {
+                (-(phi - pi / 2.0) * k * r, r)
+            } else if phi < 5.0 * pi / 4.0 {
+                (-r, -(phi - pi) * k * r)
+            } else {
+                ((phi - 3.0 * pi / 2.0) * k * r, -r)
+            };
+            let c = fx::invert_uniform_disk_concentric(p);
+            // Within 1e-7 except right at an octant's edge, where the angle's last bits pick
+            // the branch (both branches give the same point of the square's boundary only on
+            // the unit circle).
+            let near_edge = (phi * 4.0 / pi - (phi * 4.0 / pi).round()).abs() < 1e-7;
+            if !near_edge {
+                for (g, w) in [frac(c[0]), frac(c[1])]
+                    .iter()
+                    .zip([saturate((a + 1.0) / 2.0), saturate((b + 1.0) / 2.0)])
+                {
+                    prop_assert!(
+                        (g - w).abs() < 1e-7 * r.max(1.0),
+                        "concentric {p:?}: {c:?} vs {a} {b}"
+                    );
+                }
+            }
+            // Hemispheres: u0 = z saturated, u1 the turn.
+            let h = fx::invert_uniform_hemisphere([p[0], p[1], fz]);
+            prop_assert!((frac(h[0]) - saturate(zf)).abs() <= 4.0 / TWO32);
+            let cos = fx::invert_cosine_hemisphere([p[0], p[1], fz]);
+            prop_assert_eq!(cos, c);
+            // Triangle: u = (2 b0, b0 + b1) or (b0 + b1, 2 b1), saturated.
+            let t = fx::invert_uniform_triangle([p[0], p[1], fz]);
+            let (w0, w1) = if xf < yf {
+                (2.0 * xf, xf + yf)
+            } else {
+                (xf + yf, 2.0 * yf)
+            };
+            prop_assert!(
+                (frac(t[0]) - saturate(w0)).abs() <= 4.0 / TWO32,
+                "triangle {p:?}: {t:?}"
+            );
+            prop_assert!(
+                (frac(t[1]) - saturate(w1)).abs() <= 4.0 / TWO32,
+                "triangle {p:?}: {t:?}"
+            );
+            // Density: cos / pi, 0 below the horizon.
+            let pdf = f(fx::cosine_hemisphere_pdf(fz));
+            prop_assert!((pdf - zf.max(0.0) / pi).abs() < 4e-9);
+        }
+
+        #[test]
+        fn inverses_invert_the_samples(u in [u32s(), u32s()]) {
+            let back = |v: [U0F32; 2]| [v[0].to_bits(), v[1].to_bits()];
+            let gap = |a: u32, b: u32| (a.wrapping_sub(b) as i32).unsigned_abs() as f64 / TWO32;
+            let tri = back(fx::invert_uniform_triangle(fx::sample_uniform_triangle(
+                uq(u),
+            )));
+            prop_assert!(
+                gap(tri[0], u[0]) < 1e-8 && gap(tri[1], u[1]) < 1e-8,
+                "{u:?} -> {tri:?}"
+            );
+            let c = back(fx::invert_uniform_disk_concentric(
+                fx::sample_uniform_disk_concentric(uq(u)),
+            ));
+            prop_assert!(
+                (c[0] as f64 - u[0] as f64).abs() / TWO32 < 1e-6
+                    && (c[1] as f64 - u[1] as f64).abs() / TWO32 < 1e-6,
+                "{u:?} -> {c:?}"
+            );
+            let p = back(fx::invert_uniform_disk_polar(
+                fx::sample_uniform_disk_polar(uq(u)),
+            ));
+            prop_assert!((p[1] as f64 - u[1] as f64).abs() / TWO32 < 1e-6);
+            if u[1] as f64 / TWO32 > 1e-6 {
+                prop_assert!(gap(p[0], u[0]) < 1e-6, "{u:?} -> {p:?}");
+            }
+        }
+    }
+}
+
+/// The old path `qmckit::fixed_warp` still names the same functions (deprecated).
+#[test]
+#[allow(deprecated)]
+fn the_deprecated_path_still_works() {
+    use qmckit::fixed_warp as old;
+    let u = uq([0x1234_5678, 0x9ABC_DEF0]);
+    assert_eq!(
+        old::sample_uniform_disk_concentric(u),
+        fx::sample_uniform_disk_concentric(u)
+    );
+    assert_eq!(old::UNIFORM_DISK_PDF, fx::UNIFORM_DISK_PDF);
 }

@@ -263,8 +263,8 @@ fn owen_sobol_fill_f32_matches_the_scalar_paths() {
         vec![[0f32; 4]; indices.len()],
         vec![[0f32; 4]; indices.len()],
     );
-    s.fill_f32(&indices, &mut a);
-    s.fill_f32_portable(&indices, &mut b);
+    s.fill_f32(&indices, &mut a).unwrap();
+    s.fill_f32_portable(&indices, &mut b).unwrap();
     for (k, &i) in indices.iter().enumerate() {
         let want: [u32; 4] = core::array::from_fn(|d| {
             qmckit::bits::to_f32(owen.scramble(SobolDimension::new(d).unwrap().sample(i), d))
@@ -272,6 +272,18 @@ fn owen_sobol_fill_f32_matches_the_scalar_paths() {
         });
         assert_eq!(a[k].map(f32::to_bits), want, "dispatching fill at {i}");
         assert_eq!(b[k].map(f32::to_bits), want, "portable fill at {i}");
+    }
+    // Mismatched lengths are an error and leave `out` untouched.
+    let mut short = vec![[-1f32; 4]; 3];
+    for fill in [OwenSobol::fill_f32, OwenSobol::fill_f32_portable] {
+        assert_eq!(
+            fill(&s, &indices[..4], &mut short),
+            Err(qmckit::Error::BufferLength {
+                expected: 4,
+                got: 3
+            })
+        );
+        assert!(short.iter().all(|o| *o == [-1f32; 4]));
     }
 }
 

@@ -4,7 +4,7 @@
 #![cfg(feature = "std")]
 
 use qmckit::analysis::Points;
-use qmckit::analysis::dem::star_dem;
+use qmckit::analysis::star::dem::star_dem;
 use qmckit::analysis::star::{
     extreme_2d, star, star_1d, star_2d, star_exact, star_lower_bound, star_upper_bound,
 };
@@ -482,12 +482,15 @@ fn dem_on_nets_matches_brute_force() {
 
 #[test]
 fn dem_refuses_beyond_its_budget() {
-    use qmckit::analysis::dem::{max_points, work_estimate};
-    use qmckit::analysis::star::STAR_WORK_BUDGET;
+    use qmckit::analysis::star::STAR_RATE;
+    use qmckit::analysis::star::dem::{max_points, work_estimate};
+    // The default budget: ten seconds at STAR_RATE, 3e9 steps.
+    let steps = 3e9;
+    assert_eq!(STAR_RATE.steps_per_second() * 10.0, steps);
     for d in 3..=8 {
         let max = max_points(d) as usize;
-        assert!(work_estimate(max, d) <= STAR_WORK_BUDGET);
-        assert!(work_estimate(max + 1, d) > STAR_WORK_BUDGET);
+        assert!(work_estimate(max, d) <= steps);
+        assert!(work_estimate(max + 1, d) > steps);
         let data = vec![0.5; (max + 1) * d];
         let err = star_dem(Points::new(&data, d).unwrap()).unwrap_err();
         assert_eq!(
@@ -503,16 +506,20 @@ fn dem_refuses_beyond_its_budget() {
 
 #[test]
 fn dem_within_a_budget_reports_progress() {
-    use qmckit::analysis::dem::{max_points_within, star_dem_within, work_estimate};
-    use qmckit::analysis::star::star_exact_within;
+    use qmckit::analysis::budget::{Budget, no_progress};
+    use qmckit::analysis::star::dem::{max_points_within, star_dem_within, work_estimate};
+    use qmckit::analysis::star::{STAR_RATE, star_exact_within};
     use std::sync::Mutex;
+    // Budgets in steps at STAR_RATE.
+    let within = |steps: f64| Budget::seconds(steps / STAR_RATE.steps_per_second()).unwrap();
     // A larger budget admits more points; the refusal names the largest N within it.
-    for (d, budget) in [(3, 1e4), (4, 3e10), (6, 1.8e11)] {
-        let max = max_points_within(d, budget) as usize;
-        assert!(work_estimate(max, d) <= budget && work_estimate(max + 1, d) > budget);
+    for (d, steps) in [(3, 1e4), (4, 3e10), (6, 1.8e11)] {
+        let budget = within(steps);
+        let max = max_points_within(d, &budget) as usize;
+        assert!(work_estimate(max, d) <= steps && work_estimate(max + 1, d) > steps);
         let data = vec![0.25; (max + 1) * d];
         let p = Points::new(&data, d).unwrap();
-        let err = star_dem_within(p, budget, &|_, _| {}).unwrap_err();
+        let err = star_dem_within(p, &budget, &no_progress).unwrap_err();
         assert_eq!(
             err,
             qmckit::Error::TooManyPoints {
@@ -520,7 +527,10 @@ fn dem_within_a_budget_reports_progress() {
                 max: max as u64
             }
         );
-        assert_eq!(star_exact_within(p, budget, &|_, _| {}).unwrap_err(), err);
+        assert_eq!(
+            star_exact_within(p, &budget, &no_progress).unwrap_err(),
+            err
+        );
     }
     // 120 3D Sobol' points: more than the budget 1e4 admits (89: 1.25 N^2 <= 1e4); with a budget, the value
     // is brute force's, and every slab of the first cut is reported once.
@@ -529,9 +539,9 @@ fn dem_within_a_budget_reports_progress() {
     qmckit::Sampler::fill(&sobol, 0, &mut u).unwrap();
     let data = Points::from_u32(&u);
     let p = Points::new(&data, 3).unwrap();
-    assert!(star_dem_within(p, 1e4, &|_, _| {}).is_err());
+    assert!(star_dem_within(p, &within(1e4), &no_progress).is_err());
     let calls = Mutex::new(Vec::new());
-    let got = star_dem_within(p, 1e6, &|done, total| {
+    let got = star_dem_within(p, &within(1e6), &|done, total| {
         calls.lock().unwrap().push((done, total))
     })
     .unwrap();
@@ -539,14 +549,188 @@ fn dem_within_a_budget_reports_progress() {
     assert!((got - want).abs() < 1e-14, "{got} vs {want}");
     // Weighted progress in PROGRESS_STEPS, one report per slab and a last one at the total.
     let calls = calls.into_inner().unwrap();
-    let total = qmckit::analysis::dem::PROGRESS_STEPS;
+    let total = qmckit::analysis::star::dem::PROGRESS_STEPS;
     assert!(calls.len() > 5, "{calls:?}");
     assert!(calls.iter().all(|&(done, t)| t == total && done <= total));
     assert_eq!(calls.last(), Some(&(total, total)));
     for bad in [0.0, -1.0, f64::NAN] {
         assert!(matches!(
-            star_dem_within(p, bad, &|_, _| {}),
-            Err(qmckit::Error::Unsupported { .. })
+            Budget::seconds(bad),
+            Err(qmckit::Error::InvalidParameter { .. })
         ));
     }
+}
+
+/// Runs `f` on a thread with a 256 KiB stack: recursion that grew with the input would
+/// overflow it.
+fn on_small_stack<T: Send + 'static>(f: impl FnOnce() -> T + Send + 'static) -> T {
+    std::thread::Builder::new()
+        .stack_size(256 << 10)
+        .spawn(f)
+        .unwrap()
+        .join()
+        .unwrap()
+}
+
+#[test]
+fn star_of_one_point_in_huge_dimensions_needs_no_deep_stack() {
+    use qmckit::analysis::budget::{Budget, no_progress};
+    use qmckit::analysis::star::dem::DEM_MAX_DIMS;
+    use qmckit::analysis::star::star_exact_within;
+    for d in [DEM_MAX_DIMS + 1, 10_000, 21_201] {
+        let got = on_small_stack(move || {
+            // Three points, two with a coordinate 1 (never counted); the third is 1/2 in
+            // every coordinate but the last, 0.8. The box [0, 1)^(d-1) x [0, 0.8) misses it
+            // (volume 0.8); the whole cube holds one point (1 - 1/3); the smallest closed
+            // box holding it has volume 0.8 / 2^(d-1) (1/3 minus that): D* = 0.8.
+            let mut data = vec![0.5; 3 * d];
+            data[d - 1] = 0.8;
+            data[d] = 1.0;
+            data[3 * d - 1] = 1.0;
+            // (The default budget counts all three points: 0.005 * 3^((d + 3) / 2) steps.)
+            let p = Points::new(&data, d).unwrap();
+            let three = star_exact_within(p, &Budget::UNLIMITED, &no_progress).unwrap();
+            // The counted point alone: 1 - 0.8 / 2^(d - 1), i.e. 1 in f64.
+            let one = star_exact(Points::new(&data[..d], d).unwrap()).unwrap();
+            (three, one)
+        });
+        assert!((got.0 - 0.8).abs() < 1e-15, "d = {d}: {got:?}");
+        assert_eq!(got.1, 1.0);
+        // All three points with a coordinate 1: the empty open box [0, 1)^d gives 1.
+        let none = on_small_stack(move || {
+            let mut data = vec![0.25; 3 * d];
+            for i in 0..3 {
+                data[i * d + i] = 1.0;
+            }
+            let p = Points::new(&data, d).unwrap();
+            star_exact_within(p, &Budget::UNLIMITED, &no_progress).unwrap()
+        });
+        assert_eq!(none, 1.0);
+    }
+}
+
+#[test]
+fn single_point_closed_form_agrees_with_the_decomposition() {
+    // The decomposition in d <= 255 dimensions and the closed form above it compute the
+    // same function; check the closed form's formula against the decomposition on random
+    // points, then the closed-form path against the formula.
+    let formula = |x: &[f64], n: f64| {
+        let largest = x.iter().copied().fold(0.0, f64::max);
+        let vol: f64 = x.iter().product();
+        (n - 1.0).max(n * largest).max(1.0 - n * vol) / n
+    };
+    use qmckit::analysis::budget::{Budget, no_progress};
+    use qmckit::analysis::star::star_exact_within;
+    let mut rng = Rng(17);
+    for d in [3usize, 7, 40, 200, 255, 256, 600] {
+        for extra in 0..3 {
+            // Coordinates in [0.6, 1) for large d, anywhere in [0, 1) for small d, so that each
+            // of the three terms wins somewhere.
+            let lo = if d < 10 { 0.0 } else { 0.6 };
+            let x: Vec<f64> = (0..d).map(|_| lo + (1.0 - lo) * rng.uniform()).collect();
+            let mut data = x.clone();
+            for _ in 0..extra {
+                data.extend((0..d).map(|k| if k == 1 { 1.0 } else { 0.1 }));
+            }
+            let p = Points::new(&data, d).unwrap();
+            let got = star_exact_within(p, &Budget::UNLIMITED, &no_progress).unwrap();
+            let want = formula(&x, (1 + extra) as f64);
+            assert!((got - want).abs() < 1e-14, "d = {d}: {got} vs {want}");
+        }
+    }
+}
+
+#[test]
+fn two_points_in_huge_dimensions_are_refused_at_once() {
+    use qmckit::analysis::budget::{Budget, no_progress};
+    use qmckit::analysis::star::star_exact_within;
+    for d in [1000usize, 10_000, 21_201] {
+        let data = vec![0.5; 2 * d];
+        let p = Points::new(&data, d).unwrap();
+        let start = std::time::Instant::now();
+        assert_eq!(
+            star_exact(p),
+            Err(qmckit::Error::TooManyPoints {
+                requested: 2,
+                max: 1
+            })
+        );
+        // Without a budget, the decomposition's dimension limit.
+        let unlimited = star_exact_within(p, &Budget::UNLIMITED, &no_progress);
+        assert!(
+            matches!(unlimited, Err(qmckit::Error::TooLarge { max: 255, .. })),
+            "{unlimited:?}"
+        );
+        assert!(start.elapsed().as_secs_f64() < 1.0);
+    }
+}
+
+#[test]
+fn decomposition_at_its_dimension_limit_runs_on_a_small_stack() {
+    use qmckit::analysis::budget::{Budget, no_progress};
+    use qmckit::analysis::star::dem::{DEM_MAX_DIMS, star_dem_within};
+    let got = on_small_stack(|| {
+        // Two points: the origin and (1/2, .., 1/2). The closed box [0, 1/2]^d holds both
+        // (1 - 2^-d); a box holding only the origin has some side at most 1/2.
+        let d = DEM_MAX_DIMS;
+        let mut data = vec![0.0; d];
+        data.extend(vec![0.5; d]);
+        star_dem_within(
+            Points::new(&data, d).unwrap(),
+            &Budget::UNLIMITED,
+            &no_progress,
+        )
+        .unwrap()
+    });
+    assert_eq!(got, 1.0 - 0.5f64.powi(DEM_MAX_DIMS as i32));
+}
+
+#[test]
+fn exact_refusals_report_the_largest_set_within_the_budget() {
+    use qmckit::analysis::budget::Budget;
+    use qmckit::analysis::star::max_points_within;
+    // 2D: floor(sqrt(3e8 s)) for s seconds.
+    assert_eq!(max_points_within(2, &Budget::DEFAULT), 54_772);
+    assert_eq!(
+        max_points_within(2, &Budget::seconds(0.01).unwrap()),
+        1732 // sqrt(3e6) = 1732.05
+    );
+    assert_eq!(max_points_within(1, &Budget::DEFAULT), u64::MAX);
+    assert_eq!(max_points_within(2, &Budget::UNLIMITED), u64::MAX);
+    // d >= 3: 1.25 N^2 <= 3e9 in 3D (N = 48989, as the CLI documents).
+    assert_eq!(max_points_within(3, &Budget::DEFAULT), 48_989);
+}
+
+#[test]
+fn extreme_within_a_budget() {
+    use qmckit::analysis::budget::Budget;
+    use qmckit::analysis::star::extreme_2d_within;
+    // N^3 / 2 steps at 1.7e8 a second: 1503 points within ten seconds (1503^3 / 2 =
+    // 1.698e9 <= 1.7e9 < 1504^3 / 2), refused at once past it.
+    let data = vec![0.5; 2 * 1504];
+    let p = Points::new(&data, 2).unwrap();
+    let start = std::time::Instant::now();
+    assert_eq!(
+        extreme_2d_within(p, &Budget::DEFAULT),
+        Err(qmckit::Error::TooManyPoints {
+            requested: 1504,
+            max: 1503
+        })
+    );
+    assert!(start.elapsed().as_secs_f64() < 0.1);
+    // Within it, the same value as extreme_2d: one point, the degenerate closed box on it
+    // holds it with volume 0, so D = 1.
+    let one = Points::new(&[0.5, 0.5], 2).unwrap();
+    assert_eq!(extreme_2d_within(one, &Budget::DEFAULT), extreme_2d(one));
+    assert_eq!(extreme_2d(one), Ok(1.0));
+}
+
+#[test]
+#[allow(deprecated)]
+fn old_module_paths_still_work() {
+    // One point at the center of the cube: 1 - 1/8 (see dem_one_point_by_hand).
+    let p = Points::new(&[0.5, 0.5, 0.5], 3).unwrap();
+    assert_eq!(qmckit::analysis::dem::star_dem(p), Ok(0.875));
+    let b = qmckit::analysis::thiemard::bounds(p, 0.05).unwrap();
+    assert!(b.lower <= 0.875 && 0.875 <= b.upper);
 }

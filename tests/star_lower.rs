@@ -1,13 +1,13 @@
 //! `star_lower_bound` (threshold accepting after Gnewuch, Wahlström & Winzen 2012): never
 //! above the exact star discrepancy (`star_exact`, itself checked against brute force in
 //! `star_discrepancy.rs`), usually equal to it on small sets, and in 20D close to the lower
-//! bound of Thiémard's bracketing cover (`thiemard::bounds`), an independent algorithm.
+//! bound of Thiémard's bracketing cover (`star::thiemard::bounds`), an independent algorithm.
 #![cfg(feature = "std")]
 
 use qmckit::Sobol;
 use qmckit::analysis::Points;
+use qmckit::analysis::star::thiemard::bounds;
 use qmckit::analysis::star::{star, star_lower_bound};
-use qmckit::analysis::thiemard::bounds;
 
 mod common;
 use common::Rng;
@@ -67,4 +67,27 @@ fn sobol_20d_reaches_the_bracketing_lower_bound() {
     // Measured: 0.0612 against Thiémard's 0.0500; the uniform-neighbourhood search this
     // replaced found 0.0010 (= 1/N) at the same iteration count.
     assert!(lower >= thiemard, "{lower} vs {thiemard}");
+}
+
+#[test]
+fn threshold_accepting_is_budgeted() {
+    use qmckit::analysis::budget::Budget;
+    use qmckit::analysis::star::star_lower_bound_within;
+    // The same value as without a budget when it fits.
+    let data: Vec<f64> = (0..60).map(|i| ((i * 37) % 60) as f64 / 60.0).collect();
+    let p = Points::new(&data, 3).unwrap();
+    assert_eq!(
+        star_lower_bound_within(p, 5, 4000, &Budget::DEFAULT).unwrap(),
+        star_lower_bound(p, 5, 4000)
+    );
+    // One point in 20000 dimensions with a billion iterations: about 2e16 steps, refused at
+    // once.
+    let big = vec![0.5; 20_000];
+    let p = Points::new(&big, 20_000).unwrap();
+    let start = std::time::Instant::now();
+    assert!(matches!(
+        star_lower_bound_within(p, 0, 1_000_000_000, &Budget::DEFAULT),
+        Err(qmckit::Error::OverBudget { .. })
+    ));
+    assert!(start.elapsed().as_secs_f64() < 0.1);
 }

@@ -5,8 +5,8 @@
 #![cfg(feature = "std")]
 
 use qmckit::analysis::Points;
+use qmckit::analysis::star::thiemard::bounds;
 use qmckit::analysis::star::{star, star_upper_bound};
-use qmckit::analysis::thiemard::bounds;
 use qmckit::{Error, LarcherPillichshammer};
 
 mod common;
@@ -137,4 +137,94 @@ fn bad_delta_and_too_much_work() {
         bounds(p, 0.01),
         Err(Error::TooManyPoints { requested: 1, .. })
     ));
+}
+
+/// Runs `f` on a thread with a 256 KiB stack: recursion that grew with the input would
+/// overflow it.
+fn on_small_stack<T: Send + 'static>(f: impl FnOnce() -> T + Send + 'static) -> T {
+    std::thread::Builder::new()
+        .stack_size(256 << 10)
+        .spawn(f)
+        .unwrap()
+        .join()
+        .unwrap()
+}
+
+#[test]
+fn huge_dimensions_are_refused_at_once_without_allocating() {
+    // Two points in 1000 dimensions, one or two in 10000 and 20000: far beyond the budget at
+    // any delta below 1 (the root chain alone costs about 2 d^2 per step). Refused in well
+    // under a second, before the estimating pass allocates its 3 d^2 values (9.6 GB at
+    // d = 20000).
+    for (n, d) in [(2usize, 1000usize), (1, 10_000), (2, 20_000)] {
+        for delta in [0.05, 0.5, 0.99] {
+            let start = std::time::Instant::now();
+            let got = on_small_stack(move || {
+                let data = vec![0.5; n * d];
+                bounds(Points::new(&data, d).unwrap(), delta)
+            });
+            let secs = start.elapsed().as_secs_f64();
+            assert!(
+                matches!(got, Err(Error::TooManyPoints { max: 0, .. })),
+                "{n} {d} {delta}: {got:?}"
+            );
+            assert!(secs < 1.0, "{n} points, d = {d}, delta = {delta}: {secs} s");
+        }
+        // delta = 1: the whole cube is one bracket, worth max(A/N - 0, 1 - 0) = 1; D* = 1 in
+        // f64 (the closed [0, 1/2]^d holds every point: 1 - 2^-d), and the only corner met,
+        // the whole cube, gives the lower bound 0 (within delta of D*).
+        let b = on_small_stack(move || {
+            let data = vec![0.5; n * d];
+            bounds(Points::new(&data, d).unwrap(), 1.0).unwrap()
+        });
+        assert_eq!((b.lower, b.upper, b.brackets), (0.0, 1.0, 1));
+    }
+}
+
+#[test]
+fn bounds_stay_in_the_unit_interval_and_in_order() {
+    use qmckit::analysis::budget::Budget;
+    use qmckit::analysis::star::thiemard::bounds_within;
+    // The whole-cube bracket is worth exactly 1, the largest possible D*: the rounding
+    // margin must not lift the bound above it.
+    for (data, d) in [
+        (vec![0.25, 0.75, 0.5, 0.5], 2),
+        (vec![0.0, 0.0, 0.0], 3),
+        (vec![1.0, 1.0], 1),
+    ] {
+        let p = Points::new(&data, d).unwrap();
+        for delta in [1.0, 0.5, 0.1] {
+            let b = bounds(p, delta).unwrap();
+            assert!(
+                0.0 <= b.lower && b.lower <= b.upper && b.upper <= 1.0,
+                "{data:?} {delta}: {b:?}"
+            );
+            let exact = star(p).unwrap();
+            assert!(b.lower <= exact && exact <= b.upper, "{b:?} {exact}");
+        }
+    }
+    // A point at the origin: D* = 1 (the closed box [0, 0] holds it with volume 0).
+    let origin = [0.0, 0.0];
+    let b = bounds_within(Points::new(&origin, 2).unwrap(), 0.3, &Budget::DEFAULT).unwrap();
+    assert_eq!(b.upper, 1.0);
+    assert!(star_upper_bound(Points::new(&origin, 2).unwrap(), 1.0).unwrap() <= 1.0);
+}
+
+#[test]
+fn a_smaller_budget_refuses_sooner() {
+    use qmckit::analysis::budget::Budget;
+    use qmckit::analysis::star::thiemard::bounds_within;
+    // 1000 points in 5D at delta = 0.08 are accepted within ten seconds; a hundredth of a
+    // second is far too little, and the refusal is immediate.
+    let data: Vec<f64> = (0..5000)
+        .map(|i| ((i * 7919) % 1000) as f64 / 1000.0)
+        .collect();
+    let p = Points::new(&data, 5).unwrap();
+    let start = std::time::Instant::now();
+    let tiny = Budget::seconds(0.01).unwrap();
+    assert!(matches!(
+        bounds_within(p, 0.08, &tiny),
+        Err(Error::TooManyPoints { .. })
+    ));
+    assert!(start.elapsed().as_secs_f64() < 0.5);
 }

@@ -34,8 +34,8 @@ fn sobol_2d_is_a_0m2_net_for_every_m_up_to_20() {
     // (0, 2)-sequence in base 2: every 2^m prefix is a (0, m, 2)-net.
     for m in 0..=20 {
         let net = DigitalNet2::from_sobol(2, m).unwrap();
-        assert_eq!(t_value(&net), 0, "m = {m}");
-        assert_eq!(dependent_shape(&net), None);
+        assert_eq!(t_value(&net).unwrap(), 0, "m = {m}");
+        assert_eq!(dependent_shape(&net).unwrap(), None);
     }
 }
 
@@ -45,11 +45,11 @@ fn sobol_3d_joe_kuo_has_t_1_from_m_2() {
     // polynomials x, x + 1, x^2 + x + 1), so every 2^m prefix has t <= 1; with Joe & Kuo's
     // initial numbers it is exactly 1 for m >= 2 (t = 0 for m = 1: each first row is
     // nonzero). The counting test below checks the same values independently.
-    assert_eq!(t_value(&DigitalNet2::from_sobol(3, 1).unwrap()), 0);
+    assert_eq!(t_value(&DigitalNet2::from_sobol(3, 1).unwrap()).unwrap(), 0);
     for m in 2..=20 {
         let net = DigitalNet2::from_sobol(3, m).unwrap();
-        assert_eq!(t_value(&net), 1, "m = {m}");
-        let shape = dependent_shape(&net).unwrap();
+        assert_eq!(t_value(&net).unwrap(), 1, "m = {m}");
+        let shape = dependent_shape(&net).unwrap().unwrap();
         assert_eq!(shape.iter().sum::<u32>(), m, "m = {m}: shape {shape:?}");
     }
 }
@@ -58,20 +58,23 @@ fn sobol_3d_joe_kuo_has_t_1_from_m_2() {
 fn lp_hammersley_and_van_der_corput_have_t_0_up_to_m_20() {
     for m in 1..=20 {
         assert_eq!(
-            t_value(&DigitalNet2::larcher_pillichshammer(m).unwrap()),
+            t_value(&DigitalNet2::larcher_pillichshammer(m).unwrap()).unwrap(),
             0,
             "LP m = {m}"
         );
         assert_eq!(
-            t_value(&DigitalNet2::hammersley(m).unwrap()),
+            t_value(&DigitalNet2::hammersley(m).unwrap()).unwrap(),
             0,
             "Hammersley m = {m}"
         );
-        assert_eq!(t_value(&DigitalNet2::van_der_corput(m).unwrap()), 0);
+        assert_eq!(
+            t_value(&DigitalNet2::van_der_corput(m).unwrap()).unwrap(),
+            0
+        );
     }
     // m = 32, the full range.
     assert_eq!(
-        t_value(&DigitalNet2::larcher_pillichshammer(32).unwrap()),
+        t_value(&DigitalNet2::larcher_pillichshammer(32).unwrap()).unwrap(),
         0
     );
 }
@@ -82,15 +85,18 @@ fn the_rank_test_can_fail() {
     // boxes [0, 1/2) x [1/2, 1) are empty (shape (1, 1) fails) while every 1D shape is
     // balanced, so t = m - 1 for m >= 2 (and t = 0 for m = 1: (0, 0), (1/2, 1/2)).
     let c = *qmckit::sobol::directions(1).unwrap();
-    assert_eq!(t_value(&DigitalNet2::new(1, vec![c, c]).unwrap()), 0);
+    assert_eq!(
+        t_value(&DigitalNet2::new(1, vec![c, c]).unwrap()).unwrap(),
+        0
+    );
     for m in 2..=12 {
         let net = DigitalNet2::new(m, vec![c, c]).unwrap();
-        assert_eq!(t_value(&net), m - 1, "m = {m}");
-        assert_eq!(dependent_shape(&net), Some(vec![1, 1]));
+        assert_eq!(t_value(&net).unwrap(), m - 1, "m = {m}");
+        assert_eq!(dependent_shape(&net).unwrap(), Some(vec![1, 1]));
     }
     // A zero matrix: no point leaves [0, 1/2), t = m.
     let net = DigitalNet2::new(5, vec![[0; 32]]).unwrap();
-    assert_eq!(t_value(&net), 5);
+    assert_eq!(t_value(&net).unwrap(), 5);
 }
 
 #[test]
@@ -135,7 +141,7 @@ fn sobol_2d_blocks_are_0m2_nets_by_counting() {
 fn sobol_3d_counting_agrees_with_the_rank_test_up_to_m_12() {
     let s = Sobol::new(3).unwrap();
     for m in 1..=12 {
-        let want = t_value(&DigitalNet2::from_sobol(3, m).unwrap());
+        let want = t_value(&DigitalNet2::from_sobol(3, m).unwrap()).unwrap();
         assert_eq!(want, u32::from(m >= 2), "published t, m = {m}");
         let pts = block(&s, 0, m);
         assert_eq!(t_value_u32(&pts, 3, m).unwrap(), want, "m = {m}");
@@ -328,7 +334,7 @@ fn rank_test_agrees_with_counting_on_sobol_projections_and_random_matrices() {
     for dims in &sets {
         for m in [1, 4, 7, 10] {
             let net = DigitalNet2::from_sobol_dimensions(dims, m).unwrap();
-            let t = t_value(&net);
+            let t = t_value(&net).unwrap();
             let pts = net.points().unwrap();
             assert_eq!(
                 t_value_u32(&pts, dims.len(), m).unwrap(),
@@ -346,7 +352,7 @@ fn rank_test_agrees_with_counting_on_sobol_projections_and_random_matrices() {
             .map(|j| core::array::from_fn(|k| mix(seed * 1000 + j as u64 * 40 + k as u64) as u32))
             .collect();
         let net = DigitalNet2::new(m, columns).unwrap();
-        let t = t_value(&net);
+        let t = t_value(&net).unwrap();
         let pts = net.points().unwrap();
         assert_eq!(
             t_value_u32(&pts, s, m).unwrap(),
@@ -355,7 +361,7 @@ fn rank_test_agrees_with_counting_on_sobol_projections_and_random_matrices() {
         );
         checked_positive_t += usize::from(t > 0);
         // The dependent shape is among the intervals that break t - 1.
-        if let Some(shape) = dependent_shape(&net) {
+        if let Some(shape) = dependent_shape(&net).unwrap() {
             let failures = elementary_interval_failures_u32(&pts, s, m, t - 1, usize::MAX).unwrap();
             assert!(failures.iter().any(|f| f.shape == shape), "seed {seed}");
         } else {
@@ -399,4 +405,122 @@ fn invalid_requests_are_errors() {
     );
     assert_eq!(t_value_points(p, 2, 1), Ok(0));
     assert!(t_value_points(p, 2, 60).is_err());
+}
+
+/// Runs `f` on a thread with a 256 KiB stack: recursion that grew with the input would
+/// overflow it.
+fn on_small_stack<T: Send + 'static>(f: impl FnOnce() -> T + Send + 'static) -> T {
+    std::thread::Builder::new()
+        .stack_size(256 << 10)
+        .spawn(f)
+        .unwrap()
+        .join()
+        .unwrap()
+}
+
+#[test]
+fn rank_test_in_thousands_of_dimensions_needs_no_deep_stack() {
+    for d in [10_000usize, 10_057, 21_201] {
+        let (t, shape, net) = on_small_stack(move || {
+            let net = DigitalNet2::from_sobol(d, 2).unwrap();
+            (t_value(&net).unwrap(), dependent_shape(&net).unwrap(), net)
+        });
+        // With m = 2 a dimension's first row is one of three non-zero 2-bit vectors (no
+        // generator matrix of a Sobol' dimension has a zero first row, checked here on the
+        // points: every top bit is balanced), so among thousands of dimensions two share it
+        // (pigeonhole): a dependent shape of size 2, none of size 1, t = 1.
+        let pts = net.points().unwrap();
+        for j in 0..d {
+            let ones: u32 = (0..4).map(|i| pts[i * d + j] >> 31).sum();
+            assert_eq!(ones, 2, "d = {d}, dimension {j}");
+        }
+        assert_eq!(t, 1, "d = {d}");
+        let shape = shape.unwrap();
+        assert_eq!(shape.iter().sum::<u32>(), 2);
+        // The two dimensions of the shape fail the (0, 2, 2)-net property when counted.
+        let dims: Vec<usize> = (0..d).filter(|&j| shape[j] > 0).collect();
+        assert_eq!(dims.len(), 2, "{dims:?}");
+        let proj: Vec<u32> = (0..4)
+            .flat_map(|i| [pts[i * d + dims[0]], pts[i * d + dims[1]]])
+            .collect();
+        assert!(
+            !elementary_interval_failures_u32(&proj, 2, 2, 0, 1)
+                .unwrap()
+                .is_empty()
+        );
+    }
+}
+
+#[test]
+fn rank_tests_past_the_budget_are_refused_at_once() {
+    use qmckit::analysis::budget::{Budget, no_progress};
+    use qmckit::analysis::tvalue::t_value_within;
+    for (d, m) in [(50usize, 32u32), (1000, 20), (16, 32)] {
+        let net = DigitalNet2::from_sobol(d, m).unwrap();
+        let start = std::time::Instant::now();
+        let got = t_value(&net);
+        let secs = start.elapsed().as_secs_f64();
+        assert!(
+            matches!(got, Err(Error::OverBudget { .. })),
+            "d = {d}, m = {m}: {got:?}"
+        );
+        assert!(secs < 1.0, "d = {d}, m = {m}: {secs} s");
+        // A smaller budget refuses at least as soon.
+        let tiny = Budget::seconds(0.001).unwrap();
+        assert!(t_value_within(&net, &tiny, &no_progress).is_err());
+    }
+    // Within the budget, with progress: the same t as counting the points (an independent
+    // algorithm) on 5D Sobol' with m = 12.
+    use qmckit::analysis::tvalue::t_value_u32_within;
+    let net = DigitalNet2::from_sobol(5, 12).unwrap();
+    let reports = std::sync::Mutex::new(Vec::new());
+    let t = t_value_within(&net, &Budget::DEFAULT, &|done, total| {
+        reports.lock().unwrap().push((done, total))
+    })
+    .unwrap();
+    let pts = net.points().unwrap();
+    assert_eq!(
+        t,
+        t_value_u32_within(&pts, 5, 12, &Budget::UNLIMITED).unwrap()
+    );
+    let reports = reports.into_inner().unwrap();
+    assert_eq!(reports.last(), Some(&(1000, 1000)));
+    assert!(reports.iter().all(|&(d, t)| d <= t));
+}
+
+#[test]
+fn generated_points_and_counting_are_checked_in_size_and_time() {
+    use qmckit::analysis::budget::Budget;
+    use qmckit::analysis::tvalue::t_value_u32_within;
+    // 2^32 points in 2D are 32 GiB: an error, not an allocation.
+    let net = DigitalNet2::from_sobol(2, 32).unwrap();
+    assert!(matches!(net.points(), Err(Error::TooLarge { .. })));
+    assert!(matches!(
+        DigitalNet2::from_sobol(1, 29).unwrap().points(),
+        Err(Error::TooLarge { .. })
+    ));
+    assert_eq!(
+        DigitalNet2::from_sobol(3, 4)
+            .unwrap()
+            .points()
+            .unwrap()
+            .len(),
+        48
+    );
+    // Counting 2^16 points in 8D: about C(23, 7) shapes a level, refused at once by the
+    // default budget, computed without one.
+    let pts = DigitalNet2::from_sobol(8, 16).unwrap().points().unwrap();
+    let start = std::time::Instant::now();
+    assert!(matches!(
+        t_value_u32(&pts, 8, 16),
+        Err(Error::OverBudget { .. })
+    ));
+    assert!(start.elapsed().as_secs_f64() < 0.5);
+    let small = DigitalNet2::from_sobol(3, 8).unwrap();
+    let want = t_value(&small).unwrap();
+    let pts = small.points().unwrap();
+    assert_eq!(
+        t_value_u32_within(&pts, 3, 8, &Budget::UNLIMITED).unwrap(),
+        want
+    );
 }

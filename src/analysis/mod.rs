@@ -8,9 +8,7 @@
 //! |---|---|
 //! | [`budget`] | cost estimates, time budgets and progress reports shared by the super-linear measures |
 //! | [`l2`] | L2-star (Warnock), centered, wrap-around, mixture, symmetric, unanchored, generalized L2 discrepancies, diaphony |
-//! | [`star`] | star discrepancy: exact (1D closed form, 2D, d-D), extreme discrepancy in 2D |
-//! | [`dem`] | exact star discrepancy in d dimensions by the Dobkin–Eppstein–Mitchell decomposition |
-//! | [`thiemard`] | guaranteed lower and upper bounds on the star discrepancy (Thiémard's δ-bracketing cover) |
+//! | [`star`] | star discrepancy: exact (1D closed form, 2D sweep, d-D by the Dobkin–Eppstein–Mitchell decomposition in [`star::dem`]), guaranteed bounds ([`star::thiemard`], threshold accepting), extreme discrepancy in 2D |
 //! | [`tvalue`] | t-values of base-2 digital nets (generator matrices) and of point sets (elementary intervals) |
 //! | [`distance`] | minimum distance, optionally on the torus |
 //! | [`integration`] | integration error on test integrands with closed-form integrals (Genz's Gaussian peak and oscillatory, ball and half-space indicators) |
@@ -18,15 +16,25 @@
 //! | [`pointfile`] | reading point sets from text (the `qmckit discrepancy` input format) |
 
 pub mod budget;
-pub mod dem;
 pub mod distance;
 pub mod integration;
 pub mod l2;
 pub mod pointfile;
 pub mod spectrum;
 pub mod star;
-pub mod thiemard;
 pub mod tvalue;
+
+/// The Dobkin–Eppstein–Mitchell exact star discrepancy, now [`star::dem`].
+#[deprecated(note = "moved to `qmckit::analysis::star::dem`")]
+pub mod dem {
+    pub use super::star::dem::*;
+}
+
+/// Thiémard's bounds on the star discrepancy, now [`star::thiemard`].
+#[deprecated(note = "moved to `qmckit::analysis::star::thiemard`")]
+pub mod thiemard {
+    pub use super::star::thiemard::*;
+}
 
 use crate::{Error, Result};
 

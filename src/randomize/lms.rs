@@ -59,14 +59,36 @@ impl Lms {
 }
 
 impl Lms {
-    /// The matrices of dimensions `0..dims`, built once (128 bytes each): the same scramble
-    /// as `self`, at 32 AND/XOR steps a coordinate.
+    /// The matrices of dimensions `0..dims`, built once (128 bytes each, 32 hashes each):
+    /// the same scramble as `self`, at 32 AND/XOR steps a coordinate.
+    ///
+    /// ```
+    /// use qmckit::randomize::{Lms, Randomizer};
+    /// let cache = Lms::new(1).cached(3)?;
+    /// assert_eq!(cache.apply(12345, 2), Lms::new(1).apply(12345, 2));
+    /// assert!(Lms::new(1).cached(usize::MAX).is_err()); // 2^71 bytes: refused, no panic
+    /// # Ok::<(), qmckit::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`crate::Error::TooLarge`] (`what: "bytes"`) when `128 dims` bytes exceed
+    /// [`crate::size::MAX_ALLOC_BYTES`] (more than 2^23 dimensions) or the allocation fails.
     #[cfg(feature = "std")]
-    pub fn cached(&self, dims: usize) -> LmsCache {
-        LmsCache {
+    pub fn cached(&self, dims: usize) -> crate::Result<LmsCache> {
+        let bytes = crate::size::bytes(dims, core::mem::size_of::<LmsDimension>())?;
+        let mut matrices = Vec::new();
+        matrices
+            .try_reserve_exact(dims)
+            .map_err(|_| crate::Error::TooLarge {
+                what: "bytes",
+                requested: bytes as u64,
+                max: crate::size::MAX_ALLOC_BYTES,
+            })?;
+        matrices.extend((0..dims).map(|d| self.dimension(d)));
+        Ok(LmsCache {
             lms: *self,
-            dims: (0..dims).map(|d| self.dimension(d)).collect(),
-        }
+            dims: matrices,
+        })
     }
 }
 

@@ -79,7 +79,7 @@ const fn reversed4(index: u32) -> [u32; 4] {
 /// let mut px = [[0f32; 4]; 16];
 /// for pixel in 0..4u64 {
 ///     let s = s.with_seed(pixel); // four hashes
-///     s.fill_f32(&core::array::from_fn::<u32, 16, _>(|k| k as u32), &mut px);
+///     s.fill_f32(&core::array::from_fn::<u32, 16, _>(|k| k as u32), &mut px)?;
 ///     assert!(px.iter().flatten().all(|x| (0.0..1.0).contains(x)));
 ///     assert_eq!(px[5][2], s.sample_f32(5, 2)?);
 /// }
@@ -202,22 +202,45 @@ impl OwenSobol {
         self.sample4(index).map(to_f32_via_f64)
     }
 
-    /// `out[k] = sample4_f32(indices[k])` for every `k` (the shorter length wins), four
-    /// points (16 lanes) at a time. On x86-64 with `std` it runs the widest build of the
-    /// same loop the CPU supports, detected at run time: AVX-512 with GFNI, else AVX2, else
-    /// the portable one. The same bits on every build (tested against
-    /// [`sample4_f32`](Self::sample4_f32)).
-    pub fn fill_f32(&self, indices: &[u32], out: &mut [[f32; 4]]) {
+    /// `out[k] = sample4_f32(indices[k])` for every `k`, four points (16 lanes) at a time.
+    /// On x86-64 with `std` it runs the widest build of the same loop the CPU supports,
+    /// detected at run time: AVX-512 with GFNI, else AVX2, else the portable one. The same
+    /// bits on every build (tested against [`sample4_f32`](Self::sample4_f32)).
+    ///
+    /// # Errors
+    /// [`Error::BufferLength`] (`expected: indices.len()`, `got: out.len()`) unless the two
+    /// slices have the same length; `out` is then left untouched.
+    pub fn fill_f32(&self, indices: &[u32], out: &mut [[f32; 4]]) -> Result<()> {
+        check_lengths(indices, out)?;
         crate::dispatch::owen_sobol4_fill_f32(self, indices, out);
+        Ok(())
     }
 
     /// The portable build of [`fill_f32`](Self::fill_f32) (what other targets use).
-    pub fn fill_f32_portable(&self, indices: &[u32], out: &mut [[f32; 4]]) {
+    ///
+    /// # Errors
+    /// As [`fill_f32`](Self::fill_f32).
+    pub fn fill_f32_portable(&self, indices: &[u32], out: &mut [[f32; 4]]) -> Result<()> {
+        check_lengths(indices, out)?;
         fill_blocks(self, indices, out);
+        Ok(())
     }
 }
 
-/// The loop of every [`OwenSobol::fill_f32`] build. On 64-bit targets four points at a
+/// `Ok` when `out` has one slot per index.
+fn check_lengths(indices: &[u32], out: &[[f32; 4]]) -> Result<()> {
+    if indices.len() == out.len() {
+        Ok(())
+    } else {
+        Err(Error::BufferLength {
+            expected: indices.len(),
+            got: out.len(),
+        })
+    }
+}
+
+/// The loop of every [`OwenSobol::fill_f32`] build (the lengths are checked by the caller;
+/// the shorter one bounds the loop). On 64-bit targets four points at a
 /// time: their 16 coordinates form one array, so the hash, the reversal and the conversion
 /// are 16 lanes of identical work that the compiler maps onto vectors of the build's width;
 /// the last `len % 4` points go one by one. 32-bit targets go point by point (small code).

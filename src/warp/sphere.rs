@@ -82,8 +82,22 @@ pub fn invert_cosine_hemisphere(w: [f32; 3]) -> [f32; 2] {
     invert_uniform_disk_concentric([w[0], w[1]])
 }
 
+/// `cos theta_max` clamped into `[-1, 1]`; NaN reads as 1 (the degenerate cone, +z).
+#[inline]
+fn cone_cos(cos_theta_max: f32) -> f32 {
+    if cos_theta_max >= -1.0 {
+        cos_theta_max.min(1.0)
+    } else if cos_theta_max < -1.0 {
+        -1.0
+    } else {
+        1.0
+    }
+}
+
 /// Uniform direction in the cone of half-angle `theta_max` around +z (given as
-/// `cos theta_max` in `[-1, 1]`): `cos theta = 1 - u0 (1 - cos theta_max)`.
+/// `cos theta_max` in `[-1, 1]`): `cos theta = 1 - u0 (1 - cos theta_max)`, `phi = 2 pi u1`.
+/// A unit vector for every `u` in `[0, 1]^2` and every `cos_theta_max`: values outside
+/// `[-1, 1]` are clamped into it, NaN reads as 1 ([`UniformCone::new`] refuses both).
 ///
 /// ```
 /// use qmckit::warp::sphere::{sample_uniform_cone, uniform_cone_pdf};
@@ -93,7 +107,7 @@ pub fn invert_cosine_hemisphere(w: [f32; 3]) -> [f32; 2] {
 /// ```
 #[inline]
 pub fn sample_uniform_cone(u: [f32; 2], cos_theta_max: f32) -> [f32; 3] {
-    let z = 1.0 - u[0] * (1.0 - cos_theta_max);
+    let z = 1.0 - u[0] * (1.0 - cone_cos(cos_theta_max));
     around_z(z, u[1])
 }
 
@@ -101,13 +115,90 @@ pub fn sample_uniform_cone(u: [f32; 2], cos_theta_max: f32) -> [f32; 3] {
 /// angle inverted; infinite for a degenerate cone, `cos theta_max = 1`).
 #[inline]
 pub fn uniform_cone_pdf(cos_theta_max: f32) -> f32 {
-    1.0 / (2.0 * PI * (1.0 - cos_theta_max))
+    1.0 / (2.0 * PI * (1.0 - cone_cos(cos_theta_max)))
 }
 
 /// Inverse of [`sample_uniform_cone`]; `u0 = 0` for a degenerate cone.
 #[inline]
 pub fn invert_uniform_cone(w: [f32; 3], cos_theta_max: f32) -> [f32; 2] {
-    let span = 1.0 - cos_theta_max;
+    let span = 1.0 - cone_cos(cos_theta_max);
     let u0 = if span > 0.0 { (1.0 - w[2]) / span } else { 0.0 };
     [u0, turn_fraction(w[1], w[0])]
+}
+
+/// The cone of directions within `theta_max` of +z, validated once: `cos theta_max`
+/// finite and in `[-1, 1)`, so that the density `1 / (2 pi (1 - cos theta_max))` is finite
+/// (at most `2^24 / 2 pi`; `-1` is the whole sphere).
+///
+/// ```
+/// use qmckit::warp::sphere::UniformCone;
+/// let cone = UniformCone::from_half_angle(60f32.to_radians())?;
+/// let w = cone.sample([0.5, 0.0]);
+/// assert!((w[2] - 0.75).abs() < 1e-6); // cos theta = 1 - 0.5 (1 - 0.5)
+/// assert!(UniformCone::new(f32::NAN).is_err() && UniformCone::new(1.0).is_err());
+/// # Ok::<(), qmckit::Error>(())
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct UniformCone {
+    cos_theta_max: f32,
+}
+
+impl UniformCone {
+    /// The cone with `cos theta_max = cos_theta_max`.
+    ///
+    /// # Errors
+    /// [`crate::Error::InvalidParameter`] unless `cos_theta_max` is in `[-1, 1)`.
+    pub fn new(cos_theta_max: f32) -> crate::Result<Self> {
+        if (-1.0..1.0).contains(&cos_theta_max) {
+            Ok(UniformCone { cos_theta_max })
+        } else if cos_theta_max == 1.0 {
+            Err(crate::Error::InvalidParameter {
+                what: "the cone is degenerate: cos(theta_max) rounds to 1 in f32 \
+                       (a half-angle below about 2.5e-4 rad, 0.014 degrees)",
+            })
+        } else {
+            Err(crate::Error::InvalidParameter {
+                what: "the cone's cos(theta_max) must be in [-1, 1) (a half-angle in (0, pi])",
+            })
+        }
+    }
+
+    /// The cone of half-angle `theta_max` radians, in `(0, pi]`, through `cosf`.
+    ///
+    /// # Errors
+    /// [`crate::Error::InvalidParameter`] unless `theta_max` is in `(0, pi]` and large
+    /// enough that `cos theta_max` rounds below 1 (about `2.5e-4` rad).
+    pub fn from_half_angle(theta_max: f32) -> crate::Result<Self> {
+        if theta_max > 0.0 && theta_max <= PI {
+            Self::new(libm::cosf(theta_max))
+        } else {
+            Err(crate::Error::InvalidParameter {
+                what: "the cone's half-angle must be in (0, pi]",
+            })
+        }
+    }
+
+    /// `cos theta_max`.
+    pub fn cos_theta_max(&self) -> f32 {
+        self.cos_theta_max
+    }
+
+    /// [`sample_uniform_cone`]: a unit vector within the cone.
+    #[inline]
+    pub fn sample(&self, u: [f32; 2]) -> [f32; 3] {
+        sample_uniform_cone(u, self.cos_theta_max)
+    }
+
+    /// [`uniform_cone_pdf`]: finite.
+    #[inline]
+    pub fn pdf(&self) -> f32 {
+        uniform_cone_pdf(self.cos_theta_max)
+    }
+
+    /// [`invert_uniform_cone`].
+    #[inline]
+    pub fn invert(&self, w: [f32; 3]) -> [f32; 2] {
+        invert_uniform_cone(w, self.cos_theta_max)
+    }
 }

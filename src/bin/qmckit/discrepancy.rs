@@ -4,12 +4,14 @@ use std::io::{BufWriter, Write};
 
 use clap::{Args, ValueEnum};
 use qmckit::analysis::Points;
+use qmckit::analysis::budget::Budget;
 use qmckit::analysis::l2::L2Metric;
 use qmckit::analysis::pointfile::PointSet;
-use qmckit::analysis::{star, thiemard};
+use qmckit::analysis::star;
+use qmckit::analysis::star::thiemard;
 
 use super::Failure;
-use super::budget::BudgetArgs;
+use super::budget::{BudgetArgs, over_budget};
 use super::input::{InputArgs, read_point_sets, set_label};
 use super::points::value_name;
 use super::progress::{with_progress, with_spinner};
@@ -32,8 +34,11 @@ Conventions:
   star-bounds  guaranteed bounds on D* for sets too large for the exact value: two lines,
             'star-lower' (the best of Thiemard's cover and threshold accepting: a value
             D* reaches) and 'star-upper' (Thiemard's cover: at most D* + delta); --delta
-            sets the gap (default 0.05; smaller is slower, refused past a work budget)
-  extreme   extreme (unanchored box) discrepancy, exact, 2D only, N <= 1200
+            sets the gap (default 0.05; smaller is slower). Both are estimated first and
+            refused when the estimate exceeds --max-seconds (e.g. any delta < 1 for two
+            points in 1000 dimensions; delta 0.0002 in 2D, 0.08 in 5D for 1000 points fit).
+  extreme   extreme (unanchored box) discrepancy, exact, 2D only, refused past
+            --max-seconds (N^3 / 2 steps at 1.7e8 a second: N <= 1503 by default)
   l2-star   L2-star (Warnock), square root taken (SciPy method=\"L2-star\")
   cd        centered L2, squared (SciPy method=\"CD\")
   wd        wrap-around L2, squared (SciPy method=\"WD\")
@@ -133,19 +138,7 @@ fn refusal(e: qmckit::Error, what: &str, set: &PointSet, limit: &str) -> String 
             set.len(),
             set.dims
         ),
-        other => other.to_string(),
-    }
-}
-
-/// The exact star discrepancy's work budget for `--max-seconds seconds`.
-fn star_budget(seconds: f64) -> Result<f64, Failure> {
-    if seconds.is_finite() && seconds > 0.0 {
-        // STAR_WORK_BUDGET is calibrated to about ten seconds.
-        Ok(star::STAR_WORK_BUDGET * seconds / 10.0)
-    } else {
-        Err(Failure::usage(format!(
-            "--max-seconds must be a positive number of seconds, not {seconds}"
-        )))
+        other => over_budget(other),
     }
 }
 
@@ -160,7 +153,7 @@ fn measure(
     p: Points<'_>,
     set: &PointSet,
     args: &DiscrepancyArgs,
-    star_budget: f64,
+    budget: &Budget,
 ) -> Result<Vec<(String, f64)>, String> {
     let name = value_name(&metric);
     if let Some(l2) = metric.l2() {
@@ -170,18 +163,28 @@ fn measure(
         Metric::Star => {
             let limit = format!(" within --max-seconds {}", args.budget.max_seconds);
             with_progress(&name, |progress| {
-                star::star_exact_within(p, star_budget, progress)
+                star::star_exact_within(p, budget, progress)
             })
             .map_err(|e| refusal(e, "star", set, &limit))
         }
         Metric::StarBounds => {
-            let b = with_spinner(&name, || thiemard::bounds(p, args.delta))
-                .map_err(|e| refusal(e, "star-bounds", set, ""))?;
+            let b = with_spinner(&name, || thiemard::bounds_within(p, args.delta, budget))
+                .map_err(|e| match e {
+                    qmckit::Error::TooManyPoints { max: 0, .. } => format!(
+                        "star-bounds: Thiemard's cover at --delta {} takes longer than \
+                         --max-seconds {} for {} dimensions; take a larger delta",
+                        args.delta, args.budget.max_seconds, set.dims
+                    ),
+                    e => refusal(e, "star-bounds", set, ""),
+                })?;
             let ta = with_spinner(&name, || {
-                star::star_lower_bound(p, 0, lower_bound_iterations(p))
-            });
+                star::star_lower_bound_within(p, 0, lower_bound_iterations(p), budget)
+            })
+            .map_err(over_budget)?;
+            // Both are valid lower bounds, the cover's upper bound is valid too: D* lies
+            // between, so their order only breaks by rounding.
             return Ok(vec![
-                ("star-lower".to_owned(), b.lower.max(ta)),
+                ("star-lower".to_owned(), b.lower.max(ta).min(b.upper)),
                 ("star-upper".to_owned(), b.upper),
             ]);
         }
@@ -189,9 +192,8 @@ fn measure(
             "extreme is implemented for 2-dimensional points only, not {}",
             set.dims
         )),
-        Metric::Extreme => {
-            with_spinner(&name, || star::extreme_2d(p)).map_err(|e| refusal(e, "extreme", set, ""))
-        }
+        Metric::Extreme => with_spinner(&name, || star::extreme_2d_within(p, budget))
+            .map_err(|e| refusal(e, "extreme", set, "")),
         _ => unreachable!("l2 metrics are handled above and 'all' is expanded"),
     }?;
     Ok(vec![(name, value)])
@@ -214,7 +216,7 @@ fn expand(asked: &[Metric]) -> Vec<Metric> {
 
 /// Runs `qmckit discrepancy`.
 pub fn run(args: &DiscrepancyArgs) -> Result<(), Failure> {
-    let budget = star_budget(args.budget.max_seconds)?;
+    let budget = args.budget.budget()?;
     let (name, sets) = read_point_sets(&args.input)?;
     let all = args.metric.contains(&Metric::All);
     let metrics = expand(&args.metric);
@@ -227,7 +229,7 @@ pub fn run(args: &DiscrepancyArgs) -> Result<(), Failure> {
             writeln!(out, "# set {}", k + 1)?;
         }
         for &metric in &metrics {
-            match measure(metric, p, set, args, budget) {
+            match measure(metric, p, set, args, &budget) {
                 Ok(lines) => {
                     for (label, value) in lines {
                         writeln!(out, "{label} {value:.16e}")?;

@@ -67,7 +67,7 @@ impl Failure {
 
 impl From<qmckit::Error> for Failure {
     fn from(e: qmckit::Error) -> Self {
-        Failure::usage(e.to_string())
+        Failure::usage(budget::over_budget(e))
     }
 }
 

@@ -47,7 +47,7 @@ pub enum SamplerName {
     Stratified,
     /// Latin hypercube: one point in each of the n slabs of every axis.
     Latin,
-    /// Van der Corput sequence, 1D (base 2 unless `points --base` says otherwise).
+    /// Van der Corput sequence, 1D (base 2; other bases in `points`).
     Vdc,
     /// Halton sequence: radical inverses in the first d primes.
     Halton,
@@ -314,7 +314,7 @@ pub fn build(args: &Spec) -> Result<Box<dyn Sampler>, Failure> {
             FastOwen::with_hash(seed, OwenHash::LaineKarras),
         )),
         (Built::Digital(s), K::Lms) => {
-            let lms = Lms::new(seed).cached(s.dims());
+            let lms = Lms::new(seed).cached(s.dims())?;
             Box::new(Scrambled::new(s, (lms, DigitalShift::new(seed))))
         }
         (Built::Digital(s), K::ShuffleOwen) => Box::new(Shuffled::new(
@@ -464,7 +464,9 @@ pub fn run(args: &PointsArgs) -> Result<(), Failure> {
     if args.n == 0 {
         return Err(Failure::usage("-n must be at least 1"));
     }
-    let sampler = build(&args.spec()?)?;
+    let spec = args.spec()?;
+    args.warp.check_options()?;
+    let sampler = build(&spec)?;
     let dims = sampler.dims();
     let start = args.start.unwrap_or(0);
     let end = qmckit::size::end(start, args.n, sampler.len()).map_err(|e| match e {

@@ -3,14 +3,17 @@
 
 use std::io::Write;
 
-use clap::Args;
+use clap::{Args, ValueEnum};
+use qmckit::analysis::budget::{Budget, Cost};
 use qmckit::analysis::tvalue::{
-    DigitalNet2, IntervalFailure, elementary_interval_failures_u32, t_value, t_value_u32,
+    COUNT_RATE, DigitalNet2, IntervalFailure, count_steps, elementary_interval_failures_u32_within,
+    t_value_u32_within, t_value_within,
 };
 
 use super::Failure;
+use super::budget::BudgetArgs;
 use super::points::{SamplerName, ScrambleName, Spec, samples_u32, value_name};
-use super::progress::with_spinner;
+use super::progress::{with_progress, with_spinner};
 
 /// Text shown after the options of `qmckit tvalue --help`.
 pub const AFTER_HELP: &str = "\
@@ -18,11 +21,13 @@ Samplers (base 2 only): sobol (any d), lp (d = 2), hammersley (d = 2: (i/2^m, ph
 vdc (d = 1, base 2). Other samplers are refused.
 
 Method: without --scramble, the rank test on the generator matrices (exact, m <= 32; its
-cost grows like C(m - t + 1 + d, d), fast for small d). With --scramble KIND (any kind
-`qmckit points` accepts for the sampler), the 2^m points are generated and counted in
-elementary intervals (exact; m <= 21, 2^m * d <= 2^25, and 2^m d C(m + d - 1, d - 1) <= 1e8
-steps, e.g. m <= 21 in 2D, m <= 17 in 3D; larger requests are refused). --explain counts too,
-so it has the same limits.
+cost grows like C(m - t + 1 + d, d), fast for small d; estimated first and refused when the
+estimate exceeds --max-seconds, e.g. -m 32 -d 50 or -m 20 -d 1000). With --scramble KIND
+(any kind `qmckit points` accepts for the sampler), the 2^m points are generated and counted
+in elementary intervals (exact; m <= 21 and 2^m * d <= 2^25, and an estimated
+log2(m) C(m + d - 1, d - 1) 2^m (d + 1) steps at 1e8 a second within --max-seconds: e.g.
+m <= 21 in 2D, m <= 15 in 4D by default; larger requests are refused). --explain counts
+too, so it has the same limits.
 
 Output, one 'key value' line each:
   sampler NAME
@@ -35,11 +40,36 @@ With --explain and t > 0, up to five 'fail ...' lines follow, each an elementary
 of volume 2^(t-1-m) that does not hold 2^(t-1) points (why t-1 fails), e.g.
   fail shape [1, 2]: [0, 1)/2^1 x [3, 4)/2^2 holds 0 point(s), 1 expected";
 
+/// The base-2 constructions `tvalue` measures.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum TvalueSampler {
+    /// Sobol' sequence, any d.
+    Sobol,
+    /// Larcher–Pillichshammer net, d = 2.
+    Lp,
+    /// Hammersley set in base 2, d = 2: (i/2^m, phi_2(i)).
+    Hammersley,
+    /// Van der Corput sequence in base 2, d = 1.
+    Vdc,
+}
+
+impl TvalueSampler {
+    /// The construction as `points` names it.
+    fn name(self) -> SamplerName {
+        match self {
+            TvalueSampler::Sobol => SamplerName::Sobol,
+            TvalueSampler::Lp => SamplerName::Lp,
+            TvalueSampler::Hammersley => SamplerName::Hammersley,
+            TvalueSampler::Vdc => SamplerName::Vdc,
+        }
+    }
+}
+
 /// Arguments of `qmckit tvalue`.
 #[derive(Args, Debug)]
 pub struct TvalueArgs {
-    /// Which construction: sobol, lp, hammersley or vdc.
-    sampler: SamplerName,
+    /// Which construction.
+    sampler: TvalueSampler,
     /// The set has 2^m points (m <= 32; m <= 21 when counting).
     #[arg(short = 'm', value_name = "M")]
     m: u32,
@@ -55,15 +85,14 @@ pub struct TvalueArgs {
     /// Name up to five elementary intervals that break t-1.
     #[arg(long)]
     explain: bool,
+    #[command(flatten)]
+    budget: BudgetArgs,
 }
 
 /// Largest `m` whose points are generated and counted.
 const COUNT_MAX_M: u32 = 21;
 /// Largest number of coordinates (`2^m d`) generated for counting.
 const COUNT_MAX_VALUES: u64 = 1 << 25;
-
-/// Largest [`count_work`] accepted: seconds on two cores.
-const COUNT_MAX_WORK: f64 = 1e8;
 
 /// Failures listed by `--explain`.
 const EXPLAIN_LIMIT: usize = 5;
@@ -108,15 +137,8 @@ fn net(sampler: SamplerName, m: u32, d: usize) -> Result<DigitalNet2, Failure> {
     })
 }
 
-/// Estimated steps of counting `2^m` points of `d` dimensions into the cells of every
-/// interval shape of size up to `m`: `2^m d C(m + d - 1, d - 1)`.
-fn count_work(m: u32, d: usize) -> f64 {
-    let shapes = (1..d).fold(1.0, |c, k| c * (m as f64 + k as f64) / k as f64);
-    (1u64 << m) as f64 * d as f64 * shapes
-}
-
 /// Refuses point counts too large to generate and count in reasonable time and memory.
-fn check_countable(m: u32, d: usize, why: &str) -> Result<(), Failure> {
+fn check_countable(m: u32, d: usize, why: &str, budget: &Budget) -> Result<(), Failure> {
     let values = (1u64 << m).saturating_mul(d as u64);
     if m > COUNT_MAX_M || values > COUNT_MAX_VALUES {
         return Err(Failure::usage(format!(
@@ -124,11 +146,12 @@ fn check_countable(m: u32, d: usize, why: &str) -> Result<(), Failure> {
              (m <= {COUNT_MAX_M} and 2^m * d <= 2^25)"
         )));
     }
-    let work = count_work(m, d);
-    if work > COUNT_MAX_WORK {
+    let levels = u32::BITS - m.leading_zeros();
+    let cost = Cost::steps(count_steps(1u64 << m, d, m, levels), COUNT_RATE);
+    if let Err(e) = budget.check("counting", cost) {
         return Err(Failure::usage(format!(
             "{why} counts points: 2^{m} points of {d} dimensions take too long to count \
-             (about {work:.1e} steps, at most {COUNT_MAX_WORK:.0e}); lower -m or -d"
+             ({e}); lower -m or -d, or raise --max-seconds"
         )));
     }
     Ok(())
@@ -136,33 +159,40 @@ fn check_countable(m: u32, d: usize, why: &str) -> Result<(), Failure> {
 
 /// Runs `qmckit tvalue`.
 pub fn run(args: &TvalueArgs) -> Result<(), Failure> {
+    let budget = args.budget.budget()?;
+    let sampler = args.sampler.name();
     let m = args.m;
     if m > 32 {
         return Err(Failure::usage(format!(
             "-m {m}: at most 32 (2^m points of 32-bit coordinates)"
         )));
     }
-    let d = args.sampler.dims(args.d);
+    let d = sampler.dims(args.d);
     if d == 0 {
         return Err(Failure::usage("-d must be at least 1"));
     }
     // Validates the sampler and d for both methods.
-    let net = net(args.sampler, m, d)?;
+    let net = net(sampler, m, d)?;
     let counting = args.scramble != ScrambleName::None;
     if args.explain {
-        check_countable(m, d, "--explain")?;
+        check_countable(m, d, "--explain", &budget)?;
     }
     let (t, samples) = if counting {
-        check_countable(m, d, "--scramble")?;
-        let spec = Spec::base2(args.sampler, 1u64 << m, d, args.scramble, args.seed);
+        check_countable(m, d, "--scramble", &budget)?;
+        let spec = Spec::base2(sampler, 1u64 << m, d, args.scramble, args.seed);
         let (samples, dims) = samples_u32(&spec)?;
-        let t = with_spinner("t-value (counting)", || t_value_u32(&samples, dims, m))?;
+        let t = with_spinner("t-value (counting)", || {
+            t_value_u32_within(&samples, dims, m, &Budget::UNLIMITED)
+        })?;
         (t, Some(samples))
     } else {
-        (with_spinner("t-value (rank test)", || t_value(&net)), None)
+        let t = with_progress("t-value (rank test)", |progress| {
+            t_value_within(&net, &budget, progress)
+        })?;
+        (t, None)
     };
     let mut out = std::io::stdout().lock();
-    writeln!(out, "sampler {}", value_name(&args.sampler))?;
+    writeln!(out, "sampler {}", value_name(&sampler))?;
     writeln!(out, "scramble {}", value_name(&args.scramble))?;
     writeln!(out, "m {m}\nd {d}")?;
     writeln!(out, "method {}", if counting { "count" } else { "rank" })?;
@@ -173,7 +203,14 @@ pub fn run(args: &TvalueArgs) -> Result<(), Failure> {
             None => net.points()?,
         };
         let failures: Vec<IntervalFailure> = with_spinner("elementary intervals", || {
-            elementary_interval_failures_u32(&samples, d, m, t - 1, EXPLAIN_LIMIT)
+            elementary_interval_failures_u32_within(
+                &samples,
+                d,
+                m,
+                t - 1,
+                EXPLAIN_LIMIT,
+                &Budget::UNLIMITED,
+            )
         })?;
         for f in failures {
             writeln!(out, "fail {f}")?;

@@ -1,7 +1,12 @@
-//! `--warp NAME`: map the 2D samples onto a domain (DESIGN.md §4, issue 5).
+//! `--warp NAME`: map the 2D samples onto a domain. The geometry is validated by the
+//! library's constructors (`UniformCone`, `Triangle`, `SphericalTriangle`,
+//! `SphericalRectangle`); what they refuse is a one-line usage error.
 
 use clap::{Args, ValueEnum};
-use qmckit::warp::{disk, gaussian, sphere, spherical, triangle};
+use qmckit::warp::sphere::UniformCone;
+use qmckit::warp::spherical::{SphericalRectangle, SphericalTriangle};
+use qmckit::warp::triangle::Triangle;
+use qmckit::warp::{disk, gaussian, sphere, triangle};
 
 use super::Failure;
 
@@ -38,19 +43,68 @@ pub struct WarpArgs {
     /// Map the points through a warp; output is real-valued (--format csv or npy).
     #[arg(long, value_enum)]
     pub warp: Option<WarpName>,
-    /// Cone half-angle in degrees (0 < angle <= 180), for --warp cone.
-    #[arg(long, default_value_t = 30.0)]
-    pub cone_angle: f32,
+    /// Cone half-angle in degrees (0 < angle <= 180; at least about 0.014, where its cosine
+    /// is still below 1 in f32), for --warp cone [default: 30].
+    #[arg(long)]
+    pub cone_angle: Option<f32>,
     /// Triangle corners "x,y[,z];x,y[,z];x,y[,z]" for --warp triangle / spherical-triangle.
+    /// Coordinates within +-2^64; the triangle not degenerate (collinear within 2^-20), and
+    /// for spherical-triangle --origin off its plane (by 2^-20 of the distance) with a solid
+    /// angle of at least 2^-24 sr.
     #[arg(long, allow_hyphen_values = true)]
     pub vertices: Option<String>,
-    /// Rectangle "corner;edge_x;edge_y" (3 numbers each, edges perpendicular) for
-    /// --warp spherical-rectangle.
+    /// Rectangle "corner;edge_x;edge_y" (3 numbers each) for --warp spherical-rectangle.
+    /// Coordinates within +-2^64; edges perpendicular (|cos| <= 2^-16) and at least 2^-20 of
+    /// the distance long; --origin off the rectangle's plane (by 2^-20 of the distance) with
+    /// a solid angle of at least 2^-24 sr.
     #[arg(long, allow_hyphen_values = true)]
     pub rect: Option<String>,
-    /// Viewpoint "x,y,z" of the spherical warps.
-    #[arg(long, default_value = "0,0,0", allow_hyphen_values = true)]
-    pub origin: String,
+    /// Viewpoint "x,y,z" of the spherical warps [default: 0,0,0].
+    #[arg(long, allow_hyphen_values = true)]
+    pub origin: Option<String>,
+}
+
+impl WarpArgs {
+    /// Refuses every warp option that the chosen warp (or no warp) does not use.
+    pub fn check_options(&self) -> Result<(), Failure> {
+        use WarpName as W;
+        let uses: [(&str, bool, &[WarpName]); 4] = [
+            ("--cone-angle", self.cone_angle.is_some(), &[W::Cone]),
+            (
+                "--vertices",
+                self.vertices.is_some(),
+                &[W::Triangle, W::SphericalTriangle],
+            ),
+            ("--rect", self.rect.is_some(), &[W::SphericalRectangle]),
+            (
+                "--origin",
+                self.origin.is_some(),
+                &[W::SphericalTriangle, W::SphericalRectangle],
+            ),
+        ];
+        for (option, given, warps) in uses {
+            if !given {
+                continue;
+            }
+            match self.warp {
+                None => {
+                    return Err(Failure::usage(format!(
+                        "{option} does not apply without --warp"
+                    )));
+                }
+                Some(w) if !warps.contains(&w) => {
+                    return Err(Failure::usage(format!(
+                        "{option} does not apply to --warp {}",
+                        w.to_possible_value()
+                            .map(|v| v.get_name().to_owned())
+                            .unwrap_or_default()
+                    )));
+                }
+                Some(_) => {}
+            }
+        }
+        Ok(())
+    }
 }
 
 /// A list of `count` points of `dims` numbers: "a,b,c;d,e,f".
@@ -90,13 +144,25 @@ fn v3(p: &[f32]) -> [f32; 3] {
     [p[0], p[1], p[2]]
 }
 
+/// The geometry of a warp, validated by the library.
+enum Geometry {
+    None,
+    Cone(UniformCone),
+    Triangle2(Triangle<2>),
+    Triangle3(Triangle<3>),
+    SphericalTriangle(SphericalTriangle),
+    SphericalRectangle(SphericalRectangle),
+}
+
 /// A prepared warp: output width and the per-point map of `u` (`dims` fractions in [0, 1)).
 pub struct Warp {
     name: WarpName,
-    cos_max: f32,
-    vertices: Vec<Vec<f32>>,
-    rect: Vec<[f32; 3]>,
-    origin: [f32; 3],
+    geometry: Geometry,
+}
+
+/// A one-line usage error for geometry the library refuses.
+fn refused(flags: &str, e: qmckit::Error) -> Failure {
+    Failure::usage(format!("{flags}: degenerate or out-of-range geometry: {e}"))
 }
 
 impl Warp {
@@ -117,108 +183,99 @@ impl Warp {
                 "--warp box-muller maps pairs: -d must be even, got {dims}"
             )));
         }
-        if name == W::Cone && !(args.cone_angle > 0.0 && args.cone_angle <= 180.0) {
+        let cone_angle = args.cone_angle.unwrap_or(30.0);
+        if name == W::Cone && !(cone_angle > 0.0 && cone_angle <= 180.0) {
             return Err(Failure::usage(format!(
-                "--cone-angle {} is out of range: it must be in (0, 180] degrees",
-                args.cone_angle
+                "--cone-angle {cone_angle} is out of range: it must be in (0, 180] degrees"
             )));
         }
-        let origin = parse_points("--origin", &args.origin, 1, &[3])?;
-        let vertices = match (name, &args.vertices) {
-            (W::Triangle, Some(v)) => parse_points("--vertices", v, 3, &[2, 3])?,
-            (W::SphericalTriangle, Some(v)) => parse_points("--vertices", v, 3, &[3])?,
-            (W::SphericalTriangle, None) => {
+        let origin_text = args.origin.as_deref().unwrap_or("0,0,0");
+        let origin = v3(&parse_points("--origin", origin_text, 1, &[3])?[0]);
+        let geometry = match (name, &args.vertices, &args.rect) {
+            (W::Cone, _, _) => Geometry::Cone(
+                UniformCone::new(libm::cosf(cone_angle.to_radians()))
+                    .map_err(|e| refused("--cone-angle", e))?,
+            ),
+            (W::Triangle, Some(v), _) => {
+                let p = parse_points("--vertices", v, 3, &[2, 3])?;
+                if p[0].len() == 2 {
+                    let p2 = |k: usize| [p[k][0], p[k][1]];
+                    Geometry::Triangle2(
+                        Triangle::new([p2(0), p2(1), p2(2)])
+                            .map_err(|e| refused("--vertices", e))?,
+                    )
+                } else {
+                    Geometry::Triangle3(
+                        Triangle::new([v3(&p[0]), v3(&p[1]), v3(&p[2])])
+                            .map_err(|e| refused("--vertices", e))?,
+                    )
+                }
+            }
+            (W::SphericalTriangle, Some(v), _) => {
+                let p = parse_points("--vertices", v, 3, &[3])?;
+                Geometry::SphericalTriangle(
+                    SphericalTriangle::new([v3(&p[0]), v3(&p[1]), v3(&p[2])], origin)
+                        .map_err(|e| refused("--vertices/--origin", e))?,
+                )
+            }
+            (W::SphericalTriangle, None, _) => {
                 return Err(Failure::usage(
                     "--warp spherical-triangle needs --vertices \"x,y,z;x,y,z;x,y,z\"",
                 ));
             }
-            _ => Vec::new(),
-        };
-        let rect = match (name, &args.rect) {
-            (W::SphericalRectangle, Some(r)) => parse_points("--rect", r, 3, &[3])?
-                .iter()
-                .map(|p| v3(p))
-                .collect(),
-            (W::SphericalRectangle, None) => {
+            (W::SphericalRectangle, _, Some(r)) => {
+                let p = parse_points("--rect", r, 3, &[3])?;
+                Geometry::SphericalRectangle(
+                    SphericalRectangle::new(origin, v3(&p[0]), v3(&p[1]), v3(&p[2]))
+                        .map_err(|e| refused("--rect/--origin", e))?,
+                )
+            }
+            (W::SphericalRectangle, _, None) => {
                 return Err(Failure::usage(
                     "--warp spherical-rectangle needs --rect \"corner;edge_x;edge_y\"",
                 ));
             }
-            _ => Vec::new(),
+            _ => Geometry::None,
         };
-        let w = Warp {
-            name,
-            cos_max: libm::cosf(args.cone_angle.to_radians()),
-            vertices,
-            rect,
-            origin: v3(&origin[0]),
-        };
-        // Refuse degenerate geometry once, instead of failing on every point.
-        if w.map(&[0.5, 0.5])?.iter().any(|x| !x.is_finite()) {
-            return Err(Failure::usage("the warp's geometry is degenerate"));
-        }
-        Ok(w)
+        Ok(Warp { name, geometry })
     }
 
     /// Output values per point for `dims` inputs.
     pub fn width(&self, dims: usize) -> usize {
         use WarpName as W;
-        match self.name {
-            W::Disk | W::DiskPolar => 2,
-            W::Triangle if self.vertices.first().is_some_and(|v| v.len() == 2) => 2,
-            W::BoxMuller | W::Normal => dims,
+        match (self.name, &self.geometry) {
+            (W::Disk | W::DiskPolar, _) => 2,
+            (_, Geometry::Triangle2(_)) => 2,
+            (W::BoxMuller | W::Normal, _) => dims,
             _ => 3,
         }
     }
 
-    /// The warped point of `u`.
+    /// The warped point of `u`: finite for every `u` in [0, 1) (the library's guarantee for
+    /// validated geometry).
     pub fn map(&self, u: &[f32]) -> Result<Vec<f32>, Failure> {
         use WarpName as W;
         let uv = || [u[0], u[1]];
-        Ok(match self.name {
-            W::Disk => disk::sample_uniform_disk_concentric(uv()).to_vec(),
-            W::DiskPolar => disk::sample_uniform_disk_polar(uv()).to_vec(),
-            W::Hemisphere => sphere::sample_uniform_hemisphere(uv()).to_vec(),
-            W::CosineHemisphere => sphere::sample_cosine_hemisphere(uv()).to_vec(),
-            W::Sphere => sphere::sample_uniform_sphere(uv()).to_vec(),
-            W::Cone => sphere::sample_uniform_cone(uv(), self.cos_max).to_vec(),
-            W::Triangle => {
-                let b = triangle::sample_uniform_triangle(uv());
-                match self.vertices.as_slice() {
-                    [p0, p1, p2] => (0..p0.len())
-                        .map(|k| b[0] * p0[k] + b[1] * p1[k] + b[2] * p2[k])
-                        .collect(),
-                    _ => b.to_vec(),
-                }
-            }
-            W::SphericalTriangle => {
-                let v = [
-                    v3(&self.vertices[0]),
-                    v3(&self.vertices[1]),
-                    v3(&self.vertices[2]),
-                ];
-                spherical::sample_spherical_triangle(v, self.origin, uv())
-                    .ok_or_else(|| {
-                        Failure::usage("the spherical triangle is degenerate seen from --origin")
-                    })?
-                    .0
-                    .to_vec()
-            }
-            W::SphericalRectangle => spherical::sample_spherical_rectangle(
-                self.origin,
-                self.rect[0],
-                self.rect[1],
-                self.rect[2],
-                uv(),
-            )
-            .ok_or_else(|| Failure::usage("the rectangle is degenerate seen from --origin"))?
-            .0
-            .to_vec(),
-            W::BoxMuller => u
+        Ok(match (self.name, &self.geometry) {
+            (W::Disk, _) => disk::sample_uniform_disk_concentric(uv()).to_vec(),
+            (W::DiskPolar, _) => disk::sample_uniform_disk_polar(uv()).to_vec(),
+            (W::Hemisphere, _) => sphere::sample_uniform_hemisphere(uv()).to_vec(),
+            (W::CosineHemisphere, _) => sphere::sample_cosine_hemisphere(uv()).to_vec(),
+            (W::Sphere, _) => sphere::sample_uniform_sphere(uv()).to_vec(),
+            (_, Geometry::Cone(c)) => c.sample(uv()).to_vec(),
+            (_, Geometry::Triangle2(t)) => t.sample(uv()).0.to_vec(),
+            (_, Geometry::Triangle3(t)) => t.sample(uv()).0.to_vec(),
+            (_, Geometry::SphericalTriangle(t)) => t.sample(uv()).0.to_vec(),
+            (_, Geometry::SphericalRectangle(r)) => r.sample(uv()).0.to_vec(),
+            (W::Triangle, _) => triangle::sample_uniform_triangle(uv()).to_vec(),
+            (W::BoxMuller, _) => u
                 .chunks_exact(2)
                 .flat_map(|p| gaussian::sample_box_muller([p[0], p[1]]))
                 .collect(),
-            W::Normal => u.iter().map(|&x| gaussian::sample_normal(x)).collect(),
+            (W::Normal, _) => u.iter().map(|&x| gaussian::sample_normal(x)).collect(),
+            (W::Cone | W::SphericalTriangle | W::SphericalRectangle, Geometry::None) => {
+                return Err(Failure::usage("the warp's geometry is missing"));
+            }
         })
     }
 }

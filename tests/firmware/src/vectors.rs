@@ -595,7 +595,9 @@ fn sobol<W: Write>(out: &mut W) -> fmt::Result {
             d4.push(x);
         }
         let mut f = [[0f32; 4]; 1];
-        OWEN_SOBOL4.fill_f32(&[i], &mut f);
+        if let Err(e) = OWEN_SOBOL4.fill_f32(&[i], &mut f) {
+            return writeln!(out, "owen_sobol4_f32 err {e}");
+        }
         for x in f[0] {
             df.push(x.to_bits());
         }
@@ -660,7 +662,7 @@ fn warp_inputs() -> impl Iterator<Item = [u32; 2]> {
 /// M4F's FPU and the host's SSE): digests of outputs, pdfs and inverses.
 fn warps<W: Write>(out: &mut W) -> fmt::Result {
     use qmckit::bits::{to_f32, to_fixed};
-    use qmckit::{fixed_warp as fw, warp};
+    use qmckit::warp::{self, fixed as fw};
     let (mut fixed, mut fixed_inv, mut float, mut float_inv) =
         (Digest::new(), Digest::new(), Digest::new(), Digest::new());
     for [x, y] in warp_inputs() {

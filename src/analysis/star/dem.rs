@@ -6,7 +6,7 @@
 //! # The problem on integer ranks
 //!
 //! Coordinate `k` of the points counted by some box (those with every coordinate below 1,
-//! see [`super::star`]) takes `M_k - 1` distinct values `g_k[0] < ... < g_k[M_k - 2]`, and
+//! see [`super`]) takes `M_k - 1` distinct values `g_k[0] < ... < g_k[M_k - 2]`, and
 //! `g_k[M_k - 1] = 1`. A point has *level* `p_k = rank(x_k) + 1` in `1 ..= M_k - 1`, and for a
 //! lattice vector `t` (`0 <= t_k <= M_k`)
 //!
@@ -69,135 +69,127 @@
 //! the second cut 1.7% and 1.1%: the first cut alone would cap the speed-up near 8 whatever
 //! the number of cores.
 //!
-//! Measured with `examples/time_dem.rs` (first `N` Sobol' points, two threads, load about
+//! Measured with the `time_dem` example (first `N` Sobol' points, two threads, load about
 //! 1.5). 6D: `N` = 500 in 8.4 s, 600 in 17 s, 800 in 43 s, 1000 in 86 s, 2000 in 17 minutes
-//! (1026 s). Before the table bounds, on the same machine: 600 in 37 s, 800 in 123 s, 1000
-//! in 285 s, growing like `N^4`. Other dimensions: `d = 3`: 40000 in 5.3 s; `d = 4`: 6000
+//! (1026 s); without the table bounds the time grows like `N^4` (1000 points: 285 s).
+//! Other dimensions: `d = 3`: 40000 in 5.3 s; `d = 4`: 6000
 //! in 10.5 s; `d = 5`: 1300 in 9.0 s; `d = 7`: 260 in 10.9 s; `d = 8`: 150 in 8.5 s;
-//! `d = 10`: 70 in 8.2 s. [`work_estimate`] is fitted to these; [`star_dem_within`] takes a
-//! larger budget than [`star_dem`]'s ten seconds.
+//! `d = 10`: 70 in 8.2 s. [`work_estimate`] is fitted to these; [`star_dem_within`] takes
+//! another budget than [`star_dem`]'s ten seconds.
 
-use super::Points;
+use super::cells::{
+    SortedPrefix, closed_slack, convolve_max, convolve_min, merge_sorted, open_slack,
+};
+use super::cost::within;
+pub use super::cost::{max_points, max_points_within, work_estimate};
+use crate::analysis::Points;
+use crate::analysis::budget::{Budget, Progress, no_progress};
 use crate::{Error, Result};
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicU64, Ordering};
 
+/// The most dimensions the decomposition runs in for two or more counted points: its walk
+/// nests one level per coordinate and a slab point records its coordinate in a byte, so
+/// both stay bounded. The bound is never reached in practice: two points in 256 dimensions
+/// are estimated at more than `10^36` steps ([`work_estimate`]). A set with at most one
+/// counted point has a closed form (see [`star_dem_within`]) and no dimension limit.
+pub const DEM_MAX_DIMS: usize = 255;
+
 /// Exact star discrepancy `D*_N` of `points` (any `d >= 1`) by the Dobkin–Eppstein–Mitchell
 /// decomposition (see the [module documentation](self)), including the open/closed
-/// boundary cases of [`super::star`]: the maximum over the critical grid of
+/// boundary cases of [`super`]: the maximum over the critical grid of
 /// `max(vol - open/N, closed/N - vol)`, a point with a coordinate equal to 1 never counted.
 ///
 /// Time `O(N^(1 + d/2))` (less with pruning), memory `O(N d)` per thread; measured times in
 /// the [module documentation](self). Results are within a few ulps of the exact value
 /// (volumes are products of grid coordinates in `f64`), exact for dyadic sets with few bits.
-/// [`star_dem_within`] takes a larger budget and reports progress.
+/// [`star_dem_within`] takes another budget and reports progress.
 ///
 /// # Errors
-/// [`Error::TooManyPoints`] when [`work_estimate`] exceeds
-/// [`super::star::STAR_WORK_BUDGET`]; `max` is the largest `N` within budget for this `d`.
+/// As [`star_dem_within`] with [`Budget::DEFAULT`].
 ///
 /// ```
-/// use qmckit::analysis::{Points, dem::star_dem};
+/// use qmckit::analysis::{Points, star::dem::star_dem};
 /// // One point at the center of the cube: the closed box [0, 1/2]^3 holds it,
 /// // 1 - 1/8 = 7/8.
 /// assert_eq!(star_dem(Points::new(&[0.5, 0.5, 0.5], 3)?)?, 0.875);
 /// # Ok::<(), qmckit::Error>(())
 /// ```
 pub fn star_dem(points: Points<'_>) -> Result<f64> {
-    star_dem_within(points, super::star::STAR_WORK_BUDGET, &|_, _| {})
+    star_dem_within(points, &Budget::DEFAULT, &no_progress)
 }
 
-/// [`star_dem`] with the work budget `budget` (inner-loop steps, as [`work_estimate`]
-/// counts them; [`super::star::STAR_WORK_BUDGET`] is about ten seconds on a 2-core
-/// machine) and a progress report: `progress(done, PROGRESS_STEPS)` is called, from any
-/// thread, each time one of the slabs of the first cut is finished (and once at the end
-/// with `done = PROGRESS_STEPS`). A slab counts as its estimated share of the work (those
-/// with more points take longer): `done` is a rough fraction of the time, not a count.
+/// [`star_dem`] within the time budget `budget` ([`work_estimate`] steps at
+/// [`STAR_RATE`](super::STAR_RATE), checked in `O(1)` before anything is allocated) with a progress report:
+/// `progress(done, PROGRESS_STEPS)` is called, from any thread, each time one of the slabs
+/// of the first cut is finished (and once at the end with `done = PROGRESS_STEPS`). A slab
+/// counts as its estimated share of the work (those with more points take longer): `done`
+/// is a rough fraction of the time, not a count.
+///
+/// In more than [`DEM_MAX_DIMS`] dimensions a set with at most one counted point (every
+/// coordinate below 1) is evaluated by its closed form: with no counted point the empty
+/// open box `[0, 1)^d` gives `D*_N = 1`; with one, `x`,
+/// `N D*_N = max(N - 1, N max_k x_k, 1 - N prod_k x_k)` (the whole cube holds it; a box
+/// missing it has volume at most `max_k x_k`; the smallest closed box holding it is
+/// `[0, x]`), in `O(N d)`.
 ///
 /// # Errors
 /// [`Error::TooManyPoints`] when [`work_estimate`] exceeds `budget` (`max`: the largest
-/// `N` within it); [`Error::Unsupported`] when `budget` is not a positive number.
+/// `N` within it, [`max_points_within`]); [`Error::TooLarge`] for two or more counted points
+/// in more than [`DEM_MAX_DIMS`] dimensions.
 ///
 /// ```
-/// use qmckit::analysis::{Points, dem::star_dem_within};
+/// use qmckit::analysis::budget::Budget;
+/// use qmckit::analysis::{Points, star::dem::star_dem_within};
 /// use std::sync::atomic::{AtomicUsize, Ordering};
 /// let calls = AtomicUsize::new(0);
 /// let p = Points::new(&[0.5, 0.5, 0.5, 0.25, 0.75, 0.125], 3)?;
-/// let d = star_dem_within(p, 1e6, &|_, _| {
+/// let d = star_dem_within(p, &Budget::DEFAULT, &|_, _| {
 ///     calls.fetch_add(1, Ordering::Relaxed);
 /// })?;
 /// assert!(d >= 0.75 && calls.load(Ordering::Relaxed) >= 1);
 /// # Ok::<(), qmckit::Error>(())
 /// ```
-pub fn star_dem_within(
-    points: Points<'_>,
-    budget: f64,
-    progress: &(dyn Fn(usize, usize) + Sync),
-) -> Result<f64> {
-    super::star::check_budget(budget)?;
+pub fn star_dem_within(points: Points<'_>, budget: &Budget, progress: Progress<'_>) -> Result<f64> {
     let (n, d) = (points.len(), points.dims());
-    let work = work_estimate(n, d);
-    if work > budget {
+    if !within(work_estimate(n, d), budget) {
         return Err(Error::TooManyPoints {
             requested: n as u64,
             max: max_points_within(d, budget),
         });
     }
+    if d > DEM_MAX_DIMS {
+        let mut counted = points.iter().filter(|p| p.iter().all(|&x| x < 1.0));
+        let first = counted.next();
+        if counted.next().is_some() {
+            return Err(Error::TooLarge {
+                what: "dimensions for the exact star discrepancy of two or more points",
+                requested: d as u64,
+                max: DEM_MAX_DIMS as u64,
+            });
+        }
+        progress(PROGRESS_STEPS, PROGRESS_STEPS);
+        return Ok(single_point(first, n as f64));
+    }
     Ok(dem_from(points, progress))
+}
+
+/// `D*_N` of a set whose only counted point is `x` (or none), `N = n`: see
+/// [`star_dem_within`].
+fn single_point(x: Option<&[f64]>, n: f64) -> f64 {
+    let Some(x) = x else {
+        return 1.0;
+    };
+    let largest = x.iter().copied().fold(0.0, f64::max);
+    let vol: f64 = x.iter().product();
+    (n - 1.0).max(n * largest).max(1.0 - n * vol) / n
 }
 
 /// The `total` of [`star_dem_within`]'s progress reports.
 pub const PROGRESS_STEPS: usize = 1000;
 
-/// Estimated work of [`star_dem`] for `n` points in `d` dimensions, on the scale of
-/// [`super::star::STAR_WORK_BUDGET`] (3e9, about ten seconds on the shared 2-core machine):
-///
-/// * `d <= 2`: `N^(1 + d/2)`;
-/// * `3 <= d <= 7`: `1.25 N^((d + 1)/2)`. The cell bounds of the last coordinate (module
-///   documentation) remove about a factor `sqrt N` from Dobkin, Eppstein & Mitchell's
-///   `N^(1 + d/2)` on these sizes: doubling `N` multiplied the time by `2^1.7` at `d = 3`,
-///   `2^2.1`, `2^2.6`, `2^3.2` (`N` = 600 to 1000) and `2^3.7` at `d = 7`;
-/// * `d >= 8`: `0.005 N^((d + 3)/2)`: here the bounds gain less, `d = 8` grew like `N^5.4`
-///   from 150 to 190 points.
-///
-/// Fitted to Sobol' points (slower than random ones) with `examples/time_dem.rs`, two
-/// threads, load about 1.5. The budget then admits `N` up to 48989, 5650, 1338, 478, 221,
-/// 138 for `d` = 3..8; measured nearby: 40000 3D points in 5.3 s, 6000 4D in 10.5 s, 1300
-/// 5D in 9.0 s, 500 6D in 8.4 s, 260 7D in 10.9 s, 150 8D in 8.5 s (estimated 15.5; 190
-/// 8D: 30 s against 57). It is conservative for high `d` (70 10D points: 8.2 s against 16
-/// estimated; 40 12D: 3.1 s against 17) and for large sets at `d <= 7` (1000 6D points:
-/// 86 s against 132). A loaded machine runs slower. Ties make a set faster than
-/// estimated.
-pub fn work_estimate(n: usize, d: usize) -> f64 {
-    let n = n as f64;
-    match d {
-        0..=2 => n.powf(1.0 + d as f64 / 2.0),
-        3..=7 => 1.25 * n.powf((d + 1) as f64 / 2.0),
-        _ => 0.005 * n.powf((d + 3) as f64 / 2.0),
-    }
-}
-
-/// Largest `N` whose [`work_estimate`] is within [`super::star::STAR_WORK_BUDGET`].
-pub fn max_points(d: usize) -> u64 {
-    max_points_within(d, super::star::STAR_WORK_BUDGET)
-}
-
-/// Largest `N` whose [`work_estimate`] is within `budget`.
-pub fn max_points_within(d: usize, budget: f64) -> u64 {
-    let (mut lo, mut hi) = (1u64, 1u64 << 40);
-    while lo < hi {
-        let mid = lo + (hi - lo).div_ceil(2);
-        if work_estimate(mid as usize, d) <= budget {
-            lo = mid;
-        } else {
-            hi = mid - 1;
-        }
-    }
-    lo
-}
-
 /// [`star_dem_within`] without the work check.
-fn dem_from(points: Points<'_>, progress: &(dyn Fn(usize, usize) + Sync)) -> f64 {
+fn dem_from(points: Points<'_>, progress: Progress<'_>) -> f64 {
     let d = points.dims();
     let n = points.len() as f64;
     let counted: Vec<&[f64]> = points
@@ -356,7 +348,7 @@ impl Ctx<'_> {
     /// The whole walk over `counted` points; the slabs of the first cut run in parallel,
     /// and `progress(done, PROGRESS_STEPS)` follows them, each slab weighted by its
     /// estimated share of the work.
-    fn run(&self, counted: u32, progress: &(dyn Fn(usize, usize) + Sync)) {
+    fn run(&self, counted: u32, progress: Progress<'_>) {
         let d = self.d;
         let all: Vec<u32> = (0..counted).collect();
         if d == 1 {
@@ -706,240 +698,5 @@ impl Ctx<'_> {
             small.push(self.b(k, v));
         }
         big.push(self.a(k, hi));
-    }
-}
-
-/// `S` such that `N vol - count <= V - R - S` for every open box of a cell, where
-/// `V = N prod_k A_k(hi_k)` is its largest volume (times `N`), `R` its points below in every
-/// coordinate, and `tables` its per-coordinate tables `big` (see [`Ctx::tables`]: `big[c]`,
-/// non-decreasing, is the largest `A_k` counting `c` slab points, `big[m] = A_k(hi_k)`).
-///
-/// With `r_k = big_k[c_k] / big_k[m_k]` in `[rho_k, 1]`, `rho_k = big_k[0] / big_k[m_k]`, the
-/// product is at most the linear `1 - a sum_k (1 - r_k)` for
-/// `a = (1 - prod_k rho_k) / sum_k (1 - rho_k)`: the difference is multilinear, so it is
-/// largest at a vertex of the box, where coordinates `S` sit at `rho`, and
-/// `(1 - prod_S rho) / sum_S (1 - rho)` only falls as `S` grows (adding `x = 1 - rho_j` to `S`
-/// keeps the ratio or lowers it exactly when `P (1 + X) <= 1` for `P = prod_S rho`,
-/// `X = sum_S (1 - rho)`, and `P <= e^-X`). So
-/// `N vol - count <= V - R - sum_k (a V (1 - r_k) + c_k)`, and each coordinate gives up at
-/// least `min_c (a V (1 - r_k[c]) + c)`: `S` is the sum of these minima. `V > 0`.
-///
-/// `tables` pairs each table with `1 / big[m]`. Every minimum is non-negative, so the sum
-/// stops once it reaches `enough` (the caller only asks whether `S >= enough`).
-fn open_slack<'a>(
-    v: f64,
-    enough: f64,
-    tables: impl Iterator<Item = (&'a [f64], f64)> + Clone,
-) -> f64 {
-    let (mut prod, mut sum) = (1.0, 0.0);
-    for (t, inv_top) in tables.clone() {
-        let rho = t[0] * inv_top;
-        prod *= rho;
-        sum += 1.0 - rho;
-    }
-    let av = if sum > 0.0 { v * (1.0 - prod) / sum } else { v };
-    let mut slack = 0.0;
-    for (t, inv_top) in tables {
-        let scale = av * inv_top;
-        slack += t
-            .iter()
-            .enumerate()
-            .map(|(c, &x)| av - x * scale + c as f64)
-            .fold(f64::INFINITY, f64::min);
-        if slack >= enough {
-            break;
-        }
-    }
-    slack
-}
-
-/// `M` such that `count - N vol <= R - W + M` for every closed box of a cell, where
-/// `W = N prod_k B_k(lo_k) > 0` is its smallest volume (times `N`), `R` its points below in
-/// every coordinate and `tables` its tables `small` (see [`Ctx::tables`]: `small[c]`,
-/// non-decreasing, is the smallest `B_k` counting `c` slab points, `small[0] = B_k(lo_k)`).
-///
-/// With `w_k = small_k[c_k] / small_k[0] >= 1`, `prod_k w_k >= 1 + sum_k (w_k - 1)` (expand the
-/// product: every other term is non-negative), so
-/// `count - N vol <= R - W + sum_k (c_k - W (w_k - 1))`: `M` is the sum over the coordinates
-/// of the largest `c - W (w_k[c] - 1)` (at most the coordinate's slab count). `tables` pairs
-/// each table with `1 / small[0]`.
-fn closed_slack<'a>(w: f64, tables: impl Iterator<Item = (&'a [f64], f64)>) -> f64 {
-    tables
-        .map(|(t, inv_bottom)| {
-            let scale = w * inv_bottom;
-            t.iter()
-                .enumerate()
-                .map(|(c, &x)| c as f64 - (x * scale - w))
-                .fold(f64::NEG_INFINITY, f64::max)
-        })
-        .sum()
-}
-
-/// A list sorted by a key, made from a prefix of some source list that grows between
-/// calls of [`extend`](Self::extend): only the items new to the prefix are sorted, then
-/// merged in (`O(new log new + len)` instead of a full sort). [`reset`](Self::reset) when
-/// the source list changes.
-#[derive(Default)]
-struct SortedPrefix<T> {
-    list: Vec<T>,
-    /// Source items already in `list`.
-    merged: usize,
-    /// Scratch: the items new to `list`.
-    fresh: Vec<T>,
-}
-
-impl<T: Copy + Default> SortedPrefix<T> {
-    fn reset(&mut self) {
-        self.list.clear();
-        self.merged = 0;
-    }
-
-    /// Makes `list` the items `map(s)` of `prefix`, sorted by `key`. `prefix` extends the
-    /// previous call's (a shorter one starts over).
-    fn extend<S>(&mut self, prefix: &[S], map: impl Fn(&S) -> T, key: impl Fn(&T) -> u32) {
-        if self.merged > prefix.len() {
-            self.reset();
-        }
-        self.fresh.clear();
-        self.fresh.extend(prefix[self.merged..].iter().map(map));
-        self.fresh.sort_unstable_by_key(&key);
-        merge_sorted(&mut self.list, &self.fresh, key);
-        self.merged = prefix.len();
-    }
-}
-
-impl<T> core::ops::Deref for SortedPrefix<T> {
-    type Target = [T];
-
-    fn deref(&self) -> &[T] {
-        &self.list
-    }
-}
-
-/// Merges `more` into `list`, both sorted by `key`, from the back, in place.
-fn merge_sorted<T: Copy + Default>(list: &mut Vec<T>, more: &[T], key: impl Fn(&T) -> u32) {
-    let mut i = list.len();
-    list.resize(i + more.len(), T::default());
-    let mut j = more.len();
-    let mut out = list.len();
-    while j > 0 {
-        out -= 1;
-        if i > 0 && key(&list[i - 1]) > key(&more[j - 1]) {
-            i -= 1;
-            list[out] = list[i];
-        } else {
-            j -= 1;
-            list[out] = more[j];
-        }
-    }
-}
-
-/// `out[a + b] = max over a, b of x[a] * y[b]` (non-negative entries).
-fn convolve_max(x: &[f64], y: &[f64], out: &mut Vec<f64>) {
-    convolve(x, y, out, 0.0, |p, o| if p > o { p } else { o });
-}
-
-/// `out[a + b] = min over a, b of x[a] * y[b]`.
-fn convolve_min(x: &[f64], y: &[f64], out: &mut Vec<f64>) {
-    convolve(x, y, out, f64::INFINITY, |p, o| if p < o { p } else { o });
-}
-
-/// `out[a + b] = pick over a, b of x[a] * y[b]` for the associative `pick` with identity
-/// `none`; `y` is not empty.
-#[inline(always)]
-fn convolve(x: &[f64], y: &[f64], out: &mut Vec<f64>, none: f64, pick: impl Fn(f64, f64) -> f64) {
-    out.clear();
-    let Some((&y0, rest)) = y.split_first() else {
-        return;
-    };
-    // The first row sets the entries; the tables `y` are short (a coordinate's slab
-    // points), the prefixes `x` long: the inner loop runs over `x`, contiguous, so it
-    // vectorizes.
-    out.extend(x.iter().map(|&xa| xa * y0));
-    out.resize(x.len() + y.len() - 1, none);
-    for (b, &yb) in rest.iter().enumerate() {
-        for (o, &xa) in out[b + 1..].iter_mut().zip(x) {
-            *o = pick(xa * yb, *o);
-        }
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::{closed_slack, open_slack};
-
-    /// Random non-decreasing positive tables from a small LCG.
-    fn tables(seed: u64, count: usize) -> Vec<Vec<f64>> {
-        let mut s = seed;
-        let mut next = move || {
-            s = s
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (s >> 11) as f64 / (1u64 << 53) as f64
-        };
-        (0..count)
-            .map(|_| {
-                let len = 1 + (next() * 4.0) as usize;
-                let mut t: Vec<f64> = (0..len).map(|_| 0.05 + next()).collect();
-                t.sort_by(f64::total_cmp);
-                t
-            })
-            .collect()
-    }
-
-    /// Every choice of one entry per table (its index is its count), as
-    /// `(sum of counts, product of entry / reference)`.
-    fn choices(t: &[Vec<f64>], reference: impl Fn(&[f64]) -> f64) -> Vec<(f64, f64)> {
-        let mut all = vec![(0.0, 1.0)];
-        for table in t {
-            let r = reference(table);
-            all = all
-                .iter()
-                .flat_map(|&(c, p)| {
-                    table
-                        .iter()
-                        .enumerate()
-                        .map(move |(k, &x)| (c + k as f64, p * x / r))
-                })
-                .collect();
-        }
-        all
-    }
-
-    #[test]
-    fn slacks_bound_every_box_and_are_tight_for_one_table() {
-        for seed in 0..300 {
-            let t = tables(seed, 1 + seed as usize % 4);
-            let v = 1.0 + seed as f64 * 0.37;
-            let tops = || t.iter().map(|x| (&x[..], 1.0 / x[x.len() - 1]));
-            let bottoms = || t.iter().map(|x| (&x[..], 1.0 / x[0]));
-            // Open: N vol - count = v prod(r) - sum(c) <= v - slack.
-            let slack = open_slack(v, f64::INFINITY, tops());
-            let open = choices(&t, |x| x[x.len() - 1]);
-            let open_max = open
-                .iter()
-                .map(|&(c, p)| v * p - c)
-                .fold(f64::MIN, f64::max);
-            assert!(
-                open_max <= v - slack + 1e-12,
-                "seed {seed}: {open_max} > {v} - {slack}"
-            );
-            // Closed: count - N vol = sum(c) - w prod(w_k) <= -w + most.
-            let most = closed_slack(v, bottoms());
-            let closed = choices(&t, |x| x[0]);
-            let closed_max = closed
-                .iter()
-                .map(|&(c, p)| c - v * p)
-                .fold(f64::MIN, f64::max);
-            assert!(
-                closed_max <= most - v + 1e-12,
-                "seed {seed}: {closed_max} > {most} - {v}"
-            );
-            if t.len() == 1 {
-                // One coordinate: both bounds are the exact maxima.
-                assert!((open_max - (v - slack)).abs() < 1e-9);
-                assert!((closed_max - (most - v)).abs() < 1e-9);
-            }
-        }
     }
 }

@@ -67,8 +67,12 @@
 //! roundings. The upper bound is returned plus `(d + 2) f64::EPSILON` and the lower bound
 //! minus the same, so both are guaranteed in floating point.
 
-use super::Points;
-use super::star::STAR_WORK_BUDGET;
+use super::cost::THIEMARD_RATE;
+use super::thiemard_cost::{
+    chain_step_cost, estimate, region_cost, root_chain_lower_bound, split_factor,
+};
+use crate::analysis::Points;
+use crate::analysis::budget::Budget;
 use crate::{Error, Result};
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
@@ -84,14 +88,6 @@ pub struct Bounds {
     /// bracket inside it gives at most its volume).
     pub brackets: u64,
 }
-
-/// Cost units of a region besides its points: volumes, γ and the child corners.
-const REGION_OVERHEAD: f64 = 16.0;
-
-/// Steps of [`STAR_WORK_BUDGET`] per comparison counted here: the budget (about ten
-/// seconds) is calibrated on the exact algorithms; a comparison of [`bounds`], with its
-/// share of list filtering and region bookkeeping, takes about 1.5 times as long.
-const STEP_WEIGHT: f64 = 1.5;
 
 /// Regions holding at least this many points become separate rayon tasks.
 const SPAWN_POINTS: usize = 2048;
@@ -109,40 +105,71 @@ const MAX_POINTS: u64 = u32::MAX as u64;
 /// `N = 1000`–`10000` within the budget.
 ///
 /// # Cost
-/// For evenly spread points about `Σ_R (N vol(b_R) + 16)(d + k_R)` comparisons over the
-/// regions `R` of the decomposition with `k_R >= 2` free coordinates, plus a sort of
-/// `N vol(b)` values per chain along the last coordinate and a binary search per bracket
-/// in it; estimated before running by a
-/// pass over the regions without points, which takes up to about a second before a
-/// refusal when the regions alone exceed the budget. Measured on a shared 2-core machine:
+/// For evenly spread points about `Σ_R (N vol(b_R) + 16)(d + k_R) + 2 d (k_R - 1)`
+/// comparisons over the regions `R` of the decomposition with `k_R >= 2` free coordinates,
+/// plus a sort of `N vol(b)` values per chain along the last coordinate and `16 + 3 d` per
+/// bracket in it, at
+/// [`THIEMARD_RATE`]. Before anything is allocated, the root chain alone gives a lower
+/// bound in `O(1)` memory (about `2 d^2` per step: two points in 1000 dimensions, or one in
+/// 20000, are refused in microseconds); then a pass over the regions without points
+/// estimates the whole, in at most about a tenth of the budget's time. Measured with the
+/// `time_thiemard` example (release build, two shared cores; random points from
+/// [`crate::Independent`] with seed 1), the default budget of ten seconds accepting the
+/// first five rows and refusing the last four:
 ///
 /// | `d`, `N`, points | `δ` | time | lower | upper | exact |
 /// |---|---|---|---|---|---|
-/// | 2, 1000, Sobol' | 0.0002 | 9.9 s | 0.005717 | 0.005758 | 0.005717 |
-/// | 2, 10000, random | 0.0004 | 9.2 s | 0.01247 | 0.01282 | 0.01257 |
-/// | 5, 1000, random | 0.08 | 12.7 s | 0.055 | 0.132 | |
-/// | 5, 10000, Sobol' | 0.15 | 9.9 s | 0.0024 | 0.152 | |
-/// | 10, 1000, random | 0.4 | 2.8 s | 0.060 | 0.450 | |
-/// | 20, 10000, random | 0.7 | 7.5 s | 0.023 | 0.714 | |
+/// | 2, 1000, Sobol' | 0.0002 | 2.7 s | 0.005717 | 0.005758 | 0.005717 |
+/// | 5, 1000, random | 0.08 | 3.7 s | 0.0766 | 0.152 | |
+/// | 5, 10000, Sobol' | 0.15 | 3.8 s | 0.0024 | 0.152 | |
+/// | 10, 1000, random | 0.4 | 1.2 s | 0.0765 | 0.463 | |
+/// | 20, 10000, random | 0.7 | 3.1 s | 0.0215 | 0.711 | |
+/// | 2, 1000, Sobol' | 0.00012 | 11.1 s | 0.005717 | 0.005763 | 0.005717 |
+/// | 5, 1000, random | 0.06 | 17.8 s | 0.0793 | 0.137 | |
+/// | 10, 1000, random | 0.3 | 26.7 s | 0.0795 | 0.370 | |
+/// | 20, 1000, random | 0.6 | 10.0 s | 0.0807 | 0.664 | |
 ///
 /// So the upper bound is informative in 2D–3D; from about 5D on it is close to `δ` itself
 /// for any reasonable `N`, and [`lower`](Bounds::lower) is the more useful number.
 ///
+/// Both bounds lie in `[0, 1]`: `D*_N <= 1` always (a local discrepancy is a difference of
+/// two numbers in `[0, 1]`), so an upper bound above 1 (the rounding margin on a bracket
+/// worth 1) is lowered to 1, which stays a valid bound; and `lower <= upper`.
+///
 /// # Errors
-/// [`Error::Unsupported`] for `δ` not in `(0, 1]`; [`Error::TooManyPoints`] when the
-/// estimated work exceeds [`STAR_WORK_BUDGET`], or when the run exceeds four times the budget
-/// (points clustered near the origin), or above `2^32 - 1` points; `max` is the largest `N`
-/// the estimate allows for this `δ` and `d` (an upper limit of it when the estimating pass
-/// stopped early; 0 when the regions alone are too many: take a larger `δ`).
+/// As [`bounds_within`] with [`Budget::DEFAULT`].
 ///
 /// ```
-/// use qmckit::analysis::{Points, thiemard::bounds};
+/// use qmckit::analysis::{Points, star::thiemard::bounds};
 /// // One point at the center of the square: D* = 1 - 1/4 = 3/4.
 /// let b = bounds(Points::new(&[0.5, 0.5], 2)?, 0.01)?;
 /// assert!(b.lower <= 0.75 && 0.75 <= b.upper && b.upper <= 0.76 + 1e-12);
 /// # Ok::<(), qmckit::Error>(())
 /// ```
 pub fn bounds(points: Points<'_>, delta: f64) -> Result<Bounds> {
+    bounds_within(points, delta, &Budget::DEFAULT)
+}
+
+/// [`bounds`] within the time budget `budget` (the estimated comparisons at
+/// [`THIEMARD_RATE`]).
+///
+/// # Errors
+/// [`Error::Unsupported`] for `δ` not in `(0, 1]`; [`Error::TooManyPoints`] when the
+/// estimated time exceeds `budget`, or when the run exceeds four times it (points clustered
+/// near the origin), or above `2^32 - 1` points; `max` is the largest `N` the estimate
+/// allows for this `δ` and `d` (an upper limit of it when the estimating pass stopped
+/// early; 0 when the regions alone are too many: take a larger `δ`). [`Error::TooLarge`]
+/// when the estimating pass would need more than [`crate::size::MAX_ALLOC_BYTES`].
+///
+/// ```
+/// use qmckit::analysis::budget::Budget;
+/// use qmckit::analysis::{Points, star::thiemard::bounds_within};
+/// let data = vec![0.5; 2 * 1000]; // two points in 1000 dimensions
+/// let p = Points::new(&data, 1000)?;
+/// assert!(bounds_within(p, 0.05, &Budget::DEFAULT).is_err()); // refused at once
+/// # Ok::<(), qmckit::Error>(())
+/// ```
+pub fn bounds_within(points: Points<'_>, delta: f64, budget: &Budget) -> Result<Bounds> {
     if !(delta > 0.0 && delta <= 1.0) {
         return Err(Error::Unsupported {
             what: "Thiémard's bounds need 0 < delta <= 1",
@@ -156,16 +183,17 @@ pub fn bounds(points: Points<'_>, delta: f64) -> Result<Bounds> {
             max: MAX_POINTS,
         });
     }
-    // The budget counts steps of the exact algorithms' inner loops; a comparison here
-    // costs about STEP_WEIGHT of them (measured, 2 cores).
-    let limit = STAR_WORK_BUDGET / STEP_WEIGHT;
-    let (per_point, fixed, complete) = estimate(d, delta, n as f64, limit);
+    let limit = budget.steps(THIEMARD_RATE);
+    let refuse = |max: f64| Error::TooManyPoints {
+        requested: n as u64,
+        max: if max.is_nan() { 0 } else { max.max(0.0) as u64 },
+    };
+    if root_chain_lower_bound(d, delta, n as f64, limit) > limit {
+        return Err(refuse(0.0));
+    }
+    let (per_point, fixed, complete) = estimate(d, delta, n as f64, limit)?;
     if !complete || per_point * n as f64 + fixed > limit {
-        let max = ((limit - fixed) / per_point).max(0.0);
-        return Err(Error::TooManyPoints {
-            requested: n as u64,
-            max: max as u64,
-        });
+        return Err(refuse((limit - fixed) / per_point));
     }
     let x = points.as_slice();
     // Points with a coordinate 1 lie in no box [0, c), c <= 1.
@@ -178,7 +206,7 @@ pub fn bounds(points: Points<'_>, delta: f64) -> Result<Bounds> {
         n: n as f64,
         delta,
         work: AtomicU64::new(0),
-        cap: (4.0 * limit) as u64,
+        cap: cap(4.0 * limit),
         aborted: AtomicBool::new(false),
         total: Mutex::new(Acc::new(d)),
     };
@@ -188,10 +216,9 @@ pub fn bounds(points: Points<'_>, delta: f64) -> Result<Bounds> {
         run.merge(acc);
     });
     if run.aborted.load(Ordering::Relaxed) {
-        return Err(Error::TooManyPoints {
-            requested: n as u64,
-            max: (n as f64 * limit / run.work.load(Ordering::Relaxed) as f64) as u64,
-        });
+        return Err(refuse(
+            n as f64 * limit / run.work.load(Ordering::Relaxed) as f64,
+        ));
     }
     let acc = run
         .total
@@ -202,11 +229,22 @@ pub fn bounds(points: Points<'_>, delta: f64) -> Result<Bounds> {
         .max(snap_under(points, &acc.under_corner, n as f64))
         .max(acc.over)
         .max(acc.under);
+    // D* <= 1: the margin must not lift the bound past the largest possible value.
+    let upper = (acc.upper + margin).min(1.0);
     Ok(Bounds {
-        lower: (lower - margin).max(0.0),
-        upper: acc.upper + margin,
+        lower: (lower - margin).max(0.0).min(upper),
+        upper,
         brackets: acc.brackets,
     })
+}
+
+/// A work cap in whole comparisons (saturated; an unlimited budget has none).
+fn cap(steps: f64) -> u64 {
+    if steps >= u64::MAX as f64 {
+        u64::MAX
+    } else {
+        steps as u64
+    }
 }
 
 /// Product of the coordinates.
@@ -217,20 +255,11 @@ fn vol(c: &[f64]) -> f64 {
 /// Thiémard's split of the region `[a, b]` with the first `m` coordinates fixed: writes the
 /// lower corner `γ` of its bracket into `g`. Requires `vol(b) > delta`. The free part of `γ`
 /// always moves below `b` in coordinate `m`, so the loop along child `m` ends.
-fn split(a: &[f64], b: &[f64], m: usize, delta: f64, g: &mut [f64]) {
-    let k = (b.len() - m) as f64;
+pub(super) fn split(a: &[f64], b: &[f64], m: usize, delta: f64, g: &mut [f64]) {
     let fixed = vol(a.get(..m).unwrap_or(&[]));
     let free = vol(b.get(m..).unwrap_or(&[]));
     let ratio = (vol(b) - delta) / (fixed * free);
-    let s = if !ratio.is_finite() {
-        1.0
-    } else if k == 1.0 {
-        ratio.clamp(0.0, 1.0)
-    } else if k == 2.0 {
-        ratio.max(0.0).sqrt().min(1.0)
-    } else {
-        ratio.max(0.0).powf(1.0 / k).min(1.0)
-    };
+    let s = split_factor(ratio, b.len() - m);
     for (j, gj) in g.iter_mut().enumerate() {
         *gj = if j < m {
             a.get(j).copied().unwrap_or(0.0)
@@ -244,99 +273,6 @@ fn split(a: &[f64], b: &[f64], m: usize, delta: f64, g: &mut [f64]) {
         && *gm >= bm
     {
         *gm = bm.next_down().max(0.0);
-    }
-}
-
-/// Work estimate of [`bounds`] for evenly spread points: `(per_point, fixed, complete)`
-/// with the work `per_point · N + fixed`, from a pass over the regions without points. It
-/// assumes every region holds points ([`Run::region`] ends early at empty regions, so sets
-/// with few points run faster than estimated). The pass stops (`complete = false`, partial
-/// sums) once the work for `n` points exceeds `limit`.
-fn estimate(d: usize, delta: f64, n: f64, limit: f64) -> (f64, f64, bool) {
-    // Level L of the recursion (at most d deep) keeps a, b and γ at buf[3dL..3d(L+1)].
-    let mut buf = vec![0.0; 3 * d * (d + 1)];
-    if let Some(b) = buf.get_mut(d..2 * d) {
-        b.fill(1.0);
-    }
-    let mut e = Estimate {
-        d,
-        delta,
-        n,
-        limit,
-        buf,
-        per_point: 0.0,
-        fixed: 0.0,
-        complete: true,
-    };
-    e.walk(0, 0);
-    (e.per_point, e.fixed, e.complete)
-}
-
-/// State of [`estimate`].
-struct Estimate {
-    d: usize,
-    delta: f64,
-    n: f64,
-    limit: f64,
-    buf: Vec<f64>,
-    per_point: f64,
-    fixed: f64,
-    complete: bool,
-}
-
-impl Estimate {
-    /// The chain of regions starting at the one stored at `level` (first `m` coordinates
-    /// fixed), as in [`Run::region`]; volumes are updated by ratios, close enough for an
-    /// estimate. No allocation: the children go to `level + 1`.
-    fn walk(&mut self, level: usize, m: usize) {
-        let d = self.d;
-        let k = (d - m) as f64;
-        let base = 3 * d * level;
-        let (ia, ib, ig) = (base, base + d, base + 2 * d);
-        let mut vb = self.buf.get(ib..ig).map_or(0.0, vol);
-        if m + 1 == d && vb > self.delta {
-            // Run::last_chain: one pass and two sorts, then a few steps per bracket.
-            let len = (vb * self.n).max(1.0);
-            self.per_point += vb * (d as f64 + 2.0 * (1.0 + len.log2()));
-        }
-        while vb > self.delta && self.complete {
-            if m + 1 == d {
-                self.fixed += 2.0 * REGION_OVERHEAD;
-            } else {
-                self.fixed += REGION_OVERHEAD * (d as f64 + k);
-                self.per_point += vb * (d as f64 + k);
-            }
-            if self.per_point * self.n + self.fixed > self.limit {
-                self.complete = false;
-                return;
-            }
-            if let Some(chunk) = self.buf.get_mut(ia..ig + d) {
-                let (ab, g) = chunk.split_at_mut(2 * d);
-                let (a, b) = ab.split_at(d);
-                split(a, b, m, self.delta, g);
-            }
-            for i in m + 1..d {
-                let gi = self.buf.get(ig + i).copied().unwrap_or(0.0);
-                let bi = self.buf.get(ib + i).copied().unwrap_or(1.0);
-                if vb * gi / bi > self.delta {
-                    // Child i: a with a[m..i] = γ[m..i], b with b[i] = γ_i.
-                    let next = base + 3 * d;
-                    self.buf.copy_within(ia..ig, next);
-                    self.buf.copy_within(ig + m..ig + i, next + m);
-                    if let Some(c) = self.buf.get_mut(next + d + i) {
-                        *c = gi;
-                    }
-                    self.walk(level + 1, i);
-                } else {
-                    self.fixed += REGION_OVERHEAD;
-                }
-            }
-            let gm = self.buf.get(ig + m).copied().unwrap_or(0.0);
-            if let Some(c) = self.buf.get_mut(ib + m) {
-                vb = vb * gm / *c;
-                *c = gm;
-            }
-        }
     }
 }
 
@@ -442,93 +378,166 @@ impl Run<'_> {
 
     /// Decomposes the region `[a, b]` (first `m` coordinates fixed) whose points inside
     /// `[0, b)` are `list`; children with many points are spawned into `scope`.
+    ///
+    /// Depth first, in the order of the recursion "split, then each child `i = m + 1..d`
+    /// in turn, then go on along child `m`", kept on an explicit stack of [`Region`]s (at
+    /// most `d` deep) so that the call stack does not grow with `d`.
     fn region<'s>(
         &'s self,
         scope: &rayon::Scope<'s>,
         a: Vec<f64>,
-        mut b: Vec<f64>,
+        b: Vec<f64>,
         m: usize,
-        mut list: Vec<u32>,
+        list: Vec<u32>,
         acc: &mut Acc,
     ) {
         let d = self.d;
-        let n = self.n;
-        if m + 1 == d {
-            self.last_chain(&a, b, &list, acc);
-            return;
-        }
-        let mut g = vec![0.0; d];
-        loop {
-            let vb = vol(&b);
-            let qb = list.len() as f64 / n;
-            acc.corner(&b, qb, vb);
-            if list.is_empty() {
-                // Every bracket inside has A = 0, so it gives vol(β) - 0 <= vol(b), attained
-                // by the region's own bracket; the test box [0, b) is empty too.
-                acc.bracket(0.0, 0.0, 0.0, vb);
-                return;
+        let mut stack = vec![Region {
+            a,
+            b,
+            m,
+            list,
+            g: Vec::new(),
+            next: None,
+        }];
+        while let Some(r) = stack.last_mut() {
+            if r.m + 1 == d {
+                if let Some(r) = stack.pop() {
+                    self.last_chain(&r.a, r.b, &r.list, acc);
+                }
+                continue;
             }
-            if vb <= self.delta {
-                // The region is a bracket [a, b] itself; vol(a) = 0 and A(a) = 0.
-                acc.bracket(0.0, 0.0, qb, vb);
-                return;
-            }
-            let k = d - m;
-            if !self.charge((list.len() * (d + k) + REGION_OVERHEAD as usize * (d + k)) as u64) {
-                return;
-            }
-            split(&a, &b, m, self.delta, &mut g);
-            let vg = vol(&g);
-            let qg = list.iter().filter(|&&i| self.below(i, &g)).count() as f64 / n;
-            acc.corner(&g, qg, vg);
-            acc.bracket(qg, vg, qb, vb);
-            for i in m + 1..d {
-                let gi = g.get(i).copied().unwrap_or(0.0);
-                let mut cb = b.clone();
-                if let Some(c) = cb.get_mut(i) {
-                    *c = gi;
+            let start = match r.next {
+                Some(i) => i,
+                None => {
+                    if !self.step(r, acc) {
+                        stack.pop();
+                        continue;
+                    }
+                    r.m + 1
                 }
-                let vcb = vol(&cb);
-                if vcb <= self.delta {
-                    let count = list.iter().filter(|&&p| self.coord(p, i) < gi).count();
-                    let q = count as f64 / n;
-                    acc.corner(&cb, q, vcb);
-                    acc.bracket(0.0, 0.0, q, vcb);
-                    continue;
-                }
-                let sub: Vec<u32> = list
-                    .iter()
-                    .copied()
-                    .filter(|&p| self.coord(p, i) < gi)
-                    .collect();
-                if sub.is_empty() {
-                    // As at the top of the loop: the child gives vol(b') and nothing else.
-                    acc.corner(&cb, 0.0, vcb);
-                    acc.bracket(0.0, 0.0, 0.0, vcb);
-                    continue;
-                }
-                let mut ca = a.clone();
-                if let (Some(dst), Some(src)) = (ca.get_mut(m..i), g.get(m..i)) {
-                    dst.copy_from_slice(src);
-                }
-                if sub.len() >= SPAWN_POINTS {
-                    scope.spawn(move |s| {
-                        let mut own = Acc::new(d);
-                        self.region(s, ca, cb, i, sub, &mut own);
-                        self.merge(own);
-                    });
-                } else {
-                    self.region(scope, ca, cb, i, sub, acc);
+            };
+            match self.children(scope, r, start, acc) {
+                Some(child) => stack.push(child),
+                None => {
+                    // Child m: same fixed coordinates, b_m lowered to γ_m.
+                    let m = r.m;
+                    let gm = r.g.get(m).copied().unwrap_or(0.0);
+                    if let Some(c) = r.b.get_mut(m) {
+                        *c = gm;
+                    }
+                    r.list.retain(|&p| self.coord(p, m) < gm);
+                    r.next = None;
                 }
             }
-            // Child m: same fixed coordinates, b_m lowered to γ_m.
-            let gm = g.get(m).copied().unwrap_or(0.0);
-            if let Some(c) = b.get_mut(m) {
-                *c = gm;
-            }
-            list.retain(|&p| self.coord(p, m) < gm);
         }
     }
+
+    /// The head of a step of the chain of `r`: records its corner and bracket, and splits
+    /// it (`γ` in `r.g`) unless it is empty, a bracket itself, or the run is over its cap
+    /// (then false: the chain ends).
+    fn step(&self, r: &mut Region, acc: &mut Acc) -> bool {
+        let (d, n, m) = (self.d, self.n, r.m);
+        let vb = vol(&r.b);
+        let qb = r.list.len() as f64 / n;
+        acc.corner(&r.b, qb, vb);
+        if r.list.is_empty() {
+            // Every bracket inside has A = 0, so it gives vol(β) - 0 <= vol(b), attained
+            // by the region's own bracket; the test box [0, b) is empty too.
+            acc.bracket(0.0, 0.0, 0.0, vb);
+            return false;
+        }
+        if vb <= self.delta {
+            // The region is a bracket [a, b] itself; vol(a) = 0 and A(a) = 0.
+            acc.bracket(0.0, 0.0, qb, vb);
+            return false;
+        }
+        if !self.charge(region_cost(d, d - m, r.list.len() as f64) as u64) {
+            return false;
+        }
+        r.g.clear();
+        r.g.resize(d, 0.0);
+        split(&r.a, &r.b, m, self.delta, &mut r.g);
+        let vg = vol(&r.g);
+        let qg = r.list.iter().filter(|&&i| self.below(i, &r.g)).count() as f64 / n;
+        acc.corner(&r.g, qg, vg);
+        acc.bracket(qg, vg, qb, vb);
+        true
+    }
+
+    /// Children `start..d` of the split region `r`: leaves and empty children are recorded,
+    /// children with many points spawned; the first other child is returned to be
+    /// descended into (with `r.next` set past it), `None` once all are done.
+    fn children<'s>(
+        &'s self,
+        scope: &rayon::Scope<'s>,
+        r: &mut Region,
+        start: usize,
+        acc: &mut Acc,
+    ) -> Option<Region> {
+        let (d, n, m) = (self.d, self.n, r.m);
+        for i in start..d {
+            let gi = r.g.get(i).copied().unwrap_or(0.0);
+            let mut cb = r.b.clone();
+            if let Some(c) = cb.get_mut(i) {
+                *c = gi;
+            }
+            let vcb = vol(&cb);
+            if vcb <= self.delta {
+                let count = r.list.iter().filter(|&&p| self.coord(p, i) < gi).count();
+                let q = count as f64 / n;
+                acc.corner(&cb, q, vcb);
+                acc.bracket(0.0, 0.0, q, vcb);
+                continue;
+            }
+            let sub: Vec<u32> = r
+                .list
+                .iter()
+                .copied()
+                .filter(|&p| self.coord(p, i) < gi)
+                .collect();
+            if sub.is_empty() {
+                // As for an empty region: the child gives vol(b') and nothing else.
+                acc.corner(&cb, 0.0, vcb);
+                acc.bracket(0.0, 0.0, 0.0, vcb);
+                continue;
+            }
+            let mut ca = r.a.clone();
+            if let (Some(dst), Some(src)) = (ca.get_mut(m..i), r.g.get(m..i)) {
+                dst.copy_from_slice(src);
+            }
+            if sub.len() >= SPAWN_POINTS {
+                scope.spawn(move |s| {
+                    let mut own = Acc::new(d);
+                    self.region(s, ca, cb, i, sub, &mut own);
+                    self.merge(own);
+                });
+            } else {
+                r.next = Some(i + 1);
+                return Some(Region {
+                    a: ca,
+                    b: cb,
+                    m: i,
+                    list: sub,
+                    g: Vec::new(),
+                    next: None,
+                });
+            }
+        }
+        None
+    }
+}
+
+/// A region of [`Run::region`]'s walk: `[a, b]` with the first `m` coordinates fixed, the
+/// points of `[0, b)`, the lower corner `γ` of its current bracket and the next child to
+/// visit (`None` before the split of the current step of its chain).
+struct Region {
+    a: Vec<f64>,
+    b: Vec<f64>,
+    m: usize,
+    list: Vec<u32>,
+    g: Vec<f64>,
+    next: Option<usize>,
 }
 
 impl Run<'_> {
@@ -574,7 +583,7 @@ impl Run<'_> {
                 break;
             }
             steps += 1;
-            if steps.is_multiple_of(1024) && !self.charge(1024 * REGION_OVERHEAD as u64 * 2) {
+            if steps.is_multiple_of(1024) && !self.charge((1024.0 * chain_step_cost(d)) as u64) {
                 return;
             }
             split(a, &b, m, self.delta, &mut g);

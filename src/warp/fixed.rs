@@ -10,8 +10,13 @@
 //! within 1e-7 of the exact map (tested against f64 on a QMC grid, including the inputs 0 and
 //! `2^32 - 1`) and within 1e-6 of the `f32` warps in [`crate::warp`]; inverses return the
 //! input within 1e-6. The functions are `const`.
+//!
+//! Every function is total: the inverses accept any `I2F30` (the whole range `[-2, 2)`,
+//! also points off the domain), compute in widened integers (`u64`, `i128`) so that no
+//! intermediate can overflow, and saturate the result into `[0, 1)`; [`atan2_turns`]
+//! accepts any pair of `i64`.
 
-use fixed::types::{I2F30, U0F32};
+use ::fixed::types::{I2F30, U0F32};
 
 /// One in Q30.
 const ONE_Q30: i64 = 1 << 30;
@@ -96,11 +101,17 @@ pub const fn sin_cos_turns(t: u32) -> (i32, i32) {
 
 /// `atan2(y, x)` as a turn fraction in `[0, 2^32)` (0 for the origin), by CORDIC: rotate
 /// `(x, y)` onto the positive x axis, summing the rotation angles. Exact to a few units of
-/// 2^-32 turns.
+/// 2^-32 turns. Any `i64` pair (`i64::MIN`, whose negation does not exist, is handled by
+/// halving both coordinates first, which keeps the direction). 32 steps, `O(1)`.
 pub const fn atan2_turns(y: i64, x: i64) -> u32 {
     if x == 0 && y == 0 {
         return 0;
     }
+    let (x, y) = if x == i64::MIN || y == i64::MIN {
+        (x >> 1, y >> 1)
+    } else {
+        (x, y)
+    };
     // Start in the right half plane: rotate by a half turn if needed.
     let (mut x, mut y, mut angle) = if x < 0 {
         (-x, -y, 1u32 << 31)
@@ -139,9 +150,20 @@ const fn q30(x: i64) -> I2F30 {
     I2F30::from_bits(x as i32)
 }
 
+/// `x^2 + y^2` (Q60) of two Q30 values in the `I2F30` range: at most `2^63`, exact in `u64`.
+const fn norm2_q60(x: i64, y: i64) -> u64 {
+    (x * x) as u64 + (y * y) as u64
+}
+
 /// `sqrt(v)` for `v` in Q60, as Q30.
-const fn sqrt_q60(v: i64) -> i64 {
-    if v <= 0 { 0 } else { (v as u64).isqrt() as i64 }
+const fn sqrt_q60(v: u64) -> i64 {
+    v.isqrt() as i64
+}
+
+/// `(a r) >> 32` in `i128`: `a` a Q32 angle offset, `r` a Q30 radius (up to `2^31.5` off
+/// the unit disk).
+const fn mul_shr32(a: i64, r: i64) -> i64 {
+    ((a as i128 * r as i128) >> 32) as i64
 }
 
 /// A Q30 value in `[0, 1]` as a 0.32 fraction, saturating at the ends (a point exactly on
@@ -167,7 +189,7 @@ pub const UNIFORM_HEMISPHERE_PDF: I2F30 = q30(170_891_319);
 ///
 /// ```
 /// use fixed::types::U0F32;
-/// use qmckit::fixed_warp::sample_uniform_disk_polar;
+/// use qmckit::warp::fixed::sample_uniform_disk_polar;
 /// let p = sample_uniform_disk_polar([U0F32::from_bits(1 << 30), U0F32::from_bits(1 << 30)]);
 /// assert!(p[0].abs().to_num::<f32>() < 1e-7 && (p[1].to_num::<f32>() - 0.5).abs() < 1e-7);
 /// ```
@@ -180,7 +202,7 @@ pub const fn sample_uniform_disk_polar(u: [U0F32; 2]) -> [I2F30; 2] {
 /// Inverse of [`sample_uniform_disk_polar`].
 pub const fn invert_uniform_disk_polar(p: [I2F30; 2]) -> [U0F32; 2] {
     let (x, y) = (p[0].to_bits() as i64, p[1].to_bits() as i64);
-    let r2 = (x * x + y * y) >> 28; // Q60 -> Q32
+    let r2 = norm2_q60(x, y) >> 28; // Q60 -> Q32
     let r2 = if r2 >= 1 << 32 { u32::MAX } else { r2 as u32 };
     [U0F32::from_bits(atan2_turns(y, x)), U0F32::from_bits(r2)]
 }
@@ -189,7 +211,7 @@ pub const fn invert_uniform_disk_polar(p: [I2F30; 2]) -> [U0F32; 2] {
 ///
 /// ```
 /// use fixed::types::U0F32;
-/// use qmckit::fixed_warp::sample_uniform_disk_concentric;
+/// use qmckit::warp::fixed::sample_uniform_disk_concentric;
 /// let half = U0F32::from_bits(1 << 31);
 /// assert_eq!(sample_uniform_disk_concentric([half, half]).map(|x| x.to_bits()), [0, 0]);
 /// ```
@@ -216,7 +238,7 @@ pub const fn sample_uniform_disk_concentric(u: [U0F32; 2]) -> [I2F30; 2] {
 /// [`crate::warp::disk::invert_uniform_disk_concentric`].
 pub const fn invert_uniform_disk_concentric(p: [I2F30; 2]) -> [U0F32; 2] {
     let (x, y) = (p[0].to_bits() as i64, p[1].to_bits() as i64);
-    let r = sqrt_q60(x * x + y * y); // Q30
+    let r = sqrt_q60(norm2_q60(x, y)); // Q30
     // phi in eighths of a turn: t = turns * 8, in Q32 (i64), shifted to [-1, 7).
     let turns = atan2_turns(y, x) as i64; // [0, 2^32)
     let mut t = turns * 8; // Q32 eighths in [0, 8)
@@ -226,13 +248,13 @@ pub const fn invert_uniform_disk_concentric(p: [I2F30; 2]) -> [U0F32; 2] {
     // Octant pairs as in the f32 inverse: (a, b) in Q30 (phi in eighths of a turn times r),
     // then u = (a + 1) / 2.
     let (a, b) = if t < 1 << 32 {
-        (r, (t * r) >> 32)
+        (r, mul_shr32(t, r))
     } else if t < 3 << 32 {
-        (-(((t - (2 << 32)) * r) >> 32), r)
+        (-mul_shr32(t - (2 << 32), r), r)
     } else if t < 5 << 32 {
-        (-r, -(((t - (4 << 32)) * r) >> 32))
+        (-r, -mul_shr32(t - (4 << 32), r))
     } else {
-        (((t - (6 << 32)) * r) >> 32, -r)
+        (mul_shr32(t - (6 << 32), r), -r)
     };
     [
         U0F32::from_bits(q30_to_unit((a + ONE_Q30) >> 1)),
