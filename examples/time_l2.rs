@@ -43,7 +43,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     for m in metrics {
         let (best, value) = pool.install(|| {
             let mut best = f64::INFINITY;
-            let mut value = f64::NAN;
+            let mut value = Ok(f64::NAN);
             for _ in 0..reps {
                 let start = Instant::now();
                 value = m.eval(p);
@@ -51,7 +51,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             }
             (best, value)
         });
-        println!("{} {best:.9} {value:.16e}", m.name());
+        match value {
+            Ok(v) => println!("{} {best:.9} {v:.16e}", m.name()),
+            Err(e) => println!("{} {best:.9} error: {e}", m.name()),
+        }
     }
     Ok(())
 }

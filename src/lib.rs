@@ -109,3 +109,8 @@ pub use van_der_corput::VanDerCorput;
 #[cfg(doctest)]
 #[doc = include_str!("../README.md")]
 pub struct ReadmeDoctests;
+
+/// The analysis guide's examples, compiled and run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../docs/analysis.md")]
+pub struct AnalysisDoctests;

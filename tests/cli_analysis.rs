@@ -244,7 +244,8 @@ fn help_states_the_conventions() {
         "cd        centered L2, squared (SciPy",
         "l2-star   L2-star (Warnock), square root taken (SciPy",
         "diaphony  Zinterhof's diaphony, square root taken",
-        "extreme is not\n            part of all",
+        "all       star, then the eight L2 measures",
+        "'# NAME skipped: REASON'",
     ] {
         assert!(help.contains(needle), "{needle:?} not in\n{help}");
     }

@@ -20,6 +20,8 @@ use super::progress::{with_progress, with_spinner};
 pub const AFTER_HELP: &str = "\
 Input: one point a line, coordinates in [0, 1] separated by spaces/tabs or by single commas;
 '#' starts a comment; a line holding only '#' separates point sets; blank lines are ignored.
+Line ends \\n, \\r\\n or \\r. qmckit's own u32 output (whole numbers, one above 1) and .npy
+files are recognized; --input-format forces a reading.
 
 Output: one 'metric value' line per metric, the value in scientific notation with 17
 significant digits (it parses back to the exact f64). With several point sets, each set's
@@ -29,8 +31,7 @@ Conventions:
   star      star discrepancy D*, exact (1D closed form; 2D sweep; d-D by
             Dobkin-Eppstein-Mitchell). Refused with an error when the estimated time
             exceeds --max-seconds (default 10: N <= 54772 in 2D, 48989 at d = 3, 478 at
-            d = 6; 600 admits 1542 at d = 6). Fitted on 2 cores: 1000 6D Sobol' points
-            took 86 s (estimated: 132). A bar shows the progress on a terminal.
+            d = 6; 600 admits 1542 at d = 6). A bar shows the progress on a terminal.
   star-bounds  guaranteed bounds on D* for sets too large for the exact value: two lines,
             'star-lower' (the best of Thiemard's cover and threshold accepting: a value
             D* reaches) and 'star-upper' (Thiemard's cover: at most D* + delta); --delta
@@ -47,13 +48,16 @@ Conventions:
   ul2       unanchored L2, square root taken (UTK UnanchoredL2Discrepancy)
   gl2       generalized L2, square root taken (UTK GL2Discrepancy)
   diaphony  Zinterhof's diaphony, square root taken (UTK Diaphony)
-  all       star, then the eight L2 measures in the order above. When star is refused
-            (too many points for an exact computation) it is replaced by a
-            '# star skipped: REASON' line and the others are still computed. extreme is not
-            part of all.
+  all       star, then the eight L2 measures in the order above; more metrics may follow
+            (all,extreme). A measure of all that is refused (past the budget, or a value
+            outside the range of f64) is replaced by a '# NAME skipped: REASON' line and
+            the others are still computed; a refused measure named on its own is an error.
 
-The L2 measures cost O(N^2 d). A spinner shows on a terminal when a metric takes more than a
-second. Errors: 'qmckit: error: FILE: line N: reason', exit code 2.";
+The L2 measures cost about N^2 d / 2 steps (the Warnock tree for l2-star in low d: about
+N log^(d-1) N), estimated first and refused past --max-seconds; in any dimension they are
+computed with tracked exponents, so a value representable in f64 is right to about 1e-13
+and one that is not is refused, never NaN or 0. A bar shows on a terminal when a metric
+takes more than a second. Errors: 'qmckit: error: FILE: line N: reason', exit code 2.";
 
 /// A measure `--metric` names.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -157,7 +161,9 @@ fn measure(
 ) -> Result<Vec<(String, f64)>, String> {
     let name = value_name(&metric);
     if let Some(l2) = metric.l2() {
-        return Ok(vec![(name.clone(), with_spinner(&name, || l2.eval(p)))]);
+        let value = with_progress(&name, |progress| l2.eval_within(p, budget, progress))
+            .map_err(over_budget)?;
+        return Ok(vec![(name.clone(), value)]);
     }
     let value = match metric {
         Metric::Star => {
@@ -235,8 +241,8 @@ pub fn run(args: &DiscrepancyArgs) -> Result<(), Failure> {
                         writeln!(out, "{label} {value:.16e}")?;
                     }
                 }
-                Err(reason) if all && metric == Metric::Star => {
-                    writeln!(out, "# star skipped: {reason}")?;
+                Err(reason) if all && ALL.contains(&metric) => {
+                    writeln!(out, "# {} skipped: {reason}", value_name(&metric))?;
                 }
                 Err(reason) => {
                     out.flush()?;

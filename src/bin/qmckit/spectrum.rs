@@ -4,7 +4,7 @@
 use std::io::{BufWriter, Write};
 
 use clap::Args;
-use qmckit::analysis::spectrum::spectrum_2d_within;
+use qmckit::analysis::spectrum::{SPECTRUM_MAX_K, spectrum_2d_within};
 
 use super::Failure;
 use super::budget::BudgetArgs;
@@ -50,6 +50,12 @@ pub struct SpectrumArgs {
 /// Runs `qmckit spectrum`.
 pub fn run(args: &SpectrumArgs) -> Result<(), Failure> {
     let budget = args.budget.budget()?;
+    if args.k_max > SPECTRUM_MAX_K {
+        return Err(Failure::usage(format!(
+            "--k-max {}: at most {SPECTRUM_MAX_K}",
+            args.k_max
+        )));
+    }
     let (name, sets) = read_point_sets(&args.input)?;
     let mut out = BufWriter::new(std::io::stdout().lock());
     for (k, set) in sets.iter().enumerate() {

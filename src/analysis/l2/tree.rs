@@ -1,9 +1,12 @@
-//! L2-star discrepancy by divide and conquer instead of the pair sum (a child module of
-//! [`super`], whose compensated-sum helpers it shares).
+//! L2-star discrepancy by Warnock's formula with the pair sum replaced by an exact divide
+//! and conquer (Heinrich 1996).
 
+use super::Points;
+use super::arith::{Acc, Dd, two_prod};
 #[cfg(doc)]
 use super::l2_star_direct;
-use super::{Acc, Dd, KernelSums, Points, combine, pow2, root, two_prod};
+use super::sums::{KernelSums, checked, combine, pow2, root};
+use crate::Result;
 use rayon::prelude::*;
 
 /// [`l2_star`](super::l2_star) by exact divide and conquer, in `O(n log^(d-1) n)` time
@@ -41,7 +44,8 @@ use rayon::prelude::*;
 /// `O(n d^2)` memory; the factor grows quickly with `d`, so [`l2_star`](super::l2_star)
 /// only takes this path from the point count where it measured faster than the pair sum
 /// (4096 points for `d = 3`, 24576 for `d = 4`, 196608 for `d = 5`, never from `d = 6`
-/// on).
+/// on). Above [`TREE_MAX_D`] dimensions, where the recursion would only be deeper and
+/// slower, this function returns [`l2_star_direct`]'s pair sum instead.
 /// All sums are compensated and every term is non-negative, so the value agrees with
 /// [`l2_star_direct`] up to the rounding of the products (about 1e-14 relative for
 /// random sets of up to `2^16` points).
@@ -51,17 +55,32 @@ use rayon::prelude::*;
 /// // 300 points of a 3D lattice-like set.
 /// let data: Vec<f64> = (0..900).map(|i| (i as f64 * 0.618_033_988_749_895).fract()).collect();
 /// let p = Points::new(&data, 3)?;
-/// let (fast, direct) = (l2_star_fast(p), l2_star_direct(p));
+/// let (fast, direct) = (l2_star_fast(p)?, l2_star_direct(p)?);
 /// assert!((fast - direct).abs() <= 1e-13 * direct);
 /// # Ok::<(), qmckit::Error>(())
 /// ```
-pub fn l2_star_fast(p: Points<'_>) -> f64 {
-    l2_star_fast_with(p, p.dims() <= 2)
+///
+/// # Errors
+/// [`Error::NotRepresentable`](crate::Error::NotRepresentable) as
+/// [`l2_star`](super::l2_star).
+pub fn l2_star_fast(p: Points<'_>) -> Result<f64> {
+    if p.dims() > TREE_MAX_D {
+        return super::l2_star_direct(p);
+    }
+    checked(
+        l2_star_fast_with(p, p.dims() <= 2),
+        super::measures::L2_STAR,
+    )
 }
+
+/// The largest dimension in which [`l2_star_fast`] runs the divide and conquer: the
+/// recursion is `d` levels deep over the coordinates, and from 6 dimensions on it is
+/// slower than the pair sum for every feasible point count anyway.
+pub const TREE_MAX_D: usize = 16;
 
 /// Point count from which [`l2_star`](super::l2_star) uses [`l2_star_fast`] in `d`
 /// dimensions: about where the two ran equally fast on one thread on uniform random points
-/// (`examples/time_l2_star.rs`, best of repeated runs on a busy 2-core x86-64 machine with
+/// (`examples/time_l2_star.rs`, best of repeated runs on an x86-64 machine with
 /// AVX2 for the pair sum). Measured, in seconds (tree / pair sum): `d = 3`: `2^12` points
 /// 0.0089 / 0.0084, `2^13` 0.029 / 0.051, `2^18` 1.7 / 82; `d = 4`: `2^14` 0.35 / 0.24,
 /// `2^15` 0.81 / 1.02, `2^16` 3.4 / 6.5; `d = 5`: `2^15` 2.8 / 0.83, `2^16` 11.8 / 6.5, and
@@ -553,7 +572,7 @@ mod tests {
             for (n, seed) in [(1usize, 1u64), (50, 2), (700, 3), (2500, 4)] {
                 let x = uniform(n * d, seed * 100 + d as u64);
                 let p = Points::new(&x, d).unwrap();
-                let (tree, direct) = (l2_star_fast_with(p, false), l2_star_direct(p));
+                let (tree, direct) = (l2_star_fast_with(p, false), l2_star_direct(p).unwrap());
                 assert!(
                     rel(tree, direct) <= 1e-13,
                     "d={d} n={n}: {tree:e} vs {direct:e}"
@@ -576,7 +595,7 @@ mod tests {
                 .map(|&t| (t * 9.0).floor().min(8.0) / 8.0)
                 .collect();
             let p = Points::new(&x, d).unwrap();
-            let (tree, direct) = (l2_star_fast(p), l2_star_direct(p));
+            let (tree, direct) = (l2_star_fast(p).unwrap(), l2_star_direct(p).unwrap());
             assert!(
                 rel(tree, direct) <= 1e-13,
                 "grid d={d}: {tree:e} vs {direct:e}"
@@ -585,14 +604,14 @@ mod tests {
                 let mut y = uniform(900 * d, 11 + d as u64);
                 y.chunks_exact_mut(d).for_each(|r| r[1] = c);
                 let p = Points::new(&y, d).unwrap();
-                let (tree, direct) = (l2_star_fast(p), l2_star_direct(p));
+                let (tree, direct) = (l2_star_fast(p).unwrap(), l2_star_direct(p).unwrap());
                 assert!(rel(tree, direct) <= 1e-13, "const {c} d={d}");
             }
         }
         // All points at (1, ..., 1): D^2 = 3^-d exactly in the formula.
         let ones = vec![1.0; 300 * 4];
         let p = Points::new(&ones, 4).unwrap();
-        assert!(rel(l2_star_fast(p), (1.0f64 / 81.0).sqrt()) <= 1e-15);
+        assert!(rel(l2_star_fast(p).unwrap(), (1.0f64 / 81.0).sqrt()) <= 1e-15);
     }
 
     #[test]
@@ -601,7 +620,7 @@ mod tests {
         let d = 3;
         let x = uniform(3 * TREE_PARALLEL * d, 5);
         let p = Points::new(&x, d).unwrap();
-        assert!(rel(l2_star_fast(p), l2_star_direct(p)) <= 1e-13);
+        assert!(rel(l2_star_fast(p).unwrap(), l2_star_direct(p).unwrap()) <= 1e-13);
     }
 
     #[test]
