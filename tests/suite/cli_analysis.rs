@@ -3,7 +3,7 @@
 
 use std::path::PathBuf;
 
-mod common;
+use crate::common;
 use common::cli::{assert_usage_error, run as qmckit_with};
 
 /// Standard output of a successful run with an empty stdin; stderr must be empty.

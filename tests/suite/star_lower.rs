@@ -9,7 +9,7 @@ use qmckit::analysis::Points;
 use qmckit::analysis::star::thiemard::bounds;
 use qmckit::analysis::star::{star, star_lower_bound};
 
-mod common;
+use crate::common;
 use common::Rng;
 
 #[test]

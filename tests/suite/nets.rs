@@ -1,6 +1,6 @@
 //! Net properties and exact star discrepancies from the literature.
 
-mod common;
+use crate::common;
 
 use common::{first_net_failure, points_2d, star_discrepancy_2d_exact};
 use qmckit::{Hammersley, LarcherPillichshammer};

@@ -10,7 +10,7 @@ use qmckit::analysis::star::{
 };
 use qmckit::{Hammersley, Independent, Jitter, LarcherPillichshammer, Sampler, Sobol, Stratified};
 
-mod common;
+use crate::common;
 use common::{Rng, sampler_points};
 
 /// Brute force from the definition, `O(N^(d+1))`: every corner `y` of the critical grid

@@ -3,7 +3,7 @@
 
 use std::process::{Command, Output};
 
-mod common;
+use crate::common;
 
 fn qmckit(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_qmckit"))

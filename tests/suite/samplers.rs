@@ -1,6 +1,6 @@
 //! Properties of every sampler: stratification, fill == sample, errors instead of panics.
 
-mod common;
+use crate::common;
 
 use common::{points_2d, star_discrepancy_2d_exact};
 use qmckit::{

@@ -14,7 +14,7 @@ fn rel(a: f64, b: f64) -> f64 {
     if a == b { 0.0 } else { (a - b).abs() / b.abs() }
 }
 
-mod common;
+use crate::common;
 use common::uniform;
 
 // ---------------------------------------------------------------------------------------

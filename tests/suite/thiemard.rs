@@ -9,7 +9,7 @@ use qmckit::analysis::star::thiemard::bounds;
 use qmckit::analysis::star::{star, star_upper_bound};
 use qmckit::{Error, LarcherPillichshammer};
 
-mod common;
+use crate::common;
 use common::Rng;
 
 /// Checks `exact - delta <= lower <= exact <= upper <= exact + delta` (up to rounding) and that

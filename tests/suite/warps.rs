@@ -855,13 +855,18 @@ mod properties {
                         .all(|x| x.is_finite() && x.abs() <= 1.8e19)
                         || area.is_nan()
                         || area <= 0.0
+                        // The documented rule: twice the area below 2^-20 of the
+                        // longest edge squared (with a margin for the area's rounding).
                         || area * 2.0
-                            < 1e-6
-                                * p.iter()
-                                    .flatten()
-                                    .map(|x| (*x as f64).abs())
+                            < 1.001 / 1_048_576.0
+                                * [(0, 1), (0, 2), (1, 2)]
+                                    .iter()
+                                    .map(|&(i, j)| {
+                                        (0..2)
+                                            .map(|k| (p[j][k] as f64 - p[i][k] as f64).powi(2))
+                                            .sum::<f64>()
+                                    })
                                     .fold(0.0, f64::max)
-                                    .powi(2)
                         || !((1.0 / area) as f32).is_finite(),
                     "{p:?} refused, area {area}"
                 ),
@@ -998,12 +1003,16 @@ mod properties {
             // The inverse from the f32 direction, where the triangle is not a sliver (edges
             // within 2^6 of its distance) and u0 is defined (u1 > 0: w is not the vertex B).
             let size = dirs.iter().map(|d| len(*d)).fold(0.0, f64::max);
-            if len(v(ex)).min(len(v(ey))) >= size / 64.0 {
+            let short = len(v(ex)).min(len(v(ey)));
+            if short >= size / 64.0 {
+                // The f32 inverse loses bits in proportion to how far the triangle is
+                // against its shortest edge (the arcs' condition number).
+                let tol = (1e-4 * (size / short).max(1.0)) as f32;
                 let back = t.invert(w);
                 if u[1] > 1e-2 {
-                    prop_assert!((back[0] - u[0]).abs() < 1e-4, "{u:?} -> {back:?}");
+                    prop_assert!((back[0] - u[0]).abs() < tol, "{u:?} -> {back:?}");
                 }
-                prop_assert!((back[1] - u[1]).abs() < 1e-4, "{u:?} -> {back:?}");
+                prop_assert!((back[1] - u[1]).abs() < tol, "{u:?} -> {back:?}");
             }
         }
     }

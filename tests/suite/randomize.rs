@@ -2,7 +2,7 @@
 //! RQMC is unbiased, the classic scrambled-Halton example (bases 29 and 31), and property
 //! tests of every constructor and scramble at extreme parameters.
 
-mod common;
+use crate::common;
 
 use common::{first_net_failure, points_2d};
 use qmckit::randomize::digits::{DigitScramble, faure};

@@ -8,12 +8,12 @@ use qmckit::analysis::Points;
 use qmckit::analysis::spectrum::{SPECTRUM_MAX_K, spectrum_2d};
 use qmckit::{Independent, Jitter, Stratified};
 
-mod common;
+use crate::common;
 use common::sampler_points;
 
 #[test]
 fn matches_numpy_on_random_points() {
-    let text = include_str!("golden/spectrum_random_n50_k7.txt");
+    let text = include_str!("../golden/spectrum_random_n50_k7.txt");
     let (mut pts, mut want) = (Vec::new(), Vec::new());
     for line in text.lines().filter(|l| !l.starts_with('#')) {
         let f: Vec<&str> = line.split(' ').collect();

@@ -9,7 +9,7 @@ use qmckit::analysis::integration::{Integrand, integration_error};
 use qmckit::randomize::{FastOwen, Scrambled};
 use qmckit::{Independent, Sampler, Sobol};
 
-mod common;
+use crate::common;
 use common::sampler_points;
 
 /// The midpoint rule on the `m^d` grid of cell centres: `(mean of f, mean of f^2)`.

@@ -1,7 +1,7 @@
 //! Sobol' against SciPy's `qmc.Sobol(d, scramble=False, bits=32)` (Gray-code order) and
 //! against Joe & Kuo's published direction numbers. Files made by tests/golden/gen.py.
 
-mod common;
+use crate::common;
 
 use common::{first_net_failure, points_2d};
 use qmckit::sobol::{Order, Sobol, SobolDimension, SobolTable, directions};
