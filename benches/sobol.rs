@@ -34,9 +34,10 @@ use criterion::{BatchSize, BenchmarkGroup, BenchmarkId, Criterion, Throughput};
 use criterion::{criterion_group, criterion_main, measurement::WallTime};
 use qmckit::Sampler;
 use qmckit::bits::{gray, reverse_bits, to_f32};
-use qmckit::owen_sobol::{OwenSobol4, OwenSobolTable};
-use qmckit::randomize::{FastOwen, Scrambled, dimension_seed, shuffle::shuffle, vegdahl};
-use qmckit::sobol::{Order, Sobol, SobolDimension, SobolTable};
+use qmckit::randomize::{
+    FastOwen, FastOwenScrambler, Scrambled, dimension_seed, shuffle::shuffle, vegdahl,
+};
+use qmckit::sobol::{Order, OwenSobol, Sobol, SobolDimension, SobolTable};
 
 /// Points (indices) per iteration.
 const N: usize = 4096;
@@ -217,8 +218,10 @@ fn check_agreement() {
     for (_, idx) in index_sets() {
         for &i in &idx {
             for (dim, t) in tables.iter().enumerate() {
-                let key = owen.dimension_key(dim);
-                let fast = reverse_bits(owen.scramble_reversed(reverse_bits(t.sample(i)), key));
+                let fast = reverse_bits(
+                    owen.scrambler(dim)
+                        .scramble_reversed(reverse_bits(t.sample(i))),
+                );
                 assert_eq!(fast, scrambled.sample(i, dim).expect("in range"));
             }
         }
@@ -416,24 +419,18 @@ fn sobol_owen_random_f32(c: &mut Criterion) {
     group.throughput(Throughput::Elements((N * D) as u64));
     let owen = FastOwen::new(SEED);
     let tables: Vec<SobolTable> = dimensions(D).into_iter().map(SobolTable::new).collect();
-    let keys: [u32; D] = core::array::from_fn(|d| owen.dimension_key(d));
+    let keys: [FastOwenScrambler; D] = core::array::from_fn(|d| owen.scrambler(d));
     let shuffle_key = dimension_seed(SEED ^ 0x5F, 0);
     let scrambled = Scrambled::new(Sobol::new(D).expect("dims"), owen);
     let oq_seed = openqmc::pcg::hash(SEED32);
     let mut out = vec![0f32; N * D];
 
-    let owen_tables: Vec<OwenSobolTable> = dimensions(D)
-        .into_iter()
-        .enumerate()
-        .map(|(d, dim)| OwenSobolTable::new(dim, d, owen))
-        .collect();
-    let dims4: [SobolDimension; 4] = core::array::from_fn(|d| SobolDimension::new(d).expect("dim"));
-    let owen4 = OwenSobol4::new(dims4, [0, 1, 2, 3], owen);
+    let owen4 = OwenSobol::new(D, SEED).expect("dims");
     let mut out4 = vec![[0f32; 4]; N];
     for (label, idx) in &index_sets() {
         // Four interleaved dimensions, batch fill (run-time AVX2 dispatch on x86-64).
         group.bench_with_input(
-            BenchmarkId::new("qmckit_owen_sobol4_fill", label),
+            BenchmarkId::new("qmckit_owen_sobol_fill", label),
             idx,
             |bch, idx| {
                 bch.iter(|| {
@@ -445,7 +442,7 @@ fn sobol_owen_random_f32(c: &mut Criterion) {
             },
         );
         group.bench_with_input(
-            BenchmarkId::new("qmckit_owen_sobol4_portable", label),
+            BenchmarkId::new("qmckit_owen_sobol_portable", label),
             idx,
             |bch, idx| {
                 bch.iter(|| {
@@ -458,14 +455,14 @@ fn sobol_owen_random_f32(c: &mut Criterion) {
         );
         // The dedicated path: reversed byte tables, one reversal, the key inside.
         group.bench_with_input(
-            BenchmarkId::new("qmckit_owen_sobol_table", label),
+            BenchmarkId::new("qmckit_owen_sobol_sample", label),
             idx,
             |bch, idx| {
                 bch.iter(|| {
-                    let tables = black_box(owen_tables.as_slice());
+                    let s = black_box(&owen4);
                     for (row, &i) in out.chunks_exact_mut(D).zip(black_box(idx.as_slice())) {
-                        for (slot, t) in row.iter_mut().zip(tables) {
-                            *slot = t.sample_f32(i);
+                        for (dim, slot) in row.iter_mut().enumerate() {
+                            *slot = s.sample_f32(i, dim).expect("in range");
                         }
                     }
                     black_box(&mut out);
@@ -477,12 +474,11 @@ fn sobol_owen_random_f32(c: &mut Criterion) {
             idx,
             |bch, idx| {
                 bch.iter(|| {
-                    let owen = black_box(owen);
                     let tables = black_box(tables.as_slice());
                     let keys = black_box(&keys);
                     for (row, &i) in out.chunks_exact_mut(D).zip(black_box(idx.as_slice())) {
-                        for ((slot, t), &key) in row.iter_mut().zip(tables).zip(keys) {
-                            let x = owen.scramble_reversed(reverse_bits(t.sample(i)), key);
+                        for ((slot, t), key) in row.iter_mut().zip(tables).zip(keys) {
+                            let x = key.scramble_reversed(reverse_bits(t.sample(i)));
                             *slot = to_f32(reverse_bits(x));
                         }
                     }
@@ -495,14 +491,13 @@ fn sobol_owen_random_f32(c: &mut Criterion) {
             idx,
             |bch, idx| {
                 bch.iter(|| {
-                    let owen = black_box(owen);
                     let tables = black_box(tables.as_slice());
                     let keys = black_box(&keys);
                     let shuffle_key = black_box(shuffle_key);
                     for (row, &i) in out.chunks_exact_mut(D).zip(black_box(idx.as_slice())) {
                         let j = shuffle(i, 32, shuffle_key);
-                        for ((slot, t), &key) in row.iter_mut().zip(tables).zip(keys) {
-                            let x = owen.scramble_reversed(reverse_bits(t.sample(j)), key);
+                        for ((slot, t), key) in row.iter_mut().zip(tables).zip(keys) {
+                            let x = key.scramble_reversed(reverse_bits(t.sample(j)));
                             *slot = to_f32(reverse_bits(x));
                         }
                     }

@@ -34,7 +34,7 @@ pub fn points<S: Sampler + ?Sized, const D: usize, const N: usize>(
             got: N,
         });
     }
-    sampler.check_fill(start, count * D)?;
+    crate::sampler::check_fill(sampler, start, count * D)?;
     let mut out = heapless::Vec::new();
     for k in 0..count {
         let mut row = [0u32; D];

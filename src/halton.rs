@@ -242,7 +242,7 @@ impl Sampler for Halton {
     /// targets from 4 dimensions on, blocked (see `fill_blocked`).
     /// Scrambled sequences go point by point. Same values as [`sample`](Sampler::sample).
     fn fill_as<T: FromFraction>(&self, start: u32, out: &mut [T]) -> Result<()> {
-        let rows = self.check_fill(start, out.len())?;
+        let rows = crate::sampler::check_fill(self, start, out.len())?;
         if rows == 0 {
             return Ok(());
         }

@@ -128,7 +128,7 @@ impl Sampler for Hammersley {
 
     /// Sequential fast path: the radical-inverse columns use their iterators.
     fn fill(&self, start: u32, out: &mut [u32]) -> Result<()> {
-        let rows = self.check_fill(start, out.len())?;
+        let rows = crate::sampler::check_fill(self, start, out.len())?;
         if rows == 0 || self.dims == 0 {
             return Ok(());
         }

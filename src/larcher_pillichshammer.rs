@@ -102,3 +102,6 @@ impl Sampler for LarcherPillichshammer {
         LarcherPillichshammer::sample(self, index, dim)
     }
 }
+
+/// The LP net is a base-2 digital net: base-2 digital randomizations apply.
+impl crate::sampler::Base2Digital for LarcherPillichshammer {}

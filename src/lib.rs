@@ -64,6 +64,7 @@ pub mod bits;
 pub mod buffer;
 #[cfg(feature = "std")]
 pub mod collect;
+pub(crate) mod dispatch;
 pub mod error;
 /// Deprecated path of the fixed-point warps: use [`warp::fixed`].
 #[cfg(feature = "fixed")]
@@ -77,7 +78,11 @@ pub mod hash;
 pub mod independent;
 pub mod larcher_pillichshammer;
 pub mod latin_hypercube;
-pub mod owen_sobol;
+/// The former home of the Owen-scrambled Sobol' fast paths, now [`sobol::OwenSobol`].
+#[deprecated(note = "use qmckit::sobol::OwenSobol (one type, cheap reseed)")]
+pub mod owen_sobol {
+    pub use crate::sobol::{OwenSobol, owen_sobol, owen_sobol_f32};
+}
 pub mod radical_inverse;
 pub mod randomize;
 pub mod sampler;
@@ -95,8 +100,8 @@ pub use independent::Independent;
 pub use larcher_pillichshammer::LarcherPillichshammer;
 pub use latin_hypercube::LatinHypercube;
 pub use radical_inverse::{RadicalInverse, RadicalInverseIter};
-pub use sampler::Sampler;
-pub use sobol::{SOBOL_MAX_DIMS, Sobol};
+pub use sampler::{Base2Digital, Sampler};
+pub use sobol::{OwenSobol, SOBOL_MAX_DIMS, Sobol};
 pub use stratified::{Jitter, Stratified};
 pub use van_der_corput::VanDerCorput;
 

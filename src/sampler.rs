@@ -6,6 +6,30 @@ use crate::error::{Error, Result};
 /// `u32`s the default [`Sampler::fill_as`] converts a call (4 KiB of stack).
 pub const CONVERT_CHUNK: usize = 1024;
 
+/// `u32`s of the smaller buffer [`Sampler::fill_as`] uses for requests of at most this many
+/// values.
+const SMALL_CHUNK: usize = 64;
+
+/// [`Sampler::fill_as`]'s conversion through a stack buffer of `N` `u32`s (`dims <= N`).
+fn convert_via<const N: usize, S: Sampler + ?Sized, T: FromFraction>(
+    s: &S,
+    start: u32,
+    out: &mut [T],
+    dims: usize,
+) -> Result<()> {
+    let per = N / dims.max(1); // whole points a call
+    let mut buf = [0u32; N];
+    for (c, chunk) in out.chunks_mut((per * dims).max(1)).enumerate() {
+        let tmp = buf.get_mut(..chunk.len()).unwrap_or(&mut []);
+        // c * per < rows, so the index is at most the last one check_fill accepted.
+        s.fill(start + (c * per) as u32, tmp)?;
+        for (y, &x) in chunk.iter_mut().zip(tmp.iter()) {
+            *y = T::from_fraction(x);
+        }
+    }
+    Ok(())
+}
+
 /// 2^32, the number of `u32` indices.
 pub const FULL_RANGE: u64 = 1 << 32;
 
@@ -23,17 +47,16 @@ pub const FULL_RANGE: u64 = 1 << 32;
 /// assert_eq!(pts[2..4], [h.sample(1, 0)?, h.sample(1, 1)?]);
 /// # Ok::<(), qmckit::Error>(())
 /// ```
+// `len` counts valid indices and is never 0 (every constructor refuses empty sets), so
+// there is no `is_empty`.
+#[allow(clippy::len_without_is_empty)]
 pub trait Sampler {
     /// Number of coordinates of each point.
     fn dims(&self) -> usize;
 
-    /// Number of valid indices: the size of a finite point set, or 2^32 for a sequence.
+    /// Number of valid indices, at least 1: the size of a finite point set, or 2^32
+    /// ([`FULL_RANGE`]) for a sequence.
     fn len(&self) -> u64;
-
-    /// Always false: every sampler holds at least one point.
-    fn is_empty(&self) -> bool {
-        false
-    }
 
     /// Coordinate `dim` of point `index`.
     ///
@@ -65,7 +88,7 @@ pub trait Sampler {
     /// # Errors
     /// [`Error::BufferLength`], [`Error::IndexOutOfRange`].
     fn fill(&self, start: u32, out: &mut [u32]) -> Result<()> {
-        let rows = self.check_fill(start, out.len())?;
+        let rows = check_fill(self, start, out.len())?;
         let dims = self.dims();
         if dims == 0 {
             return Ok(()); // unreachable: check_fill refuses zero dimensions
@@ -98,7 +121,7 @@ pub trait Sampler {
     where
         Self: Sized,
     {
-        let rows = self.check_fill(start, out.len())?;
+        let rows = check_fill(self, start, out.len())?;
         let dims = self.dims();
         if dims > CONVERT_CHUNK {
             for (k, row) in out.chunks_exact_mut(dims).enumerate().take(rows) {
@@ -108,43 +131,61 @@ pub trait Sampler {
             }
             return Ok(());
         }
-        let per = CONVERT_CHUNK / dims.max(1); // whole points a call
-        let mut buf = [0u32; CONVERT_CHUNK];
-        for (c, chunk) in out.chunks_mut(per * dims).enumerate() {
-            let tmp = buf.get_mut(..chunk.len()).unwrap_or(&mut []);
-            // c * per < rows, so the index is at most the last one check_fill accepted.
-            self.fill(start + (c * per) as u32, tmp)?;
-            for (y, &x) in chunk.iter_mut().zip(tmp.iter()) {
-                *y = T::from_fraction(x);
-            }
+        // A small buffer for small requests (no 4 KiB to clear for a pixel's samples).
+        if out.len() <= SMALL_CHUNK {
+            convert_via::<SMALL_CHUNK, _, _>(self, start, out, dims)
+        } else {
+            convert_via::<CONVERT_CHUNK, _, _>(self, start, out, dims)
         }
-        Ok(())
-    }
-
-    /// Validates a `fill` request and returns its number of points.
-    ///
-    /// # Errors
-    /// [`Error::BufferLength`] unless `len` is a multiple of `dims()`;
-    /// [`Error::IndexOutOfRange`] if the last index is `len()` or beyond.
-    fn check_fill(&self, start: u32, len: usize) -> Result<usize> {
-        let dims = self.dims();
-        if dims == 0 || !len.is_multiple_of(dims) {
-            return Err(Error::BufferLength {
-                expected: dims,
-                got: len,
-            });
-        }
-        let rows = len / dims;
-        let end = start as u64 + rows as u64;
-        if end > self.len() {
-            return Err(Error::IndexOutOfRange {
-                index: end - 1,
-                len: self.len(),
-            });
-        }
-        Ok(rows)
     }
 }
+
+/// Validates a [`Sampler::fill`] request of `len` values from index `start` and returns its
+/// number of points (for implementors of `fill`).
+///
+/// # Errors
+/// [`Error::BufferLength`] unless `len` is a multiple of `dims()`;
+/// [`Error::IndexOutOfRange`] if the last index is `len()` or beyond.
+///
+/// ```
+/// use qmckit::{Sobol, sampler::check_fill};
+/// let s = Sobol::new(2)?;
+/// assert_eq!(check_fill(&s, 0, 8)?, 4);
+/// assert!(check_fill(&s, 0, 7).is_err());
+/// assert!(check_fill(&s, u32::MAX, 4).is_err()); // index 2^32 does not exist
+/// # Ok::<(), qmckit::Error>(())
+/// ```
+pub fn check_fill<S: Sampler + ?Sized>(s: &S, start: u32, len: usize) -> Result<usize> {
+    let dims = s.dims();
+    if dims == 0 || !len.is_multiple_of(dims) {
+        return Err(Error::BufferLength {
+            expected: dims,
+            got: len,
+        });
+    }
+    let rows = len / dims;
+    let end = start as u64 + rows as u64;
+    if end > s.len() {
+        return Err(Error::IndexOutOfRange {
+            index: end - 1,
+            len: s.len(),
+        });
+    }
+    Ok(rows)
+}
+
+/// A base-2 digital construction: every coordinate is `C_d i` over GF(2) for a generator
+/// matrix `C_d` (Sobol', Larcher–Pillichshammer, van der Corput in base 2 as
+/// [`crate::Sobol`]'s dimension 0). The base-2 digital randomizations
+/// ([`crate::randomize::DigitalShift`], [`crate::randomize::ExactOwen`],
+/// [`crate::randomize::FastOwen`], [`crate::randomize::Lms`]) keep its nets and apply only
+/// to these (`Scrambled<S, R>` requires `R: Randomizes<S>`).
+pub trait Base2Digital: Sampler {}
+
+impl<S: Base2Digital + ?Sized> Base2Digital for &S {}
+
+#[cfg(feature = "std")]
+impl<S: Base2Digital + ?Sized> Base2Digital for Box<S> {}
 
 /// Validates a finite set's size, `1 <= n <= 2^32`, and its dimension count, `dims >= 1`.
 pub(crate) const fn check_set(n: u64, dims: usize) -> Result<()> {

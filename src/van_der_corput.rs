@@ -83,7 +83,7 @@ impl Sampler for VanDerCorput {
         if self.scramble.is_none() {
             return self.ri.fill(start, out);
         }
-        self.check_fill(start, out.len())?;
+        crate::sampler::check_fill(self, start, out.len())?;
         for (k, slot) in out.iter_mut().enumerate() {
             *slot = self.value(start + k as u32);
         }

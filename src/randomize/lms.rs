@@ -6,22 +6,24 @@
 //! map is nested (keeps nets) and a bijection. Column `p` (input bit `p`) is `2^p` plus
 //! random bits below `p`.
 
-use super::{Randomizer, dimension_seed};
+use super::{Base2Digital, Randomizer, Randomizes, Scrambler, dimension_seed};
 use crate::bits::gf2_mul;
 use crate::hash::hash3;
 
 /// A random linear scramble for every dimension, keyed by `seed`.
 ///
-/// [`Randomizer::apply`] rebuilds the dimension's matrix on each call (32 hashes); for
-/// speed build the matrices once: [`Lms::dimension`] for one, [`Lms::cached`] (with `std`)
-/// for many.
+/// Its [`Scrambler`] is the dimension's matrix, [`LmsDimension`] (32 hashes to build, 128
+/// bytes), so [`super::Scrambled`]'s fills build each matrix once a call. For random access
+/// across calls build the matrices once: [`Lms::dimension`] for one, [`Lms::cached`] (with
+/// `std`) for many.
 ///
 /// ```
 /// use qmckit::randomize::{DigitalShift, Lms, Randomizer};
 /// let scramble = (Lms::new(9), DigitalShift::new(9)); // SciPy's Sobol' scrambling
 /// let d = Lms::new(9).dimension(0);
 /// assert_eq!(d.apply(0x8000_0000) >> 31, 1); // the top digit is kept (unit diagonal)
-/// # let _ = scramble.apply(1, 0);
+/// assert_eq!(d.apply(1), 1); // the last digit only feeds itself (unit diagonal)
+/// assert_eq!(scramble.scrambler(0).1.scramble(0), DigitalShift::new(9).shift(0, 0));
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
@@ -101,18 +103,43 @@ pub struct LmsCache {
 
 #[cfg(feature = "std")]
 impl Randomizer for LmsCache {
+    type Scrambler = LmsDimension;
+    #[inline]
+    fn scrambler(&self, dim: usize) -> LmsDimension {
+        match self.dims.get(dim) {
+            Some(m) => *m,
+            None => self.lms.dimension(dim),
+        }
+    }
     #[inline]
     fn apply(&self, x: u32, dim: usize) -> u32 {
         match self.dims.get(dim) {
             Some(m) => m.apply(x),
-            None => self.lms.apply(x, dim),
+            None => self.lms.dimension(dim).apply(x),
         }
     }
 }
 
+#[cfg(feature = "std")]
+impl<S: Base2Digital + ?Sized> Randomizes<S> for LmsCache {}
+
 impl Randomizer for Lms {
+    type Scrambler = LmsDimension;
+    #[inline]
+    fn scrambler(&self, dim: usize) -> LmsDimension {
+        self.dimension(dim)
+    }
     fn apply(&self, x: u32, dim: usize) -> u32 {
         self.dimension(dim).apply(x)
+    }
+}
+
+impl<S: Base2Digital + ?Sized> Randomizes<S> for Lms {}
+
+impl Scrambler for LmsDimension {
+    #[inline]
+    fn scramble(&self, x: u32) -> u32 {
+        self.apply(x)
     }
 }
 
@@ -127,6 +154,12 @@ impl LmsDimension {
     /// `L x`. `const`, 32 AND/XOR steps.
     #[inline]
     pub const fn apply(&self, x: u32) -> u32 {
+        gf2_mul(&self.cols, x)
+    }
+
+    /// `L x`, the [`Scrambler`] name of [`apply`](Self::apply). `const`.
+    #[inline]
+    pub const fn scramble(&self, x: u32) -> u32 {
         gf2_mul(&self.cols, x)
     }
 

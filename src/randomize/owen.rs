@@ -6,31 +6,38 @@
 //! result keeps nets as nets, makes each point uniform, and gives RQMC variance
 //! `O(N^-3 (log N)^(s-1))` for smooth integrands.
 
-use super::{Randomizer, dimension_seed};
+use super::{Base2Digital, Randomizer, Randomizes, Scrambler, dimension_seed};
 use crate::bits::reverse_bits;
 use crate::hash::mix64;
 
-/// Exact nested uniform scrambling: one independent random flip per bit prefix, each drawn
-/// from a 64-bit hash of `(seed, dimension, k, prefix)`; the tree of flips is never stored.
-/// The structure of pbrt-v4's `OwenScrambler`. Cost: 32 hashes a coordinate.
+/// Exact nested uniform scrambling (Owen 1995): one independent random flip per bit prefix,
+/// each drawn from a 64-bit hash of `(seed, dimension, k, prefix)`; the tree of flips is
+/// never stored. The structure of pbrt-v4's `OwenScrambler`. Cost: 32 [`mix64`] a value
+/// (the dimension's key is hashed once, by [`ExactOwen::scrambler`]).
 ///
 /// ```
-/// use qmckit::randomize::{Owen, Randomizer};
-/// let o = Owen::new(3);
+/// use qmckit::randomize::ExactOwen;
+/// let o = ExactOwen::new(3).scrambler(0);
 /// // Nested: points sharing their top k bits still share them after scrambling.
 /// let (a, b) = (0xABCD_0000u32, 0xABCD_FFFFu32);
-/// assert_eq!(o.apply(a, 0) >> 16, o.apply(b, 0) >> 16);
+/// assert_eq!(o.scramble(a) >> 16, o.scramble(b) >> 16);
+/// // ... and differing in bit k, they still differ in bit k.
+/// assert_ne!(o.scramble(0x8000_0000) >> 31, o.scramble(0) >> 31);
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
-pub struct Owen {
+pub struct ExactOwen {
     seed: u64,
 }
 
-impl Owen {
+/// The former name of [`ExactOwen`].
+#[deprecated(note = "renamed ExactOwen (the hash-based scramble is FastOwen)")]
+pub type Owen = ExactOwen;
+
+impl ExactOwen {
     /// The scramble for `seed`.
     pub const fn new(seed: u64) -> Self {
-        Owen { seed }
+        ExactOwen { seed }
     }
 
     /// With the seed drawn from `rng`.
@@ -39,17 +46,38 @@ impl Owen {
         Self::new(rng.next_u64())
     }
 
-    /// The scrambled coordinate. `const`.
+    /// The scrambler of dimension `dim`: its 64-bit key,
+    /// `mix64(seed ^ (dimension_seed(seed, dim) << 32))`. `const`; four hashes.
+    pub const fn scrambler(&self, dim: usize) -> ExactOwenScrambler {
+        ExactOwenScrambler {
+            key: mix64(self.seed ^ ((dimension_seed(self.seed, dim) as u64) << 32)),
+        }
+    }
+
+    /// The scrambled coordinate, `self.scrambler(dim).scramble(x)`. `const`.
     pub const fn scramble(&self, x: u32, dim: usize) -> u32 {
-        let key = mix64(self.seed ^ ((dimension_seed(self.seed, dim) as u64) << 32));
+        self.scrambler(dim).scramble(x)
+    }
+}
+
+/// [`ExactOwen`] prepared for one dimension.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct ExactOwenScrambler {
+    key: u64,
+}
+
+impl ExactOwenScrambler {
+    /// Flips bit `31 - k` of `x` when `mix64(key ^ (2^k | top k bits of x)) >> 63` is 1, for
+    /// `k = 0..32`: every `(k, prefix)` pair is a distinct node of the binary tree. `const`;
+    /// 32 hashes.
+    pub const fn scramble(&self, x: u32) -> u32 {
         let mut out = x;
         let mut k = 0u32;
         while k < 32 {
-            // The k bits above bit 31 - k, tagged with their count so that every (k, prefix)
-            // pair is a distinct node of the tree.
             let prefix = if k == 0 { 0 } else { x >> (32 - k) };
             let node = (1u64 << k) | prefix as u64;
-            if mix64(key ^ node) >> 63 == 1 {
+            if mix64(self.key ^ node) >> 63 == 1 {
                 out ^= 1 << (31 - k);
             }
             k += 1;
@@ -58,12 +86,26 @@ impl Owen {
     }
 }
 
-impl Randomizer for Owen {
+impl Scrambler for ExactOwenScrambler {
+    #[inline]
+    fn scramble(&self, x: u32) -> u32 {
+        ExactOwenScrambler::scramble(self, x)
+    }
+}
+
+impl Randomizer for ExactOwen {
+    type Scrambler = ExactOwenScrambler;
+    #[inline]
+    fn scrambler(&self, dim: usize) -> ExactOwenScrambler {
+        ExactOwen::scrambler(self, dim)
+    }
     #[inline]
     fn apply(&self, x: u32, dim: usize) -> u32 {
         self.scramble(x, dim)
     }
 }
+
+impl<S: Base2Digital + ?Sized> Randomizes<S> for ExactOwen {}
 
 /// The Laine–Karras permutation (Laine & Karras 2011, as used by Burley 2020, "Practical
 /// hash-based Owen scrambling") on a *bit-reversed* 0.32 fraction: `x + seed`, then four
@@ -103,16 +145,19 @@ pub enum OwenHash {
     Vegdahl,
 }
 
-/// Hash-based Owen scrambling: `reverse(hash(reverse(x), seed_dim))`. Not every nested
-/// scramble is reachable (the hash has 32 bits of key), but the result is a nested,
-/// bijective scramble that keeps nets, at a dozen operations a coordinate.
+/// Hash-based Owen scrambling: `reverse(hash(reverse(x), key_dim))` with `hash` one of
+/// [`vegdahl`] (the default) or [`laine_karras`], `key_dim = dimension_seed(seed, dim)`
+/// (Burley 2020, "Practical hash-based Owen scrambling"). Not every nested scramble is
+/// reachable (the hash has 32 bits of key), but the result is a nested, bijective scramble
+/// that keeps nets, at about a dozen integer operations a value once the dimension's key is
+/// hashed ([`FastOwen::scrambler`]).
 ///
 /// ```
-/// use qmckit::randomize::{FastOwen, OwenHash, Randomizer};
+/// use qmckit::randomize::{FastOwen, OwenHash};
 /// let o = FastOwen::new(5);
-/// assert_ne!(o.apply(0, 0), o.apply(0, 1)); // dimensions scramble independently
-/// let lk = FastOwen::with_hash(5, OwenHash::LaineKarras);
-/// assert_eq!(lk.apply(0xFFFF_0000, 2) >> 16, lk.apply(0xFFFF_1234, 2) >> 16);
+/// assert_ne!(o.scramble(0, 0), o.scramble(0, 1)); // dimensions scramble independently
+/// let lk = FastOwen::with_hash(5, OwenHash::LaineKarras).scrambler(2);
+/// assert_eq!(lk.scramble(0xFFFF_0000) >> 16, lk.scramble(0xFFFF_1234) >> 16);
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
@@ -138,32 +183,92 @@ impl FastOwen {
         Self::new(rng.next_u64())
     }
 
-    /// The 32-bit key of dimension `dim`.
+    /// The seed.
+    pub const fn seed(&self) -> u64 {
+        self.seed
+    }
+
+    /// The hash.
+    pub const fn hash(&self) -> OwenHash {
+        self.hash
+    }
+
+    /// The 32-bit key of dimension `dim`, [`dimension_seed`]`(seed, dim)`.
     #[inline]
     pub const fn dimension_key(&self, dim: usize) -> u32 {
         dimension_seed(self.seed, dim)
     }
 
-    /// Scrambles a bit-reversed coordinate with a dimension key (no reversals): for
-    /// pipelines that already work on reversed bits.
+    /// The scrambler of dimension `dim` (one hash of the seed). `const`.
     #[inline]
-    pub const fn scramble_reversed(&self, x_rev: u32, key: u32) -> u32 {
-        match self.hash {
-            OwenHash::LaineKarras => laine_karras(x_rev, key),
-            OwenHash::Vegdahl => vegdahl(x_rev, key),
+    pub const fn scrambler(&self, dim: usize) -> FastOwenScrambler {
+        FastOwenScrambler {
+            key: self.dimension_key(dim),
+            hash: self.hash,
         }
     }
 
-    /// The scrambled coordinate. `const`.
+    /// The scrambled coordinate, `self.scrambler(dim).scramble(x)`. `const`.
     #[inline]
     pub const fn scramble(&self, x: u32, dim: usize) -> u32 {
-        reverse_bits(self.scramble_reversed(reverse_bits(x), self.dimension_key(dim)))
+        self.scrambler(dim).scramble(x)
+    }
+}
+
+/// [`FastOwen`] prepared for one dimension: the hash and the dimension's 32-bit key.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct FastOwenScrambler {
+    key: u32,
+    hash: OwenHash,
+}
+
+impl FastOwenScrambler {
+    /// The scrambler with an explicit 32-bit key (what [`FastOwen::scrambler`] derives from
+    /// the seed and the dimension).
+    pub const fn from_key(key: u32, hash: OwenHash) -> Self {
+        FastOwenScrambler { key, hash }
+    }
+
+    /// The key.
+    pub const fn key(&self) -> u32 {
+        self.key
+    }
+
+    /// The hash alone, on a bit-reversed coordinate: `hash(x_rev, key)` (for pipelines that
+    /// already hold reversed bits, as the Owen-scrambled Sobol' tables do).
+    #[inline]
+    pub const fn scramble_reversed(&self, x_rev: u32) -> u32 {
+        match self.hash {
+            OwenHash::LaineKarras => laine_karras(x_rev, self.key),
+            OwenHash::Vegdahl => vegdahl(x_rev, self.key),
+        }
+    }
+
+    /// `reverse(hash(reverse(x), key))`. `const`.
+    #[inline]
+    pub const fn scramble(&self, x: u32) -> u32 {
+        reverse_bits(self.scramble_reversed(reverse_bits(x)))
+    }
+}
+
+impl Scrambler for FastOwenScrambler {
+    #[inline]
+    fn scramble(&self, x: u32) -> u32 {
+        FastOwenScrambler::scramble(self, x)
     }
 }
 
 impl Randomizer for FastOwen {
+    type Scrambler = FastOwenScrambler;
+    #[inline]
+    fn scrambler(&self, dim: usize) -> FastOwenScrambler {
+        FastOwen::scrambler(self, dim)
+    }
     #[inline]
     fn apply(&self, x: u32, dim: usize) -> u32 {
         self.scramble(x, dim)
     }
 }
+
+impl<S: Base2Digital + ?Sized> Randomizes<S> for FastOwen {}

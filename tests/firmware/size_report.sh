@@ -157,7 +157,7 @@ WORKLOADS=(
     "sobol-2d-fill64|2D Sobol' point, \`Sampler::fill\` of \`Sobol\` (64-point blocks, sequential)"
     "sobol-2d-owen-16bit|2D Owen-scrambled Sobol' point, \`SobolDimension\` + \`FastOwen::scramble\`, 16-bit"
     "sobol-2d-owen-32bit|2D Owen-scrambled Sobol' point, same, 32-bit indices"
-    "owen-sobol4-4d-16bit|4D Owen-scrambled Sobol' point, \`OwenSobol4::sample\` (16 KiB of tables)"
+    "owen-sobol4-4d-16bit|4D Owen-scrambled Sobol' point, \`OwenSobol::sample4\` (16 KiB of shared tables)"
 )
 ICOUNT_ROWS=()
 for wl in "${WORKLOADS[@]}"; do

@@ -490,3 +490,80 @@ fn warp_geometry_is_validated() {
         }
     }
 }
+
+/// The library's rules decide what `--scramble` takes: the rotation applies to any
+/// construction, and `vdc` in base 2 takes the base-2 kinds (it is Sobol' dimension 0).
+#[test]
+fn scramble_rules_follow_the_library_types() {
+    let lines = |args: &[&str]| -> Vec<u32> {
+        stdout(args)
+            .lines()
+            .map(|l| l.trim().parse().unwrap())
+            .collect()
+    };
+    // halton + rotate: the library's Cranley-Patterson rotation of Halton, point by point.
+    use qmckit::randomize::{CranleyPatterson, FastOwen, Scrambled};
+    use qmckit::{Halton, Sampler, Sobol};
+    let text = stdout(&[
+        "points",
+        "halton",
+        "-n",
+        "16",
+        "-d",
+        "2",
+        "--scramble",
+        "rotate",
+        "--seed",
+        "3",
+    ]);
+    let h = Scrambled::new(Halton::new(2).unwrap(), CranleyPatterson::new(3));
+    for (i, line) in text.lines().enumerate() {
+        let want = format!(
+            "{} {}",
+            h.sample(i as u32, 0).unwrap(),
+            h.sample(i as u32, 1).unwrap()
+        );
+        assert_eq!(line, want, "point {i}");
+    }
+    // vdc base 2 + fast-owen equals sobol -d 1 + fast-owen, and differs from plain vdc.
+    let vdc = lines(&[
+        "points",
+        "vdc",
+        "-n",
+        "64",
+        "--scramble",
+        "fast-owen",
+        "--seed",
+        "9",
+    ]);
+    let sobol = lines(&[
+        "points",
+        "sobol",
+        "-n",
+        "64",
+        "-d",
+        "1",
+        "--scramble",
+        "fast-owen",
+        "--seed",
+        "9",
+    ]);
+    assert_eq!(vdc, sobol);
+    let s = Scrambled::new(Sobol::new(1).unwrap(), FastOwen::new(9));
+    assert_eq!(vdc[17], s.sample(17, 0).unwrap());
+    assert_ne!(vdc, lines(&["points", "vdc", "-n", "64"]));
+    // The base-2 kinds still refuse radical inverses in other bases.
+    assert_usage_error(
+        &[
+            "points",
+            "vdc",
+            "--base",
+            "3",
+            "-n",
+            "4",
+            "--scramble",
+            "fast-owen",
+        ],
+        "does not apply",
+    );
+}

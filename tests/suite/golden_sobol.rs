@@ -189,57 +189,125 @@ fn byte_tables_match_the_matrix_product() {
     }
 }
 
+/// `OwenSobol` (reversed byte tables, keys per seed) against the generic path
+/// (`FastOwen` over `SobolDimension::sample`, direction numbers and bit reversals): random
+/// access, f32, the free functions, reseeding, and `Scrambled<Sobol, FastOwen>`.
 #[test]
-fn owen_tables_match_the_generic_scramble() {
-    use qmckit::owen_sobol::OwenSobolTable;
-    use qmckit::randomize::{FastOwen, OwenHash};
-    for (dim, hash) in [
-        (0, OwenHash::Vegdahl),
-        (3, OwenHash::LaineKarras),
-        (63, OwenHash::Vegdahl),
-    ] {
-        let d = SobolDimension::new(dim).unwrap();
-        let owen = FastOwen::with_hash(dim as u64 * 7 + 1, hash);
-        let t = OwenSobolTable::new(d, dim, owen);
+fn owen_sobol_matches_the_generic_scramble() {
+    use qmckit::randomize::{FastOwen, OwenHash, Scrambled};
+    use qmckit::sobol::{OwenSobol, owen_sobol, owen_sobol_f32};
+    let dims = SOBOL_MAX_DIMS.min(70);
+    for (seed, hash) in [(1u64, OwenHash::Vegdahl), (0xFEED, OwenHash::LaineKarras)] {
+        let owen = FastOwen::with_hash(seed, hash);
+        let fast = OwenSobol::with_hash(dims, seed, hash).unwrap();
+        let generic = Scrambled::new(Sobol::new(dims).unwrap(), owen);
         let mut i = 99u32;
-        for _ in 0..100_000 {
+        for _ in 0..20_000 {
             i = i.wrapping_mul(747_796_405).wrapping_add(2_891_336_453);
-            assert_eq!(
-                t.sample(i),
-                owen.scramble(d.sample(i), dim),
-                "dim {dim} index {i}"
-            );
-            assert_eq!(t.sample_f32(i), qmckit::bits::to_f32(t.sample(i)));
+            for dim in [0, 1, 2, 3, 4, 5, dims - 1] {
+                let want = owen.scramble(SobolDimension::new(dim).unwrap().sample(i), dim);
+                assert_eq!(
+                    fast.sample(i, dim).unwrap(),
+                    want,
+                    "{hash:?} dim {dim} index {i}"
+                );
+                assert_eq!(generic.sample(i, dim).unwrap(), want);
+                assert_eq!(
+                    fast.sample_f32(i, dim).unwrap().to_bits(),
+                    qmckit::bits::to_f32(want).to_bits()
+                );
+                if hash == OwenHash::Vegdahl {
+                    assert_eq!(owen_sobol(i, dim, seed).unwrap(), want);
+                    assert_eq!(
+                        owen_sobol_f32(i, dim, seed).unwrap().to_bits(),
+                        qmckit::bits::to_f32(want).to_bits()
+                    );
+                }
+            }
+            let four: [u32; 4] = core::array::from_fn(|d| {
+                owen.scramble(SobolDimension::new(d).unwrap().sample(i), d)
+            });
+            assert_eq!(fast.sample4(i), four);
         }
+        // A fill matches random access; reseeding equals building with the seed.
+        let (mut a, mut b) = (vec![0u32; 64 * dims], vec![0u32; 64 * dims]);
+        fast.fill(1000, &mut a).unwrap();
+        generic.fill(1000, &mut b).unwrap();
+        assert_eq!(a, b);
+        assert_eq!(a[5 * dims + 3], generic.sample(1005, 3).unwrap());
+        let mut re = fast;
+        re.reseed(seed + 1);
+        assert_eq!(re, OwenSobol::with_hash(dims, seed + 1, hash).unwrap());
+        assert_ne!(re.sample(7, 0), fast.sample(7, 0));
+        assert_eq!(fast.with_seed(seed + 1), re);
     }
+    assert!(owen_sobol(0, SOBOL_MAX_DIMS, 0).is_err());
+    assert!(OwenSobol::new(0, 0).is_err());
+    assert!(OwenSobol::new(SOBOL_MAX_DIMS + 1, 0).is_err());
+    assert!(OwenSobol::new(2, 0).unwrap().sample(0, 2).is_err());
 }
 
+/// `fill_f32` (dispatching to the widest build) and the portable build against
+/// `sample4_f32` and the generic path point by point.
 #[test]
-fn owen_sobol4_matches_the_scalar_paths_on_every_code_path() {
-    use qmckit::owen_sobol::{OwenSobol4, OwenSobolTable};
+fn owen_sobol_fill_f32_matches_the_scalar_paths() {
     use qmckit::randomize::FastOwen;
+    use qmckit::sobol::OwenSobol;
+    let s = OwenSobol::new(4, 31).unwrap();
     let owen = FastOwen::new(31);
-    let picks = [0usize, 1, 7, SOBOL_MAX_DIMS - 1];
-    let dims = picks.map(|d| SobolDimension::new(d).unwrap());
-    let four = OwenSobol4::new(dims, picks, owen);
-    let ones = picks.map(|d| OwenSobolTable::new(SobolDimension::new(d).unwrap(), d, owen));
-    let indices: Vec<u32> = (0..20_000u32)
+    let indices: Vec<u32> = (0..20_003u32)
         .map(|k| k.wrapping_mul(2_654_435_761))
         .chain([0, 1, u32::MAX])
         .collect();
-    // fill_f32 takes the AVX2 build where the CPU has it; the portable build always runs.
     let (mut a, mut b) = (
         vec![[0f32; 4]; indices.len()],
         vec![[0f32; 4]; indices.len()],
     );
-    four.fill_f32(&indices, &mut a).unwrap();
-    four.fill_f32_portable(&indices, &mut b).unwrap();
+    s.fill_f32(&indices, &mut a).unwrap();
+    s.fill_f32_portable(&indices, &mut b).unwrap();
     for (k, &i) in indices.iter().enumerate() {
-        let want = ones.each_ref().map(|t| t.sample_f32(i).to_bits());
+        let want: [u32; 4] = core::array::from_fn(|d| {
+            qmckit::bits::to_f32(owen.scramble(SobolDimension::new(d).unwrap().sample(i), d))
+                .to_bits()
+        });
         assert_eq!(a[k].map(f32::to_bits), want, "dispatching fill at {i}");
         assert_eq!(b[k].map(f32::to_bits), want, "portable fill at {i}");
-        assert_eq!(four.sample(i), ones.each_ref().map(|t| t.sample(i)));
     }
+    // Mismatched lengths are an error and leave `out` untouched.
+    let mut short = vec![[-1f32; 4]; 3];
+    for fill in [OwenSobol::fill_f32, OwenSobol::fill_f32_portable] {
+        assert_eq!(
+            fill(&s, &indices[..4], &mut short),
+            Err(qmckit::Error::BufferLength {
+                expected: 4,
+                got: 3
+            })
+        );
+        assert!(short.iter().all(|o| *o == [-1f32; 4]));
+    }
+}
+
+/// Van der Corput in base 2 (the radical inverse) is Sobol's dimension 0, bit for bit: the
+/// command builds `vdc` base 2 as `Sobol` so that base-2 randomizers apply to it.
+#[test]
+fn van_der_corput_base_2_is_sobol_dimension_0() {
+    let vdc = qmckit::VanDerCorput::new(2).unwrap();
+    let sobol = Sobol::new(1).unwrap();
+    let mut i = 5u32;
+    for _ in 0..100_000 {
+        i = i.wrapping_mul(747_796_405).wrapping_add(2_891_336_453);
+        assert_eq!(
+            vdc.sample(i, 0).unwrap(),
+            sobol.sample(i, 0).unwrap(),
+            "index {i}"
+        );
+        assert_eq!(sobol.sample(i, 0).unwrap(), i.reverse_bits());
+    }
+    let (mut a, mut b) = (vec![0u32; 4096], vec![0u32; 4096]);
+    vdc.fill(u32::MAX - 4095, &mut a).unwrap();
+    sobol.fill(u32::MAX - 4095, &mut b).unwrap();
+    assert_eq!(a, b);
+    assert_eq!(vdc.len(), sobol.len());
 }
 
 #[test]

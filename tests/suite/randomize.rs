@@ -8,18 +8,19 @@ use common::{first_net_failure, points_2d};
 use qmckit::randomize::digits::{DigitScramble, faure};
 use qmckit::randomize::shuffle::{Shuffled, shuffle};
 use qmckit::randomize::{
-    CranleyPatterson, DigitalShift, FastOwen, Lms, Owen, OwenHash, Randomizer, Scrambled,
+    CranleyPatterson, DigitalShift, ExactOwen, FastOwen, Lms, OwenHash, Randomizer, Scrambled,
 };
 use qmckit::sobol::SobolDimension;
 use qmckit::{
-    Halton, Hammersley, LarcherPillichshammer, RadicalInverse, Sampler, Sobol, VanDerCorput,
+    Base2Digital, Halton, Hammersley, LarcherPillichshammer, RadicalInverse, Sampler, Sobol,
+    VanDerCorput,
 };
 
 /// Every base-2 randomizer, built from a seed.
 fn randomizers(seed: u64) -> Vec<(&'static str, Box<dyn Randomizer>)> {
     vec![
         ("xor", Box::new(DigitalShift::new(seed))),
-        ("owen", Box::new(Owen::new(seed))),
+        ("owen", Box::new(ExactOwen::new(seed))),
         (
             "fast-owen-lk",
             Box::new(FastOwen::with_hash(seed, OwenHash::LaineKarras)),
@@ -37,7 +38,7 @@ fn check_nets(seeds: std::ops::Range<u64>, ms: std::ops::RangeInclusive<u32>) {
     for seed in seeds {
         for (name, r) in randomizers(seed) {
             for m in ms.clone() {
-                let bases: [Box<dyn Sampler>; 2] = [
+                let bases: [Box<dyn Base2Digital>; 2] = [
                     Box::new(Sobol::new(2).unwrap()),
                     Box::new(LarcherPillichshammer::new(m).unwrap()),
                 ];
@@ -138,7 +139,7 @@ fn scrambling_is_uniform() {
             let mut bins = [0f64; 256];
             for seed in 0..seeds {
                 let y = match name {
-                    "owen" => Owen::new(seed).apply(x, 1),
+                    "owen" => ExactOwen::new(seed).apply(x, 1),
                     "fast-owen" => FastOwen::new(seed).apply(x, 1),
                     "fast-owen-lk" => FastOwen::with_hash(seed, OwenHash::LaineKarras).apply(x, 1),
                     "xor" => DigitalShift::new(seed).apply(x, 1),
@@ -181,7 +182,7 @@ fn rqmc_is_unbiased() {
     for (name, (mean, var)) in [
         (
             "owen",
-            stats(&|s| Box::new(Scrambled::new(sobol(), Owen::new(s)))),
+            stats(&|s| Box::new(Scrambled::new(sobol(), ExactOwen::new(s)))),
         ),
         (
             "fast-owen",
@@ -329,21 +330,29 @@ fn const_owen_scrambled_sobol_pattern() {
         );
     }
     assert_eq!(first_net_failure(&PATTERN, 6), None);
-    // The exact Owen scrambler is const too.
-    const EXACT: u32 = Owen::new(1).scramble(0x8000_0000, 0);
-    assert_eq!(EXACT, Owen::new(1).apply(0x8000_0000, 0));
+    // The exact Owen scrambler is const too, and nested: inputs that differ in the top bit
+    // still differ there.
+    const EXACT: [u32; 2] = {
+        let s = ExactOwen::new(1).scrambler(0);
+        [s.scramble(0x8000_0000), s.scramble(0)]
+    };
+    assert_ne!(EXACT[0] >> 31, EXACT[1] >> 31);
 }
 
 #[test]
 fn scrambled_samplers_fill_like_they_sample() {
     let samplers: Vec<Box<dyn Sampler>> = vec![
         Box::new(Scrambled::new(Sobol::new(5).unwrap(), FastOwen::new(1))),
-        Box::new(Scrambled::new(VanDerCorput::new(2).unwrap(), Owen::new(2))),
+        Box::new(Scrambled::new(Sobol::new(1).unwrap(), ExactOwen::new(2))),
+        Box::new(Scrambled::new(
+            Sobol::new(3).unwrap(),
+            (Lms::new(4), DigitalShift::new(4)),
+        )),
         Box::new(Halton::with_scramble(6, DigitScramble::Owen(5)).unwrap()),
         Box::new(Halton::with_scramble(6, DigitScramble::Faure).unwrap()),
         Box::new(Scrambled::new(
             Hammersley::with_m(8, 2).unwrap(),
-            DigitalShift::new(3),
+            CranleyPatterson::new(3),
         )),
     ];
     for s in samplers {
@@ -375,7 +384,7 @@ fn cached_lms_is_the_same_scramble() {
 fn randomizers_draw_their_seeds_from_any_rng() {
     use rand_pcg::Pcg32;
     let (mut a, mut b) = (Pcg32::new(1, 2), Pcg32::new(1, 2));
-    assert_eq!(Owen::from_rng(&mut a), Owen::from_rng(&mut b));
+    assert_eq!(ExactOwen::from_rng(&mut a), ExactOwen::from_rng(&mut b));
     assert_eq!(FastOwen::from_rng(&mut a), FastOwen::from_rng(&mut b));
     assert_eq!(
         DigitalShift::from_rng(&mut a),
@@ -594,7 +603,8 @@ mod properties {
                     prop_assert!((1..=SOBOL_MAX_DIMS).contains(&d));
                     probe(&s)?;
                     probe(&Scrambled::new(s, FastOwen::new(seed)))?;
-                    probe(&Scrambled::new(s, Owen::new(seed)))?;
+                    probe(&Scrambled::new(s, ExactOwen::new(seed)))?;
+                    probe(&qmckit::sobol::OwenSobol::new(d, seed).unwrap())?;
                     probe(&Scrambled::new(
                         s,
                         (Lms::new(seed), DigitalShift::new(seed)),

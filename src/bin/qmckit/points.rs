@@ -5,11 +5,13 @@ use std::io::BufWriter;
 use clap::{Args, ValueEnum};
 use qmckit::randomize::digits::DigitScramble;
 use qmckit::randomize::shuffle::Shuffled;
-use qmckit::randomize::{CranleyPatterson, DigitalShift, FastOwen, Lms, Owen, OwenHash, Scrambled};
+use qmckit::randomize::{
+    CranleyPatterson, DigitalShift, ExactOwen, FastOwen, Lms, OwenHash, Scrambled,
+};
 use qmckit::sobol::{Order, Sobol};
 use qmckit::{
-    Halton, Hammersley, Independent, Jitter, LarcherPillichshammer, LatinHypercube, Sampler,
-    Stratified, VanDerCorput,
+    Base2Digital, Halton, Hammersley, Independent, Jitter, LarcherPillichshammer, LatinHypercube,
+    Sampler, Stratified, VanDerCorput,
 };
 
 use super::Failure;
@@ -23,9 +25,9 @@ Options that apply (any other is an error that names it):
   --base      vdc            --strata, --centered   stratified
   --total     the finite sets: stratified, latin, hammersley, lp
   --order     sobol (gray: SciPy's order)
-  --scramble  xor, rotate, fast-owen, fast-owen-lk, lms: base-2 constructions (sobol, lp,
-              vdc base 2); owen: those and halton, hammersley, vdc (in base b);
-              shuffle-owen: sobol, lp; perm, faure: halton, hammersley, vdc
+  --scramble  xor, fast-owen, fast-owen-lk, lms, shuffle-owen: base-2 digital
+              constructions (sobol, lp, vdc base 2); owen: those and halton, hammersley,
+              vdc (in base b); rotate: any; perm, faure: halton, hammersley, vdc
 
 Limits: indices start..start+n-1 must lie in the construction (2^32 for the sequences;
 --total for the sets); a point holds at most 2^27 coordinates (1 GiB at 8 bytes each);
@@ -71,7 +73,7 @@ pub enum ScrambleName {
     None,
     /// Random digital shift (XOR), base 2.
     Xor,
-    /// Cranley–Patterson rotation (x + u mod 1); does not keep nets.
+    /// Cranley–Patterson rotation (x + u mod 1), any construction; does not keep nets.
     Rotate,
     /// Owen scrambling: exact nested uniform in base 2; in base b for halton, hammersley, vdc.
     Owen,
@@ -272,68 +274,84 @@ pub fn value_name(v: &impl ValueEnum) -> String {
         .unwrap_or_default()
 }
 
-/// Builds the sampler `args` names, randomized as `--scramble` asks.
+/// A construction, classified by the library's types: which randomizations it takes.
+enum Built {
+    /// A base-2 digital construction ([`Base2Digital`]): every base-2 randomizer applies.
+    Digital(Box<dyn Base2Digital>),
+    /// Anything else: only the Cranley–Patterson rotation applies (digit scrambles, if
+    /// asked, are already part of its radical inverse).
+    Other(Box<dyn Sampler>),
+}
+
+/// Builds the sampler `args` names, randomized as `--scramble` asks. Which randomizer fits
+/// which construction is the library's rule (`Scrambled<S, R>` is a sampler only when
+/// `R: Randomizes<S>`); this only maps names to types.
 pub fn build(args: &Spec) -> Result<Box<dyn Sampler>, Failure> {
-    use SamplerName as S;
     use ScrambleName as K;
     let seed = args.seed;
+    let takes_digits = args.sampler.takes_digit_scrambles(args.base);
     let digits = match args.scramble {
         K::Perm => Some(DigitScramble::Permutations(seed)),
         K::Faure => Some(DigitScramble::Faure),
-        K::Owen
-            if matches!(args.sampler, S::Halton | S::Hammersley)
-                || (args.sampler == S::Vdc && args.base != 2) =>
-        {
-            Some(DigitScramble::Owen(seed))
-        }
+        K::Owen if takes_digits => Some(DigitScramble::Owen(seed)),
         _ => None,
     };
-    let base2 = args.sampler == S::Sobol
-        || args.sampler == S::Lp
-        || (args.sampler == S::Vdc && args.base == 2);
-    let applies = match args.scramble {
-        K::None => true,
-        K::Perm | K::Faure => matches!(args.sampler, S::Halton | S::Hammersley | S::Vdc),
-        K::Owen => base2 || digits.is_some(),
-        K::ShuffleOwen => args.sampler == S::Sobol || args.sampler == S::Lp,
-        K::Xor | K::Rotate | K::FastOwen | K::FastOwenLk | K::Lms => base2,
-    };
-    if !applies {
-        return Err(Failure::usage(format!(
-            "--scramble {} does not apply to {} (base-2 kinds: sobol, lp, vdc base 2; \
-             perm/faure/owen: halton, hammersley, vdc)",
-            value_name(&args.scramble),
-            value_name(&args.sampler),
-        )));
+    if digits.is_some() && !takes_digits {
+        return Err(does_not_apply(args));
     }
-    let sampler = construct(args, digits.unwrap_or_default())?;
-    if digits.is_some() {
-        return Ok(sampler);
-    }
-    Ok(match args.scramble {
-        K::None | K::Perm | K::Faure => sampler,
-        K::Xor => Box::new(Scrambled::new(sampler, DigitalShift::new(seed))),
-        K::Rotate => Box::new(Scrambled::new(sampler, CranleyPatterson::new(seed))),
-        K::Owen => Box::new(Scrambled::new(sampler, Owen::new(seed))),
-        K::FastOwen => Box::new(Scrambled::new(sampler, FastOwen::new(seed))),
-        K::FastOwenLk => Box::new(Scrambled::new(
-            sampler,
+    let built = construct(args, digits.unwrap_or_default())?;
+    Ok(match (built, args.scramble) {
+        (Built::Digital(s), K::None) => Box::new(s),
+        (Built::Other(s), _) if digits.is_some() => s,
+        (Built::Other(s), K::None) => s,
+        (Built::Other(s), K::Rotate) => Box::new(Scrambled::new(s, CranleyPatterson::new(seed))),
+        (Built::Digital(s), K::Rotate) => Box::new(Scrambled::new(s, CranleyPatterson::new(seed))),
+        (Built::Digital(s), K::Xor) => Box::new(Scrambled::new(s, DigitalShift::new(seed))),
+        (Built::Digital(s), K::Owen) => Box::new(Scrambled::new(s, ExactOwen::new(seed))),
+        (Built::Digital(s), K::FastOwen) => Box::new(Scrambled::new(s, FastOwen::new(seed))),
+        (Built::Digital(s), K::FastOwenLk) => Box::new(Scrambled::new(
+            s,
             FastOwen::with_hash(seed, OwenHash::LaineKarras),
         )),
-        K::Lms => {
-            let lms = Lms::new(seed).cached(sampler.dims())?;
-            Box::new(Scrambled::new(sampler, (lms, DigitalShift::new(seed))))
+        (Built::Digital(s), K::Lms) => {
+            let lms = Lms::new(seed).cached(s.dims())?;
+            Box::new(Scrambled::new(s, (lms, DigitalShift::new(seed))))
         }
-        K::ShuffleOwen => Box::new(Shuffled::new(
-            Scrambled::new(sampler, FastOwen::new(seed)),
+        (Built::Digital(s), K::ShuffleOwen) => Box::new(Shuffled::new(
+            Scrambled::new(s, FastOwen::new(seed)),
             seed,
             0,
         )?),
+        (Built::Digital(_), K::Perm | K::Faure)
+        | (Built::Other(_), K::Xor | K::Owen | K::FastOwen | K::FastOwenLk | K::Lms)
+        | (Built::Other(_), K::ShuffleOwen | K::Perm | K::Faure) => {
+            return Err(does_not_apply(args));
+        }
     })
 }
 
+/// The usage error of a randomization that does not fit the construction.
+fn does_not_apply(args: &Spec) -> Failure {
+    Failure::usage(format!(
+        "--scramble {} does not apply to {} (base-2 kinds: sobol, lp, vdc base 2; \
+         rotate: any; perm/faure/owen: halton, hammersley, vdc)",
+        value_name(&args.scramble),
+        value_name(&args.sampler),
+    ))
+}
+
+impl SamplerName {
+    /// Whether the construction is a radical inverse that takes a digit scramble
+    /// (`with_scramble`): halton, hammersley, vdc in a base other than 2 (vdc base 2 is
+    /// built as Sobol' dimension 0, the same bits, so the base-2 randomizers apply).
+    fn takes_digit_scrambles(self, base: u32) -> bool {
+        matches!(self, SamplerName::Halton | SamplerName::Hammersley)
+            || (self == SamplerName::Vdc && base != 2)
+    }
+}
+
 /// Builds the construction itself (digit scrambles are part of the radical inverse).
-fn construct(args: &Spec, digits: DigitScramble) -> Result<Box<dyn Sampler>, Failure> {
+fn construct(args: &Spec, digits: DigitScramble) -> Result<Built, Failure> {
     let d = args.sampler.dims(args.d);
     let total = args.total.unwrap_or(args.n);
     if args.order == OrderName::Gray && args.sampler != SamplerName::Sobol {
@@ -341,13 +359,22 @@ fn construct(args: &Spec, digits: DigitScramble) -> Result<Box<dyn Sampler>, Fai
             "--order gray applies to sobol only (other samplers have natural order)",
         ));
     }
-    Ok(match args.sampler {
+    if args.sampler == SamplerName::Vdc && args.base == 2 && digits.is_none() {
+        if d != 1 {
+            return Err(Failure::usage(format!(
+                "vdc is one-dimensional: -d must be 1, got {d}"
+            )));
+        }
+        // Van der Corput in base 2 is Sobol's dimension 0, bit for bit.
+        return Ok(Built::Digital(Box::new(Sobol::new(1)?)));
+    }
+    Ok(Built::Other(match args.sampler {
         SamplerName::Sobol => {
             let order = match args.order {
                 OrderName::Natural => Order::Natural,
                 OrderName::Gray => Order::Gray,
             };
-            Box::new(Sobol::with_order(d, order)?)
+            return Ok(Built::Digital(Box::new(Sobol::with_order(d, order)?)));
         }
         SamplerName::Independent => Box::new(Independent::new(d, args.seed)?),
         SamplerName::Halton => Box::new(Halton::with_scramble(d, digits)?),
@@ -367,7 +394,9 @@ fn construct(args: &Spec, digits: DigitScramble) -> Result<Box<dyn Sampler>, Fai
                     "lp is two-dimensional: -d must be 2, got {d}"
                 )));
             }
-            Box::new(LarcherPillichshammer::with_points(total)?)
+            return Ok(Built::Digital(Box::new(
+                LarcherPillichshammer::with_points(total)?,
+            )));
         }
         SamplerName::Stratified => {
             let strata = match &args.strata {
@@ -395,7 +424,7 @@ fn construct(args: &Spec, digits: DigitScramble) -> Result<Box<dyn Sampler>, Fai
             }
             Box::new(s)
         }
-    })
+    }))
 }
 
 /// `k` with `k^d == n`, or a usage error.

@@ -15,11 +15,11 @@ use core::hint::black_box;
 
 use qmckit::bits;
 use qmckit::hash;
-use qmckit::owen_sobol::OwenSobol4;
+use qmckit::sobol::OwenSobol;
 use qmckit::randomize::digits::DigitScramble;
 use qmckit::randomize::shuffle::Shuffled;
 use qmckit::randomize::{
-    CranleyPatterson, DigitalShift, FastOwen, Lms, Owen, OwenHash, Randomizer, Scrambled,
+    CranleyPatterson, DigitalShift, FastOwen, Lms, ExactOwen, OwenHash, Randomizer, Scrambled,
 };
 use qmckit::sobol::{Order, Sobol, SobolDimension, SobolTable};
 use qmckit::{
@@ -580,8 +580,8 @@ static SOBOL_TABLE_1: SobolTable = SobolTable::new(match SobolDimension::new(1) 
     Err(_) => panic!(),
 });
 
-/// Four Owen-scrambled Sobol' dimensions with interleaved byte tables, baked into flash.
-static OWEN_SOBOL4: OwenSobol4 = match OwenSobol4::from_dims([0, 1, 2, 3], FastOwen::new(0x5EED)) {
+/// Owen-scrambled Sobol' (the 16 KiB of interleaved tables are a shared static in flash).
+static OWEN_SOBOL4: OwenSobol = match OwenSobol::new(4, 0x5EED) {
     Ok(t) => t,
     Err(_) => panic!(),
 };
@@ -591,7 +591,7 @@ fn sobol<W: Write>(out: &mut W) -> fmt::Result {
     let mut df = Digest::new();
     for k in 0..512u32 {
         let i = black_box(k.wrapping_mul(2_654_435_761));
-        for x in OWEN_SOBOL4.sample(i) {
+        for x in OWEN_SOBOL4.sample4(i) {
             d4.push(x);
         }
         let mut f = [[0f32; 4]; 1];
@@ -744,7 +744,7 @@ fn scramblers<W: Write>(out: &mut W) -> fmt::Result {
     let randomizers: [(&str, &dyn Randomizer); 7] = [
         ("xor", &DigitalShift::new(seed)),
         ("rotate", &CranleyPatterson::new(seed)),
-        ("owen", &Owen::new(seed)),
+        ("owen", &ExactOwen::new(seed)),
         ("fast-owen", &FastOwen::new(seed)),
         (
             "fast-owen-lk",

@@ -27,7 +27,7 @@ use core::ptr::{read_volatile, write_volatile};
 use cortex_m_rt::entry;
 use cortex_m_semihosting::debug::{self, EXIT_FAILURE, EXIT_SUCCESS};
 use cortex_m_semihosting::hio;
-use qmckit::owen_sobol::OwenSobol4;
+use qmckit::sobol::OwenSobol;
 use qmckit::randomize::FastOwen;
 use qmckit::sobol::{Sobol, SobolDimension, SobolTable};
 use qmckit::{RadicalInverse, Sampler};
@@ -150,7 +150,7 @@ const Y: SobolDimension = match SobolDimension::new(1) {
 /// Byte tables (4 KiB a dimension) baked into flash.
 static TX: SobolTable = SobolTable::new(X);
 static TY: SobolTable = SobolTable::new(Y);
-static OWEN_SOBOL4: OwenSobol4 = match OwenSobol4::from_dims([0, 1, 2, 3], FastOwen::new(0x5EED)) {
+static OWEN_SOBOL4: OwenSobol = match OwenSobol::new(4, 0x5EED) {
     Ok(t) => t,
     Err(_) => panic!(),
 };
@@ -186,7 +186,7 @@ fn measure<W: Write>(out: &mut W) -> core::fmt::Result {
             (
                 "owen-sobol4-4d",
                 run(step, |i| {
-                    let p = OWEN_SOBOL4.sample(i);
+                    let p = OWEN_SOBOL4.sample4(i);
                     p[0] ^ p[1] ^ p[2] ^ p[3]
                 }),
             ),

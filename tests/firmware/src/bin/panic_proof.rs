@@ -26,8 +26,8 @@ use core::hint::black_box;
 
 use cortex_m_rt::entry;
 use qmckit::bits;
-use qmckit::owen_sobol::OwenSobol4;
-use qmckit::randomize::{FastOwen, Owen};
+use qmckit::sobol::OwenSobol;
+use qmckit::randomize::{FastOwen, ExactOwen};
 use qmckit::sobol::{Sobol, SobolDimension, SobolTable};
 use qmckit::{Halton, Hammersley, LarcherPillichshammer, RadicalInverse, Sampler};
 
@@ -109,8 +109,8 @@ const CHECKS: &[&str] = &[
     "SobolTable::sample",
     "Sobol+Sampler::fill",
     "FastOwen::scramble",
-    "Owen::scramble",
-    "OwenSobol4::sample",
+    "ExactOwen::scramble",
+    "OwenSobol::sample4",
     "bits::to_f32",
     "LarcherPillichshammer::sample",
     "Hammersley::sample",
@@ -122,7 +122,7 @@ static SOBOL_TABLE_3: SobolTable = SobolTable::new(match SobolDimension::new(3) 
     Err(_) => panic!(),
 });
 
-static OWEN_SOBOL4: OwenSobol4 = match OwenSobol4::from_dims([0, 1, 2, 3], FastOwen::new(0x5EED)) {
+static OWEN_SOBOL4: OwenSobol = match OwenSobol::new(4, 0x5EED) {
     Ok(t) => t,
     Err(_) => panic!(),
 };
@@ -196,13 +196,13 @@ fn run() -> (bool, u32) {
         let o = FastOwen::new(black_box(0x5EED));
         (0..COUNT).for_each(|k| acc ^= o.scramble(idx(k), black_box(k as usize)));
     }
-    if const { enabled("Owen::scramble") } {
-        let o = Owen::new(black_box(0x5EED));
+    if const { enabled("ExactOwen::scramble") } {
+        let o = ExactOwen::new(black_box(0x5EED));
         (0..COUNT).for_each(|k| acc ^= o.scramble(idx(k), black_box(k as usize)));
     }
-    if const { enabled("OwenSobol4::sample") } {
+    if const { enabled("OwenSobol::sample4") } {
         for k in 0..COUNT {
-            let p = OWEN_SOBOL4.sample(idx(k));
+            let p = OWEN_SOBOL4.sample4(idx(k));
             acc ^= p[0] ^ p[1] ^ p[2] ^ p[3];
         }
     }
