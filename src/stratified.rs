@@ -2,7 +2,7 @@
 //! point a cell, placed uniformly at random inside it (jittered) or at its center.
 //!
 //! Jittered sampling of a smooth integrand has variance `O(N^(-1 - 2/d))` against Monte
-//! Carlo's `O(1/N)`; in the lecture, 8x8 jittered points have `D*` about 0.08 against 0.15
+//! Carlo's `O(1/N)`; 8x8 jittered points have `D*` about 0.08 against about 0.15
 //! for independent ones. Random access: point `i` is cell `i` in mixed radix (dimension 0
 //! fastest), and its jitter is a hash of `(seed, i, dim)`.
 

@@ -78,12 +78,12 @@ fn radical_inverse_is_the_exact_rational_rounded_down() {
 }
 
 #[test]
-fn lecture_examples() {
+fn textbook_examples() {
     let phi = |b, i| RadicalInverse::new(b).unwrap().sample(i);
     assert_eq!(phi(3, 1000) as u64, (760u64 << 32) / 2187);
     assert_eq!(phi(7, 10) as u64, (22u64 << 32) / 49);
     assert_eq!(to_f64(phi(2, 6)), 0.375);
-    // The lecture's base-3 table: 0, 1/3, 2/3, 1/9, 4/9, 7/9, 2/9, 5/9, 8/9.
+    // The textbook base-3 table: 0, 1/3, 2/3, 1/9, 4/9, 7/9, 2/9, 5/9, 8/9.
     let ninths = [0, 3, 6, 1, 4, 7, 2, 5, 8];
     for (i, k) in ninths.iter().enumerate() {
         assert_eq!(phi(3, i as u32) as u64, ((*k as u64) << 32) / 9);

@@ -233,10 +233,10 @@ fn independent_points_are_uniform() {
     }
 }
 
-/// The lecture's table of D* for 64 points: independent about 0.148, 8x8 stratified about
+/// The textbook table of D* for 64 points: independent about 0.148, 8x8 stratified about
 /// 0.081, Larcher–Pillichshammer 0.041 (exactly 21/512). Means over 200 random sets.
 #[test]
-fn lecture_discrepancy_table() {
+fn textbook_discrepancy_table() {
     let dstar = |pts: &[[u32; 2]]| {
         let (d, s) = star_discrepancy_2d_exact(pts);
         d as f64 / s as f64

@@ -1,5 +1,5 @@
 //! Star discrepancy: known exact values (Larcher–Pillichshammer, Hammersley), agreement with
-//! brute force over the critical grid written from the definition, the lecture's table, and
+//! brute force over the critical grid written from the definition, the classic three 2D sets' values, and
 //! bounds that bracket the exact value.
 #![cfg(feature = "std")]
 
@@ -235,7 +235,7 @@ fn star_exact_agrees_with_star_2d_on_larger_sets() {
 }
 
 #[test]
-fn lecture_table_n64() {
+fn textbook_table_n64() {
     const SETS: u64 = 200;
     let mean = |f: &dyn Fn(u64) -> f64| (0..SETS).map(f).sum::<f64>() / SETS as f64;
     let star_of = |s: &dyn Sampler| {
