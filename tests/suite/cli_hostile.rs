@@ -13,22 +13,29 @@ const ADDRESS_SPACE_KIB: u64 = 4 << 20;
 /// Longest a refusal may take.
 const REFUSAL_TIME: Duration = Duration::from_secs(5);
 
-/// Runs qmckit under the address-space limit with `input` on stdin; `stderr_to` replaces
-/// stderr by a file (e.g. `/dev/full`).
-fn run_limited(args: &[&str], input: &[u8], stderr_to: Option<&str>) -> (Output, Duration) {
-    let script = match stderr_to {
-        Some(path) => format!("ulimit -v {ADDRESS_SPACE_KIB} && exec \"$0\" \"$@\" 2>{path}"),
-        None => format!("ulimit -v {ADDRESS_SPACE_KIB} && exec \"$0\" \"$@\""),
-    };
-    let clock = Instant::now();
-    let mut child = Command::new("sh")
+/// qmckit `args` under an address-space limit of `kib` KiB (`ulimit -v`), all three
+/// streams piped; `stderr_to` replaces stderr by a file (e.g. `/dev/full`).
+fn limited(kib: u64, args: &[&str], stderr_to: Option<&str>) -> Command {
+    let redirect = stderr_to
+        .map(|path| format!(" 2>{path}"))
+        .unwrap_or_default();
+    let mut command = Command::new("sh");
+    command
         .arg("-c")
-        .arg(script)
+        .arg(format!("ulimit -v {kib} && exec \"$0\" \"$@\"{redirect}"))
         .arg(env!("CARGO_BIN_EXE_qmckit"))
         .args(args)
         .stdin(Stdio::piped())
         .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
+        .stderr(Stdio::piped());
+    command
+}
+
+/// Runs qmckit under the address-space limit with `input` on stdin; `stderr_to` replaces
+/// stderr by a file (e.g. `/dev/full`).
+fn run_limited(args: &[&str], input: &[u8], stderr_to: Option<&str>) -> (Output, Duration) {
+    let clock = Instant::now();
+    let mut child = limited(ADDRESS_SPACE_KIB, args, stderr_to)
         .spawn()
         .expect("run qmckit");
     let mut stdin = child.stdin.take().unwrap();
@@ -205,16 +212,7 @@ fn streaming_output_has_bounded_memory() {
             "lms",
         ][..],
     ] {
-        let script = format!("ulimit -v {} && exec \"$0\" \"$@\"", 1 << 20); // 1 GiB
-        let mut child = Command::new("sh")
-            .arg("-c")
-            .arg(script)
-            .arg(env!("CARGO_BIN_EXE_qmckit"))
-            .args(args)
-            .stdout(Stdio::piped())
-            .stderr(Stdio::piped())
-            .spawn()
-            .unwrap();
+        let mut child = limited(1 << 20, args, None).spawn().unwrap(); // 1 GiB
         let mut head = vec![0u8; 4 << 20];
         child.stdout.take().unwrap().read_exact(&mut head).unwrap();
         // Closing the pipe ends the command (a broken pipe is a normal end).
