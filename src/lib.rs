@@ -44,7 +44,8 @@
 //!
 //! | feature | brings |
 //! |---|---|
-//! | `std` (default) | [`analysis`] (discrepancies, t-values, distances; rayon), `std::error::Error` for [`Error`] |
+//! | `std` (default) | [`collect`] (`Vec`-returning helpers), run-time CPU dispatch, `std::error::Error` for [`Error`] |
+//! | `analysis` (default) | [`analysis`] (discrepancies, t-values, distances, spectra; rayon); implies `std` |
 //! | `cli` | the `qmckit` command (clap, npyz); implies `sobol-dims-21201` |
 //! | `sobol-dims-1024`, `sobol-dims-21201` | more Sobol' dimensions than the default 64 |
 //! | `fixed` | [`bits::to_fixed`] to `fixed::types::U0F32`, fixed-point warps ([`warp::fixed`]) |
@@ -57,7 +58,7 @@
 #![deny(unsafe_code)]
 #![warn(missing_docs)]
 
-#[cfg(feature = "std")]
+#[cfg(feature = "analysis")]
 pub mod analysis;
 pub mod bits;
 #[cfg(feature = "heapless")]

@@ -1,4 +1,4 @@
-//! Measuring point sets (feature `std`): discrepancies, net quality, distances.
+//! Measuring point sets (feature `analysis`): discrepancies, net quality, distances.
 //!
 //! Every measure takes a [`Points`] view: `n` points of `d` coordinates, row-major in one
 //! `f64` slice, each coordinate in the closed unit interval `[0, 1]` (validated once by

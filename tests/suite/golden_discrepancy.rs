@@ -1,6 +1,7 @@
 //! qmckit::analysis::l2 against oracles it did not write: SciPy's `qmc.discrepancy` (files
 //! made by tests/golden/gen_discrepancy.py), exact piecewise integration of the defining
 //! L2 norms, truncated Fourier series, and closed forms derived by hand.
+#![cfg(feature = "analysis")]
 
 use qmckit::analysis::Points;
 use qmckit::analysis::l2::{

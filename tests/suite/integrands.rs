@@ -2,7 +2,7 @@
 //! against midpoint-rule quadrature written here from the definitions and against the
 //! textbook ball volumes, and the error rates the module promises: Monte Carlo's RMSE at
 //! `sigma / sqrt(N)`, QMC far below it on the smooth integrands.
-#![cfg(feature = "std")]
+#![cfg(feature = "analysis")]
 
 use qmckit::analysis::Points;
 use qmckit::analysis::integration::{Integrand, integration_error};

@@ -2,7 +2,7 @@
 //! against closed forms: one point, two points, the regular grid (its dual lattice), and
 //! the expected spectra of white noise (level 1, anisotropy 1) and of jittered sampling
 //! (`1 - |sinc|^2`, near 0 at low frequencies).
-#![cfg(feature = "std")]
+#![cfg(feature = "analysis")]
 
 use qmckit::analysis::Points;
 use qmckit::analysis::spectrum::{SPECTRUM_MAX_K, spectrum_2d};

@@ -1,7 +1,7 @@
 //! Star discrepancy: known exact values (Larcher–Pillichshammer, Hammersley), agreement with
 //! brute force over the critical grid written from the definition, the classic three 2D sets' values, and
 //! bounds that bracket the exact value.
-#![cfg(feature = "std")]
+#![cfg(feature = "analysis")]
 
 use qmckit::analysis::Points;
 use qmckit::analysis::star::dem::star_dem;

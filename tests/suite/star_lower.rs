@@ -2,7 +2,7 @@
 //! above the exact star discrepancy (`star_exact`, itself checked against brute force in
 //! `star_discrepancy.rs`), usually equal to it on small sets, and in 20D close to the lower
 //! bound of Thiémard's bracketing cover (`star::thiemard::bounds`), an independent algorithm.
-#![cfg(feature = "std")]
+#![cfg(feature = "analysis")]
 
 use qmckit::Sobol;
 use qmckit::analysis::Points;

@@ -2,7 +2,7 @@
 //! against the exact value (`star_1d`, `star_2d`, `star_exact`, themselves checked against
 //! brute force in `star_discrepancy.rs`) on many random sets, and against values known in
 //! closed form.
-#![cfg(feature = "std")]
+#![cfg(feature = "analysis")]
 
 use qmckit::analysis::Points;
 use qmckit::analysis::star::thiemard::bounds;

@@ -1,5 +1,6 @@
 //! t-values: the rank test on generator matrices against published facts, the elementary
 //! interval counter on generated (and scrambled) points, and the two against each other.
+#![cfg(feature = "analysis")]
 
 use qmckit::analysis::Points;
 use qmckit::analysis::tvalue::{

@@ -8,7 +8,7 @@ pub mod cli;
 use qmckit::Sampler;
 
 /// Points `0..n` of a sampler by random access, as `f64` coordinates (exact), row-major.
-#[cfg(feature = "std")]
+#[cfg(feature = "analysis")]
 pub fn sampler_points(s: &dyn Sampler, n: u32) -> Vec<f64> {
     let d = s.dims();
     let mut raw = vec![0u32; n as usize * d];
