@@ -51,7 +51,13 @@ fn read_input(file: Option<&str>) -> Result<(String, Vec<u8>), Failure> {
                 .read_to_end(&mut bytes),
         ),
         Some(path) => (
-            path.to_owned(),
+            // A name with a line break or other control character is quoted, so the
+            // error stays on one line.
+            if path.chars().any(char::is_control) {
+                format!("{path:?}")
+            } else {
+                path.to_owned()
+            },
             std::fs::File::open(path)
                 .and_then(|f| f.take(MAX_INPUT_BYTES + 1).read_to_end(&mut bytes)),
         ),
