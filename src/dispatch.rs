@@ -146,6 +146,115 @@ fn scramble_slice_avx512<S: Scrambler>(s: S, xs: &mut [u32]) {
     scramble_slice_portable(s, xs);
 }
 
+/// `xs[j] = lanes[j % lanes.len()].scramble(xs[j])`: a row-major buffer whose rows hold one
+/// coordinate per lane pattern (`lanes` repeats the dimensions' scramblers a whole number of
+/// rows), each chunk of `lanes.len()` values scrambled element-wise, in the widest build this
+/// CPU runs. `Scrambled`'s fill of low-dimensional points runs this: no gather or scatter.
+#[inline]
+pub(crate) fn scramble_lanes<S: Scrambler>(lanes: &[S], xs: &mut [u32]) {
+    scramble_lanes_at(level(), lanes, xs);
+}
+
+/// [`scramble_lanes`] with the widest build that is at most `want` and that the CPU runs.
+#[inline]
+pub(crate) fn scramble_lanes_at<S: Scrambler>(want: Level, lanes: &[S], xs: &mut [u32]) {
+    #[cfg(all(feature = "std", target_arch = "x86_64"))]
+    let detected = level();
+    match want {
+        #[cfg(all(feature = "std", target_arch = "x86_64"))]
+        Level::Avx512Gfni if detected == Level::Avx512Gfni => {
+            // SAFETY: `scramble_lanes_avx512` requires avx512f, avx512bw, avx512vl and gfni;
+            // `level()` detected all four on this CPU.
+            unsafe { scramble_lanes_avx512(lanes, xs) }
+        }
+        #[cfg(all(feature = "std", target_arch = "x86_64"))]
+        Level::Avx2 | Level::Avx512Gfni if detected != Level::Portable => {
+            // SAFETY: `scramble_lanes_avx2` requires avx2, which `level()` detected on this
+            // CPU whenever it answers Avx2 or Avx512Gfni.
+            unsafe { scramble_lanes_avx2(lanes, xs) }
+        }
+        _ => scramble_lanes_portable(lanes, xs),
+    }
+}
+
+#[inline(always)]
+fn scramble_lanes_portable<S: Scrambler>(lanes: &[S], xs: &mut [u32]) {
+    S::scramble_lanes(lanes, xs);
+}
+
+#[cfg(all(feature = "std", target_arch = "x86_64"))]
+#[target_feature(enable = "avx2")]
+fn scramble_lanes_avx2<S: Scrambler>(lanes: &[S], xs: &mut [u32]) {
+    scramble_lanes_portable(lanes, xs);
+}
+
+#[cfg(all(feature = "std", target_arch = "x86_64"))]
+#[target_feature(enable = "avx512f,avx512bw,avx512vl,gfni")]
+fn scramble_lanes_avx512<S: Scrambler>(lanes: &[S], xs: &mut [u32]) {
+    scramble_lanes_portable(lanes, xs);
+}
+
+/// The builds of a floating-point kernel ([`run_float`]). A build the CPU lacks falls back
+/// to the next narrower one it has (detected at run time, x86-64 with `std` only; elsewhere
+/// every build is the portable one).
+#[cfg(feature = "analysis")]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum FloatBuild {
+    /// The baseline target features (SSE2 on x86-64). Only tests ask for it explicitly.
+    #[cfg_attr(not(test), allow(dead_code))]
+    Portable,
+    /// AVX2 and FMA: 4 `f64` lanes a register.
+    Avx2,
+    /// AVX-512 (F, VL), AVX2 and FMA: 8 `f64` lanes a register.
+    Avx512,
+}
+
+/// A computation compiled once per [`FloatBuild`]: `run` must be `#[inline(always)]`, so
+/// that its body is compiled inside each build's `#[target_feature]` function (and
+/// vectorized to that width) rather than called from it.
+#[cfg(feature = "analysis")]
+pub(crate) trait Kernel {
+    /// What the kernel returns.
+    type Output;
+    /// The computation (safe code; `#[inline(always)]`).
+    fn run(self) -> Self::Output;
+}
+
+/// `k.run()` in the build `want`, or the widest narrower one this CPU runs.
+#[cfg(feature = "analysis")]
+#[inline]
+pub(crate) fn run_float<K: Kernel>(want: FloatBuild, k: K) -> K::Output {
+    #[cfg(all(feature = "std", target_arch = "x86_64"))]
+    {
+        use std::arch::is_x86_feature_detected as has;
+        let avx2 = has!("avx2") && has!("fma");
+        if want == FloatBuild::Avx512 && avx2 && has!("avx512f") && has!("avx512vl") {
+            // SAFETY: `run_avx512` requires AVX-512F, AVX-512VL, AVX2 and FMA, all
+            // detected on this CPU just above; the kernel itself is safe code.
+            return unsafe { run_avx512(k) };
+        }
+        if want != FloatBuild::Portable && avx2 {
+            // SAFETY: `run_avx2` requires AVX2 and FMA, both detected on this CPU just
+            // above; the kernel itself is safe code.
+            return unsafe { run_avx2(k) };
+        }
+    }
+    let _ = want;
+    k.run()
+}
+
+#[cfg(all(feature = "analysis", target_arch = "x86_64"))]
+#[target_feature(enable = "avx2,fma")]
+fn run_avx2<K: Kernel>(k: K) -> K::Output {
+    k.run()
+}
+
+#[cfg(all(feature = "analysis", target_arch = "x86_64"))]
+#[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
+fn run_avx512<K: Kernel>(k: K) -> K::Output {
+    k.run()
+}
+
 #[cfg(all(test, feature = "std"))]
 mod tests {
     use super::*;
@@ -206,6 +315,48 @@ mod tests {
                 scramble_slice_at(lv, cp.scrambler(d), v)
             });
         }
+        // Scramblers laid over rows (lane patterns of 1 to 64, one with mixed hashes, a
+        // buffer that ends mid-pattern): every build against the one-value path.
+        {
+            use crate::randomize::{ExactOwen, FastOwen, FastOwenScrambler, Lms, Randomizer};
+            let xs: Vec<u32> = (0..1003u32).map(|k| k.wrapping_mul(0x85EB_CA6B)).collect();
+            fn run<S: crate::randomize::Scrambler>(
+                levels: &[Level],
+                name: &str,
+                lanes: &[S],
+                xs: &[u32],
+            ) {
+                for &lv in levels {
+                    let mut got = xs.to_vec();
+                    scramble_lanes_at(lv, lanes, &mut got);
+                    for (j, (&g, &x)) in got.iter().zip(xs).enumerate() {
+                        let want = lanes[j % lanes.len()].scramble(x);
+                        assert_eq!(g, want, "{name} {lv:?} width {} j {j}", lanes.len());
+                    }
+                }
+            }
+            for width in [1usize, 3, 4, 16, 20, 48, 64] {
+                let fo = FastOwen::new(11);
+                let lanes: Vec<_> = (0..width).map(|d| fo.scrambler(d % 5)).collect();
+                run(&levels, "fast-owen", &lanes, &xs);
+                let fo = FastOwen::with_hash(12, OwenHash::LaineKarras);
+                let lanes: Vec<_> = (0..width).map(|d| fo.scrambler(d)).collect();
+                run(&levels, "fast-owen-lk", &lanes, &xs);
+                let mixed: Vec<_> = (0..width)
+                    .map(|d| {
+                        let hash = [OwenHash::Vegdahl, OwenHash::LaineKarras][d % 2];
+                        FastOwenScrambler::from_key(d as u32 * 0x9E37_79B9, hash)
+                    })
+                    .collect();
+                run(&levels, "fast-owen-mixed", &mixed, &xs);
+                let ex = ExactOwen::new(13);
+                let lanes: Vec<_> = (0..width).map(|d| ex.scrambler(d)).collect();
+                run(&levels, "exact-owen", &lanes, &xs);
+                let lms = Lms::new(14);
+                let lanes: Vec<_> = (0..width).map(|d| lms.scrambler(d)).collect();
+                run(&levels, "lms", &lanes, &xs);
+            }
+        }
         let indices: Vec<u32> = (0..4099u32)
             .map(|k| k.wrapping_mul(2_654_435_761) ^ (k >> 3))
             .chain([0, 1, 255, 256, u32::MAX])
@@ -223,5 +374,38 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// Every float build against the portable one on a kernel mixing `mul_add`, division
+    /// and square roots (the operations whose rounding must not depend on the build).
+    #[cfg(feature = "analysis")]
+    #[test]
+    fn every_float_build_gives_the_portable_bits() {
+        struct Sum<'a>(&'a [f64]);
+        impl Kernel for Sum<'_> {
+            type Output = f64;
+            #[inline(always)]
+            fn run(self) -> f64 {
+                let mut acc = [0f64; 8];
+                for c in self.0.chunks_exact(8) {
+                    for (a, &x) in acc.iter_mut().zip(c) {
+                        *a = x.mul_add(1.0 - x, *a) + (x / (1.0 + x)).sqrt();
+                    }
+                }
+                acc.iter().sum()
+            }
+        }
+        let xs: Vec<f64> = (0..4096)
+            .map(|k| (k as f64 * 0.618_033_988_749_895).fract())
+            .collect();
+        let portable = run_float(FloatBuild::Portable, Sum(&xs));
+        for build in [FloatBuild::Avx2, FloatBuild::Avx512] {
+            assert_eq!(
+                run_float(build, Sum(&xs)).to_bits(),
+                portable.to_bits(),
+                "{build:?}"
+            );
+        }
+        assert!(portable > 0.0);
     }
 }

@@ -95,6 +95,19 @@ use crate::sampler::Sampler;
 pub trait Scrambler: Copy {
     /// The randomized coordinate (a 0.32 fraction). Pure.
     fn scramble(&self, x: u32) -> u32;
+
+    /// `xs[j] = lanes[j % lanes.len()].scramble(xs[j])` for every `j`: scramblers laid over
+    /// a row-major buffer. The default is that loop; scramblers whose per-value work has a
+    /// branch on a field shared by every lane override it with a branch-free loop the
+    /// compiler can vectorize. Must give the same values as the default.
+    #[inline(always)]
+    fn scramble_lanes(lanes: &[Self], xs: &mut [u32]) {
+        for chunk in xs.chunks_mut(lanes.len().max(1)) {
+            for (x, s) in chunk.iter_mut().zip(lanes) {
+                *x = s.scramble(*x);
+            }
+        }
+    }
 }
 
 /// A randomization of the coordinates of a point set, keyed by a seed.
@@ -247,8 +260,9 @@ pub const fn dimension_seed(seed: u64, dim: usize) -> u32 {
 /// [`Randomizes<S>`].
 ///
 /// `sample` prepares one scrambler a call; `fill` (and so `fill_as`) runs the sampler's own
-/// fill, then prepares each dimension's scrambler once and applies it down that
-/// dimension's column.
+/// fill, then prepares each dimension's scrambler once: up to [`ROW_LANES`] dimensions, the
+/// scramblers are laid over whole rows and applied element-wise (vectorized); above that,
+/// down each dimension's column.
 ///
 /// ```
 /// use qmckit::randomize::{ExactOwen, Scrambled};
@@ -286,6 +300,23 @@ impl<S, R> Scrambled<S, R> {
     }
 }
 
+impl<S: Sampler, R: Randomizes<S>> Scrambled<S, R> {
+    /// The dimensions' scramblers repeated over `width <= W` lanes (a whole number of rows),
+    /// applied element-wise to each chunk of `out` of that width.
+    #[inline]
+    fn scramble_rows<const W: usize>(&self, width: usize, out: &mut [u32]) {
+        let dims = self.dims().max(1);
+        let mut lanes = [self.randomizer.scrambler(0); W];
+        for dim in 1..dims {
+            let s = self.randomizer.scrambler(dim);
+            for lane in lanes.iter_mut().take(width).skip(dim).step_by(dims) {
+                *lane = s;
+            }
+        }
+        crate::dispatch::scramble_lanes(lanes.get(..width).unwrap_or(&[]), out);
+    }
+}
+
 impl<S: Sampler, R: Randomizes<S>> Sampler for Scrambled<S, R> {
     fn dims(&self) -> usize {
         self.sampler.dims()
@@ -301,10 +332,12 @@ impl<S: Sampler, R: Randomizes<S>> Sampler for Scrambled<S, R> {
         Ok(self.randomizer.scrambler(dim).scramble(x))
     }
 
-    /// The sampler's own (sequential) fill, then each dimension's scrambler, prepared once,
-    /// down its column: the column is gathered [`COLUMN`] values at a time into a contiguous
-    /// buffer, scrambled there (vectorized; on x86-64 with `std` in the widest build the CPU
-    /// runs), and stored back.
+    /// The sampler's own (sequential) fill, then each dimension's scrambler, prepared once.
+    /// Up to [`ROW_LANES`] dimensions the scramblers are repeated over a whole number of rows
+    /// and applied element-wise to each chunk of that width; wider points have each column
+    /// gathered [`COLUMN`] values at a time into a contiguous buffer, scrambled there and
+    /// stored back. Both are vectorized (on x86-64 with `std` in the widest build the CPU
+    /// runs).
     fn fill(&self, start: u32, out: &mut [u32]) -> Result<()> {
         self.sampler.fill(start, out)?;
         let dims = self.dims();
@@ -313,6 +346,17 @@ impl<S: Sampler, R: Randomizes<S>> Sampler for Scrambled<S, R> {
         }
         if dims == 1 {
             crate::dispatch::scramble_slice(self.randomizer.scrambler(0), out);
+            return Ok(());
+        }
+        if dims <= ROW_LANES {
+            // Low dimensions: the scramblers repeated over whole rows, applied element-wise
+            // (one scrambler prepared per dimension, copied down the lanes).
+            let width = lane_width(dims).min(out.len());
+            if width <= 16 {
+                self.scramble_rows::<16>(width, out);
+            } else {
+                self.scramble_rows::<ROW_LANES>(width, out);
+            }
             return Ok(());
         }
         let mut tmp = [0u32; COLUMN];
@@ -338,3 +382,22 @@ impl<S: Sampler, R: Randomizes<S>> Sampler for Scrambled<S, R> {
 
 /// Values of one column [`Scrambled`]'s fill scrambles at a time (256 bytes of stack).
 pub const COLUMN: usize = 64;
+
+/// Scramblers [`Scrambled`]'s fill lays over a row-major chunk when points have at most this
+/// many dimensions (the dimensions' scramblers repeated a whole number of rows).
+pub const ROW_LANES: usize = 64;
+
+/// The row-major chunk width for `dims <= ROW_LANES` dimensions: `lcm(dims, 16)` (whole
+/// 16-lane vectors) when that fits in [`ROW_LANES`], else the largest multiple of `dims`
+/// that does.
+const fn lane_width(dims: usize) -> usize {
+    let mut w = dims;
+    while !w.is_multiple_of(16) && w + dims <= ROW_LANES {
+        w += dims;
+    }
+    if w.is_multiple_of(16) {
+        w
+    } else {
+        ROW_LANES / dims * dims
+    }
+}

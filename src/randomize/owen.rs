@@ -257,6 +257,42 @@ impl Scrambler for FastOwenScrambler {
     fn scramble(&self, x: u32) -> u32 {
         FastOwenScrambler::scramble(self, x)
     }
+
+    /// The hash chosen once for all lanes (when they share it), then a loop of one hash
+    /// over the lanes' keys, which vectorizes.
+    #[inline(always)]
+    fn scramble_lanes(lanes: &[Self], xs: &mut [u32]) {
+        let Some(first) = lanes.first() else {
+            return;
+        };
+        let mut keys = [0u32; super::ROW_LANES];
+        if lanes.len() > keys.len() || lanes.iter().any(|l| l.hash != first.hash) {
+            for chunk in xs.chunks_mut(lanes.len()) {
+                for (x, s) in chunk.iter_mut().zip(lanes) {
+                    *x = s.scramble(*x);
+                }
+            }
+            return;
+        }
+        for (k, l) in keys.iter_mut().zip(lanes) {
+            *k = l.key;
+        }
+        let keys = keys.get(..lanes.len()).unwrap_or(&[]);
+        match first.hash {
+            OwenHash::LaineKarras => scramble_keyed(keys, xs, laine_karras),
+            OwenHash::Vegdahl => scramble_keyed(keys, xs, vegdahl),
+        }
+    }
+}
+
+/// `xs[j] = reverse(hash(reverse(xs[j]), keys[j % keys.len()]))`.
+#[inline(always)]
+fn scramble_keyed(keys: &[u32], xs: &mut [u32], hash: fn(u32, u32) -> u32) {
+    for chunk in xs.chunks_mut(keys.len().max(1)) {
+        for (x, &k) in chunk.iter_mut().zip(keys) {
+            *x = reverse_bits(hash(reverse_bits(*x), k));
+        }
+    }
 }
 
 impl Randomizer for FastOwen {

@@ -270,11 +270,8 @@ impl Sobol {
     /// [`Error::DimensionOutOfRange`].
     #[inline]
     pub const fn sample(&self, index: u32, dim: usize) -> Result<u32> {
-        if dim >= self.dims {
-            return Err(Error::DimensionOutOfRange {
-                dim,
-                dims: self.dims,
-            });
+        if let Err(e) = check(index, FULL_RANGE, dim, self.dims) {
+            return Err(e);
         }
         let i = match self.order {
             Order::Natural => index,
@@ -298,19 +295,29 @@ impl Sobol {
         let Some(dirs) = SOBOL_DIRECTIONS.get(first..first + block) else {
             return; // unreachable: dims <= SOBOL_MAX_DIMS
         };
+        let rows = out.len() / self.dims.max(1);
+        // Steps from `start` to the last index change bits below `span` only (the indices
+        // share their higher bits), so the table needs rows `0..span`: a pixel's 16 points
+        // build 4 rows, not 32.
+        let last = start.wrapping_add(rows.saturating_sub(1) as u32);
+        let span = (32 - (start ^ last).leading_zeros()) as usize;
         let mut table = [[0u32; L]; 32];
         let mut x = [0u32; L];
         for (lane, v) in dirs.iter().enumerate().take(L) {
-            let (steps, i0) = match self.order {
-                Order::Gray => (*v, gray(start)),
-                Order::Natural => (prefix_xors(v), start),
+            let i0 = match self.order {
+                Order::Gray => gray(start),
+                Order::Natural => start,
             };
-            for (row, step) in table.iter_mut().zip(steps) {
-                row[lane] = step;
+            let mut acc = 0;
+            for (row, &vk) in table.iter_mut().zip(v).take(span) {
+                acc ^= vk;
+                row[lane] = match self.order {
+                    Order::Gray => vk,
+                    Order::Natural => acc, // V_1 ^ .. ^ V_(k+1)
+                };
             }
-            x[lane] = gf2_mul(v, i0);
+            x[lane] = if i0 == 0 { 0 } else { gf2_mul(v, i0) };
         }
-        let rows = out.len() / self.dims.max(1);
         let mut i = start;
         for (row, chunk) in out.chunks_exact_mut(self.dims.max(1)).enumerate() {
             if block == L {
@@ -350,7 +357,6 @@ impl Sampler for Sobol {
 
     #[inline]
     fn sample(&self, index: u32, dim: usize) -> Result<u32> {
-        check(index, FULL_RANGE, dim, self.dims)?;
         Sobol::sample(self, index, dim)
     }
 

@@ -18,7 +18,7 @@ use super::{SOBOL_DIRECTIONS, SOBOL_MAX_DIMS, Sobol, SobolDimension, byte_tables
 use crate::bits::{reverse_bits, to_f32, to_f32_via_f64};
 use crate::error::{Error, Result};
 use crate::randomize::{FastOwen, FastOwenScrambler, OwenHash, Scrambled, dimension_seed};
-use crate::sampler::{FULL_RANGE, Sampler};
+use crate::sampler::{FULL_RANGE, Sampler, check};
 
 /// Dimensions served by the interleaved tables.
 const TABLE_DIMS: usize = 4;
@@ -151,11 +151,8 @@ impl OwenSobol {
     /// [`Error::DimensionOutOfRange`] for `dim >= dims()`.
     #[inline]
     pub const fn sample(&self, index: u32, dim: usize) -> Result<u32> {
-        if dim >= self.dims {
-            return Err(Error::DimensionOutOfRange {
-                dim,
-                dims: self.dims,
-            });
+        if let Err(e) = check(index, FULL_RANGE, dim, self.dims) {
+            return Err(e);
         }
         if dim < TABLE_DIMS {
             let s = FastOwenScrambler::from_key(self.keys[dim], self.owen.hash());

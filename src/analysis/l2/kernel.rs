@@ -6,30 +6,20 @@
 use super::Points;
 use super::arith::Acc;
 use crate::analysis::budget::Progress;
+use crate::dispatch::{Kernel, run_float};
 use core::sync::atomic::{AtomicUsize, Ordering};
 use rayon::prelude::*;
 
-/// build the CPU lacks falls back to the next narrower one it has (detected at run time,
-/// x86-64 only; elsewhere every build is the portable one). All builds give the same bits:
-/// Rust never contracts `a * b + c` into an FMA, and the explicit [`f64::mul_add`] of some
-/// factors is one correctly rounded operation in every build (an FMA instruction in the
-/// wide ones, the library's `fma` in the portable one), so the instructions differ only in
-/// width.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(super) enum Build {
-    /// The portable build (baseline target features: SSE2 on x86-64). Only the tests ask
-    /// for it explicitly, to compare it with the others.
-    #[cfg_attr(not(test), allow(dead_code))]
-    Portable,
-    /// AVX2 and FMA (4 lanes a register): the measures whose pair factor is one minimum
-    /// (L2-star, generalized L2), for which the AVX-512 build of the generic-dimension loop
-    /// measured slower from 6 dimensions on (8D: 5.1 against 4.3 ms for 4096 points).
-    Avx2,
-    /// AVX-512 (F, VL) and FMA (8 lanes, one register a block of [`LANES`] points): the
-    /// other measures, measured 1.3-2x faster than AVX2 for 4096 points in 2 to 12
-    /// dimensions.
-    Avx512,
-}
+// The builds of the pair sum ([`run_float`]'s). All give the same bits: Rust never
+// contracts `a * b + c` into an FMA, and the explicit `f64::mul_add` of some factors is one
+// correctly rounded operation in every build (an FMA instruction in the wide ones, the
+// library's `fma` in the portable one), so the instructions differ only in width.
+//
+// Which build each measure asks for: AVX2 for the measures whose pair factor is one minimum
+// (L2-star, generalized L2), for which the AVX-512 build of the generic-dimension loop
+// measured slower from 6 dimensions on (8D: 5.1 against 4.3 ms for 4096 points); AVX-512
+// for the others, measured 1.3-2x faster than AVX2 for 4096 points in 2 to 12 dimensions.
+pub(super) use crate::dispatch::FloatBuild as Build;
 
 /// Points per block of the pair sum: the inner loop evaluates the kernel for one point
 /// `i` against `LANES` points `j` as fixed-size array operations, which the compiler turns
@@ -463,27 +453,26 @@ where
     acc.total()
 }
 
-/// [`row_pair_portable`] compiled with AVX2 and FMA (4 lanes a register instead of 2).
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,fma")]
-fn row_pair_avx2<const F: usize, const D: usize, K>(s: &Blocked<F>, i: usize, k1: &K) -> Acc
-where
-    K: Fn([f64; F], [f64; F]) -> f64,
-{
-    row_pair_portable::<F, D, K>(s, i, k1)
+/// [`row_pair_portable`] as a [`Kernel`] for [`run_float`].
+struct RowPair<'a, const F: usize, const D: usize, K> {
+    s: &'a Blocked<F>,
+    i: usize,
+    k1: &'a K,
 }
 
-/// [`row_pair_portable`] compiled with AVX-512 (F, VL) and FMA (8 lanes a register).
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
-fn row_pair_avx512<const F: usize, const D: usize, K>(s: &Blocked<F>, i: usize, k1: &K) -> Acc
+impl<const F: usize, const D: usize, K> Kernel for RowPair<'_, F, D, K>
 where
     K: Fn([f64; F], [f64; F]) -> f64,
 {
-    row_pair_portable::<F, D, K>(s, i, k1)
+    type Output = Acc;
+    #[inline(always)]
+    fn run(self) -> Acc {
+        row_pair_portable::<F, D, K>(self.s, self.i, self.k1)
+    }
 }
 
 /// [`row_pair_portable`] in the requested build, or the widest narrower one the CPU runs.
+#[inline]
 fn row_pair<const F: usize, const D: usize, K>(
     s: &Blocked<F>,
     i: usize,
@@ -493,26 +482,7 @@ fn row_pair<const F: usize, const D: usize, K>(
 where
     K: Fn([f64; F], [f64; F]) -> f64,
 {
-    #[cfg(target_arch = "x86_64")]
-    {
-        use std::arch::is_x86_feature_detected as has;
-        let avx2 = has!("avx2") && has!("fma");
-        if build == Build::Avx512 && avx2 && has!("avx512f") && has!("avx512vl") {
-            // SAFETY: `row_pair_avx512` is safe code whose only requirement is that the
-            // CPU supports AVX-512F, AVX-512VL, AVX2 and FMA, all detected at run time on
-            // this very CPU just above.
-            #[allow(unsafe_code)]
-            return unsafe { row_pair_avx512::<F, D, K>(s, i, k1) };
-        }
-        if build != Build::Portable && avx2 {
-            // SAFETY: `row_pair_avx2` is safe code whose only requirement is that the CPU
-            // supports AVX2 and FMA, both detected at run time on this very CPU just above.
-            #[allow(unsafe_code)]
-            return unsafe { row_pair_avx2::<F, D, K>(s, i, k1) };
-        }
-    }
-    let _ = build;
-    row_pair_portable::<F, D, K>(s, i, k1)
+    run_float(build, RowPair::<F, D, K> { s, i, k1 })
 }
 
 /// Which loop computes the pair sum in dimension [`TILED_D`], chosen per measure by
