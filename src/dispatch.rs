@@ -13,6 +13,7 @@
 //! against the portable one.
 #![allow(unsafe_code)]
 
+use crate::bits::FromFraction;
 use crate::randomize::Scrambler;
 use crate::sobol::{OwenSobol, owen_fill_blocks};
 
@@ -194,6 +195,54 @@ fn scramble_lanes_avx512<S: Scrambler>(lanes: &[S], xs: &mut [u32]) {
     scramble_lanes_portable(lanes, xs);
 }
 
+/// `dst[j] = T::from_fraction(src[j])` (the shorter length), in the widest build this CPU
+/// runs: what [`crate::Sampler::fill_as`] converts its `u32` buffer with.
+#[inline]
+pub(crate) fn convert<T: FromFraction>(src: &[u32], dst: &mut [T]) {
+    convert_at(level(), src, dst);
+}
+
+/// [`convert`] with the widest build that is at most `want` and that the CPU runs.
+#[inline]
+pub(crate) fn convert_at<T: FromFraction>(want: Level, src: &[u32], dst: &mut [T]) {
+    #[cfg(all(feature = "std", target_arch = "x86_64"))]
+    let detected = level();
+    match want {
+        #[cfg(all(feature = "std", target_arch = "x86_64"))]
+        Level::Avx512Gfni if detected == Level::Avx512Gfni => {
+            // SAFETY: `convert_avx512` requires avx512f, avx512bw, avx512vl and gfni;
+            // `level()` detected all four on this CPU.
+            unsafe { convert_avx512(src, dst) }
+        }
+        #[cfg(all(feature = "std", target_arch = "x86_64"))]
+        Level::Avx2 | Level::Avx512Gfni if detected != Level::Portable => {
+            // SAFETY: `convert_avx2` requires avx2, which `level()` detected on this CPU
+            // whenever it answers Avx2 or Avx512Gfni.
+            unsafe { convert_avx2(src, dst) }
+        }
+        _ => convert_portable(src, dst),
+    }
+}
+
+#[inline(always)]
+fn convert_portable<T: FromFraction>(src: &[u32], dst: &mut [T]) {
+    for (y, &x) in dst.iter_mut().zip(src) {
+        *y = T::from_fraction(x);
+    }
+}
+
+#[cfg(all(feature = "std", target_arch = "x86_64"))]
+#[target_feature(enable = "avx2")]
+fn convert_avx2<T: FromFraction>(src: &[u32], dst: &mut [T]) {
+    convert_portable(src, dst);
+}
+
+#[cfg(all(feature = "std", target_arch = "x86_64"))]
+#[target_feature(enable = "avx512f,avx512bw,avx512vl,gfni")]
+fn convert_avx512<T: FromFraction>(src: &[u32], dst: &mut [T]) {
+    convert_portable(src, dst);
+}
+
 /// The builds of a floating-point kernel ([`run_float`]). A build the CPU lacks falls back
 /// to the next narrower one it has (detected at run time, x86-64 with `std` only; elsewhere
 /// every build is the portable one).
@@ -372,6 +421,48 @@ mod tests {
                         assert_eq!(o.map(f32::to_bits), want, "{lv:?} {hash:?} len {len} k {k}");
                     }
                 }
+            }
+        }
+    }
+
+    /// Every build of the conversion against `from_fraction`, for `f32`, `f64` and `u32`,
+    /// on the values where `f32` rounding changes (around powers of two) and a spread.
+    #[test]
+    fn every_conversion_build_matches_from_fraction() {
+        let mut levels = vec![Level::Portable];
+        #[cfg(target_arch = "x86_64")]
+        {
+            if level() != Level::Portable {
+                levels.push(Level::Avx2);
+            }
+            if level() == Level::Avx512Gfni {
+                levels.push(Level::Avx512Gfni);
+            }
+        }
+        let mut xs: Vec<u32> = (0..32)
+            .flat_map(|b| [1u32 << b, (1u32 << b).wrapping_sub(1), (1u32 << b) + 1])
+            .collect();
+        xs.extend((0..2000u32).map(|k| k.wrapping_mul(0x9E37_79B9)));
+        xs.push(u32::MAX);
+        for &lv in &levels {
+            let mut f = vec![0f32; xs.len()];
+            convert_at(lv, &xs, &mut f);
+            let mut d = vec![0f64; xs.len()];
+            convert_at(lv, &xs, &mut d);
+            let mut u = vec![0u32; xs.len()];
+            convert_at(lv, &xs, &mut u);
+            for (j, &x) in xs.iter().enumerate() {
+                assert_eq!(
+                    f[j].to_bits(),
+                    crate::bits::to_f32(x).to_bits(),
+                    "{lv:?} f32 {x:#x}"
+                );
+                assert_eq!(
+                    d[j].to_bits(),
+                    crate::bits::to_f64(x).to_bits(),
+                    "{lv:?} f64 {x:#x}"
+                );
+                assert_eq!(u[j], x, "{lv:?} u32");
             }
         }
     }

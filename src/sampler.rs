@@ -23,9 +23,7 @@ fn convert_via<const N: usize, S: Sampler + ?Sized, T: FromFraction>(
         let tmp = buf.get_mut(..chunk.len()).unwrap_or(&mut []);
         // c * per < rows, so the index is at most the last one check_fill accepted.
         s.fill(start + (c * per) as u32, tmp)?;
-        for (y, &x) in chunk.iter_mut().zip(tmp.iter()) {
-            *y = T::from_fraction(x);
-        }
+        crate::dispatch::convert(tmp, chunk);
     }
     Ok(())
 }
