@@ -1,6 +1,8 @@
 //! Faure's generator matrices: powers of the Pascal matrix modulo a prime.
 
-use super::{DigitalNetB, output_digits};
+#[cfg(feature = "std")]
+use super::DigitalNetB;
+use super::output_digits;
 use crate::error::{Error, Result};
 
 /// Fills `out` with Faure's matrices in base `base` for `dims` dimensions, `K x K` each

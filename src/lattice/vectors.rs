@@ -27,7 +27,7 @@ fn number(token: &str) -> Result<u64> {
 /// * LDData `lattice`: a first line `# lattice` (a comment naming the format), then the
 ///   dimension `s` and the modulus `n` (each on its own line, anything after `#` ignored,
 ///   `#` lines skipped), then `s` lines with `z_1, .., z_s`; comments are allowed only in
-///   the header;
+///   the header (before the first component);
 /// * Kuo's two-column files: lines `j z_j` for `j = 1, 2, ..` (no header).
 ///
 /// No allocation (`no_std`); `O(len(text))`.
@@ -86,7 +86,9 @@ pub fn parse_lattice(text: &str, out: &mut [u32]) -> Result<LatticeFile> {
     let dims = usize::try_from(dims).unwrap_or(usize::MAX);
     let want = out.len().min(dims);
     let mut read = 0;
-    for (slot, line) in out.iter_mut().take(want).zip(lines) {
+    // Full comment lines may still follow the header's two numbers, before the components.
+    let components = lines.skip_while(|l| l.starts_with('#'));
+    for (slot, line) in out.iter_mut().take(want).zip(components) {
         *slot = component(line)?;
         read += 1;
     }
