@@ -59,12 +59,11 @@ pub enum SamplerName {
     Lp,
     /// Sobol' sequence, Joe–Kuo direction numbers, up to 21201 dimensions.
     Sobol,
-    /// Rank-1 lattice: Kuo's extensible vector (2^20 points, radical-inverse order), or
-    /// --total N points in linear order; --vector FILE, --korobov A.
+    /// Rank-1 lattice: Kuo's extensible vector (2^20 points, radical-inverse order).
     Lattice,
     /// Kronecker sequence frac(i alpha), alpha from the generalized golden ratio R_d.
     Kronecker,
-    /// Faure (0,s)-sequence in a prime base b >= d (--base; default the smallest).
+    /// Faure (0,s)-sequence in a prime base b >= d (by default the smallest).
     Faure,
 }
 
