@@ -230,3 +230,38 @@ fn bad_options_are_refused() {
     assert!(integrate(f, 1, small, &ok).is_err()); // fewer points than n_start
     let _ = Sobol::new(1).unwrap().len();
 }
+
+/// Points used to reach the same absolute tolerance as QMCPy's CubQMCSobolG (median over
+/// 10 seeds, tests/golden/compare_qmcpy_cubqmc.py), printed; ours (16 Owen-scrambled
+/// Sobol' replications, Student-t interval) must converge and stay within 32x.
+#[test]
+fn points_used_against_qmcpy() {
+    let suite = test_suite();
+    for line in golden("qmcpy_cubqmc_points.txt")
+        .lines()
+        .filter(|l| !l.starts_with('#'))
+    {
+        let f: Vec<&str> = line.split(' ').collect();
+        let (name, tol, theirs): (&str, f64, u64) =
+            (f[0], f[1].parse().unwrap(), f[2].parse().unwrap());
+        let p = suite.iter().find(|p| p.name == name).unwrap();
+        let mut used: Vec<u64> = (0..10u64)
+            .into_par_iter()
+            .map(|k| {
+                let opts = Options {
+                    abs_tol: tol,
+                    n_start: 64,
+                    seed: 500 + 100 * k,
+                    ..Options::default()
+                };
+                let est = integrate(|x| p.eval(x), p.dims, owen_sobol(p.dims), &opts).unwrap();
+                assert!(est.converged, "{name}");
+                est.points
+            })
+            .collect();
+        used.sort_unstable();
+        let ours = used[5];
+        eprintln!("{name} tol {tol}: qmckit {ours} points (median), CubQMCSobolG {theirs}");
+        assert!(ours <= 32 * theirs, "{name}: {ours} vs {theirs}");
+    }
+}
