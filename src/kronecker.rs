@@ -165,7 +165,7 @@ impl<A: AsRef<[u32]>> Sampler for Kronecker<A> {
         Ok(index.wrapping_mul(self.alpha(dim).unwrap_or(0)))
     }
 
-    /// `alpha` prepared for [`GROUP`] columns at a time, then one multiply a value. Same
+    /// `alpha` prepared for 64 columns at a time, then one multiply a value. Same
     /// values as [`sample`](Sampler::sample).
     fn fill(&self, start: u32, out: &mut [u32]) -> Result<()> {
         check_fill(self, start, out.len())?;

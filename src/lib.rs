@@ -114,6 +114,11 @@ pub use van_der_corput::VanDerCorput;
 #[doc = include_str!("../README.md")]
 pub struct ReadmeDoctests;
 
+/// The toolbox guide's examples, compiled and run as doctests.
+#[cfg(all(doctest, feature = "analysis"))]
+#[doc = include_str!("../docs/toolbox.md")]
+pub struct ToolboxDoctests;
+
 /// The analysis guide's examples, compiled and run as doctests.
 #[cfg(doctest)]
 #[doc = include_str!("../docs/analysis.md")]
