@@ -65,6 +65,7 @@ pub mod bits;
 pub mod buffer;
 #[cfg(feature = "std")]
 pub mod collect;
+pub mod digital;
 pub(crate) mod dispatch;
 pub mod error;
 /// Deprecated path of the fixed-point warps: use [`warp::fixed`].
@@ -77,8 +78,10 @@ pub mod halton;
 pub mod hammersley;
 pub mod hash;
 pub mod independent;
+pub mod kronecker;
 pub mod larcher_pillichshammer;
 pub mod latin_hypercube;
+pub mod lattice;
 /// The former home of the Owen-scrambled Sobol' fast paths, now [`sobol::OwenSobol`].
 #[deprecated(note = "use qmckit::sobol::OwenSobol (one type, cheap reseed)")]
 pub mod owen_sobol {
@@ -110,6 +113,11 @@ pub use van_der_corput::VanDerCorput;
 #[cfg(doctest)]
 #[doc = include_str!("../README.md")]
 pub struct ReadmeDoctests;
+
+/// The toolbox guide's examples, compiled and run as doctests.
+#[cfg(all(doctest, feature = "analysis"))]
+#[doc = include_str!("../docs/toolbox.md")]
+pub struct ToolboxDoctests;
 
 /// The analysis guide's examples, compiled and run as doctests.
 #[cfg(doctest)]

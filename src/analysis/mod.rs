@@ -17,6 +17,7 @@
 
 pub mod budget;
 pub mod distance;
+pub mod integrate;
 pub mod integration;
 pub mod l2;
 pub mod pointfile;

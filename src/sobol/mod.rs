@@ -22,6 +22,7 @@ use crate::bits::{gf2_mul, gray};
 use crate::error::{Error, Result};
 use crate::sampler::{Base2Digital, FULL_RANGE, Sampler, check};
 
+pub mod interlaced;
 mod owen;
 mod table;
 

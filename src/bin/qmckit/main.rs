@@ -11,6 +11,7 @@ mod output;
 mod points;
 mod progress;
 mod spectrum;
+mod toolbox;
 mod tvalue;
 mod warp;
 

@@ -25,6 +25,8 @@ Options that apply (any other is an error that names it):
   --base      vdc            --strata, --centered   stratified
   --total     the finite sets: stratified, latin, hammersley, lp
   --order     sobol (gray: SciPy's order)
+  --vector, --korobov   lattice (--total N: the N-point rule in linear order)
+  --scramble  shift, shift-tent: lattice, kronecker; owen, perm, faure: faure (base b)
   --scramble  xor, fast-owen, fast-owen-lk, lms, shuffle-owen: base-2 digital
               constructions (sobol, lp, vdc base 2); owen: those and halton, hammersley,
               vdc (in base b); rotate: any; perm, faure: halton, hammersley, vdc
@@ -57,6 +59,12 @@ pub enum SamplerName {
     Lp,
     /// Sobol' sequence, Joe–Kuo direction numbers, up to 21201 dimensions.
     Sobol,
+    /// Rank-1 lattice: Kuo's extensible vector (2^20 points, radical-inverse order).
+    Lattice,
+    /// Kronecker sequence frac(i alpha), alpha from the generalized golden ratio R_d.
+    Kronecker,
+    /// Faure (0,s)-sequence in a prime base b >= d (by default the smallest).
+    Faure,
 }
 
 impl SamplerName {
@@ -87,8 +95,12 @@ pub enum ScrambleName {
     ShuffleOwen,
     /// Random digit permutations per digit position (halton, hammersley, vdc).
     Perm,
-    /// Faure's digit permutations (halton, hammersley, vdc).
+    /// Faure's digit permutations (halton, hammersley, vdc, faure).
     Faure,
+    /// Random shift modulo 1 (lattice, kronecker; the same as rotate).
+    Shift,
+    /// Random shift, then the baker's (tent) transform 1 - |2x - 1| (lattice, kronecker).
+    ShiftTent,
 }
 
 /// Point order (`--order`).
@@ -140,6 +152,13 @@ pub struct PointsArgs {
     /// Stratified: put each point at its cell's center instead of jittering it.
     #[arg(long)]
     centered: bool,
+    /// Lattice: read the generating vector from FILE (LDData 'lattice' format or Kuo's
+    /// 'j z_j' rows).
+    #[arg(long, value_name = "FILE")]
+    vector: Option<std::path::PathBuf>,
+    /// Lattice: the Korobov vector (1, a, a^2, ...) mod N, with N from --total.
+    #[arg(long, value_name = "A")]
+    korobov: Option<u64>,
     #[command(flatten)]
     warp: WarpArgs,
 }
@@ -170,6 +189,10 @@ pub struct Spec {
     pub strata: Option<String>,
     /// Stratified: cell centers instead of jitter.
     pub centered: bool,
+    /// Lattice: a generating-vector file.
+    pub vector: Option<std::path::PathBuf>,
+    /// Lattice: a Korobov parameter.
+    pub korobov: Option<u64>,
 }
 
 impl Spec {
@@ -189,9 +212,12 @@ impl Spec {
             seed,
             scramble,
             order: OrderName::Natural,
-            base: 2,
+            // Faure's base 0 picks the smallest prime at least d.
+            base: if sampler == SamplerName::Faure { 0 } else { 2 },
             strata: None,
             centered: false,
+            vector: None,
+            korobov: None,
         }
     }
 }
@@ -221,10 +247,16 @@ impl PointsArgs {
                 },
             );
         }
-        if self.base.is_some() && sampler != S::Vdc {
-            return refuse("--base", " (only vdc takes a base)");
+        if self.base.is_some() && !matches!(sampler, S::Vdc | S::Faure) {
+            return refuse("--base", " (only vdc and faure take a base)");
         }
-        if self.total.is_some() && !sampler.is_finite_set() {
+        if (self.vector.is_some() || self.korobov.is_some()) && sampler != S::Lattice {
+            return refuse(
+                "--vector/--korobov",
+                " (only lattice has a generating vector)",
+            );
+        }
+        if self.total.is_some() && !sampler.is_finite_set() && sampler != S::Lattice {
             return refuse(
                 "--total",
                 " (a sequence; only stratified, latin, hammersley and lp are sets)",
@@ -247,9 +279,11 @@ impl PointsArgs {
             seed: self.seed.unwrap_or(0),
             scramble: self.scramble,
             order: self.order.unwrap_or(OrderName::Natural),
-            base: self.base.unwrap_or(2),
+            base: self.base.unwrap_or(if sampler == S::Faure { 0 } else { 2 }),
             strata: self.strata.clone(),
             centered: self.centered,
+            vector: self.vector.clone(),
+            korobov: self.korobov,
         })
     }
 }
@@ -288,6 +322,15 @@ enum Built {
 /// `R: Randomizes<S>`); this only maps names to types.
 pub fn build(args: &Spec) -> Result<Box<dyn Sampler>, Failure> {
     use ScrambleName as K;
+    if matches!(
+        args.sampler,
+        SamplerName::Lattice | SamplerName::Kronecker | SamplerName::Faure
+    ) {
+        return super::toolbox::build(args);
+    }
+    if matches!(args.scramble, K::Shift | K::ShiftTent) {
+        return Err(does_not_apply(args));
+    }
     let seed = args.seed;
     let takes_digits = args.sampler.takes_digit_scrambles(args.base);
     let digits = match args.scramble {
@@ -324,7 +367,8 @@ pub fn build(args: &Spec) -> Result<Box<dyn Sampler>, Failure> {
         )?),
         (Built::Digital(_), K::Perm | K::Faure)
         | (Built::Other(_), K::Xor | K::Owen | K::FastOwen | K::FastOwenLk | K::Lms)
-        | (Built::Other(_), K::ShuffleOwen | K::Perm | K::Faure) => {
+        | (Built::Other(_), K::ShuffleOwen | K::Perm | K::Faure)
+        | (_, K::Shift | K::ShiftTent) => {
             return Err(does_not_apply(args));
         }
     })
@@ -397,6 +441,9 @@ fn construct(args: &Spec, digits: DigitScramble) -> Result<Built, Failure> {
             return Ok(Built::Digital(Box::new(
                 LarcherPillichshammer::with_points(total)?,
             )));
+        }
+        SamplerName::Lattice | SamplerName::Kronecker | SamplerName::Faure => {
+            return Err(Failure::usage("unreachable: built by the toolbox"));
         }
         SamplerName::Stratified => {
             let strata = match &args.strata {

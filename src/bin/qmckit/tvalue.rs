@@ -17,8 +17,10 @@ use super::progress::{with_progress, with_spinner};
 
 /// Text shown after the options of `qmckit tvalue --help`.
 pub const AFTER_HELP: &str = "\
-Samplers (base 2 only): sobol (any d), lp (d = 2), hammersley (d = 2: (i/2^m, phi_2(i))),
-vdc (d = 1, base 2). Other samplers are refused.
+Samplers (base 2): sobol (any d), lp (d = 2), hammersley (d = 2: (i/2^m, phi_2(i))),
+vdc (d = 1, base 2). In base b: faure (the first b^m points, counted exactly in base b;
+--base B, a prime >= d; --scramble owen|perm|faure; output adds a 'base B' line). Other
+samplers are refused.
 
 Method: without --scramble, the rank test on the generator matrices (exact, m <= 32; its
 cost grows like C(m - t + 1 + d, d), fast for small d; estimated first and refused when the
@@ -51,6 +53,9 @@ pub enum TvalueSampler {
     Hammersley,
     /// Van der Corput sequence in base 2, d = 1.
     Vdc,
+    /// Faure's sequence in prime base b >= d (--base; default the smallest such prime):
+    /// counted in base b, exactly.
+    Faure,
 }
 
 impl TvalueSampler {
@@ -61,6 +66,7 @@ impl TvalueSampler {
             TvalueSampler::Lp => SamplerName::Lp,
             TvalueSampler::Hammersley => SamplerName::Hammersley,
             TvalueSampler::Vdc => SamplerName::Vdc,
+            TvalueSampler::Faure => SamplerName::Faure,
         }
     }
 }
@@ -85,6 +91,9 @@ pub struct TvalueArgs {
     /// Name up to five elementary intervals that break t-1.
     #[arg(long)]
     explain: bool,
+    /// Base of faure (a prime at least d) [default: the smallest such prime].
+    #[arg(long)]
+    base: Option<u32>,
     #[command(flatten)]
     budget: BudgetArgs,
 }
@@ -170,6 +179,22 @@ pub fn run(args: &TvalueArgs) -> Result<(), Failure> {
     let d = sampler.dims(args.d);
     if d == 0 {
         return Err(Failure::usage("-d must be at least 1"));
+    }
+    if args.base.is_some() && sampler != SamplerName::Faure {
+        return Err(Failure::usage("--base applies to faure only"));
+    }
+    if sampler == SamplerName::Faure {
+        if args.explain {
+            return Err(Failure::usage("--explain is for base-2 constructions"));
+        }
+        let (t, b) =
+            super::toolbox::tvalue_faure(m, d, args.base, args.scramble, args.seed, &budget)?;
+        let mut out = std::io::stdout().lock();
+        writeln!(out, "sampler faure\nbase {b}")?;
+        writeln!(out, "scramble {}", value_name(&args.scramble))?;
+        writeln!(out, "m {m}\nd {d}\nmethod count\nt {t}")?;
+        out.flush()?;
+        return Ok(());
     }
     // Validates the sampler and d for both methods.
     let net = net(sampler, m, d)?;

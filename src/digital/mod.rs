@@ -1,0 +1,237 @@
+//! Digital nets and sequences in a prime base `b` from generator matrices, and Faure's
+//! (0, s)-sequences.
+//!
+//! # The construction
+//!
+//! A digital sequence in base `b` (Niederreiter 1987) has one generator matrix `C_j` over
+//! the field `F_b` per dimension. Index `i = sum_c a_c b^c` (digits `a_c`, least
+//! significant first) has coordinates
+//!
+//! ```text
+//! y_j = C_j (a_0, a_1, ..)^T  (mod b),     x_j(i) = sum_r y_(j,r) b^-(r+1).
+//! ```
+//!
+//! Faure's sequence (Faure 1982) in prime base `b >= s` takes `C_j = P^j` (0-based `j`),
+//! `P` the upper-triangular Pascal matrix: `P^j[r][c] = C(c, r) j^(c - r) mod b`, so `C_0`
+//! is the identity (van der Corput in base `b`). Every block of `b^m` consecutive points
+//! starting at a multiple of `b^m` is a `(0, m, s)`-net in base `b`: every elementary
+//! interval of volume `b^-m` holds exactly one point. Base 2, `s = 2` is 2D Sobol'.
+//! Niederreiter or Niederreiter–Xing matrices, given as entries, use the same machinery.
+//!
+//! # Precision
+//!
+//! `K` output digits are used, the fewest with `b^K >= 2^32` (21 in base 3); the index has
+//! at most `K` digits too. The coordinate is the exact rational `v / b^K`,
+//! `v = sum_(r < K) y_r b^(K-1-r)` ([`DigitalNetB::value`]), and the 0.32 sample is
+//! `floor(v 2^32 / b^K)`: exact to the last bit (values such as `1/3` round down), so
+//! counting elementary intervals should use [`DigitalNetB::value`].
+//!
+//! # Scrambling
+//!
+//! The base-`b` digit scrambles of the radical inverse ([`DigitScramble`]: random digit
+//! permutations per position, Faure's permutations, Owen's nested uniform scrambling in
+//! base `b`) apply to the output digits `y_(j,r)` before they are combined, with all `K`
+//! digits scrambled (so Owen's scramble makes each point uniform to 32 bits). Digit
+//! permutations and Owen scrambling keep every `(t, m, s)`-net a `(t, m, s)`-net.
+//!
+//! Cost per value: `K x m` multiply-adds mod `b` (`m` the index digits; 21 x 21 in
+//! base 3) and, scrambled, one hash a digit.
+//!
+//! ```
+//! use qmckit::Sampler;
+//! use qmckit::digital::DigitalNetB;
+//! let f = DigitalNetB::faure(3, 3)?;
+//! // Point 3 of Faure in base 3 is (1/9, 4/9, 7/9).
+//! assert_eq!(f.value(3, 1)?, 4 * 3u64.pow(19)); // 4/9 = 4 3^19 / 3^21, exact
+//! assert_eq!(f.sample(3, 2)?, ((7u64 << 32) / 9) as u32);
+//! # Ok::<(), qmckit::Error>(())
+//! ```
+
+mod faure;
+#[cfg(feature = "analysis")]
+pub mod quality;
+
+pub use faure::faure_matrices;
+
+use crate::error::{Error, Result};
+use crate::randomize::digits::DigitScramble;
+use crate::sampler::{FULL_RANGE, Sampler, check};
+
+/// Largest base accepted (entries are `u16`).
+pub const MAX_BASE: u32 = 65521;
+
+/// Most output digits (`K` for base 2).
+pub const MAX_DIGITS: usize = 32;
+
+/// `true` when `b` is prime (trial division, `O(sqrt b)`).
+pub const fn is_prime(b: u32) -> bool {
+    if b < 2 {
+        return false;
+    }
+    let mut d = 2;
+    while d * d <= b {
+        if b.is_multiple_of(d) {
+            return false;
+        }
+        d += 1;
+    }
+    true
+}
+
+/// `K`, the fewest base-`b` digits with `b^K >= 2^32`, and `b^K` (`2 <= b <= MAX_BASE`).
+pub const fn output_digits(b: u32) -> (usize, u64) {
+    let mut k = 0;
+    let mut p = 1u64;
+    while p < FULL_RANGE {
+        p *= b as u64;
+        k += 1;
+    }
+    (k, p)
+}
+
+/// A digital net or sequence in prime base `b`: `dims` generator matrices of `K` rows
+/// (output digits, the first the most significant) and `cols` columns (index digits),
+/// stored row-major per dimension in `M` (`matrices[(j K + r) cols + c]`; `&[u16]`,
+/// `Vec<u16>`, an array).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct DigitalNetB<M> {
+    matrices: M,
+    base: u32,
+    dims: usize,
+    cols: usize,
+    digits: usize,
+    scale: u64,
+    len: u64,
+    scramble: DigitScramble,
+}
+
+impl<M: AsRef<[u16]>> DigitalNetB<M> {
+    /// The net with generator matrices `matrices` (`dims x K x cols` entries below `base`,
+    /// `K` = [`output_digits`]`(base).0`; rows past the `K`-th would not change 32 bits).
+    /// It has `min(base^cols, 2^32)` points.
+    ///
+    /// # Errors
+    /// [`Error::BaseTooSmall`]; [`Error::InvalidParameter`] for a base that is not prime or
+    /// is above [`MAX_BASE`], `cols` of 0 or above `K`, or an entry `>= base`;
+    /// [`Error::BufferLength`] unless `matrices` has `dims x K x cols` entries;
+    /// [`Error::ZeroDimensions`].
+    pub fn new(base: u32, dims: usize, cols: usize, matrices: M) -> Result<Self> {
+        if base < 2 {
+            return Err(Error::BaseTooSmall { base });
+        }
+        if base > MAX_BASE || !is_prime(base) {
+            return Err(Error::InvalidParameter {
+                what: "a digital net's base must be a prime of at most 65521",
+            });
+        }
+        if dims == 0 {
+            return Err(Error::ZeroDimensions);
+        }
+        let (digits, scale) = output_digits(base);
+        if cols == 0 || cols > digits {
+            return Err(Error::InvalidParameter {
+                what: "a digital net needs 1 to K index digits (b^K >= 2^32)",
+            });
+        }
+        let expected = dims.checked_mul(digits * cols).ok_or(Error::TooLarge {
+            what: "matrix entries",
+            requested: u64::MAX,
+            max: usize::MAX as u64,
+        })?;
+        let m = matrices.as_ref();
+        if m.len() != expected {
+            return Err(Error::BufferLength {
+                expected,
+                got: m.len(),
+            });
+        }
+        if m.iter().any(|&e| e as u32 >= base) {
+            return Err(Error::InvalidParameter {
+                what: "a generator matrix entry is not a digit of the base",
+            });
+        }
+        let len = (base as u64)
+            .checked_pow(cols as u32)
+            .map_or(FULL_RANGE, |n| n.min(FULL_RANGE));
+        Ok(DigitalNetB {
+            matrices,
+            base,
+            dims,
+            cols,
+            digits,
+            scale,
+            len,
+            scramble: DigitScramble::None,
+        })
+    }
+
+    /// The same net with its output digits scrambled by `scramble` (see the module docs).
+    pub fn with_scramble(mut self, scramble: DigitScramble) -> Self {
+        self.scramble = scramble;
+        self
+    }
+
+    /// The base.
+    pub const fn base(&self) -> u32 {
+        self.base
+    }
+
+    /// `K`: output digits per coordinate.
+    pub const fn digits(&self) -> usize {
+        self.digits
+    }
+
+    /// The exact coordinate `dim` of point `index` as the integer `v` with `x = v / b^K`
+    /// (after the scramble, if any).
+    ///
+    /// # Errors
+    /// [`Error::IndexOutOfRange`], [`Error::DimensionOutOfRange`].
+    pub fn value(&self, index: u32, dim: usize) -> Result<u64> {
+        check(index, self.len, dim, self.dims)?;
+        let mut a = [0u64; MAX_DIGITS];
+        let mut rest = index as u64;
+        for slot in a.iter_mut().take(self.cols) {
+            *slot = rest % self.base as u64;
+            rest /= self.base as u64;
+        }
+        let b = self.base as u64;
+        let block = self.digits * self.cols;
+        let matrix = self
+            .matrices
+            .as_ref()
+            .get(dim * block..(dim + 1) * block)
+            .unwrap_or(&[]);
+        let (mut v, mut prefix, mut weight) = (0u64, 0u64, 1u64);
+        for (r, row) in matrix.chunks_exact(self.cols).enumerate() {
+            let y = row
+                .iter()
+                .zip(&a)
+                .fold(0u64, |acc, (&c, &ak)| (acc + c as u64 * ak) % b);
+            let y = self
+                .scramble
+                .digit(self.base, dim, r as u32 + 1, prefix, y as u32) as u64;
+            v = v * b + y;
+            // The digits above this one, as the radical inverse's index prefix.
+            prefix += y * weight;
+            weight = weight.saturating_mul(b);
+        }
+        Ok(v)
+    }
+}
+
+impl<M: AsRef<[u16]>> Sampler for DigitalNetB<M> {
+    fn dims(&self) -> usize {
+        self.dims
+    }
+
+    fn len(&self) -> u64 {
+        self.len
+    }
+
+    /// `floor(v 2^32 / b^K)` of [`DigitalNetB::value`].
+    fn sample(&self, index: u32, dim: usize) -> Result<u32> {
+        let v = self.value(index, dim)?;
+        // v < b^K, so the quotient is below 2^32.
+        Ok(((v as u128) << 32).wrapping_div(self.scale as u128) as u32)
+    }
+}

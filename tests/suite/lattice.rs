@@ -1,0 +1,425 @@
+//! Rank-1 lattices and Kronecker sequences against QMCPy (golden files from
+//! tests/golden/gen_qmcpy_lattice.py), exact integer arithmetic and high-precision R_d.
+
+use qmckit::Sampler;
+use qmckit::kronecker::Kronecker;
+use qmckit::lattice::{KUO_33002, Rank1Lattice, Shift, Tent, korobov, parse_lattice};
+use qmckit::randomize::{CranleyPatterson, Scrambled};
+
+fn golden(name: &str) -> String {
+    let path = format!("{}/tests/golden/{name}", env!("CARGO_MANIFEST_DIR"));
+    std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"))
+}
+
+/// The data rows of a golden file, as integers.
+fn rows(name: &str) -> Vec<Vec<u64>> {
+    golden(name)
+        .lines()
+        .filter(|l| !l.starts_with('#'))
+        .map(|l| l.split_whitespace().map(|t| t.parse().unwrap()).collect())
+        .collect()
+}
+
+fn points(s: &impl Sampler, n: u32) -> Vec<Vec<u64>> {
+    let d = s.dims();
+    let mut buf = vec![0u32; n as usize * d];
+    s.fill(0, &mut buf).unwrap();
+    // fill and sample agree
+    for i in (0..n).step_by(7) {
+        for k in 0..d {
+            assert_eq!(buf[i as usize * d + k], s.sample(i, k).unwrap());
+        }
+    }
+    buf.chunks(d)
+        .map(|r| r.iter().map(|&x| x as u64).collect())
+        .collect()
+}
+
+#[test]
+fn radical_inverse_order_equals_qmcpy() {
+    let l = Rank1Lattice::kuo(8).unwrap();
+    assert_eq!(l.len(), 1 << 20);
+    assert_eq!(points(&l, 1024), rows("qmcpy_lattice_natural_d8_n1024.txt"));
+}
+
+#[test]
+fn linear_order_equals_qmcpy() {
+    let l = Rank1Lattice::linear(&KUO_33002[..8], 256).unwrap();
+    assert_eq!(points(&l, 256), rows("qmcpy_lattice_linear_d8_n256.txt"));
+}
+
+#[test]
+fn shifted_lattice_equals_qmcpy() {
+    let g = rows("qmcpy_lattice_shifted_d4_n64.txt");
+    let shift: Vec<u32> = g[0].iter().map(|&x| x as u32).collect();
+    let l = Scrambled::new(Rank1Lattice::kuo(4).unwrap(), Shift::new(shift));
+    assert_eq!(points(&l, 64), g[1..].to_vec());
+}
+
+/// Every prefix of 2^m points of the extensible lattice is the linear lattice with
+/// n = 2^m (as a set).
+#[test]
+fn extensible_prefixes_are_the_fixed_lattices() {
+    let z = &KUO_33002[..6];
+    let ext = Rank1Lattice::extensible(z, 20).unwrap();
+    for m in [0u32, 1, 4, 7, 10, 12] {
+        let n = 1u32 << m;
+        let fixed = Rank1Lattice::linear(z, n as u64).unwrap();
+        let mut a = points(&ext, n);
+        let mut b = points(&fixed, n);
+        a.sort();
+        b.sort();
+        assert_eq!(a, b, "m = {m}");
+    }
+}
+
+/// The linear rule for n not a power of two, against exact integer arithmetic
+/// `floor(((i z) mod n) 2^32 / n)` written out here, and the Fibonacci lattice's
+/// published shape (n = F_k, z = (1, F_(k-1))).
+#[test]
+fn linear_rule_is_exact_for_any_n() {
+    let z = [1u32, 610];
+    let l = Rank1Lattice::linear(z, 987).unwrap();
+    for i in 0..987u64 {
+        for (k, &zk) in z.iter().enumerate() {
+            let num = (i * zk as u64 % 987) as u128 * (1u128 << 32);
+            assert_eq!(l.sample(i as u32, k).unwrap() as u128, num / 987);
+        }
+    }
+    assert!(l.sample(987, 0).is_err());
+    assert!(l.sample(0, 2).is_err());
+}
+
+#[test]
+fn shipped_table_equals_its_text_file() {
+    let text = std::fs::read_to_string(format!(
+        "{}/tables/kuo.lattice-33002-1024-1048576.9125.txt",
+        env!("CARGO_MANIFEST_DIR")
+    ))
+    .unwrap();
+    let mut z = vec![0u32; 9125];
+    let info = parse_lattice(&text, &mut z).unwrap();
+    assert_eq!(info.modulus, Some(1 << 20));
+    assert_eq!(info.declared_dims, Some(9125));
+    assert_eq!(z, KUO_33002);
+    // The published first components of this vector.
+    assert_eq!(
+        &z[..8],
+        [1, 182667, 213731, 255351, 96013, 116671, 479315, 424089]
+    );
+}
+
+#[test]
+fn parser_accepts_kuo_two_columns_and_refuses_garbage() {
+    let mut z = [0u32; 3];
+    let info = parse_lattice("1 1\n2 182667\n3 469891\n4 498753\n", &mut z).unwrap();
+    assert_eq!((info.read, z), (3, [1, 182667, 469891]));
+    for bad in [
+        "",
+        "# dnet\n2\n4\n1\n1\n",
+        "# lattice\n3\n",
+        "# lattice\n3\n16\n1\n5\n",
+        "# lattice\n2\n16\n1\nx\n",
+        "# lattice\n1\n16\n4294967296\n",
+        "# lattice\n1\n0\n1\n",
+        "1 1\n3 5\n",
+        "1 1 1\n",
+    ] {
+        assert!(parse_lattice(bad, &mut z).is_err(), "{bad:?}");
+    }
+}
+
+#[test]
+fn korobov_vectors_are_powers() {
+    let mut z = [0u32; 5];
+    korobov(76, 1021, &mut z).unwrap();
+    let mut p = 1u64;
+    for &zk in &z {
+        assert_eq!(zk as u64, p);
+        p = p * 76 % 1021;
+    }
+    assert!(korobov(3, 0, &mut z).is_err());
+}
+
+/// A shifted lattice rule with the tent transform integrates a smooth non-periodic
+/// function with a much smaller error than without (second order against first).
+#[test]
+fn tent_transform_helps_non_periodic_integrands() {
+    let f = |x: &[f64]| x.iter().map(|&t| t * t).product::<f64>(); // exact 1/3^d
+    let exact = (1.0f64 / 3.0).powi(3);
+    let err = |tent: bool| {
+        let mut total = 0.0;
+        for seed in 0..8 {
+            let base = Rank1Lattice::linear(&KUO_33002[..3], 4096).unwrap();
+            let mut buf = vec![0f64; 4096 * 3];
+            if tent {
+                Scrambled::new(base, (CranleyPatterson::new(seed), Tent))
+                    .fill_as(0, &mut buf)
+                    .unwrap();
+            } else {
+                Scrambled::new(base, CranleyPatterson::new(seed))
+                    .fill_as(0, &mut buf)
+                    .unwrap();
+            }
+            let mean = buf.chunks(3).map(f).sum::<f64>() / 4096.0;
+            total += (mean - exact).powi(2);
+        }
+        (total / 8.0).sqrt()
+    };
+    let (plain, tent) = (err(false), err(true));
+    assert!(tent * 20.0 < plain, "tent {tent:e}, plain {plain:e}");
+}
+
+#[test]
+fn lattice_refuses_bad_parameters() {
+    assert!(Rank1Lattice::linear([1u32], 0).is_err());
+    assert!(Rank1Lattice::linear([0u32; 0], 8).is_err());
+    assert!(Rank1Lattice::linear([1u32], (1 << 32) + 1).is_err());
+    assert!(Rank1Lattice::extensible([1u32], 33).is_err());
+    assert!(Rank1Lattice::kuo(0).is_err());
+    assert!(Rank1Lattice::kuo(9126).is_err());
+    assert!(Rank1Lattice::kuo(9125).is_ok());
+    let l = Rank1Lattice::kuo(2).unwrap();
+    assert!(l.sample(1 << 20, 0).is_err());
+    assert!(l.fill((1 << 20) - 1, &mut [0; 4]).is_err());
+}
+
+#[test]
+fn r_d_alpha_matches_high_precision() {
+    for row in rows("rd_alpha.txt") {
+        let (d, j, want) = (row[0] as usize, row[1] as usize, row[2] as u32);
+        let k = Kronecker::r_d(d).unwrap();
+        assert_eq!(k.alpha(j - 1), Some(want), "d = {d}, j = {j}");
+    }
+    // UTK's / Patel's fixed-point R2.
+    let r2 = Kronecker::r_d(2).unwrap();
+    assert_eq!(
+        (r2.alpha(0), r2.alpha(1)),
+        (Some(0xC13F_A9A9), Some(0x91E1_0DA5))
+    );
+}
+
+#[test]
+fn kronecker_equals_qmcpy() {
+    let g = rows("qmcpy_kronecker_d3_n256.txt");
+    let alpha: Vec<u32> = g[0].iter().map(|&x| x as u32).collect();
+    let shift: Vec<u32> = g[1].iter().map(|&x| x as u32).collect();
+    let k = Scrambled::new(Kronecker::with_alpha(alpha).unwrap(), Shift::new(shift));
+    assert_eq!(points(&k, 256), g[2..].to_vec());
+}
+
+#[test]
+fn kronecker_r_d_fill_matches_sample_in_many_dims() {
+    let k = Kronecker::r_d(150).unwrap();
+    let mut buf = vec![0u32; 150 * 5];
+    k.fill(1000, &mut buf).unwrap();
+    for i in 0..5u32 {
+        for d in 0..150 {
+            assert_eq!(buf[i as usize * 150 + d], k.sample(1000 + i, d).unwrap());
+        }
+    }
+    assert!(Kronecker::r_d(0).is_err());
+    assert!(Kronecker::with_alpha(Vec::<u32>::new()).is_err());
+    assert!(k.sample(0, 150).is_err());
+}
+
+/// The command line: `points lattice|kronecker|faure`, `tvalue faure`, and its refusals.
+#[cfg(feature = "cli")]
+mod cli {
+    use crate::common::cli::{assert_usage_error, run};
+
+    fn stdout(args: &[&str]) -> String {
+        let out = run(args, "");
+        assert_eq!(out.status.code(), Some(0), "{args:?}: {:?}", out.stderr);
+        String::from_utf8(out.stdout).unwrap()
+    }
+
+    #[test]
+    fn points_lattice_is_qmcpys() {
+        let text = stdout(&["points", "lattice", "-n", "1024", "-d", "8"]);
+        let golden = super::rows("qmcpy_lattice_natural_d8_n1024.txt");
+        let got: Vec<Vec<u64>> = text
+            .lines()
+            .map(|l| l.split(' ').map(|t| t.parse().unwrap()).collect())
+            .collect();
+        assert_eq!(got, golden);
+        let lin = stdout(&[
+            "points", "lattice", "-n", "256", "-d", "8", "--total", "256",
+        ]);
+        assert_eq!(
+            lin.lines().nth(5).unwrap(),
+            super::rows("qmcpy_lattice_linear_d8_n256.txt")[5]
+                .iter()
+                .map(u64::to_string)
+                .collect::<Vec<_>>()
+                .join(" ")
+        );
+    }
+
+    #[test]
+    fn points_lattice_reads_a_vector_file() {
+        let path = std::env::temp_dir().join(format!("qmckit-lattice-{}.txt", std::process::id()));
+        std::fs::write(&path, "# lattice\n2\n8 # n\n1\n3\n").unwrap();
+        let p = path.to_str().unwrap();
+        let text = stdout(&["points", "lattice", "-n", "8", "-d", "2", "--vector", p]);
+        // Extensible with n = 8, radical-inverse order: point 1 is (1/2, 3/2 mod 1).
+        assert_eq!(text.lines().nth(1), Some("2147483648 2147483648"));
+        assert_usage_error(
+            &["points", "lattice", "-n", "8", "-d", "3", "--vector", p],
+            "",
+            "has 2 components",
+        );
+        assert_usage_error(
+            &["points", "lattice", "-n", "9", "-d", "2", "--vector", p],
+            "",
+            "past the end",
+        );
+        std::fs::write(&path, "# lattice\n2\nx\n").unwrap();
+        assert_usage_error(
+            &["points", "lattice", "-n", "8", "-d", "2", "--vector", p],
+            "",
+            "lattice file",
+        );
+        std::fs::remove_file(&path).unwrap();
+    }
+
+    #[test]
+    fn points_korobov_kronecker_faure() {
+        let k = stdout(&[
+            "points",
+            "lattice",
+            "-n",
+            "3",
+            "-d",
+            "2",
+            "--total",
+            "13",
+            "--korobov",
+            "5",
+        ]);
+        // z = (1, 5): point 2 is (2/13, 10/13).
+        let want = format!("{} {}", (2u64 << 32) / 13, (10u64 << 32) / 13);
+        assert_eq!(k.lines().nth(2), Some(want.as_str()));
+        let r2 = stdout(&["points", "kronecker", "-n", "2", "-d", "2"]);
+        assert_eq!(r2.lines().nth(1), Some("3242174889 2447445413"));
+        let f = stdout(&["points", "faure", "-n", "4", "-d", "3"]);
+        let want = format!(
+            "{} {} {}",
+            (1u64 << 32) / 9,
+            (4u64 << 32) / 9,
+            (7u64 << 32) / 9
+        );
+        assert_eq!(f.lines().nth(3), Some(want.as_str()));
+        let a = stdout(&[
+            "points",
+            "kronecker",
+            "-n",
+            "4",
+            "--scramble",
+            "shift",
+            "--seed",
+            "3",
+        ]);
+        let b = stdout(&[
+            "points",
+            "kronecker",
+            "-n",
+            "4",
+            "--scramble",
+            "shift",
+            "--seed",
+            "4",
+        ]);
+        assert_ne!(a, b);
+        stdout(&["points", "lattice", "-n", "4", "--scramble", "shift-tent"]);
+        stdout(&[
+            "points",
+            "faure",
+            "-n",
+            "4",
+            "-d",
+            "5",
+            "--scramble",
+            "owen",
+        ]);
+    }
+
+    #[test]
+    fn tvalue_faure_counts_in_base_b() {
+        let out = stdout(&["tvalue", "faure", "-m", "4", "-d", "5"]);
+        assert!(out.contains("base 5\n") && out.contains("t 0\n"), "{out}");
+        let out = stdout(&[
+            "tvalue",
+            "faure",
+            "-m",
+            "3",
+            "-d",
+            "3",
+            "--scramble",
+            "perm",
+            "--seed",
+            "9",
+        ]);
+        assert!(out.contains("base 3\n") && out.contains("t 0\n"), "{out}");
+        assert_usage_error(
+            &["tvalue", "faure", "-m", "3", "-d", "3", "--base", "9"],
+            "",
+            "prime",
+        );
+        assert_usage_error(&["tvalue", "faure", "-m", "30", "-d", "3"], "", "32-bit");
+        assert_usage_error(
+            &[
+                "tvalue",
+                "faure",
+                "-m",
+                "9",
+                "-d",
+                "7",
+                "--max-seconds",
+                "0.001",
+            ],
+            "",
+            "max-seconds",
+        );
+    }
+
+    #[test]
+    fn refusals_are_one_line() {
+        assert_usage_error(
+            &["points", "halton", "-n", "2", "--scramble", "shift"],
+            "",
+            "shift",
+        );
+        assert_usage_error(
+            &["points", "faure", "-n", "2", "--scramble", "xor"],
+            "",
+            "xor",
+        );
+        assert_usage_error(
+            &["points", "sobol", "-n", "2", "--korobov", "3"],
+            "",
+            "--korobov",
+        );
+        assert_usage_error(
+            &["points", "lattice", "-n", "2", "--korobov", "3"],
+            "",
+            "--total",
+        );
+        assert_usage_error(
+            &["points", "kronecker", "-n", "2", "--total", "3"],
+            "",
+            "--total",
+        );
+        assert_usage_error(
+            &["points", "faure", "-n", "2", "-d", "4", "--base", "3"],
+            "",
+            "prime",
+        );
+        assert_usage_error(&["points", "lattice", "-n", "2", "-d", "9126"], "", "9125");
+        assert_usage_error(
+            &["points", "lattice", "-n", "2", "--total", "0"],
+            "",
+            "point",
+        );
+    }
+}
