@@ -13,6 +13,7 @@
 //! | [`distance`] | minimum distance, optionally on the torus |
 //! | [`integration`] | integration error on test integrands with closed-form integrals (Genz's Gaussian peak and oscillatory, ball and half-space indicators) |
 //! | [`spectrum`] | Fourier power spectrum of 2D point sets (periodogram), radial average and anisotropy |
+//! | [`variance`] | integration variance predicted from a mean spectrum (torus-shifted samplers, disk and Gaussian integrands) and measured beside it |
 //! | [`pointfile`] | reading point sets from text (the `qmckit discrepancy` input format) |
 
 pub mod budget;
@@ -23,6 +24,7 @@ pub mod pointfile;
 pub mod spectrum;
 pub mod star;
 pub mod tvalue;
+pub mod variance;
 
 /// The Dobkin–Eppstein–Mitchell exact star discrepancy, now [`star::dem`].
 #[deprecated(note = "moved to `qmckit::analysis::star::dem`")]

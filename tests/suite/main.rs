@@ -22,4 +22,5 @@ mod star_discrepancy;
 mod star_lower;
 mod thiemard;
 mod tvalue;
+mod variance;
 mod warps;

@@ -12,6 +12,7 @@ mod points;
 mod progress;
 mod spectrum;
 mod tvalue;
+mod variance;
 mod warp;
 
 use std::io::Write;
@@ -44,6 +45,9 @@ enum Command {
     /// The t-value of the first 2^m points of a base-2 net or sequence.
     #[command(after_help = tvalue::AFTER_HELP)]
     Tvalue(tvalue::TvalueArgs),
+    /// Integration variance of a torus-shifted sampler: predicted from its spectrum, and measured.
+    #[command(after_help = variance::AFTER_HELP)]
+    Variance(variance::VarianceArgs),
 }
 
 /// A failure to report: one line and an exit code.
@@ -137,6 +141,7 @@ where
         Command::Convergence(args) => convergence::run(&args),
         Command::Spectrum(args) => spectrum::run(&args),
         Command::Tvalue(args) => tvalue::run(&args),
+        Command::Variance(args) => variance::run(&args),
     };
     match result {
         Ok(()) => 0,
