@@ -14,6 +14,7 @@ mod golden_scipy;
 mod golden_sobol;
 mod integrands;
 mod nets;
+mod pcf;
 mod peers;
 mod randomize;
 mod samplers;
