@@ -12,7 +12,9 @@
 //! | [`tvalue`] | t-values of base-2 digital nets (generator matrices) and of point sets (elementary intervals) |
 //! | [`distance`] | minimum distance, optionally on the torus |
 //! | [`integration`] | integration error on test integrands with closed-form integrals (Genz's Gaussian peak and oscillatory, ball and half-space indicators) |
-//! | [`spectrum`] | Fourier power spectrum of 2D point sets (periodogram), radial average and anisotropy |
+//! | [`spectrum`] | Fourier power spectrum of 2D point sets (periodogram by direct sums or a type-1 NUFFT), mean over sets, radial average and anisotropy |
+//! | [`variance`] | integration variance predicted from a mean spectrum (torus-shifted samplers, disk and Gaussian integrands) and measured beside it |
+//! | [`pcf`] | pair correlation function of 2D point sets (UTK's definition, optionally toroidal) and the structure factor from it |
 //! | [`pointfile`] | reading point sets from text (the `qmckit discrepancy` input format) |
 
 pub mod budget;
@@ -20,10 +22,12 @@ pub mod distance;
 pub mod integrate;
 pub mod integration;
 pub mod l2;
+pub mod pcf;
 pub mod pointfile;
 pub mod spectrum;
 pub mod star;
 pub mod tvalue;
+pub mod variance;
 
 /// The Dobkin–Eppstein–Mitchell exact star discrepancy, now [`star::dem`].
 #[deprecated(note = "moved to `qmckit::analysis::star::dem`")]

@@ -434,7 +434,7 @@ fn spectrum_refuses_bad_input_in_one_line() {
     assert_usage_error(&["spectrum"], "0.5 1.5\n", "outside [0, 1]");
     let many = "0.25 0.75\n".repeat(1192);
     assert_usage_error(
-        &["spectrum", "--k-max", "2048"],
+        &["spectrum", "--k-max", "2048", "--method", "direct"],
         &many,
         "1192 points are too many for --k-max 2048 (at most 1191 within --max-seconds 10)",
     );

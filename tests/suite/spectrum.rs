@@ -178,3 +178,162 @@ fn refuses_what_it_cannot_do() {
     assert_eq!((s.k_max(), s.points(), s.get(0, 0)), (0, 1, Some(1.0)));
     assert!(s.radial().is_empty());
 }
+
+/// `(kx, ky, P_numpy, P_finufft)`: one frequency of a golden file of `gen_nufft.py`.
+type GoldenPower = (i64, i64, f64, f64);
+
+/// The points and powers of a golden file of `gen_nufft.py`.
+fn nufft_golden(text: &str) -> (Vec<f64>, Vec<GoldenPower>) {
+    let (mut pts, mut want) = (Vec::new(), Vec::new());
+    for line in text.lines().filter(|l| !l.starts_with('#')) {
+        let f: Vec<&str> = line.split(' ').collect();
+        match f[0] {
+            "point" => pts.extend(f[1..3].iter().map(|v| v.parse::<u32>().unwrap())),
+            _ => want.push((
+                f[1].parse().unwrap(),
+                f[2].parse().unwrap(),
+                f[3].parse().unwrap(),
+                f[4].parse().unwrap(),
+            )),
+        }
+    }
+    (Points::from_u32(&pts), want)
+}
+
+#[test]
+fn nufft_holds_its_tolerance_against_numpy_and_finufft() {
+    use qmckit::analysis::budget::Budget;
+    use qmckit::analysis::spectrum::{Method, periodogram_2d};
+    for text in [
+        include_str!("../golden/nufft_white_n4096_k256.txt"),
+        include_str!("../golden/nufft_grid_n4096_k256.txt"),
+    ] {
+        let (pts, want) = nufft_golden(text);
+        assert_eq!((pts.len(), want.len()), (8192, 3601));
+        let p = Points::new(&pts, 2).unwrap();
+        // The oracles agree with each other to 1e-14 of N = max P.
+        let n = 4096.0;
+        for &(kx, ky, a, b) in &want {
+            assert!((a - b).abs() <= 1e-13 * n, "oracles differ at ({kx}, {ky})");
+        }
+        for tol in [1e-6, 1e-9, 1e-12] {
+            let s = periodogram_2d(p, 256, Method::Nufft, tol, &Budget::DEFAULT).unwrap();
+            let worst = want
+                .iter()
+                .map(|&(kx, ky, a, _)| (s.get(kx, ky).unwrap() - a).abs())
+                .fold(0.0, f64::max);
+            assert!(
+                worst <= tol * n,
+                "tolerance {tol}: error {:e} of N",
+                worst / n
+            );
+            // Not far below it either: the kernel is sized for the tolerance, not wasted.
+            if tol > 1e-12 {
+                assert!(worst >= tol * n * 1e-4, "tolerance {tol}: {:e}", worst / n);
+            }
+        }
+        // The automatic choice is the NUFFT here, the direct sum for small sets.
+        assert_eq!(
+            qmckit::analysis::spectrum::choose_method(4096, 256, 1e-9),
+            Method::Nufft
+        );
+        assert_eq!(
+            qmckit::analysis::spectrum::choose_method(50, 7, 1e-9),
+            Method::Direct
+        );
+    }
+}
+
+#[test]
+fn nufft_matches_the_direct_sum_everywhere_on_small_sets() {
+    use qmckit::analysis::budget::Budget;
+    use qmckit::analysis::spectrum::{Method, periodogram_2d};
+    // Edge coordinates 0 and 1 (the same point on the torus), K = 0 and tiny grids.
+    let pts = [0.0, 1.0, 1.0, 0.0, 0.5, 0.999_999, 0.123, 0.456, 0.75, 0.25];
+    let p = Points::new(&pts, 2).unwrap();
+    for k in [0, 1, 2, 5, 17] {
+        let exact = spectrum_2d(p, k).unwrap();
+        let fast = periodogram_2d(p, k, Method::Nufft, 1e-10, &Budget::DEFAULT).unwrap();
+        for ((kx, ky, a), (_, _, b)) in exact.iter().zip(fast.iter()) {
+            assert!(
+                (a - b).abs() <= 1e-10 * 5.0,
+                "K {k} ({kx}, {ky}): {a} vs {b}"
+            );
+        }
+    }
+    let bad = |tol: f64| periodogram_2d(p, 4, Method::Nufft, tol, &Budget::DEFAULT);
+    for tol in [0.0, 1e-15, 0.5, f64::NAN, -1.0] {
+        assert!(
+            matches!(bad(tol), Err(qmckit::Error::InvalidParameter { .. })),
+            "{tol}"
+        );
+    }
+    let tiny = Budget::seconds(1e-6).unwrap();
+    assert!(matches!(
+        periodogram_2d(p, 2048, Method::Nufft, 1e-9, &tiny),
+        Err(qmckit::Error::OverBudget { .. })
+    ));
+}
+
+/// `qmckit spectrum --average --method --tolerance`: the mean of the per-set values, the
+/// NUFFT within its tolerance of the direct sums, one-line refusals.
+#[cfg(feature = "cli")]
+#[test]
+fn cli_averages_sets_and_switches_methods() {
+    use common::cli::{assert_usage_error, run};
+    let sets = "0.1 0.2\n0.5 0.7\n0.9 0.35\n#\n0.3 0.3\n0.6 0.1\n0.2 0.8\n";
+    let text = |args: &[&str]| {
+        let out = run(args, sets);
+        assert_eq!(out.status.code(), Some(0), "{args:?}");
+        String::from_utf8(out.stdout).unwrap()
+    };
+    let values = |t: &str| -> Vec<f64> {
+        t.lines()
+            .filter(|l| !l.starts_with('#'))
+            .map(|l| l.rsplit(' ').next().unwrap().parse().unwrap())
+            .collect()
+    };
+    let per_set = text(&["spectrum", "--k-max", "3", "--method", "direct"]);
+    let blocks: Vec<&str> = per_set.split("# set 2\n").collect();
+    let (a, b) = (values(blocks[0]), values(blocks[1]));
+    let mean = values(&text(&["spectrum", "--k-max", "3", "--average"]));
+    assert_eq!((a.len(), mean.len()), (49, 49));
+    for ((x, y), m) in a.iter().zip(&b).zip(&mean) {
+        assert!(((x + y) / 2.0 - m).abs() < 1e-12);
+    }
+    let fast = values(&text(&[
+        "spectrum",
+        "--k-max",
+        "3",
+        "--average",
+        "--method",
+        "nufft",
+        "--tolerance",
+        "1e-6",
+    ]));
+    for (f, m) in fast.iter().zip(&mean) {
+        assert!((f - m).abs() <= 1e-6 * 3.0, "{f} vs {m}");
+    }
+    let radial = text(&["spectrum", "--k-max", "3", "--average", "--radial"]);
+    assert!(radial.starts_with("# mean of 2 sets\n# radius count mean anisotropy\n"));
+    assert_usage_error(&["spectrum", "--tolerance", "0"], sets, "--tolerance 0");
+    assert_usage_error(&["spectrum", "--method", "fft"], sets, "--method");
+    assert_usage_error(
+        &["spectrum", "--average"],
+        "0.1 0.2\n#\n0.3 0.4\n0.5 0.6\n",
+        "--average needs sets of equal size",
+    );
+    assert_usage_error(
+        &[
+            "spectrum",
+            "--k-max",
+            "2048",
+            "--method",
+            "nufft",
+            "--max-seconds",
+            "0.01",
+        ],
+        sets,
+        "raise --max-seconds",
+    );
+}

@@ -8,11 +8,13 @@ mod convergence;
 mod discrepancy;
 mod input;
 mod output;
+mod pcf;
 mod points;
 mod progress;
 mod spectrum;
 mod toolbox;
 mod tvalue;
+mod variance;
 mod warp;
 
 use std::io::Write;
@@ -42,9 +44,15 @@ enum Command {
     /// Fourier power spectrum (periodogram) of 2D point sets read from a file or stdin.
     #[command(after_help = spectrum::AFTER_HELP)]
     Spectrum(spectrum::SpectrumArgs),
+    /// Pair correlation function of 2D point sets read from a file or stdin.
+    #[command(after_help = pcf::AFTER_HELP)]
+    Pcf(pcf::PcfArgs),
     /// The t-value of the first 2^m points of a base-2 net or sequence.
     #[command(after_help = tvalue::AFTER_HELP)]
     Tvalue(tvalue::TvalueArgs),
+    /// Integration variance of a torus-shifted sampler: predicted from its spectrum, and measured.
+    #[command(after_help = variance::AFTER_HELP)]
+    Variance(variance::VarianceArgs),
 }
 
 /// A failure to report: one line and an exit code.
@@ -137,7 +145,9 @@ where
         Command::Discrepancy(args) => discrepancy::run(&args),
         Command::Convergence(args) => convergence::run(&args),
         Command::Spectrum(args) => spectrum::run(&args),
+        Command::Pcf(args) => pcf::run(&args),
         Command::Tvalue(args) => tvalue::run(&args),
+        Command::Variance(args) => variance::run(&args),
     };
     match result {
         Ok(()) => 0,

@@ -20,16 +20,25 @@
 //! for white noise, whose periodogram values are exponentially distributed, and below 1 for
 //! radially uniform spectra.
 //!
-//! Cost: `N (3K + 2)` sines and cosines, then `N (K + 1)(2K + 1)` complex multiply-adds (the
-//! half `ky >= 0`; the other half by symmetry), rows of frequencies split over threads.
-//! Each row sums the points in index order, so the result does not depend on the number of
-//! threads. Measured: 4096 points at `K = 128` (1.4e8 multiply-adds) in 0.13 s on two
-//! cores, so the budget [`SPECTRUM_WORK_BUDGET`] of 1e10 is about ten seconds there.
+//! Two ways to compute it, chosen by [`Method`]: the direct sums of [`direct`] (exact up to
+//! rounding, `N (K + 1)(2K + 1)` complex multiply-adds) and the type-1 non-uniform FFT of
+//! [`nufft`] (within a stated tolerance of `P(0) = N`, `N w^2 + O(n^2 log n)` with
+//! `n ~ 4K`); [`Method::Auto`] takes whichever is estimated faster. [`average`] averages
+//! periodograms over many sets, [`radial`] states the radial conventions.
+//!
+//! Measured (two cores): 4096 points at `K = 128` (1.4e8 multiply-adds) by direct sums in
+//! 0.13 s, so the budget [`SPECTRUM_WORK_BUDGET`] of 1e10 is about ten seconds there.
 
-use rayon::prelude::*;
+pub mod average;
+pub mod direct;
+pub mod nufft;
+pub mod radial;
+
+pub use average::SpectrumMean;
+pub use nufft::NUFFT_MIN_TOLERANCE;
 
 use super::Points;
-use super::budget::{Budget, Rate};
+use super::budget::{Budget, Cost, Rate};
 use crate::{Error, Result};
 
 /// Complex multiply-adds above which [`spectrum_2d`] refuses: [`SPECTRUM_RATE`] times the
@@ -43,10 +52,6 @@ pub const SPECTRUM_RATE: Rate = Rate::per_second(1e9);
 /// Largest `K` [`spectrum_2d`] accepts: the `(2K + 1)^2` powers, the half plane of complex
 /// sums and the phase tables then take about 300 MB.
 pub const SPECTRUM_MAX_K: usize = 2048;
-
-/// Points whose phase tables are computed at once (`2 * BLOCK * (2K + 1)` `f64`s each for
-/// the `x` and `y` factors).
-const BLOCK: usize = 256;
 
 /// The periodogram of a 2D point set on the frequencies `[-K, K]^2`, from [`spectrum_2d`].
 #[derive(Clone, Debug, PartialEq)]
@@ -99,66 +104,6 @@ impl Spectrum {
             .iter()
             .enumerate()
             .map(move |(at, &p)| ((at % side) as i64 - k, (at / side) as i64 - k, p))
-    }
-
-    /// The radial power spectrum and anisotropy for `r = 1 ..= K` (empty for `K = 0`).
-    ///
-    /// ```
-    /// use qmckit::analysis::{Points, spectrum::spectrum_2d};
-    /// // One point: P(k) = 1 everywhere but k = 0, so every annulus has mean 1 and
-    /// // anisotropy 0.
-    /// let s = spectrum_2d(Points::new(&[0.3, 0.7], 2)?, 3)?;
-    /// let radial = s.radial();
-    /// assert_eq!(radial.len(), 3);
-    /// assert_eq!(radial[0].count, 8); // (±1, 0), (0, ±1), (±1, ±1): |k| rounds to 1
-    /// assert!(radial.iter().all(|b| (b.mean - 1.0).abs() < 1e-12 && b.anisotropy < 1e-20));
-    /// # Ok::<(), qmckit::Error>(())
-    /// ```
-    pub fn radial(&self) -> Vec<RadialBin> {
-        let bins = self.k_max + 1;
-        let (mut count, mut sum) = (vec![0usize; bins], vec![0.0f64; bins]);
-        let ring = |kx: i64, ky: i64| ((kx * kx + ky * ky) as f64).sqrt().round() as usize;
-        for (kx, ky, p) in self.iter() {
-            let r = ring(kx, ky);
-            if r < bins && (kx, ky) != (0, 0) {
-                count[r] += 1;
-                sum[r] += p;
-            }
-        }
-        let mut squares = vec![0.0f64; bins];
-        for (kx, ky, p) in self.iter() {
-            let r = ring(kx, ky);
-            if r < bins && (kx, ky) != (0, 0) {
-                let dev = p - sum[r] / count[r] as f64;
-                squares[r] += dev * dev;
-            }
-        }
-        (1..bins)
-            .map(|r| {
-                let mean = sum[r] / count[r] as f64;
-                let variance = squares[r] / (count[r] - 1).max(1) as f64;
-                RadialBin {
-                    radius: r,
-                    count: count[r],
-                    mean,
-                    anisotropy: if mean > 0.0 {
-                        variance / (mean * mean)
-                    } else {
-                        0.0
-                    },
-                }
-            })
-            .collect()
-    }
-}
-
-/// `(cos, sin)` of `-2 pi k x` for the frequencies `ks`, the phase reduced to `[0, 1)` turns
-/// first (`k x` is rounded once, so the phase errs by about `|k|` ulps of 1).
-fn phases(x: f64, ks: core::ops::RangeInclusive<i64>, re: &mut [f64], im: &mut [f64]) {
-    for ((kk, r), i) in ks.zip(re.iter_mut()).zip(im.iter_mut()) {
-        let turns = (kk as f64 * x).rem_euclid(1.0);
-        let (s, c) = (core::f64::consts::TAU * turns).sin_cos();
-        (*r, *i) = (c, -s);
     }
 }
 
@@ -221,46 +166,127 @@ pub fn spectrum_2d_within(points: Points<'_>, k_max: usize, budget: &Budget) -> 
             max: (work / per_point) as u64,
         });
     }
-    // Rows ky = 0 ..= K of the sum S(k) = sum_j exp(-2 pi i k . x_j), as (re, im).
-    let mut sums = vec![(0.0f64, 0.0f64); (k_max + 1) * side];
-    // Per point of a block: x phases for kx = -K ..= K, y phases for ky = 0 ..= K.
-    let (k, half) = (k_max as i64, k_max + 1);
-    let (mut xr, mut xi) = (vec![0.0; BLOCK * side], vec![0.0; BLOCK * side]);
-    let (mut yr, mut yi) = (vec![0.0; BLOCK * half], vec![0.0; BLOCK * half]);
-    for block in points.as_slice().chunks(2 * BLOCK) {
-        let m = block.len() / 2;
-        for (j, p) in block.chunks_exact(2).enumerate() {
-            let at = j * side..(j + 1) * side;
-            phases(p[0], -k..=k, &mut xr[at.clone()], &mut xi[at]);
-            let at = j * half..(j + 1) * half;
-            phases(p[1], 0..=k, &mut yr[at.clone()], &mut yi[at]);
-        }
-        sums.par_chunks_mut(side).enumerate().for_each(|(ky, row)| {
-            for j in 0..m {
-                // exp(-2 pi i ky y_j): entry ky of point j's y phases.
-                let (wr, wi) = (yr[j * half + ky], yi[j * half + ky]);
-                let at = j * side..(j + 1) * side;
-                for ((acc, &ar), &ai) in row.iter_mut().zip(&xr[at.clone()]).zip(&xi[at]) {
-                    acc.0 += wr * ar - wi * ai;
-                    acc.1 += wr * ai + wi * ar;
-                }
+    Ok(direct::direct_sum(points, k_max))
+}
+
+/// How [`periodogram_2d`] computes the sums.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Method {
+    /// Whichever of the two is estimated faster ([`estimated_cost`]).
+    #[default]
+    Auto,
+    /// Direct sums: exact up to rounding.
+    Direct,
+    /// The non-uniform FFT: within the tolerance of `P(0)`.
+    Nufft,
+}
+
+/// Default tolerance of the NUFFT path: `|P - P_exact| <= 1e-9 N`.
+pub const DEFAULT_TOLERANCE: f64 = 1e-9;
+
+/// Spreading multiply-adds a second of the NUFFT (one thread; measured, conservative).
+pub const NUFFT_SPREAD_RATE: Rate = Rate::per_second(2e8);
+
+/// FFT work units (`length * log2(length)` per transform) a second (two threads; measured,
+/// conservative).
+pub const NUFFT_FFT_RATE: Rate = Rate::per_second(5e8);
+
+/// The estimated running time of one periodogram of `n` points on `[-K, K]^2` by `method`
+/// (for [`Method::Auto`]: the faster one), with the NUFFT at `tolerance`.
+///
+/// ```
+/// use qmckit::analysis::spectrum::{Method, estimated_cost};
+/// let direct = estimated_cost(4096, 256, Method::Direct, 1e-9).seconds();
+/// let nufft = estimated_cost(4096, 256, Method::Nufft, 1e-9).seconds();
+/// assert!(nufft * 10.0 < direct);
+/// assert_eq!(estimated_cost(4096, 256, Method::Auto, 1e-9).seconds(), nufft);
+/// ```
+pub fn estimated_cost(n: usize, k_max: usize, method: Method, tolerance: f64) -> Cost {
+    let side = 2.0 * k_max as f64 + 1.0;
+    let direct = Cost::steps(n as f64 * (k_max as f64 + 1.0) * side, SPECTRUM_RATE);
+    let plan = nufft::Plan::new(k_max, tolerance.clamp(NUFFT_MIN_TOLERANCE, 0.5));
+    let (w, g) = (plan.width as f64, plan.grid as f64);
+    let spread = Cost::steps(n as f64 * w * (w + 2.0), NUFFT_SPREAD_RATE);
+    let ffts = Cost::steps(
+        (g / 2.0 + k_max as f64 + 1.0) * g * g.log2() + g * g,
+        NUFFT_FFT_RATE,
+    );
+    let fast = spread.plus(ffts);
+    match method {
+        Method::Direct => direct,
+        Method::Nufft => fast,
+        Method::Auto => {
+            if fast.seconds() < direct.seconds()
+                && plan.bytes(k_max) <= crate::size::MAX_ALLOC_BYTES as f64
+            {
+                fast
+            } else {
+                direct
             }
+        }
+    }
+}
+
+/// The method [`Method::Auto`] resolves to for `n` points on `[-K, K]^2`.
+pub fn choose_method(n: usize, k_max: usize, tolerance: f64) -> Method {
+    let auto = estimated_cost(n, k_max, Method::Auto, tolerance);
+    if auto == estimated_cost(n, k_max, Method::Direct, tolerance) {
+        Method::Direct
+    } else {
+        Method::Nufft
+    }
+}
+
+/// The periodogram of a 2D point set on `[-K, K]^2` by `method`, within `budget`:
+/// exact up to rounding by direct sums, within `tolerance * N` of it by the NUFFT
+/// (`tolerance` in `[1e-14, 0.1]`; ignored by direct sums).
+///
+/// # Errors
+/// [`Error::Unsupported`] unless `points.dims() == 2`, or for `k_max` above
+/// [`SPECTRUM_MAX_K`]; [`Error::InvalidParameter`] for a tolerance outside
+/// `[1e-14, 0.1]` or NaN; [`Error::OverBudget`] when the estimate of [`estimated_cost`]
+/// exceeds `budget`; [`Error::TooLarge`] when the NUFFT grid does not fit in memory.
+///
+/// ```
+/// use qmckit::analysis::{Points, budget::Budget, spectrum::{Method, periodogram_2d}};
+/// let p = Points::new(&[0.1, 0.2, 0.5, 0.7, 0.9, 0.35], 2)?;
+/// let s = periodogram_2d(p, 4, Method::Nufft, 1e-12, &Budget::DEFAULT)?;
+/// // Checked against the direct sum: P(1, 1) = 2.8074200179768365.
+/// assert!((s.get(1, 1).unwrap() - 2.8074200179768365).abs() < 3e-12);
+/// # Ok::<(), qmckit::Error>(())
+/// ```
+pub fn periodogram_2d(
+    points: Points<'_>,
+    k_max: usize,
+    method: Method,
+    tolerance: f64,
+    budget: &Budget,
+) -> Result<Spectrum> {
+    if points.dims() != 2 {
+        return Err(Error::Unsupported {
+            what: "a spectrum of points that are not 2-dimensional",
         });
     }
-    let inv_n = 1.0 / n.max(1) as f64;
-    let mut power = vec![0.0f64; side * side];
-    for (ky, row) in sums.chunks_exact(side).enumerate() {
-        for (kx, &(re, im)) in row.iter().enumerate() {
-            let p = (re * re + im * im) * inv_n;
-            // (kx - K, ky) and its mirror (K - kx, -ky).
-            power[(k_max + ky) * side + kx] = p;
-            power[(k_max - ky) * side + (side - 1 - kx)] = p;
-        }
+    if k_max > SPECTRUM_MAX_K {
+        return Err(Error::Unsupported {
+            what: "a spectrum with k_max above 2048",
+        });
     }
-    power[k_max * side + k_max] = n as f64; // exact: every phase is 1
-    Ok(Spectrum {
-        k_max,
-        points: n,
-        power,
-    })
+    if !(NUFFT_MIN_TOLERANCE..=0.1).contains(&tolerance) {
+        return Err(Error::InvalidParameter {
+            what: "the spectrum tolerance must lie in [1e-14, 0.1]",
+        });
+    }
+    let method = match method {
+        Method::Auto => choose_method(points.len(), k_max, tolerance),
+        m => m,
+    };
+    budget.check(
+        "the spectrum",
+        estimated_cost(points.len(), k_max, method, tolerance),
+    )?;
+    match method {
+        Method::Nufft => nufft::nufft(points, k_max, tolerance),
+        _ => Ok(direct::direct_sum(points, k_max)),
+    }
 }

@@ -1,0 +1,208 @@
+//! `qmckit variance SAMPLER -n N [--integrand disk|gaussian] [--sets S]`: the integration
+//! variance of a randomly torus-shifted sampler, predicted from its mean periodogram and
+//! measured, one `key value` line each.
+
+use std::io::{BufWriter, Write};
+
+use clap::{Args, ValueEnum};
+use qmckit::analysis::Points;
+use qmckit::analysis::spectrum::{
+    DEFAULT_TOLERANCE, SPECTRUM_MAX_K, SpectrumMean, choose_method, estimated_cost, periodogram_2d,
+};
+use qmckit::analysis::variance::{Measured, TorusIntegrand, predicted_variance, shifted_error};
+use qmckit::randomize::{ExactOwen, Scrambled};
+use qmckit::{Halton, Independent, Jitter, Sampler, Sobol, Stratified};
+
+use super::Failure;
+use super::budget::BudgetArgs;
+use super::progress::with_spinner;
+
+/// Text shown after the options of `qmckit variance --help`.
+pub const AFTER_HELP: &str = "\
+Each of the S sets of N 2D points is shifted on the unit torus by its own uniform random
+offset, and the integrand (the disk of radius R, or the periodized Gaussian of standard
+deviation sigma, centred at (1/2, 1/2)) is averaged over it. Output, one 'key value' line
+each:
+  sampler, n, integrand, parameter (R or sigma), sets, k_max
+  predicted   (1/N) sum_{k != 0} |c_k|^2 E P(k), E P the mean periodogram of the S sets
+              on [-K, K]^2, the rest of Parseval's sum at E P = 1 (Pilleboue et al. 2015)
+  tail        the part of 'predicted' from outside [-K, K]^2
+  measured    mean of the S squared errors (the exact integral is known)
+  std_error   its standard error
+  ratio       measured / predicted
+  white       the white-noise variance (||f||^2 - c_0^2) / N
+Deterministic samplers (halton, sobol) have one set, shifted S times. Default K is
+2 ceil(sqrt(N)) (at least 16). Values with 17 significant digits. Refused when the S
+periodograms are estimated to exceed --max-seconds. Errors: one line, exit code 2.";
+
+/// The samplers `qmckit variance` knows.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum VarianceSampler {
+    /// Independent uniform points (white noise).
+    Independent,
+    /// Jittered sampling: one uniform point in each cell of the sqrt(N) x sqrt(N) grid.
+    Jittered,
+    /// Halton points, bases 2 and 3.
+    Halton,
+    /// Sobol' points, dimensions 0 and 1.
+    Sobol,
+    /// Owen-scrambled (nested uniform) Sobol' points.
+    OwenSobol,
+    // Poisson disk and blue-noise sets go here, with their point generation in `points_of`.
+}
+
+/// `--integrand`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum IntegrandArg {
+    /// Indicator of the disk of radius --radius.
+    Disk,
+    /// Periodized Gaussian of standard deviation --sigma.
+    Gaussian,
+}
+
+/// Arguments of `qmckit variance`.
+#[derive(Args, Debug)]
+pub struct VarianceArgs {
+    /// Which sampler.
+    #[arg(value_enum)]
+    sampler: VarianceSampler,
+    /// Points per set.
+    #[arg(short = 'n', value_name = "N")]
+    n: u32,
+    /// The integrand.
+    #[arg(long, value_enum, default_value_t = IntegrandArg::Disk)]
+    integrand: IntegrandArg,
+    /// Disk radius R, in (0, 0.5].
+    #[arg(long, default_value_t = 0.25, value_name = "R")]
+    radius: f64,
+    /// Gaussian standard deviation, in (0, 0.15].
+    #[arg(long, default_value_t = 0.1, value_name = "SIGMA")]
+    sigma: f64,
+    /// Number of randomized sets.
+    #[arg(long, default_value_t = 1000, value_name = "S")]
+    sets: u32,
+    /// Largest frequency of the mean periodogram [default: 2 ceil(sqrt(N)), at least 16].
+    #[arg(long, value_name = "K")]
+    k_max: Option<usize>,
+    /// Seed of the randomized samplers and of the shifts.
+    #[arg(long, default_value_t = 0)]
+    seed: u64,
+    #[command(flatten)]
+    budget: BudgetArgs,
+}
+
+/// Set `s` of the sampler, as 2D points in `[0, 1)`.
+fn points_of(which: VarianceSampler, n: u32, seed: u64, s: u32) -> qmckit::Result<Vec<f64>> {
+    let key = qmckit::hash::hash3(seed, s as u64, 0x5e7);
+    let sampler: Box<dyn Sampler> = match which {
+        VarianceSampler::Independent => Box::new(Independent::new(2, key)?),
+        VarianceSampler::Jittered => {
+            let side = (n as f64).sqrt().round() as u32;
+            Box::new(Stratified::uniform(side, 2, Jitter::Random(key))?)
+        }
+        VarianceSampler::Halton => Box::new(Halton::new(2)?),
+        VarianceSampler::Sobol => Box::new(Sobol::new(2)?),
+        VarianceSampler::OwenSobol => Box::new(Scrambled::new(Sobol::new(2)?, ExactOwen::new(key))),
+    };
+    let mut raw = vec![0u32; 2 * n as usize];
+    sampler.fill(0, &mut raw)?;
+    Ok(Points::from_u32(&raw))
+}
+
+/// Runs `qmckit variance`.
+pub fn run(args: &VarianceArgs) -> Result<(), Failure> {
+    let budget = args.budget.budget()?;
+    let n = args.n;
+    if n == 0 || args.sets == 0 {
+        return Err(Failure::usage("-n and --sets must be at least 1"));
+    }
+    if n > 1 << 24 {
+        return Err(Failure::usage(format!("-n {n}: at most 16777216")));
+    }
+    if args.sampler == VarianceSampler::Jittered {
+        let side = (n as f64).sqrt().round() as u32;
+        if side * side != n {
+            return Err(Failure::usage(format!(
+                "-n {n}: jittered needs a square number of points"
+            )));
+        }
+    }
+    let f = match args.integrand {
+        IntegrandArg::Disk => TorusIntegrand::disk(args.radius),
+        IntegrandArg::Gaussian => TorusIntegrand::gaussian(args.sigma),
+    }
+    .map_err(|e| Failure::usage(e.to_string()))?;
+    let k_max = args
+        .k_max
+        .unwrap_or(2 * (n as f64).sqrt().ceil() as usize)
+        .max(16);
+    if k_max > SPECTRUM_MAX_K {
+        return Err(Failure::usage(format!(
+            "--k-max {k_max}: at most {SPECTRUM_MAX_K}"
+        )));
+    }
+    let random = !matches!(
+        args.sampler,
+        VarianceSampler::Halton | VarianceSampler::Sobol
+    );
+    let spectra = if random { args.sets } else { 1 };
+    let method = choose_method(n as usize, k_max, DEFAULT_TOLERANCE);
+    let one = estimated_cost(n as usize, k_max, method, DEFAULT_TOLERANCE).seconds();
+    let evals = args.sets as f64 * n as f64 * 5e-9;
+    let total = one * spectra as f64 + evals;
+    if total > budget.max_seconds() {
+        return Err(Failure::usage(format!(
+            "{spectra} periodograms and {} evaluations: estimated {total:.1} s, more than \
+             --max-seconds {} (raise it to run them)",
+            args.sets as u64 * n as u64,
+            args.budget.max_seconds
+        )));
+    }
+    let (mean, errors) = with_spinner("variance", || -> qmckit::Result<_> {
+        let mut mean = SpectrumMean::new();
+        let mut errors = Vec::with_capacity(args.sets as usize);
+        let mut pts = Vec::new();
+        for s in 0..args.sets {
+            if random || s == 0 {
+                pts = points_of(args.sampler, n, args.seed, s)?;
+                let p = Points::new(&pts, 2)?;
+                mean.add(&periodogram_2d(
+                    p,
+                    k_max,
+                    method,
+                    DEFAULT_TOLERANCE,
+                    &qmckit::analysis::budget::Budget::UNLIMITED,
+                )?)?;
+            }
+            let shift = [0, 1]
+                .map(|d| qmckit::bits::to_f64(qmckit::hash::uniform(args.seed ^ 0x5417, s, d)));
+            errors.push(shifted_error(Points::new(&pts, 2)?, &f, shift)?);
+        }
+        Ok((mean.mean()?, errors))
+    })?;
+    let predicted = predicted_variance(&mean, &f);
+    let measured = Measured::from_errors(&errors)?;
+    let mut out = BufWriter::new(std::io::stdout().lock());
+    let (name, parameter) = match f {
+        TorusIntegrand::Disk { radius } => ("disk", radius),
+        TorusIntegrand::Gaussian { sigma } => ("gaussian", sigma),
+    };
+    let sampler = args
+        .sampler
+        .to_possible_value()
+        .map(|v| v.get_name().to_owned());
+    writeln!(out, "sampler {}", sampler.unwrap_or_default())?;
+    writeln!(out, "n {n}")?;
+    writeln!(out, "integrand {name}")?;
+    writeln!(out, "parameter {parameter}")?;
+    writeln!(out, "sets {}", args.sets)?;
+    writeln!(out, "k_max {k_max}")?;
+    writeln!(out, "predicted {:.16e}", predicted.variance)?;
+    writeln!(out, "tail {:.16e}", predicted.tail)?;
+    writeln!(out, "measured {:.16e}", measured.variance)?;
+    writeln!(out, "std_error {:.16e}", measured.std_error)?;
+    writeln!(out, "ratio {:.16e}", measured.variance / predicted.variance)?;
+    writeln!(out, "white {:.16e}", f.white_noise_variance() / n as f64)?;
+    out.flush()?;
+    Ok(())
+}
