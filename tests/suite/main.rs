@@ -4,6 +4,7 @@
 
 mod common;
 
+mod blue_noise;
 mod cli;
 mod cli_analysis;
 mod cli_hostile;

@@ -3,10 +3,12 @@
 //! Errors go to stderr as one line, `qmckit: error: ...`, with exit code 2 for bad usage or
 //! input and 1 for failures of the environment (e.g. an unwritable output).
 
+mod blue_noise;
 mod budget;
 mod convergence;
 mod discrepancy;
 mod input;
+mod mask;
 mod output;
 mod points;
 mod progress;
@@ -44,6 +46,9 @@ enum Command {
     /// The t-value of the first 2^m points of a base-2 net or sequence.
     #[command(after_help = tvalue::AFTER_HELP)]
     Tvalue(tvalue::TvalueArgs),
+    /// Dither masks: 'mask void-and-cluster --size WxH', a toroidal rank image.
+    #[command(subcommand)]
+    Mask(mask::MaskCommand),
 }
 
 /// A failure to report: one line and an exit code.
@@ -137,6 +142,7 @@ where
         Command::Convergence(args) => convergence::run(&args),
         Command::Spectrum(args) => spectrum::run(&args),
         Command::Tvalue(args) => tvalue::run(&args),
+        Command::Mask(args) => mask::run(&args),
     };
     match result {
         Ok(()) => 0,
