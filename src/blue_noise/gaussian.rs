@@ -185,10 +185,10 @@ impl GaussianBlueNoise {
                                 let idx = ((cy + oy) % g) * g + (cx + ox) % g;
                                 let mut k = head.get(idx).copied().unwrap_or(u32::MAX);
                                 while k != u32::MAX {
-                                    if k as usize != i {
-                                        if let Some(q) = old.get(k as usize) {
-                                            term(q);
-                                        }
+                                    if k as usize != i
+                                        && let Some(q) = old.get(k as usize)
+                                    {
+                                        term(q);
                                     }
                                     k = next.get(k as usize).copied().unwrap_or(u32::MAX);
                                 }

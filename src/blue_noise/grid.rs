@@ -178,10 +178,11 @@ impl<const D: usize> Grid<D> {
             // No offset leaves the grid: plain index differences.
             let base = self.index(c) as isize;
             for &d in &self.deltas {
-                if let Some(p) = self.cells.get((base + d) as usize) {
-                    if filled(p) && f(p) {
-                        return true;
-                    }
+                if let Some(p) = self.cells.get((base + d) as usize)
+                    && filled(p)
+                    && f(p)
+                {
+                    return true;
                 }
             }
             return false;
@@ -200,10 +201,11 @@ impl<const D: usize> Grid<D> {
                 };
                 idx = idx * self.g + ck as usize;
             }
-            if let Some(p) = self.cells.get(idx) {
-                if filled(p) && f(p) {
-                    return true;
-                }
+            if let Some(p) = self.cells.get(idx)
+                && filled(p)
+                && f(p)
+            {
+                return true;
             }
         }
         false

@@ -31,7 +31,7 @@ impl PointSet {
         if coords.is_empty() {
             return Err(Error::ZeroPoints);
         }
-        if coords.len() % dims != 0 {
+        if !coords.len().is_multiple_of(dims) {
             return Err(Error::RaggedPoints {
                 len: coords.len(),
                 dims,

@@ -196,7 +196,7 @@ impl PoissonDisk {
             Target::Points(n) => 0.8 * self.radius_for(n),
         };
         let b = self.bound(r);
-        if !(b <= POISSON_MAX_POINTS as f64) {
+        if b.is_nan() || b > POISSON_MAX_POINTS as f64 {
             return Err(Error::TooLarge {
                 what: "Poisson-disk points (packing bound)",
                 requested: b.min(u64::MAX as f64) as u64,
@@ -292,7 +292,7 @@ impl PoissonDisk {
 
     fn run_d<const D: usize>(&self, r: f64) -> Result<(PointSet, f64)> {
         let bound = self.bound(r);
-        if !(bound <= POISSON_MAX_POINTS as f64) {
+        if bound.is_nan() || bound > POISSON_MAX_POINTS as f64 {
             return Err(Error::TooLarge {
                 what: "Poisson-disk points (packing bound)",
                 requested: bound.min(u64::MAX as f64) as u64,

@@ -101,10 +101,10 @@ impl Tournament {
     #[inline]
     pub(crate) fn add(&mut self, i: usize, dv: i64) {
         let s = Self::sentinel(self.best);
-        if let Some(slot) = self.vals.get_mut(i) {
-            if *slot != s {
-                *slot += dv;
-            }
+        if let Some(slot) = self.vals.get_mut(i)
+            && *slot != s
+        {
+            *slot += dv;
         }
     }
 

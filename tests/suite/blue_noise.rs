@@ -374,3 +374,163 @@ fn gaussian_blue_noise_has_near_zero_low_frequency_power() {
         "Gaussian blue noise low-frequency power {power}"
     );
 }
+
+#[cfg(feature = "cli")]
+mod cli {
+    use super::{dist2, min_distance};
+    use crate::common::cli::{assert_usage_error, run};
+    use qmckit::blue_noise::{BestCandidate, PoissonDisk};
+
+    fn parse(stdout: Vec<u8>) -> Vec<u32> {
+        String::from_utf8(stdout)
+            .unwrap()
+            .split_whitespace()
+            .map(|v| v.parse().unwrap())
+            .collect()
+    }
+
+    #[test]
+    fn points_poisson_writes_the_library_set() {
+        let out = run(
+            &[
+                "points", "poisson", "--radius", "0.05", "--torus", "--seed", "4",
+            ],
+            "",
+        );
+        assert_eq!(out.status.code(), Some(0));
+        let got = parse(out.stdout);
+        let lib = PoissonDisk::new(2, 0.05)
+            .unwrap()
+            .torus(true)
+            .seed(4)
+            .generate()
+            .unwrap();
+        assert_eq!(got, lib.coords());
+        let x = qmckit::analysis::Points::from_u32(&got);
+        assert!(min_distance(&x, 2, true) >= 0.05);
+        assert!(dist2(&x[0..2], &x[2..4], true) >= 0.0025);
+        let out = run(
+            &[
+                "points", "poisson", "-n", "600", "-d", "3", "--format", "csv",
+            ],
+            "",
+        );
+        assert_eq!(out.status.code(), Some(0));
+        let lines = String::from_utf8(out.stdout).unwrap().lines().count() as f64;
+        assert!((lines / 600.0 - 1.0).abs() < 0.03, "{lines}");
+        let out = run(
+            &[
+                "points",
+                "best-candidate",
+                "-n",
+                "50",
+                "--candidates",
+                "3",
+                "--seed",
+                "2",
+            ],
+            "",
+        );
+        let lib = BestCandidate::new(50)
+            .unwrap()
+            .candidates(3)
+            .unwrap()
+            .seed(2)
+            .generate()
+            .unwrap();
+        assert_eq!(parse(out.stdout), lib.coords());
+        let out = run(
+            &[
+                "points",
+                "gaussian-blue-noise",
+                "-n",
+                "40",
+                "--iterations",
+                "5",
+            ],
+            "",
+        );
+        assert_eq!(out.status.code(), Some(0));
+        assert_eq!(parse(out.stdout).len(), 80);
+    }
+
+    #[test]
+    fn points_blue_noise_usage_errors() {
+        for (args, needle) in [
+            (
+                &["points", "poisson", "--radius", "1e-6"][..],
+                "packing bound",
+            ),
+            (&["points", "poisson", "--radius", "0"][..], "radius"),
+            (&["points", "poisson", "--radius", "nan"][..], "radius"),
+            (&["points", "poisson"][..], "--radius R or -n N"),
+            (
+                &["points", "poisson", "--radius", "0.1", "-n", "10"][..],
+                "not both",
+            ),
+            (&["points", "poisson", "-n", "0"][..], "at least 1"),
+            (
+                &["points", "poisson", "-n", "100", "-d", "9"][..],
+                "dimension",
+            ),
+            (
+                &["points", "poisson", "-n", "100", "--start", "3"][..],
+                "--start",
+            ),
+            (
+                &["points", "poisson", "-n", "100", "--scramble", "rotate"][..],
+                "--scramble",
+            ),
+            (
+                &["points", "poisson", "-n", "100", "--iterations", "3"][..],
+                "--iterations",
+            ),
+            (
+                &[
+                    "points",
+                    "poisson",
+                    "--radius",
+                    "0.0005",
+                    "--max-seconds",
+                    "0.001",
+                ][..],
+                "time budget",
+            ),
+            (&["points", "best-candidate"][..], "-n N"),
+            (
+                &["points", "best-candidate", "-n", "10", "-d", "3"][..],
+                "two-dimensional",
+            ),
+            (
+                &["points", "best-candidate", "-n", "10", "--torus"][..],
+                "--torus",
+            ),
+            (
+                &["points", "best-candidate", "-n", "200000"][..],
+                "time budget",
+            ),
+            (
+                &["points", "gaussian-blue-noise", "-n", "1"][..],
+                "two points",
+            ),
+            (
+                &[
+                    "points",
+                    "gaussian-blue-noise",
+                    "-n",
+                    "10",
+                    "--candidates",
+                    "2",
+                ][..],
+                "--candidates",
+            ),
+            (
+                &["points", "sobol", "-n", "4", "--radius", "0.1"][..],
+                "--radius",
+            ),
+            (&["points", "sobol"][..], "-n N"),
+        ] {
+            assert_usage_error(args, "", needle);
+        }
+    }
+}

@@ -14,6 +14,7 @@ mod golden_discrepancy;
 mod golden_scipy;
 mod golden_sobol;
 mod integrands;
+mod mask;
 mod nets;
 mod peers;
 mod randomize;
