@@ -27,7 +27,7 @@ use crate::{Error, Result};
 /// The most points [`BestCandidate`] makes (its cost is quadratic): 2^20.
 pub const BEST_CANDIDATE_MAX_POINTS: u64 = 1 << 20;
 
-/// Candidate tests a second (one core, release; measured ~5e7, taken lower).
+/// Candidate tests a second (one core, release; a conservative figure).
 const TESTS: Rate = Rate::per_second(2e7);
 
 /// Mitchell's best-candidate construction (builder).

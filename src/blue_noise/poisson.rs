@@ -38,8 +38,8 @@ pub const POISSON_MAX_DIMS: usize = 8;
 /// The most points a set may be asked to hold (by its packing bound): 2^28.
 pub const POISSON_MAX_POINTS: u64 = 1 << 28;
 
-/// Neighbour-cell visits a second of Bridson's loop (2D, one core, release: measured
-/// 1.5e9; taken lower to err on the long side).
+/// Neighbour-cell visits a second of Bridson's loop (2D, one core, release; a conservative
+/// figure, so estimates err on the long side).
 const VISITS: Rate = Rate::per_second(5e8);
 
 /// What the size of the set is given by.
@@ -167,8 +167,8 @@ impl PoissonDisk {
     /// higher dimensions a first guess that the pilot corrects).
     fn packing(&self) -> f64 {
         let phi2 = if self.maximal { 0.545 } else { 0.478 };
-        // Random packings thin out with the dimension; halving per two dimensions is the
-        // measured trend of Bridson's sets to d = 6 within 20%.
+        // Random packings thin out with the dimension: a first guess (0.7 per dimension)
+        // that the pilot set corrects.
         phi2 * 0.7f64.powi(self.dims as i32 - 2)
     }
 

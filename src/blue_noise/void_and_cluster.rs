@@ -21,7 +21,7 @@
 //! The result is a permutation of `0..W H`; thresholding at `t` (pixels of rank `< t W H`)
 //! gives the pattern of `round(t W H)` ones. Cost: each flip adds the kernel (`(2R+1)^2 =
 //! 169` weights) and updates two tournament trees (`O(R (R + log N))`); about `1.3 N`
-//! flips, so `O(N R (R + log N))` in all — 256×256 in about a fifth of a second.
+//! flips, so `O(N R (R + log N))` in all — 256×256 in under two seconds on one core.
 //!
 //! ```
 //! use qmckit::blue_noise::VoidAndCluster;
@@ -43,7 +43,7 @@ pub const MASK_MAX_SIDE: usize = 4096;
 /// The most pixels of a mask: 2^22.
 pub const MASK_MAX_PIXELS: usize = 1 << 22;
 
-/// Kernel-weight and tree-node updates a second (one core, release; measured ~1e9).
+/// Kernel-weight and tree-node updates a second (one core, release; a conservative figure).
 const UPDATES: Rate = Rate::per_second(4e8);
 
 /// A void-and-cluster construction (builder).
