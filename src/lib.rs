@@ -61,6 +61,7 @@
 #[cfg(feature = "analysis")]
 pub mod analysis;
 pub mod bits;
+pub mod blue_noise;
 #[cfg(feature = "heapless")]
 pub mod buffer;
 #[cfg(feature = "std")]

@@ -4,6 +4,7 @@
 
 mod common;
 
+mod blue_noise;
 mod cli;
 mod cli_analysis;
 mod cli_hostile;
@@ -16,6 +17,7 @@ mod golden_sobol;
 mod integrands;
 mod integrate;
 mod lattice;
+mod mask;
 mod nets;
 mod pcf;
 mod peers;

@@ -3,10 +3,12 @@
 //! Errors go to stderr as one line, `qmckit: error: ...`, with exit code 2 for bad usage or
 //! input and 1 for failures of the environment (e.g. an unwritable output).
 
+mod blue_noise;
 mod budget;
 mod convergence;
 mod discrepancy;
 mod input;
+mod mask;
 mod output;
 mod pcf;
 mod points;
@@ -53,6 +55,9 @@ enum Command {
     /// Integration variance of a torus-shifted sampler: predicted from its spectrum, and measured.
     #[command(after_help = variance::AFTER_HELP)]
     Variance(variance::VarianceArgs),
+    /// Dither masks: 'mask void-and-cluster --size WxH', a toroidal rank image.
+    #[command(subcommand)]
+    Mask(mask::MaskCommand),
 }
 
 /// A failure to report: one line and an exit code.
@@ -148,6 +153,7 @@ where
         Command::Pcf(args) => pcf::run(&args),
         Command::Tvalue(args) => tvalue::run(&args),
         Command::Variance(args) => variance::run(&args),
+        Command::Mask(args) => mask::run(&args),
     };
     match result {
         Ok(()) => 0,

@@ -15,6 +15,7 @@ use qmckit::{
 };
 
 use super::Failure;
+use super::blue_noise::{self, BlueNoiseArgs};
 use super::output::{Format, PointWriter};
 use super::warp::{Warp, WarpArgs};
 
@@ -38,7 +39,16 @@ Output is written in batches of about 1 MiB, so memory stays bounded for any N.
 
 Formats: u32 (default), one point a line, the integers x * 2^32 separated by spaces;
 csv, decimals that parse back to the exact value; npy, float64 of shape (N, D).
-'qmckit discrepancy' and 'qmckit spectrum' read all three back with default options.";
+'qmckit discrepancy' and 'qmckit spectrum' read all three back with default options.
+
+Blue-noise sets (built whole; -n is the set size; --start, --total, --scramble, --warp do
+not apply):
+  poisson              Bridson Poisson disk: --radius R or -n N (about N points), -d D
+                       (1 to 8), --torus, --maximal (no further disk fits), --candidates K
+  best-candidate       Mitchell best candidate on the torus, 2D: -n N, --candidates M
+  gaussian-blue-noise  Ahmed-Ren-Wonka Gaussian blue noise on the torus, 2D: -n N,
+                       --iterations I
+  --max-seconds S refuses, before starting, a set whose estimated time exceeds S.";
 
 /// The constructions `points` knows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -65,6 +75,12 @@ pub enum SamplerName {
     Kronecker,
     /// Faure (0,s)-sequence in a prime base b >= d (by default the smallest).
     Faure,
+    /// Poisson disk (Bridson): --radius R or -n N (about N), -d D, --torus, --maximal.
+    Poisson,
+    /// Mitchell's best candidate on the torus, 2D (--candidates M).
+    BestCandidate,
+    /// Gaussian blue noise (Ahmed, Ren, Wonka 2022) on the torus, 2D (--iterations I).
+    GaussianBlueNoise,
 }
 
 impl SamplerName {
@@ -117,9 +133,9 @@ pub enum OrderName {
 pub struct PointsArgs {
     /// Which construction.
     sampler: SamplerName,
-    /// Number of points to write.
+    /// Number of points to write (poisson: about N points, or --radius).
     #[arg(short = 'n', value_name = "N")]
-    n: u64,
+    n: Option<u64>,
     /// Dimensions per point [default: 1 for vdc, 2 otherwise].
     #[arg(short = 'd', value_name = "D")]
     d: Option<usize>,
@@ -161,6 +177,8 @@ pub struct PointsArgs {
     korobov: Option<u64>,
     #[command(flatten)]
     warp: WarpArgs,
+    #[command(flatten)]
+    blue: BlueNoiseArgs,
 }
 
 /// Bytes of coordinates generated per batch (bounded memory for any n and d).
@@ -225,7 +243,7 @@ impl Spec {
 impl PointsArgs {
     /// The sampler part of the arguments, after refusing every option that does not apply
     /// to the chosen sampler and randomization.
-    fn spec(&self) -> Result<Spec, Failure> {
+    fn spec(&self, n: u64) -> Result<Spec, Failure> {
         use SamplerName as S;
         let sampler = self.sampler;
         let name = value_name(&sampler);
@@ -235,6 +253,7 @@ impl PointsArgs {
             )))
         };
         let randomized = matches!(sampler, S::Independent | S::Latin)
+            || sampler.blue_noise().is_some()
             || (sampler == S::Stratified && !self.centered)
             || self.scramble != ScrambleName::None;
         if self.seed.is_some() && !randomized {
@@ -273,7 +292,7 @@ impl PointsArgs {
         }
         Ok(Spec {
             sampler,
-            n: self.n,
+            n,
             d: self.d,
             total: self.total,
             seed: self.seed.unwrap_or(0),
@@ -289,6 +308,16 @@ impl PointsArgs {
 }
 
 impl SamplerName {
+    /// The blue-noise set this names, if any.
+    pub fn blue_noise(self) -> Option<blue_noise::Kind> {
+        match self {
+            SamplerName::Poisson => Some(blue_noise::Kind::Poisson),
+            SamplerName::BestCandidate => Some(blue_noise::Kind::BestCandidate),
+            SamplerName::GaussianBlueNoise => Some(blue_noise::Kind::Gaussian),
+            _ => None,
+        }
+    }
+
     /// `true` for the finite point sets (sized by `--total`).
     pub fn is_finite_set(self) -> bool {
         matches!(
@@ -412,6 +441,16 @@ fn construct(args: &Spec, digits: DigitScramble) -> Result<Built, Failure> {
         // Van der Corput in base 2 is Sobol's dimension 0, bit for bit.
         return Ok(Built::Digital(Box::new(Sobol::new(1)?)));
     }
+    if let Some(kind) = args.sampler.blue_noise() {
+        let set = blue_noise::build(
+            kind,
+            &BlueNoiseArgs::default(),
+            Some(total),
+            args.d,
+            args.seed,
+        )?;
+        return Ok(Built::Other(Box::new(set)));
+    }
     Ok(Built::Other(match args.sampler {
         SamplerName::Sobol => {
             let order = match args.order {
@@ -419,6 +458,11 @@ fn construct(args: &Spec, digits: DigitScramble) -> Result<Built, Failure> {
                 OrderName::Gray => Order::Gray,
             };
             return Ok(Built::Digital(Box::new(Sobol::with_order(d, order)?)));
+        }
+        SamplerName::Poisson | SamplerName::BestCandidate | SamplerName::GaussianBlueNoise => {
+            return Err(Failure::usage(
+                "a blue-noise set is built by 'qmckit points'",
+            ));
         }
         SamplerName::Independent => Box::new(Independent::new(d, args.seed)?),
         SamplerName::Halton => Box::new(Halton::with_scramble(d, digits)?),
@@ -508,15 +552,27 @@ fn parse_strata(text: &str) -> Result<Vec<u32>, Failure> {
 
 /// Runs `qmckit points`.
 pub fn run(args: &PointsArgs) -> Result<(), Failure> {
-    if args.n == 0 {
+    if let Some(kind) = args.sampler.blue_noise() {
+        return args.run_blue_noise(kind);
+    }
+    if let Some(option) = args.blue.first_given() {
+        return Err(Failure::usage(format!(
+            "{option} does not apply to {} (only to poisson, best-candidate, gaussian-blue-noise)",
+            value_name(&args.sampler)
+        )));
+    }
+    let n = args
+        .n
+        .ok_or_else(|| Failure::usage("-n N (the number of points) is needed"))?;
+    if n == 0 {
         return Err(Failure::usage("-n must be at least 1"));
     }
-    let spec = args.spec()?;
+    let spec = args.spec(n)?;
     args.warp.check_options()?;
     let sampler = build(&spec)?;
     let dims = sampler.dims();
     let start = args.start.unwrap_or(0);
-    let end = qmckit::size::end(start, args.n, sampler.len()).map_err(|e| match e {
+    let end = qmckit::size::end(start, n, sampler.len()).map_err(|e| match e {
         qmckit::Error::IndexOutOfRange { index, len } => Failure::usage(format!(
             "points {start}..{index} are past the end: this {} has {len} points{}",
             if args.sampler.is_finite_set() {
@@ -553,11 +609,11 @@ pub fn run(args: &PointsArgs) -> Result<(), Failure> {
         )));
     }
     let batch = qmckit::size::rows_within(BATCH_BYTES, dims.max(width), 8);
-    let rows_first = batch.min(usize::try_from(args.n).unwrap_or(usize::MAX));
+    let rows_first = batch.min(usize::try_from(n).unwrap_or(usize::MAX));
     let mut buf: Vec<u32> =
         qmckit::size::vec_zeroed(qmckit::size::coordinates(rows_first as u64, dims)?)?;
     let stdout = std::io::stdout().lock();
-    let mut writer = PointWriter::new(BufWriter::new(stdout), args.format, args.n, width)?;
+    let mut writer = PointWriter::new(BufWriter::new(stdout), args.format, n, width)?;
     let mut warped = Vec::new();
     let mut u = vec![0f32; dims];
     let mut index = start;
@@ -582,6 +638,36 @@ pub fn run(args: &PointsArgs) -> Result<(), Failure> {
         index += rows as u64;
     }
     writer.finish()
+}
+
+impl PointsArgs {
+    /// `points poisson|best-candidate|gaussian-blue-noise`: the options that do not apply
+    /// are refused, the set is built whole and written.
+    fn run_blue_noise(&self, kind: blue_noise::Kind) -> Result<(), Failure> {
+        let name = value_name(&self.sampler);
+        for (option, given) in [
+            ("--start", self.start.is_some()),
+            ("--total", self.total.is_some()),
+            ("--order", self.order.is_some()),
+            ("--base", self.base.is_some()),
+            ("--strata", self.strata.is_some()),
+            ("--centered", self.centered),
+            ("--scramble", self.scramble != ScrambleName::None),
+            ("--warp", self.warp.warp.is_some()),
+        ] {
+            if given {
+                return Err(Failure::usage(format!(
+                    "{option} does not apply to {name} (a blue-noise set built whole)"
+                )));
+            }
+        }
+        self.warp.check_options()?;
+        if self.n == Some(0) {
+            return Err(Failure::usage("-n must be at least 1"));
+        }
+        let set = blue_noise::build(kind, &self.blue, self.n, self.d, self.seed.unwrap_or(0))?;
+        blue_noise::write(&set, self.format)
+    }
 }
 
 /// The first `spec.n` points of the sampler `spec` names, as 0.32 fractions (row-major),

@@ -1,0 +1,207 @@
+//! Bridson's algorithm and the maximal fill, generic over the dimension.
+//!
+//! Bridson (SIGGRAPH 2007 sketch, "Fast Poisson disk sampling in arbitrary dimensions"):
+//! start from one uniform point, keep an active list; take a random active point, try up to
+//! `k` candidates uniform in the spherical shell `r <= |y - x| < 2r` around it; accept the
+//! first that is free (at least `r` from every point, checked in the grid), else retire the
+//! point. `O(N)` time and memory.
+//!
+//! Maximal fill (in the manner of Ebeida et al., "Efficient maximal Poisson-disk sampling",
+//! SIGGRAPH 2011): the empty grid cells not inside a single disk of radius `r` are the
+//! active cubes; throw as many darts as there are cubes (a random cube, a uniform point in
+//! it, kept when free), then split every cube not inside one disk into `2^d` children and
+//! keep those not inside one disk; repeat. A cube survives only near the corners of the
+//! union of disks, so the cube count shrinks geometrically. Cubes below the finest side
+//! [`FINEST`]` r` get one last dart at their centre and are dropped.
+
+use super::grid::{Grid, axis_gap, quantize};
+use super::rng::Rng;
+
+/// The side, relative to `r`, below which a cube is no longer split: its points lie within
+/// `r (1 + sqrt(d) 2^-21)` of a sample at the end.
+pub(crate) const FINEST: f64 = 1.0 / (1u64 << 20) as f64;
+
+/// A uniform point of the shell `r <= |y| < 2r` in `D` dimensions.
+#[inline]
+fn shell<const D: usize>(rng: &mut Rng, r: f64) -> [f64; D] {
+    let mut y = [0.0; D];
+    if D <= 3 {
+        // Rejection from the cube [-2r, 2r)^D: accepts 3 pi / 16 (2D), 7 pi / 48 (3D).
+        let (lo, hi) = (r * r, 4.0 * r * r);
+        loop {
+            let mut s = 0.0;
+            for v in y.iter_mut() {
+                *v = (rng.unit() * 4.0 - 2.0) * r;
+                s += *v * *v;
+            }
+            if s >= lo && s < hi {
+                return y;
+            }
+        }
+    }
+    // A uniform direction (normal vector) and the radius r (1 + u (2^D - 1))^(1/D).
+    let mut s = 0.0;
+    for v in y.iter_mut() {
+        *v = rng.normal();
+        s += *v * *v;
+    }
+    let u = rng.unit();
+    let rho = r * (1.0 + u * ((1u64 << D) as f64 - 1.0)).powf(1.0 / D as f64);
+    let scale = if s > 0.0 { rho / s.sqrt() } else { 0.0 };
+    for v in y.iter_mut() {
+        *v *= scale;
+    }
+    y
+}
+
+/// Runs Bridson's algorithm with `k` candidates a step into `grid` (empty).
+pub(crate) fn bridson<const D: usize>(grid: &mut Grid<D>, k: u32, rng: &mut Rng) {
+    let torus = grid.torus;
+    let r = grid.r;
+    let mut first = [0.0; D];
+    for v in first.iter_mut() {
+        *v = f64::from(rng.fraction()) / super::grid::SCALE;
+    }
+    let Some(i0) = grid.insert(first) else {
+        return;
+    };
+    let mut active: Vec<u32> = vec![i0 as u32];
+    while !active.is_empty() {
+        let slot = rng.below(active.len());
+        let Some(&centre_idx) = active.get(slot) else {
+            break;
+        };
+        let Some(&centre) = grid.pts.get(centre_idx as usize) else {
+            break;
+        };
+        let mut placed = false;
+        'tries: for _ in 0..k {
+            let off = shell::<D>(rng, r);
+            let mut p = [0.0; D];
+            for ((pk, c), o) in p.iter_mut().zip(&centre).zip(&off) {
+                match quantize(c + o, torus) {
+                    Some(x) => *pk = x,
+                    None => continue 'tries,
+                }
+            }
+            if grid.is_free(&p) {
+                if let Some(i) = grid.insert(p) {
+                    active.push(i as u32);
+                    placed = true;
+                    break;
+                }
+                return; // the point limit: stop with what we have
+            }
+        }
+        if !placed {
+            active.swap_remove(slot);
+        }
+    }
+}
+
+/// An axis-aligned cube of the maximal fill.
+#[derive(Clone, Copy)]
+struct Cube<const D: usize> {
+    lo: [f64; D],
+    side: f64,
+}
+
+/// Whether the whole cube lies within `r` of one stored point.
+fn covered<const D: usize>(grid: &Grid<D>, cube: &Cube<D>) -> bool {
+    let mut centre = [0.0; D];
+    for (c, lo) in centre.iter_mut().zip(&cube.lo) {
+        *c = (lo + 0.5 * cube.side).min(1.0 - f64::EPSILON);
+    }
+    let cell = grid.cell_of(&centre);
+    let (r2, torus, half) = (grid.r * grid.r, grid.torus, 0.5 * cube.side);
+    grid.any_near(&cell, |p| {
+        let mut far2 = 0.0;
+        for (x, c) in p.iter().zip(&centre) {
+            let far = axis_gap(*x, *c, torus) + half;
+            far2 += far * far;
+        }
+        far2 <= r2
+    })
+}
+
+/// A dart at the point `x` (quantized): inserted when free.
+fn dart<const D: usize>(grid: &mut Grid<D>, x: &[f64; D]) {
+    let mut p = [0.0; D];
+    for (pk, v) in p.iter_mut().zip(x) {
+        match quantize(*v, grid.torus) {
+            Some(q) => *pk = q,
+            None => return,
+        }
+    }
+    if grid.is_free(&p) {
+        let _ = grid.insert(p);
+    }
+}
+
+/// Fills `grid` up to a maximal set (see the module text).
+pub(crate) fn fill_maximal<const D: usize>(grid: &mut Grid<D>, rng: &mut Rng) {
+    let g = grid.g;
+    let side = 1.0 / g as f64;
+    let mut active: Vec<Cube<D>> = Vec::new();
+    let cells = g.pow(D as u32);
+    for code in 0..cells {
+        let mut c = [0usize; D];
+        let mut rest = code;
+        for ck in c.iter_mut() {
+            *ck = rest % g;
+            rest /= g;
+        }
+        if grid.occupied(&c) {
+            continue;
+        }
+        let mut lo = [0.0; D];
+        for (l, ck) in lo.iter_mut().zip(&c) {
+            *l = *ck as f64 * side;
+        }
+        let cube = Cube { lo, side };
+        if !covered(grid, &cube) {
+            active.push(cube);
+        }
+    }
+    let finest = grid.r * FINEST;
+    while !active.is_empty() {
+        for _ in 0..active.len() {
+            let Some(cube) = active.get(rng.below(active.len())).copied() else {
+                break;
+            };
+            let mut x = cube.lo;
+            for v in x.iter_mut() {
+                *v += rng.unit() * cube.side;
+            }
+            dart(grid, &x);
+        }
+        let mut next = Vec::new();
+        for cube in &active {
+            if covered(grid, cube) {
+                continue;
+            }
+            let half = 0.5 * cube.side;
+            if half < finest {
+                let mut x = cube.lo;
+                for v in x.iter_mut() {
+                    *v += half;
+                }
+                dart(grid, &x);
+                continue;
+            }
+            for child in 0..(1usize << D) {
+                let mut lo = cube.lo;
+                for (k, l) in lo.iter_mut().enumerate() {
+                    if child >> k & 1 == 1 {
+                        *l += half;
+                    }
+                }
+                let c = Cube { lo, side: half };
+                if !covered(grid, &c) {
+                    next.push(c);
+                }
+            }
+        }
+        active = next;
+    }
+}

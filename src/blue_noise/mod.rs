@@ -1,0 +1,45 @@
+//! Blue-noise constructions: point sets and dither masks whose power spectra are low at low
+//! frequencies.
+//!
+//! * [`PoissonDisk`] — Bridson's algorithm in 1 to 8 dimensions, on the cube or the torus,
+//!   by radius or by an approximate count, optionally maximal.
+//! * [`BestCandidate`] — Mitchell's best-candidate sampling on the torus (progressive).
+//! * [`GaussianBlueNoise`] — Ahmed, Ren & Wonka's Gaussian blue noise on the torus.
+//! * [`VoidAndCluster`] — Ulichney's void-and-cluster rank masks, toroidal, up to 2048².
+//! * [`mask64`] — a 64×64 void-and-cluster rank mask as a static table, in `no_std` too.
+//!
+//! The set constructions need the `analysis` feature (they are budgeted like every
+//! super-linear computation of the crate, see [`crate::analysis::budget`]); they return a
+//! [`PointSet`], a finite [`Sampler`](crate::Sampler) of 0.32 fractions in generation order.
+
+pub mod mask64;
+
+#[cfg(feature = "analysis")]
+pub mod best_candidate;
+#[cfg(feature = "analysis")]
+mod bridson;
+#[cfg(feature = "analysis")]
+pub mod gaussian;
+#[cfg(feature = "analysis")]
+mod grid;
+#[cfg(feature = "analysis")]
+mod point_set;
+#[cfg(feature = "analysis")]
+pub mod poisson;
+#[cfg(feature = "analysis")]
+mod rng;
+#[cfg(feature = "analysis")]
+mod tournament;
+#[cfg(feature = "analysis")]
+pub mod void_and_cluster;
+
+#[cfg(feature = "analysis")]
+pub use best_candidate::BestCandidate;
+#[cfg(feature = "analysis")]
+pub use gaussian::GaussianBlueNoise;
+#[cfg(feature = "analysis")]
+pub use point_set::PointSet;
+#[cfg(feature = "analysis")]
+pub use poisson::PoissonDisk;
+#[cfg(feature = "analysis")]
+pub use void_and_cluster::{RankMask, VoidAndCluster};

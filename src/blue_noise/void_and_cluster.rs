@@ -1,0 +1,344 @@
+//! Void-and-cluster dither masks (Ulichney, "The void-and-cluster method for dither array
+//! generation", SPIE 1913, 1993): a toroidal rank image whose every threshold is a
+//! blue-noise binary pattern.
+//!
+//! The energy of a binary pattern `B` on the `W x H` torus is `E = G * B` (circular
+//! convolution), `G(dx, dy) = exp(-(dx^2 + dy^2) / (2 sigma^2))`, `sigma = 1.5` pixels
+//! (Ulichney), truncated at `|dx|, |dy| <= ceil(4 sigma)` (the dropped weights are below
+//! `e^-8` of the centre) and periodised when the torus is smaller than the window. The
+//! weights are integers (`round(2^24 G)`), so energies add exactly and every platform
+//! ranks the same pixels. The *tightest cluster* is the one of largest energy, the
+//! *largest void* the zero of smallest energy (ties: the lower row-major index).
+//!
+//! 1. `n1 = max(1, min((N - 1) / 2, floor(N / 10)))` ones at distinct random pixels (the
+//!    only random step).
+//! 2. Relax: move the tightest cluster to the largest void until the two coincide.
+//! 3. From the relaxed pattern, remove tightest clusters: ranks `n1 - 1` down to 0.
+//! 4. From the relaxed pattern, fill largest voids: ranks `n1` to `N - 1`. (Past half
+//!    full, Ulichney takes the tightest cluster of *zeros* in the energy of the zeros,
+//!    `S - E` for the constant kernel sum `S`: the same pixel as the largest void of `E`.)
+//!
+//! The result is a permutation of `0..W H`; thresholding at `t` (pixels of rank `< t W H`)
+//! gives the pattern of `round(t W H)` ones. Cost: each flip adds the kernel (`(2R+1)^2 =
+//! 169` weights) and updates two tournament trees (`O(R (R + log N))`); about `1.3 N`
+//! flips, so `O(N R (R + log N))` in all — 256×256 in under two seconds on one core.
+//!
+//! ```
+//! use qmckit::blue_noise::VoidAndCluster;
+//! let mask = VoidAndCluster::new(16, 16)?.seed(3).generate()?;
+//! let mut seen = mask.ranks().to_vec();
+//! seen.sort_unstable();
+//! assert!(seen.iter().enumerate().all(|(i, &r)| r as usize == i));
+//! # Ok::<(), qmckit::Error>(())
+//! ```
+
+use super::rng::Rng;
+use super::tournament::{Best, Tournament};
+use crate::analysis::budget::{Budget, Cost, Rate};
+use crate::{Error, Result};
+
+/// The largest side of a mask.
+pub const MASK_MAX_SIDE: usize = 4096;
+
+/// The most pixels of a mask: 2^22.
+pub const MASK_MAX_PIXELS: usize = 1 << 22;
+
+/// Kernel-weight and tree-node updates a second (one core, release; a conservative figure).
+const UPDATES: Rate = Rate::per_second(4e8);
+
+/// A void-and-cluster construction (builder).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct VoidAndCluster {
+    width: usize,
+    height: usize,
+    sigma: f64,
+    seed: u64,
+}
+
+/// A rank image: `ranks()[y * width + x]` is the rank of pixel `(x, y)`.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct RankMask {
+    width: usize,
+    height: usize,
+    ranks: Vec<u32>,
+}
+
+impl RankMask {
+    /// Width in pixels.
+    pub fn width(&self) -> usize {
+        self.width
+    }
+
+    /// Height in pixels.
+    pub fn height(&self) -> usize {
+        self.height
+    }
+
+    /// The ranks, row-major, a permutation of `0..width * height`.
+    pub fn ranks(&self) -> &[u32] {
+        &self.ranks
+    }
+
+    /// The pattern of the pixels with rank below `ones` (row-major, `true` = on).
+    pub fn threshold(&self, ones: usize) -> Vec<bool> {
+        self.ranks.iter().map(|&r| (r as usize) < ones).collect()
+    }
+}
+
+impl VoidAndCluster {
+    /// A `width x height` mask, `sigma = 1.5`, seed 0.
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] for a side of 0 or past [`MASK_MAX_SIDE`];
+    /// [`Error::TooLarge`] past [`MASK_MAX_PIXELS`].
+    pub fn new(width: usize, height: usize) -> Result<Self> {
+        if width == 0 || height == 0 || width > MASK_MAX_SIDE || height > MASK_MAX_SIDE {
+            return Err(Error::InvalidParameter {
+                what: "a mask side must be 1 to 4096 pixels",
+            });
+        }
+        let n = width * height;
+        if n > MASK_MAX_PIXELS {
+            return Err(Error::TooLarge {
+                what: "mask pixels",
+                requested: n as u64,
+                max: MASK_MAX_PIXELS as u64,
+            });
+        }
+        Ok(VoidAndCluster {
+            width,
+            height,
+            sigma: 1.5,
+            seed: 0,
+        })
+    }
+
+    /// The seed.
+    pub fn seed(mut self, seed: u64) -> Self {
+        self.seed = seed;
+        self
+    }
+
+    /// The Gaussian's standard deviation in pixels, 0.5 to 8.
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] outside that range.
+    pub fn sigma(mut self, sigma: f64) -> Result<Self> {
+        if !(0.5..=8.0).contains(&sigma) {
+            return Err(Error::InvalidParameter {
+                what: "the void-and-cluster sigma must be 0.5 to 8 pixels",
+            });
+        }
+        self.sigma = sigma;
+        Ok(self)
+    }
+
+    fn reach(&self) -> usize {
+        (4.0 * self.sigma).ceil() as usize
+    }
+
+    /// The estimated running time (see the module text).
+    pub fn cost(&self) -> Cost {
+        let n = (self.width * self.height) as f64;
+        let win = (2 * self.reach() + 1) as f64;
+        let (kw, kh) = (win.min(self.width as f64), win.min(self.height as f64));
+        let per_flip = kw * kh + kh * (kw + 2.0 * n.log2().max(1.0));
+        Cost::steps(1.5 * n * per_flip, UPDATES)
+    }
+
+    /// The mask within the default budget.
+    ///
+    /// # Errors
+    /// [`Error::OverBudget`].
+    pub fn generate(&self) -> Result<RankMask> {
+        self.generate_within(&Budget::DEFAULT)
+    }
+
+    /// The mask, refused before it starts when [`cost`](Self::cost) exceeds `budget`.
+    ///
+    /// # Errors
+    /// [`Error::OverBudget`], [`Error::TooLarge`].
+    pub fn generate_within(&self, budget: &Budget) -> Result<RankMask> {
+        budget.check("void-and-cluster mask", self.cost())?;
+        let n = self.width * self.height;
+        let kernel = Kernel::new(self.width, self.height, self.sigma, self.reach());
+        let mut state = State::new(self.width, self.height, kernel);
+        let n1 = (n / 10).min((n - 1) / 2).max(1).min(n);
+        // Distinct random pixels: a partial Fisher–Yates shuffle.
+        let mut order: Vec<u32> = (0..n as u32).collect();
+        let mut rng = Rng::new(self.seed, 0x564F_4944_434C_5553);
+        for i in 0..n1 {
+            let j = i + rng.below(n - i);
+            order.swap(i, j);
+        }
+        for &p in order.get(..n1).unwrap_or(&[]) {
+            state.flip(p as usize, true);
+        }
+        // Relax (bounded, so no input can loop forever; it settles in far fewer steps).
+        for _ in 0..4 * n {
+            let Some(c) = state.cluster() else { break };
+            state.flip(c, false);
+            match state.void() {
+                Some(v) if v != c => state.flip(v, true),
+                _ => {
+                    state.flip(c, true);
+                    break;
+                }
+            }
+        }
+        let mut ranks = vec![0u32; n];
+        let mut removing = state.clone();
+        for rank in (0..n1).rev() {
+            let Some(c) = removing.cluster() else { break };
+            removing.flip(c, false);
+            if let Some(slot) = ranks.get_mut(c) {
+                *slot = rank as u32;
+            }
+        }
+        for rank in n1..n {
+            let Some(v) = state.void() else { break };
+            state.flip(v, true);
+            if let Some(slot) = ranks.get_mut(v) {
+                *slot = rank as u32;
+            }
+        }
+        Ok(RankMask {
+            width: self.width,
+            height: self.height,
+            ranks,
+        })
+    }
+}
+
+/// The periodised integer kernel on a `kw x kh` window.
+#[derive(Clone, Debug)]
+struct Kernel {
+    /// Window size and the offset of its first column/row (`-R`, or 0 when the window is
+    /// the whole torus width/height).
+    kw: usize,
+    kh: usize,
+    x0: usize,
+    y0: usize,
+    w: Vec<i64>,
+}
+
+impl Kernel {
+    fn new(width: usize, height: usize, sigma: f64, reach: usize) -> Self {
+        let win = 2 * reach + 1;
+        let (kw, x0) = if width >= win {
+            (win, width - reach)
+        } else {
+            (width, 0)
+        };
+        let (kh, y0) = if height >= win {
+            (win, height - reach)
+        } else {
+            (height, 0)
+        };
+        let mut w = vec![0i64; kw * kh];
+        let r = reach as i64;
+        for dy in -r..=r {
+            for dx in -r..=r {
+                let g = libm::exp(-((dx * dx + dy * dy) as f64) / (2.0 * sigma * sigma));
+                let v = libm::round(g * (1u64 << 24) as f64) as i64;
+                // Window column of dx: dx + R in a full window, dx mod W in a wrapped one.
+                let cx = if kw == win {
+                    (dx + r) as usize
+                } else {
+                    dx.rem_euclid(width as i64) as usize
+                };
+                let cy = if kh == win {
+                    (dy + r) as usize
+                } else {
+                    dy.rem_euclid(height as i64) as usize
+                };
+                if let Some(slot) = w.get_mut(cy * kw + cx) {
+                    *slot += v;
+                }
+            }
+        }
+        Kernel { kw, kh, x0, y0, w }
+    }
+}
+
+/// A binary pattern with its energy in two trees: ones by largest energy, zeros by
+/// smallest.
+#[derive(Clone, Debug)]
+struct State {
+    width: usize,
+    height: usize,
+    kernel: Kernel,
+    energy: Vec<i64>,
+    ones: Tournament,
+    zeros: Tournament,
+}
+
+impl State {
+    fn new(width: usize, height: usize, kernel: Kernel) -> Self {
+        let n = width * height;
+        let energy = vec![0i64; n];
+        let ones = Tournament::new(Best::Max, &vec![Tournament::sentinel(Best::Max); n]);
+        let zeros = Tournament::new(Best::Min, &energy);
+        State {
+            width,
+            height,
+            kernel,
+            energy,
+            ones,
+            zeros,
+        }
+    }
+
+    fn cluster(&self) -> Option<usize> {
+        self.ones.top()
+    }
+
+    fn void(&self) -> Option<usize> {
+        self.zeros.top()
+    }
+
+    /// Sets pixel `p` to `value` (it must differ) and updates energies and trees.
+    fn flip(&mut self, p: usize, value: bool) {
+        let (w, h) = (self.width, self.height);
+        let (px, py) = (p % w, p / w);
+        let sign = if value { 1 } else { -1 };
+        let e = self.energy.get(p).copied().unwrap_or(0);
+        if value {
+            self.ones.set(p, e);
+            self.zeros.set(p, Tournament::sentinel(Best::Min));
+        } else {
+            self.ones.set(p, Tournament::sentinel(Best::Max));
+            self.zeros.set(p, e);
+        }
+        let k = &self.kernel;
+        let xs = (px + k.x0) % w; // first column touched
+        for cy in 0..k.kh {
+            let y = (py + k.y0 + cy) % h;
+            let row = y * w;
+            let weights = k.w.get(cy * k.kw..(cy + 1) * k.kw).unwrap_or(&[]);
+            for (cx, &wt) in weights.iter().enumerate() {
+                let mut x = xs + cx;
+                if x >= w {
+                    x -= w;
+                }
+                let i = row + x;
+                if let Some(slot) = self.energy.get_mut(i) {
+                    *slot += sign * wt;
+                }
+                self.ones.add(i, sign * wt);
+                self.zeros.add(i, sign * wt);
+            }
+            // The touched run of the row: one segment, or two when it wraps.
+            let end = xs + k.kw - 1;
+            if end < w {
+                self.ones.refresh(row + xs, row + end);
+                self.zeros.refresh(row + xs, row + end);
+            } else {
+                self.ones.refresh(row + xs, row + w - 1);
+                self.zeros.refresh(row + xs, row + w - 1);
+                self.ones.refresh(row, row + end - w);
+                self.zeros.refresh(row, row + end - w);
+            }
+        }
+    }
+}

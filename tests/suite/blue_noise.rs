@@ -1,0 +1,536 @@
+//! The blue-noise point sets against their definitions: Poisson-disk separation (every
+//! pair checked by brute force, toroidal or not), maximality on a probe grid, the
+//! densities of the literature (Bridson k = 30 about N r^2 = 0.61 as SciPy's
+//! `qmc.PoissonDisk` reaches; random sequential adsorption about 0.69), nearest-neighbour
+//! statistics normalized by the hexagonal spacing (white noise: 0.4653), and low-frequency
+//! power from the direct-sum periodogram (white noise: 1).
+#![cfg(feature = "analysis")]
+
+use qmckit::analysis::Points;
+use qmckit::analysis::budget::Budget;
+use qmckit::analysis::spectrum::spectrum_2d;
+use qmckit::blue_noise::{BestCandidate, GaussianBlueNoise, PointSet, PoissonDisk};
+use qmckit::{Error, Independent, Sampler};
+
+fn gap(a: f64, b: f64, torus: bool) -> f64 {
+    let d = (a - b).abs();
+    if torus { d.min(1.0 - d) } else { d }
+}
+
+fn dist2(a: &[f64], b: &[f64], torus: bool) -> f64 {
+    a.iter()
+        .zip(b)
+        .map(|(x, y)| gap(*x, *y, torus).powi(2))
+        .sum()
+}
+
+/// The smallest pairwise distance, by brute force.
+fn min_distance(x: &[f64], d: usize, torus: bool) -> f64 {
+    let n = x.len() / d;
+    let mut best = f64::INFINITY;
+    for i in 0..n {
+        for j in i + 1..n {
+            best = best.min(dist2(&x[i * d..i * d + d], &x[j * d..j * d + d], torus));
+        }
+    }
+    best.sqrt()
+}
+
+/// Min and mean nearest-neighbour distance (toroidal, 2D) over the hexagonal spacing.
+fn nn_stats(x: &[f64]) -> (f64, f64) {
+    let n = x.len() / 2;
+    let mut nn = vec![f64::INFINITY; n];
+    for i in 0..n {
+        for j in 0..n {
+            if i != j {
+                nn[i] = nn[i].min(dist2(&x[2 * i..2 * i + 2], &x[2 * j..2 * j + 2], true));
+            }
+        }
+    }
+    let hex = (2.0 / (3f64.sqrt() * n as f64)).sqrt();
+    let min = nn.iter().cloned().fold(f64::INFINITY, f64::min).sqrt();
+    let mean = nn.iter().map(|v| v.sqrt()).sum::<f64>() / n as f64;
+    (min / hex, mean / hex)
+}
+
+/// Mean periodogram over `0 < |k| < 0.5 sqrt(N)`.
+fn low_power(x: &[f64]) -> f64 {
+    let n = x.len() / 2;
+    let kmax = (0.5 * (n as f64).sqrt()).ceil() as usize;
+    let s = spectrum_2d(Points::new(x, 2).unwrap(), kmax).unwrap();
+    let lim2 = 0.25 * n as f64;
+    let (sum, count) = s
+        .iter()
+        .filter(|&(kx, ky, _)| {
+            let k2 = (kx * kx + ky * ky) as f64;
+            k2 > 0.0 && k2 < lim2
+        })
+        .fold((0.0, 0usize), |(s, c), (_, _, p)| (s + p, c + 1));
+    sum / count as f64
+}
+
+fn coords(s: &PointSet) -> Vec<f64> {
+    s.to_f64()
+}
+
+#[test]
+fn poisson_disk_pairs_are_at_least_r_apart() {
+    for (d, r, torus) in [
+        (2, 0.02, false),
+        (2, 0.02, true),
+        (1, 0.001, true),
+        (3, 0.08, false),
+        (3, 0.08, true),
+        (5, 0.35, true),
+    ] {
+        for seed in 0..3 {
+            let s = PoissonDisk::new(d, r)
+                .unwrap()
+                .torus(torus)
+                .seed(seed)
+                .generate()
+                .unwrap();
+            let x = coords(&s);
+            assert!(s.count() > 10, "{d} {r} {torus}: {}", s.count());
+            let m = min_distance(&x, d, torus);
+            assert!(
+                m >= r,
+                "d {d} r {r} torus {torus} seed {seed}: min distance {m}"
+            );
+            assert!(x.iter().all(|v| (0.0..1.0).contains(v)));
+        }
+    }
+}
+
+#[test]
+fn bridson_density_matches_the_literature() {
+    // N r^2 about 0.61 in 2D with k = 30 (SciPy's qmc.PoissonDisk: 0.608 to 0.625).
+    let r = 0.01;
+    let mut total = 0.0;
+    for seed in 0..4 {
+        let s = PoissonDisk::new(2, r)
+            .unwrap()
+            .torus(true)
+            .seed(seed)
+            .generate()
+            .unwrap();
+        total += s.count() as f64 * r * r / 4.0;
+    }
+    assert!((0.59..0.64).contains(&total), "N r^2 = {total}");
+}
+
+#[test]
+fn maximal_sets_leave_no_room_for_another_disk() {
+    for torus in [true, false] {
+        let r = 0.04;
+        let s = PoissonDisk::new(2, r)
+            .unwrap()
+            .torus(torus)
+            .maximal(true)
+            .seed(5)
+            .generate()
+            .unwrap();
+        let x = coords(&s);
+        assert!(min_distance(&x, 2, torus) >= r);
+        // Random sequential adsorption jams at N r^2 ~ 0.69 (torus).
+        let nr2 = s.count() as f64 * r * r;
+        assert!((0.64..0.76).contains(&nr2), "torus {torus}: N r^2 = {nr2}");
+        // Every point of a 500 x 500 probe grid lies within r of a sample.
+        let m = 500;
+        let tol = r * (1.0 + 1e-5);
+        for py in 0..m {
+            for px in 0..m {
+                let p = [(px as f64 + 0.5) / m as f64, (py as f64 + 0.5) / m as f64];
+                let near = x.chunks_exact(2).any(|q| dist2(&p, q, torus) <= tol * tol);
+                assert!(
+                    near,
+                    "torus {torus}: probe {p:?} is farther than r from every sample"
+                );
+            }
+        }
+        // The plain Bridson set is not maximal: some probe is uncovered.
+        let b = coords(
+            &PoissonDisk::new(2, r)
+                .unwrap()
+                .torus(torus)
+                .seed(5)
+                .generate()
+                .unwrap(),
+        );
+        let uncovered = (0..m * m).any(|i| {
+            let p = [
+                ((i % m) as f64 + 0.5) / m as f64,
+                ((i / m) as f64 + 0.5) / m as f64,
+            ];
+            !b.chunks_exact(2).any(|q| dist2(&p, q, torus) <= r * r)
+        });
+        assert!(uncovered);
+    }
+}
+
+#[test]
+fn about_n_points_lands_near_n() {
+    for (d, n, torus) in [
+        (2, 2000u64, true),
+        (2, 2000, false),
+        (3, 1500, true),
+        (1, 500, false),
+    ] {
+        let pd = PoissonDisk::with_points(d, n).unwrap().torus(torus).seed(3);
+        let got = pd.generate().unwrap().count() as f64;
+        assert!((got / n as f64 - 1.0).abs() < 0.03, "d {d} n {n}: {got}");
+        let r = pd.radius_within(&Budget::DEFAULT).unwrap();
+        let again = PoissonDisk::new(d, r)
+            .unwrap()
+            .torus(torus)
+            .seed(3)
+            .generate()
+            .unwrap();
+        assert_eq!(
+            again.count() as f64,
+            got,
+            "the count mode is the radius mode at its radius"
+        );
+    }
+}
+
+#[test]
+fn constructions_are_deterministic_per_seed() {
+    let a = PoissonDisk::new(2, 0.03)
+        .unwrap()
+        .seed(9)
+        .generate()
+        .unwrap();
+    let b = PoissonDisk::new(2, 0.03)
+        .unwrap()
+        .seed(9)
+        .generate()
+        .unwrap();
+    let c = PoissonDisk::new(2, 0.03)
+        .unwrap()
+        .seed(10)
+        .generate()
+        .unwrap();
+    assert_eq!(a, b);
+    assert_ne!(a, c);
+    let a = BestCandidate::new(300).unwrap().seed(1).generate().unwrap();
+    assert_eq!(
+        a,
+        BestCandidate::new(300).unwrap().seed(1).generate().unwrap()
+    );
+    let a = GaussianBlueNoise::new(200)
+        .unwrap()
+        .iterations(20)
+        .unwrap()
+        .seed(1)
+        .generate()
+        .unwrap();
+    assert_eq!(
+        a,
+        GaussianBlueNoise::new(200)
+            .unwrap()
+            .iterations(20)
+            .unwrap()
+            .seed(1)
+            .generate()
+            .unwrap()
+    );
+    // A point set is a sampler of its points.
+    assert_eq!(a.len(), 200);
+    assert_eq!(a.dims(), 2);
+    assert_eq!(a.sample(199, 1).unwrap(), a.coords()[399]);
+    assert!(a.sample(200, 0).is_err());
+    assert!(a.sample(0, 2).is_err());
+}
+
+#[test]
+fn bad_parameters_are_errors() {
+    for r in [0.0, -0.1, f64::NAN, f64::INFINITY, 1.5] {
+        assert!(
+            matches!(PoissonDisk::new(2, r), Err(Error::InvalidParameter { .. })),
+            "{r}"
+        );
+    }
+    // 10^12 points: refused before anything is allocated.
+    assert!(matches!(
+        PoissonDisk::new(2, 1e-6),
+        Err(Error::TooLarge { .. })
+    ));
+    assert!(matches!(
+        PoissonDisk::new(0, 0.1),
+        Err(Error::ZeroDimensions)
+    ));
+    assert!(matches!(
+        PoissonDisk::new(9, 0.5),
+        Err(Error::DimensionOutOfRange { .. })
+    ));
+    assert!(PoissonDisk::new(2, 0.1).unwrap().candidates(0).is_err());
+    assert!(matches!(
+        PoissonDisk::with_points(2, 0),
+        Err(Error::ZeroPoints)
+    ));
+    assert!(PoissonDisk::with_points(2, 1 << 40).is_err());
+    let tight = Budget::seconds(1e-6).unwrap();
+    assert!(matches!(
+        PoissonDisk::new(2, 0.001).unwrap().generate_within(&tight),
+        Err(Error::OverBudget { .. })
+    ));
+    assert!(matches!(BestCandidate::new(0), Err(Error::ZeroPoints)));
+    assert!(BestCandidate::new(10).unwrap().candidates(0).is_err());
+    assert!(matches!(
+        BestCandidate::new(100_000).unwrap().generate(),
+        Err(Error::OverBudget { .. })
+    ));
+    assert!(GaussianBlueNoise::new(1).is_err());
+    assert!(GaussianBlueNoise::new(10).unwrap().sigma(f64::NAN).is_err());
+    assert!(matches!(
+        GaussianBlueNoise::new(1 << 20).unwrap().generate(),
+        Err(Error::OverBudget { .. })
+    ));
+}
+
+/// White noise first: the checks below would not hold for it.
+#[test]
+fn white_noise_reference_statistics() {
+    let s = Independent::new(2, 4).unwrap();
+    let raw: Vec<u32> = (0..1024u32)
+        .flat_map(|i| [s.sample(i, 0).unwrap(), s.sample(i, 1).unwrap()])
+        .collect();
+    let x = Points::from_u32(&raw);
+    let (_, mean) = nn_stats(&x);
+    assert!((mean - 0.4653).abs() < 0.05, "white mean NN {mean}");
+    assert!((low_power(&x) - 1.0).abs() < 0.3);
+}
+
+#[test]
+fn best_candidate_is_blue() {
+    let mut power = 0.0;
+    let sets = 4;
+    for seed in 0..sets {
+        let x = coords(
+            &BestCandidate::new(1024)
+                .unwrap()
+                .seed(seed)
+                .generate()
+                .unwrap(),
+        );
+        let (min, mean) = nn_stats(&x);
+        // Published (Schlömer et al. 2011): min 0.751, mean 0.839.
+        assert!(
+            min > 0.6 && (0.79..0.88).contains(&mean),
+            "min {min} mean {mean}"
+        );
+        power += low_power(&x) / sets as f64;
+    }
+    assert!(power < 0.2, "best-candidate low-frequency power {power}");
+}
+
+#[test]
+fn poisson_disk_low_frequency_plateau() {
+    let mut power = 0.0;
+    let sets = 4;
+    for seed in 0..sets {
+        let x = coords(
+            &PoissonDisk::with_points(2, 1024)
+                .unwrap()
+                .torus(true)
+                .seed(seed)
+                .generate()
+                .unwrap(),
+        );
+        let (min, mean) = nn_stats(&x);
+        assert!(
+            min > 0.7 && (0.76..0.84).contains(&mean),
+            "min {min} mean {mean}"
+        );
+        power += low_power(&x) / sets as f64;
+    }
+    // A non-zero plateau about 0.07 (not the near-zero of optimized blue noise).
+    assert!(
+        (0.02..0.2).contains(&power),
+        "Poisson-disk low-frequency power {power}"
+    );
+}
+
+#[test]
+fn gaussian_blue_noise_has_near_zero_low_frequency_power() {
+    let mut power = 0.0;
+    let sets = 3;
+    for seed in 0..sets {
+        let x = coords(
+            &GaussianBlueNoise::new(1024)
+                .unwrap()
+                .seed(seed)
+                .generate()
+                .unwrap(),
+        );
+        let (min, mean) = nn_stats(&x);
+        assert!(min > 0.3 && mean > 0.72, "min {min} mean {mean}");
+        power += low_power(&x) / sets as f64;
+    }
+    // The target: below 0.01 of white noise for |k| < 0.5 sqrt(N).
+    assert!(
+        power < 0.01,
+        "Gaussian blue noise low-frequency power {power}"
+    );
+}
+
+#[cfg(feature = "cli")]
+mod cli {
+    use super::{dist2, min_distance};
+    use crate::common::cli::{assert_usage_error, run};
+    use qmckit::blue_noise::{BestCandidate, PoissonDisk};
+
+    fn parse(stdout: Vec<u8>) -> Vec<u32> {
+        String::from_utf8(stdout)
+            .unwrap()
+            .split_whitespace()
+            .map(|v| v.parse().unwrap())
+            .collect()
+    }
+
+    #[test]
+    fn points_poisson_writes_the_library_set() {
+        let out = run(
+            &[
+                "points", "poisson", "--radius", "0.05", "--torus", "--seed", "4",
+            ],
+            "",
+        );
+        assert_eq!(out.status.code(), Some(0));
+        let got = parse(out.stdout);
+        let lib = PoissonDisk::new(2, 0.05)
+            .unwrap()
+            .torus(true)
+            .seed(4)
+            .generate()
+            .unwrap();
+        assert_eq!(got, lib.coords());
+        let x = qmckit::analysis::Points::from_u32(&got);
+        assert!(min_distance(&x, 2, true) >= 0.05);
+        assert!(dist2(&x[0..2], &x[2..4], true) >= 0.0025);
+        let out = run(
+            &[
+                "points", "poisson", "-n", "600", "-d", "3", "--format", "csv",
+            ],
+            "",
+        );
+        assert_eq!(out.status.code(), Some(0));
+        let lines = String::from_utf8(out.stdout).unwrap().lines().count() as f64;
+        assert!((lines / 600.0 - 1.0).abs() < 0.03, "{lines}");
+        let out = run(
+            &[
+                "points",
+                "best-candidate",
+                "-n",
+                "50",
+                "--candidates",
+                "3",
+                "--seed",
+                "2",
+            ],
+            "",
+        );
+        let lib = BestCandidate::new(50)
+            .unwrap()
+            .candidates(3)
+            .unwrap()
+            .seed(2)
+            .generate()
+            .unwrap();
+        assert_eq!(parse(out.stdout), lib.coords());
+        let out = run(
+            &[
+                "points",
+                "gaussian-blue-noise",
+                "-n",
+                "40",
+                "--iterations",
+                "5",
+            ],
+            "",
+        );
+        assert_eq!(out.status.code(), Some(0));
+        assert_eq!(parse(out.stdout).len(), 80);
+    }
+
+    #[test]
+    fn points_blue_noise_usage_errors() {
+        for (args, needle) in [
+            (
+                &["points", "poisson", "--radius", "1e-6"][..],
+                "packing bound",
+            ),
+            (&["points", "poisson", "--radius", "0"][..], "radius"),
+            (&["points", "poisson", "--radius", "nan"][..], "radius"),
+            (&["points", "poisson"][..], "--radius R or -n N"),
+            (
+                &["points", "poisson", "--radius", "0.1", "-n", "10"][..],
+                "not both",
+            ),
+            (&["points", "poisson", "-n", "0"][..], "at least 1"),
+            (
+                &["points", "poisson", "-n", "100", "-d", "9"][..],
+                "dimension",
+            ),
+            (
+                &["points", "poisson", "-n", "100", "--start", "3"][..],
+                "--start",
+            ),
+            (
+                &["points", "poisson", "-n", "100", "--scramble", "rotate"][..],
+                "--scramble",
+            ),
+            (
+                &["points", "poisson", "-n", "100", "--iterations", "3"][..],
+                "--iterations",
+            ),
+            (
+                &[
+                    "points",
+                    "poisson",
+                    "--radius",
+                    "0.0005",
+                    "--max-seconds",
+                    "0.001",
+                ][..],
+                "time budget",
+            ),
+            (&["points", "best-candidate"][..], "-n N"),
+            (
+                &["points", "best-candidate", "-n", "10", "-d", "3"][..],
+                "two-dimensional",
+            ),
+            (
+                &["points", "best-candidate", "-n", "10", "--torus"][..],
+                "--torus",
+            ),
+            (
+                &["points", "best-candidate", "-n", "200000"][..],
+                "time budget",
+            ),
+            (
+                &["points", "gaussian-blue-noise", "-n", "1"][..],
+                "two points",
+            ),
+            (
+                &[
+                    "points",
+                    "gaussian-blue-noise",
+                    "-n",
+                    "10",
+                    "--candidates",
+                    "2",
+                ][..],
+                "--candidates",
+            ),
+            (
+                &["points", "sobol", "-n", "4", "--radius", "0.1"][..],
+                "--radius",
+            ),
+            (&["points", "sobol"][..], "-n N"),
+        ] {
+            assert_usage_error(args, "", needle);
+        }
+    }
+}
