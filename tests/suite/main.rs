@@ -15,6 +15,7 @@ mod golden_sobol;
 mod integrands;
 mod nets;
 mod peers;
+mod pixel;
 mod randomize;
 mod samplers;
 mod spectrum;
