@@ -8,6 +8,7 @@ mod convergence;
 mod discrepancy;
 mod input;
 mod output;
+mod pixel;
 mod points;
 mod progress;
 mod spectrum;
@@ -44,6 +45,9 @@ enum Command {
     /// The t-value of the first 2^m points of a base-2 net or sequence.
     #[command(after_help = tvalue::AFTER_HELP)]
     Tvalue(tvalue::TvalueArgs),
+    /// The samples of one pixel from a renderer's pixel sampler (pbrt-v4 compatible).
+    #[command(after_help = pixel::AFTER_HELP)]
+    Pixel(pixel::PixelArgs),
 }
 
 /// A failure to report: one line and an exit code.
@@ -137,6 +141,7 @@ where
         Command::Convergence(args) => convergence::run(&args),
         Command::Spectrum(args) => spectrum::run(&args),
         Command::Tvalue(args) => tvalue::run(&args),
+        Command::Pixel(args) => pixel::run(&args),
     };
     match result {
         Ok(()) => 0,
