@@ -80,6 +80,7 @@ pub mod independent;
 pub mod larcher_pillichshammer;
 pub mod latin_hypercube;
 pub mod pixel;
+pub mod pmj;
 /// The former home of the Owen-scrambled Sobol' fast paths, now [`sobol::OwenSobol`].
 #[deprecated(note = "use qmckit::sobol::OwenSobol (one type, cheap reseed)")]
 pub mod owen_sobol {

@@ -16,6 +16,7 @@ mod integrands;
 mod nets;
 mod peers;
 mod pixel;
+mod pmj;
 mod randomize;
 mod samplers;
 mod spectrum;
