@@ -20,6 +20,7 @@ pub mod distance;
 pub mod integration;
 pub mod l2;
 pub mod pointfile;
+pub mod screen_error;
 pub mod spectrum;
 pub mod star;
 pub mod tvalue;

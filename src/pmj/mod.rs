@@ -164,10 +164,10 @@ impl Sampler for Pmj02 {
         let rows = check_fill(self, start, out.len())?;
         for k in 0..rows {
             let index = start + k as u32;
-            for d in 0..2 {
+            for (d, xor) in XOR.iter().enumerate() {
                 let v = if start == 0 && index != 0 {
                     let level = 31 - index.leading_zeros();
-                    let j = (index - (1 << level)) ^ XOR[d][level as usize];
+                    let j = (index - (1 << level)) ^ xor.get(level as usize).copied().unwrap_or(0);
                     let parent = out.get(2 * j as usize + d).copied().unwrap_or(0);
                     child(parent, level, uniform(self.seed, index, d as u64))
                 } else {

@@ -41,8 +41,8 @@ fn xor_values_match_the_published_ones() {
     // Helmer et al. 2021, from the Stirling-number matrices (pmj02 x and y).
     assert_eq!(XOR[0][..10], [0, 0, 2, 6, 6, 0xe, 0x36, 0x4e, 0x16, 0x2e]);
     assert_eq!(XOR[1][..10], [0, 1, 3, 3, 7, 0x1b, 0x27, 0xb, 0x17, 0x13b]);
-    for d in 0..2 {
-        for (l, &x) in XOR[d].iter().enumerate() {
+    for (d, row) in XOR.iter().enumerate() {
+        for (l, &x) in row.iter().enumerate() {
             assert!(
                 (x as u64) < 1 << l,
                 "xor[{d}][{l}] must only pair earlier points"

@@ -21,7 +21,7 @@ use super::warp::{Warp, WarpArgs};
 /// Text shown after the options of `qmckit points --help`.
 pub const AFTER_HELP: &str = "\
 Options that apply (any other is an error that names it):
-  --seed      independent, latin, stratified (without --centered), and every --scramble
+  --seed      independent, latin, pmj02, stratified (without --centered), and every --scramble
   --base      vdc            --strata, --centered   stratified
   --total     the finite sets: stratified, latin, hammersley, lp
   --order     sobol (gray: SciPy's order)
@@ -57,6 +57,8 @@ pub enum SamplerName {
     Lp,
     /// Sobol' sequence, Joe–Kuo direction numbers, up to 21201 dimensions.
     Sobol,
+    /// PMJ02: progressive multi-jittered (0,2)-sequence, 2D, seeded (stochastic generation).
+    Pmj02,
 }
 
 impl SamplerName {
@@ -208,7 +210,7 @@ impl PointsArgs {
                 "{option} does not apply to {name}{why}"
             )))
         };
-        let randomized = matches!(sampler, S::Independent | S::Latin)
+        let randomized = matches!(sampler, S::Independent | S::Latin | S::Pmj02)
             || (sampler == S::Stratified && !self.centered)
             || self.scramble != ScrambleName::None;
         if self.seed.is_some() && !randomized {
@@ -377,6 +379,14 @@ fn construct(args: &Spec, digits: DigitScramble) -> Result<Built, Failure> {
             return Ok(Built::Digital(Box::new(Sobol::with_order(d, order)?)));
         }
         SamplerName::Independent => Box::new(Independent::new(d, args.seed)?),
+        SamplerName::Pmj02 => {
+            if d != 2 {
+                return Err(Failure::usage(format!(
+                    "pmj02 is two-dimensional: -d must be 2, got {d}"
+                )));
+            }
+            Box::new(qmckit::pmj::Pmj02::new(args.seed))
+        }
         SamplerName::Halton => Box::new(Halton::with_scramble(d, digits)?),
         SamplerName::Vdc => {
             if d != 1 {
