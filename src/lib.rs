@@ -117,3 +117,8 @@ pub struct ReadmeDoctests;
 #[cfg(doctest)]
 #[doc = include_str!("../docs/analysis.md")]
 pub struct AnalysisDoctests;
+
+/// The pixel-sampler guide's examples, compiled and run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../docs/pixel-samplers.md")]
+pub struct PixelSamplerDoctests;

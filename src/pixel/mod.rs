@@ -17,6 +17,7 @@
 //! | [`ZSobol`] | Ahmed & Wonka 2020 blue-noise Sobol': Morton-ordered pixels, hashed base-4 digit permutations | yes (`u64`) |
 //! | [`ImageSobol`] | pbrt's `SobolSampler`: one Sobol' sequence over the image plane (Grünschloss et al. 2012) | yes |
 //! | [`PaddedSobol`] | per pixel and dimension: hashed index permutation and scramble of Sobol' (0, 1) | no |
+//! | [`Pmj02Pixels`] | a seeded PMJ02 sequence per pixel and dimension, index permuted (the layout of pbrt's `PMJ02BNSampler`, generated) | no |
 //! | [`IndependentPixels`] | independent uniform values from a hash of `(seed, pixel, index, dimension)` | no |
 //!
 //! Values are 0.32 fractions (`u32`); [`pbrt_f32`] converts them as pbrt does
@@ -35,11 +36,13 @@ mod image_sobol;
 mod independent;
 mod padded;
 pub mod pbrt_hash;
+mod pmj_pixels;
 mod zsobol;
 
 pub use image_sobol::ImageSobol;
 pub use independent::IndependentPixels;
 pub use padded::PaddedSobol;
+pub use pmj_pixels::Pmj02Pixels;
 pub use zsobol::ZSobol;
 
 use crate::bits::{gf2_mul, reverse_bits};

@@ -10,8 +10,8 @@ use crate::common::first_net_failure;
 use qmckit::Error;
 use qmckit::pixel::pbrt_hash::{hash2, hash4, mix_bits, permutation_element};
 use qmckit::pixel::{
-    ImageSobol, IndependentPixels, PaddedSobol, PixelSampler, PixelStream, Randomization, ZSobol,
-    pbrt_f32,
+    ImageSobol, IndependentPixels, PaddedSobol, PixelSampler, PixelStream, Pmj02Pixels,
+    Randomization, ZSobol, pbrt_f32,
 };
 use qmckit::randomize::{FastOwenScrambler, OwenHash, PbrtOwenScrambler};
 
@@ -190,7 +190,8 @@ fn zsobol_blocks_are_aligned_and_unique() {
 }
 
 /// Unscrambled or XOR-scrambled, every pixel's spp pixel samples are a (0, m, 2)-net
-/// (pbrt's `ZSobolSampler.ElementaryIntervals`); PaddedSobol's too, for every scramble.
+/// (pbrt's `ZSobolSampler.ElementaryIntervals`); PaddedSobol's too, for every scramble,
+/// and PMJ02 pixels'.
 #[test]
 fn per_pixel_samples_are_nets() {
     for seed in [0u32, 1, 5, 6, 10, 15] {
@@ -210,6 +211,10 @@ fn per_pixel_samples_are_nets() {
                 p.fill_2d(4, 6, 2 * m, &mut pts).unwrap();
                 assert_eq!(first_net_failure(&pts, m), None, "padded {r:?} seed {seed}");
             }
+            let q = Pmj02Pixels::new(10, 10, spp, seed).unwrap();
+            let mut pts = vec![[0u32; 2]; spp as usize];
+            q.fill_2d(7, 1, m, &mut pts).unwrap();
+            assert_eq!(first_net_failure(&pts, m), None, "pmj02 pixels seed {seed}");
         }
     }
 }
@@ -387,6 +392,17 @@ mod cli {
             ind.iter()
                 .all(|l| l.starts_with("- ") && l.split(' ').count() == 4)
         );
+        let pmj = lines(&[
+            "pixel",
+            "pmj02",
+            "--resolution",
+            "4x4",
+            "--spp",
+            "8",
+            "--pixel",
+            "1,2",
+        ]);
+        assert_eq!(pmj.len(), 8);
         let sobol = lines(&[
             "pixel",
             "sobol",

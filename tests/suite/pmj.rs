@@ -1,6 +1,6 @@
 //! PMJ02 against its definition: every aligned block of 2^m points is a (0, m, 2)-net
 //! (Christensen, Kensler & Kilpatrick 2018), for m <= 16 and 1000 seeds; the xor values of
-//! Helmer, Christensen & Kensler 2021 (their published listing's first entries); the
+//! Helmer, Christensen & Kensler 2021 (their published listing, and OpenQMC's table); the
 //! buffer fill and the random access agree.
 
 use qmckit::Sampler;
@@ -41,6 +41,15 @@ fn xor_values_match_the_published_ones() {
     // Helmer et al. 2021, from the Stirling-number matrices (pmj02 x and y).
     assert_eq!(XOR[0][..10], [0, 0, 2, 6, 6, 0xe, 0x36, 0x4e, 0x16, 0x2e]);
     assert_eq!(XOR[1][..10], [0, 1, 3, 3, 7, 0x1b, 0x27, 0xb, 0x17, 0x13b]);
+    // All 16 levels as OpenQMC's stochastic.h tabulates them (its PMJ_XORS).
+    let x16 = [
+        0, 0, 2, 6, 6, 0xe, 0x36, 0x4e, 0x16, 0x2e, 0x276, 0x6ce, 0x716, 0xc2e, 0x3076, 0x40ce,
+    ];
+    let y16 = [
+        0, 1, 3, 3, 7, 0x1b, 0x27, 0xb, 0x17, 0x13b, 0x367, 0x38b, 0x617, 0x183b, 0x2067, 0x8b,
+    ];
+    assert_eq!(XOR[0][..16], x16);
+    assert_eq!(XOR[1][..16], y16);
     for (d, row) in XOR.iter().enumerate() {
         for (l, &x) in row.iter().enumerate() {
             assert!(

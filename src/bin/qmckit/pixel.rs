@@ -6,7 +6,8 @@ use std::io::{BufWriter, Write};
 
 use clap::{Args, ValueEnum};
 use qmckit::pixel::{
-    ImageSobol, IndependentPixels, PaddedSobol, PixelSampler, Randomization, ZSobol, pbrt_f32,
+    ImageSobol, IndependentPixels, PaddedSobol, PixelSampler, Pmj02Pixels, Randomization, ZSobol,
+    pbrt_f32,
 };
 
 use super::Failure;
@@ -17,7 +18,9 @@ One line per sample index i = 0..S-1 of the pixel: the global sample index (the 
 the Sobol' sequence for zsobol and sobol; '-' where the sampler has none), the 1D value at
 dimension D and the 2D value at dimension D: pbrt-v4's Get1D and Get2D called with the
 dimension counter at D (ZSobolSampler, SobolSampler, PaddedSobolSampler; bit-identical).
-independent is qmckit's hashed white noise, not pbrt's PCG stream.
+independent is qmckit's hashed white noise, not pbrt's PCG stream; pmj02 is a seeded PMJ02
+sequence per pixel and dimension through a hashed index permutation (pbrt's layout, without
+its tables and blue-noise shifts).
 
 --randomize (zsobol, sobol, padded-sobol): none, xor (pbrt's PermuteDigits), fast-owen (the
 default), owen. --spp must be a power of two for zsobol. --seed is pbrt's int seed (32 bits).
@@ -34,6 +37,8 @@ pub enum PixelSamplerName {
     Sobol,
     /// pbrt-v4 PaddedSobolSampler: per-pixel, per-dimension permuted and scrambled Sobol'.
     PaddedSobol,
+    /// A seeded PMJ02 sequence per pixel and dimension, index permuted per pixel.
+    Pmj02,
     /// Independent uniform values per pixel (hashed).
     Independent,
 }
@@ -123,13 +128,22 @@ pub fn run(args: &PixelArgs) -> Result<(), Failure> {
         PixelSamplerName::Zsobol => Box::new(ZSobol::new(w, h, spp, r, seed)?),
         PixelSamplerName::Sobol => Box::new(ImageSobol::new(w, h, spp, r, seed)?),
         PixelSamplerName::PaddedSobol => Box::new(PaddedSobol::new(w, h, spp, r, seed)?),
-        PixelSamplerName::Independent => {
+        PixelSamplerName::Independent | PixelSamplerName::Pmj02 => {
             if args.randomize != RandomizeName::FastOwen {
-                return Err(Failure::usage(
-                    "--randomize does not apply to independent (its values are hashed)",
-                ));
+                return Err(Failure::usage(format!(
+                    "--randomize does not apply to {} (its randomness is its own)",
+                    if args.sampler == PixelSamplerName::Pmj02 {
+                        "pmj02"
+                    } else {
+                        "independent"
+                    }
+                )));
             }
-            Box::new(IndependentPixels::new(w, h, spp, seed as u64)?)
+            if args.sampler == PixelSamplerName::Pmj02 {
+                Box::new(Pmj02Pixels::new(w, h, spp, seed)?)
+            } else {
+                Box::new(IndependentPixels::new(w, h, spp, seed as u64)?)
+            }
         }
     };
     // Checks the pixel once, so an error comes before any output.
