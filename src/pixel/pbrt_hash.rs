@@ -69,8 +69,7 @@ pub const fn murmur_hash64a(key: &[u8], seed: u64) -> u64 {
 /// ```
 #[inline]
 pub const fn hash2(a: u32, b: u32) -> u64 {
-    let (a, b) = (a.to_le_bytes(), b.to_le_bytes());
-    murmur_hash64a(&[a[0], a[1], a[2], a[3], b[0], b[1], b[2], b[3]], 0)
+    murmur_words(&[(a as u64) | ((b as u64) << 32)], 8)
 }
 
 /// pbrt-v4's `Hash(Point2i p, int dim, int seed)`: MurmurHash64A of the 16 bytes
@@ -82,19 +81,33 @@ pub const fn hash2(a: u32, b: u32) -> u64 {
 /// ```
 #[inline]
 pub const fn hash4(a: u32, b: u32, c: u32, d: u32) -> u64 {
-    let mut buf = [0u8; 16];
-    let words = [a, b, c, d];
+    murmur_words(
+        &[
+            (a as u64) | ((b as u64) << 32),
+            (c as u64) | ((d as u64) << 32),
+        ],
+        16,
+    )
+}
+
+/// [`murmur_hash64a`] of whole little-endian 64-bit words (`len = 8 * words.len()` bytes),
+/// without the byte loop: the same value, for the fixed-size keys of [`hash2`], [`hash4`].
+#[inline]
+const fn murmur_words(words: &[u64], len: u64) -> u64 {
+    const M: u64 = 0xc6a4_a793_5bd1_e995;
+    let mut h = len.wrapping_mul(M);
     let mut w = 0;
-    while w < 4 {
-        let bytes = words[w].to_le_bytes();
-        let mut j = 0;
-        while j < 4 {
-            buf[4 * w + j] = bytes[j];
-            j += 1;
-        }
+    while w < words.len() {
+        let mut k = words[w].wrapping_mul(M);
+        k ^= k >> 47;
+        k = k.wrapping_mul(M);
+        h ^= k;
+        h = h.wrapping_mul(M);
         w += 1;
     }
-    murmur_hash64a(&buf, 0)
+    h ^= h >> 47;
+    h = h.wrapping_mul(M);
+    h ^ (h >> 47)
 }
 
 /// pbrt-v4's `PermutationElement(i, l, p)`: element `i` of a pseudo-random permutation of

@@ -549,3 +549,21 @@ fn zsobol_error_is_blue_noise() {
     }
     println!("{report}");
 }
+
+/// The fixed-size hashes equal MurmurHash64A of their packed bytes.
+#[test]
+fn word_hashes_equal_the_byte_hash() {
+    use qmckit::pixel::pbrt_hash::murmur_hash64a;
+    for (a, b, c, d) in [
+        (0u32, 0u32, 0u32, 0u32),
+        (3, 5, 7, 11),
+        (u32::MAX, 1, 1 << 31, 99),
+    ] {
+        let mut bytes = [0u8; 16];
+        for (k, v) in [a, b, c, d].into_iter().enumerate() {
+            bytes[4 * k..4 * k + 4].copy_from_slice(&v.to_le_bytes());
+        }
+        assert_eq!(hash2(a, b), murmur_hash64a(&bytes[..8], 0));
+        assert_eq!(hash4(a, b, c, d), murmur_hash64a(&bytes, 0));
+    }
+}
