@@ -39,7 +39,7 @@ pub mod pbrt_hash;
 mod pmj_pixels;
 mod zsobol;
 
-pub use image_sobol::ImageSobol;
+pub use image_sobol::{ImageSobol, PBRT_SOBOL_DIMS};
 pub use independent::IndependentPixels;
 pub use padded::PaddedSobol;
 pub use pmj_pixels::Pmj02Pixels;
