@@ -83,6 +83,8 @@ pub mod kronecker;
 pub mod larcher_pillichshammer;
 pub mod latin_hypercube;
 pub mod lattice;
+pub mod pixel;
+pub mod pmj;
 /// The former home of the Owen-scrambled Sobol' fast paths, now [`sobol::OwenSobol`].
 #[deprecated(note = "use qmckit::sobol::OwenSobol (one type, cheap reseed)")]
 pub mod owen_sobol {
@@ -124,3 +126,8 @@ pub struct ToolboxDoctests;
 #[cfg(doctest)]
 #[doc = include_str!("../docs/analysis.md")]
 pub struct AnalysisDoctests;
+
+/// The pixel-sampler guide's examples, compiled and run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../docs/pixel-samplers.md")]
+pub struct PixelSamplerDoctests;

@@ -24,6 +24,7 @@ pub mod integration;
 pub mod l2;
 pub mod pcf;
 pub mod pointfile;
+pub mod screen_error;
 pub mod spectrum;
 pub mod star;
 pub mod tvalue;

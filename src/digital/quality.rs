@@ -4,7 +4,7 @@
 use super::DigitalNetB;
 use crate::analysis::Points;
 use crate::analysis::budget::{Budget, Cost};
-use crate::analysis::tvalue::{COUNT_RATE, count_steps, t_value_points};
+use crate::analysis::tvalue::{COUNT_RATE, count_steps, t_value_points_within};
 use crate::error::{Error, Result};
 
 /// The t-value in base `b` of points `start .. start + b^m` of `net`: the smallest `t`
@@ -59,5 +59,5 @@ pub fn t_value<M: AsRef<[u16]>>(
             *slot = (cell as f64 + 0.5) / cells;
         }
     }
-    t_value_points(Points::new(&x, s)?, net.base(), m)
+    t_value_points_within(Points::new(&x, s)?, net.base(), m, budget)
 }

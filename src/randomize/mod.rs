@@ -70,6 +70,7 @@
 
 mod lms;
 mod owen;
+mod pbrt_owen;
 mod shift;
 
 pub mod digits;
@@ -83,6 +84,7 @@ pub use owen::Owen;
 pub use owen::{
     ExactOwen, ExactOwenScrambler, FastOwen, FastOwenScrambler, OwenHash, laine_karras, vegdahl,
 };
+pub use pbrt_owen::PbrtOwenScrambler;
 pub use shift::{CranleyPatterson, DigitalShift, DigitalShiftScrambler, RotationScrambler};
 
 pub use crate::sampler::Base2Digital;

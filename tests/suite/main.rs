@@ -21,6 +21,8 @@ mod mask;
 mod nets;
 mod pcf;
 mod peers;
+mod pixel;
+mod pmj;
 mod randomize;
 mod samplers;
 mod spectrum;

@@ -438,6 +438,14 @@ pub fn t_value_u32_within(samples: &[u32], dims: usize, m: u32, budget: &Budget)
 /// # Ok::<(), qmckit::Error>(())
 /// ```
 pub fn t_value_points(points: Points, base: u32, m: u32) -> Result<u32> {
+    t_value_points_within(points, base, m, &Budget::DEFAULT)
+}
+
+/// As [`t_value_points`], [`Error::OverBudget`] past `budget` (checked before counting).
+///
+/// # Errors
+/// As [`t_value_points`].
+pub fn t_value_points_within(points: Points, base: u32, m: u32, budget: &Budget) -> Result<u32> {
     let d = digits_f64(points, base, m)?;
     let steps = count_steps(
         d.pow.last().copied().unwrap_or(1),
@@ -445,7 +453,7 @@ pub fn t_value_points(points: Points, base: u32, m: u32) -> Result<u32> {
         m,
         search_levels(m),
     );
-    Budget::DEFAULT.check(
+    budget.check(
         "counting points in elementary intervals",
         Cost::steps(steps, COUNT_RATE),
     )?;

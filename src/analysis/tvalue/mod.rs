@@ -53,7 +53,7 @@ mod rank;
 pub use count::{
     COUNT_RATE, IntervalFailure, count_steps, elementary_interval_failures,
     elementary_interval_failures_u32, elementary_interval_failures_u32_within, t_value_points,
-    t_value_u32, t_value_u32_within,
+    t_value_points_within, t_value_u32, t_value_u32_within,
 };
 pub use rank::{
     PROGRESS_STEPS, RANK_TEST_RATE, dependent_shape, dependent_shape_within, rank_test_steps,

@@ -11,6 +11,7 @@ mod input;
 mod mask;
 mod output;
 mod pcf;
+mod pixel;
 mod points;
 mod progress;
 mod spectrum;
@@ -36,7 +37,7 @@ struct Cli {
 enum Command {
     /// Write N points of a sampler, one point per line (natural order: line k is index start+k).
     #[command(after_help = points::AFTER_HELP)]
-    Points(points::PointsArgs),
+    Points(Box<points::PointsArgs>),
     /// Discrepancies of point sets read from a text file or stdin: 'metric value' lines.
     #[command(after_help = discrepancy::AFTER_HELP)]
     Discrepancy(discrepancy::DiscrepancyArgs),
@@ -58,6 +59,9 @@ enum Command {
     /// Dither masks: 'mask void-and-cluster --size WxH', a toroidal rank image.
     #[command(subcommand)]
     Mask(mask::MaskCommand),
+    /// The samples of one pixel from a renderer's pixel sampler (pbrt-v4 compatible).
+    #[command(after_help = pixel::AFTER_HELP)]
+    Pixel(pixel::PixelArgs),
 }
 
 /// A failure to report: one line and an exit code.
@@ -136,8 +140,8 @@ where
             }
             if err.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand {
                 report(
-                    "a command is needed: points, discrepancy, convergence, spectrum or \
-                     tvalue (see 'qmckit --help')",
+                    "a command is needed: points, pixel, discrepancy, tvalue, convergence, \
+                     spectrum, pcf, variance or mask (see 'qmckit --help')",
                 );
                 return 2;
             }
@@ -154,6 +158,7 @@ where
         Command::Tvalue(args) => tvalue::run(&args),
         Command::Variance(args) => variance::run(&args),
         Command::Mask(args) => mask::run(&args),
+        Command::Pixel(args) => pixel::run(&args),
     };
     match result {
         Ok(()) => 0,

@@ -22,7 +22,7 @@ use super::warp::{Warp, WarpArgs};
 /// Text shown after the options of `qmckit points --help`.
 pub const AFTER_HELP: &str = "\
 Options that apply (any other is an error that names it):
-  --seed      independent, latin, stratified (without --centered), and every --scramble
+  --seed      independent, latin, pmj02, stratified (without --centered), and every --scramble
   --base      vdc            --strata, --centered   stratified
   --total     the finite sets: stratified, latin, hammersley, lp
   --order     sobol (gray: SciPy's order)
@@ -81,6 +81,8 @@ pub enum SamplerName {
     BestCandidate,
     /// Gaussian blue noise (Ahmed, Ren, Wonka 2022) on the torus, 2D (--iterations I).
     GaussianBlueNoise,
+    /// PMJ02: progressive multi-jittered (0,2)-sequence, 2D, seeded (stochastic generation).
+    Pmj02,
 }
 
 impl SamplerName {
@@ -252,7 +254,7 @@ impl PointsArgs {
                 "{option} does not apply to {name}{why}"
             )))
         };
-        let randomized = matches!(sampler, S::Independent | S::Latin)
+        let randomized = matches!(sampler, S::Independent | S::Latin | S::Pmj02)
             || sampler.blue_noise().is_some()
             || (sampler == S::Stratified && !self.centered)
             || self.scramble != ScrambleName::None;
@@ -465,6 +467,14 @@ fn construct(args: &Spec, digits: DigitScramble) -> Result<Built, Failure> {
             ));
         }
         SamplerName::Independent => Box::new(Independent::new(d, args.seed)?),
+        SamplerName::Pmj02 => {
+            if d != 2 {
+                return Err(Failure::usage(format!(
+                    "pmj02 is two-dimensional: -d must be 2, got {d}"
+                )));
+            }
+            Box::new(qmckit::pmj::Pmj02::new(args.seed))
+        }
         SamplerName::Halton => Box::new(Halton::with_scramble(d, digits)?),
         SamplerName::Vdc => {
             if d != 1 {

@@ -13,6 +13,9 @@
 use core::fmt::{self, Write};
 use core::hint::black_box;
 
+#[path = "pixel_vectors.rs"]
+mod pixel_vectors;
+
 use qmckit::bits;
 use qmckit::hash;
 use qmckit::sobol::OwenSobol;
@@ -207,6 +210,8 @@ pub fn write_all<W: Write>(out: &mut W) -> fmt::Result {
     const_patterns(&mut lines)?;
     warps(&mut lines)?;
     errors(&mut lines)?;
+    pixel_vectors::pixel(&mut lines)?;
+    pixel_vectors::pmj(&mut lines)?;
     let n = lines.n;
     writeln!(lines.inner, "end {n}")
 }

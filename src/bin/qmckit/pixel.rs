@@ -1,0 +1,172 @@
+//! `qmckit pixel SAMPLER --resolution WxH --spp S [--seed K] --pixel X,Y [--dim D]
+//! [--randomize KIND] [--format u32|csv]`: the samples of one pixel, as pbrt-v4's samplers
+//! return them.
+
+use std::io::{BufWriter, Write};
+
+use clap::{Args, ValueEnum};
+use qmckit::pixel::{
+    ImageSobol, IndependentPixels, PaddedSobol, PixelSampler, Pmj02Pixels, Randomization, ZSobol,
+    pbrt_f32,
+};
+
+use super::Failure;
+
+/// Text shown after the options of `qmckit pixel --help`.
+pub const AFTER_HELP: &str = "\
+One line per sample index i = 0..S-1 of the pixel: the global sample index (the index into
+the Sobol' sequence for zsobol and sobol; '-' where the sampler has none), the 1D value at
+dimension D and the 2D value at dimension D: pbrt-v4's Get1D and Get2D called with the
+dimension counter at D (ZSobolSampler, SobolSampler, PaddedSobolSampler; bit-identical).
+independent is qmckit's hashed white noise, not pbrt's PCG stream; pmj02 is a seeded PMJ02
+sequence per pixel and dimension through a hashed index permutation (pbrt's layout, without
+its tables and blue-noise shifts).
+
+--randomize (zsobol, sobol, padded-sobol): none, xor (pbrt's PermuteDigits), fast-owen (the
+default), owen. --spp must be a power of two for zsobol. --seed is pbrt's int seed (32 bits).
+
+Formats: u32 (default): 'index v1 x y', the values as integers v * 2^32; csv: 'index,v1,x,y'
+with the floats pbrt returns (min(float(v) 2^-32, 1 - 2^-24)), shortest round-trip text.";
+
+/// The pixel samplers.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum PixelSamplerName {
+    /// pbrt-v4 ZSobolSampler: blue-noise Sobol' (Ahmed & Wonka 2020).
+    Zsobol,
+    /// pbrt-v4 SobolSampler: one Sobol' sequence over the image plane.
+    Sobol,
+    /// pbrt-v4 PaddedSobolSampler: per-pixel, per-dimension permuted and scrambled Sobol'.
+    PaddedSobol,
+    /// A seeded PMJ02 sequence per pixel and dimension, index permuted per pixel.
+    Pmj02,
+    /// Independent uniform values per pixel (hashed).
+    Independent,
+}
+
+/// `--randomize`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum RandomizeName {
+    /// No randomization.
+    None,
+    /// XOR with a hashed key (pbrt's PermuteDigits).
+    Xor,
+    /// Hash-based Owen scrambling (pbrt's FastOwen).
+    FastOwen,
+    /// pbrt's exact Owen scrambling.
+    Owen,
+}
+
+/// `--format`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum PixelFormat {
+    /// Integers v * 2^32.
+    U32,
+    /// pbrt's floats, comma-separated.
+    Csv,
+}
+
+/// `qmckit pixel` arguments.
+#[derive(Args, Debug)]
+pub struct PixelArgs {
+    /// The sampler.
+    #[arg(value_enum)]
+    pub sampler: PixelSamplerName,
+    /// Image size, WxH (e.g. 1920x1080).
+    #[arg(long)]
+    pub resolution: String,
+    /// Samples per pixel.
+    #[arg(long)]
+    pub spp: u32,
+    /// Seed (pbrt's int seed, as 32 bits).
+    #[arg(long, default_value_t = 0)]
+    pub seed: u32,
+    /// The pixel, X,Y (0-based).
+    #[arg(long)]
+    pub pixel: String,
+    /// The dimension counter D.
+    #[arg(long, default_value_t = 0)]
+    pub dim: u32,
+    /// Randomization of the Sobol' samplers.
+    #[arg(long, value_enum, default_value_t = RandomizeName::FastOwen)]
+    pub randomize: RandomizeName,
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = PixelFormat::U32)]
+    pub format: PixelFormat,
+}
+
+/// Two unsigned integers separated by `sep` (`--resolution 16x9`, `--pixel 3,5`).
+fn pair(flag: &str, text: &str, sep: char) -> Result<(u32, u32), Failure> {
+    let bad = || {
+        Failure::usage(format!(
+            "{flag} {}: expected two non-negative integers as A{sep}B",
+            text.escape_debug()
+        ))
+    };
+    let (a, b) = text.split_once(sep).ok_or_else(bad)?;
+    let a = a.trim().parse::<u32>().map_err(|_| bad())?;
+    let b = b.trim().parse::<u32>().map_err(|_| bad())?;
+    Ok((a, b))
+}
+
+/// Runs `qmckit pixel`.
+pub fn run(args: &PixelArgs) -> Result<(), Failure> {
+    let (w, h) = pair("--resolution", &args.resolution, 'x')?;
+    let (x, y) = pair("--pixel", &args.pixel, ',')?;
+    let r = match args.randomize {
+        RandomizeName::None => Randomization::None,
+        RandomizeName::Xor => Randomization::PermuteDigits,
+        RandomizeName::FastOwen => Randomization::FastOwen,
+        RandomizeName::Owen => Randomization::Owen,
+    };
+    let (spp, seed) = (args.spp, args.seed);
+    if args.sampler == PixelSamplerName::Zsobol && !spp.is_power_of_two() {
+        return Err(Failure::usage(format!(
+            "--spp {spp}: zsobol needs a power of two"
+        )));
+    }
+    let sampler: Box<dyn PixelSampler> = match args.sampler {
+        PixelSamplerName::Zsobol => Box::new(ZSobol::new(w, h, spp, r, seed)?),
+        PixelSamplerName::Sobol => Box::new(ImageSobol::new(w, h, spp, r, seed)?),
+        PixelSamplerName::PaddedSobol => Box::new(PaddedSobol::new(w, h, spp, r, seed)?),
+        PixelSamplerName::Independent | PixelSamplerName::Pmj02 => {
+            if args.randomize != RandomizeName::FastOwen {
+                return Err(Failure::usage(format!(
+                    "--randomize does not apply to {} (its randomness is its own)",
+                    if args.sampler == PixelSamplerName::Pmj02 {
+                        "pmj02"
+                    } else {
+                        "independent"
+                    }
+                )));
+            }
+            if args.sampler == PixelSamplerName::Pmj02 {
+                Box::new(Pmj02Pixels::new(w, h, spp, seed)?)
+            } else {
+                Box::new(IndependentPixels::new(w, h, spp, seed as u64)?)
+            }
+        }
+    };
+    // Checks the pixel once, so an error comes before any output.
+    sampler.get_1d(x, y, 0, args.dim)?;
+    let mut out = BufWriter::new(std::io::stdout().lock());
+    for i in 0..spp {
+        let index = match sampler.sample_index(x, y, i, args.dim)? {
+            Some(k) => k.to_string(),
+            None => "-".to_string(),
+        };
+        let v = sampler.get_1d(x, y, i, args.dim)?;
+        let [a, b] = sampler.get_2d(x, y, i, args.dim)?;
+        match args.format {
+            PixelFormat::U32 => writeln!(out, "{index} {v} {a} {b}")?,
+            PixelFormat::Csv => writeln!(
+                out,
+                "{index},{},{},{}",
+                pbrt_f32(v),
+                pbrt_f32(a),
+                pbrt_f32(b)
+            )?,
+        }
+    }
+    out.flush()?;
+    Ok(())
+}

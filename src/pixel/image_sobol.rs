@@ -1,0 +1,224 @@
+//! pbrt-v4's `SobolSampler`: one Sobol' sequence over the whole image plane, the samples of a
+//! pixel found by solving for their indices (Grünschloss, Raab & Keller 2012, "Enumerating
+//! quasi-Monte Carlo point sequences in elementary intervals").
+
+use super::pbrt_hash::hash2;
+use super::{
+    F32_ONE_MINUS_EPSILON, PixelGrid, PixelSampler, Randomization, pbrt_f32, sobol0, sobol1,
+};
+use crate::error::{Error, Result};
+use crate::sobol::SobolDimension;
+
+/// pbrt's number of Sobol' dimensions: the dimension counter wraps to 2 there.
+pub const PBRT_SOBOL_DIMS: u32 = 1024;
+
+/// The image-plane Sobol' sampler. With `2^m = RoundUpPow2(max(w, h))`, sample `i` of pixel
+/// `p` is the `i`-th Sobol' index whose first two coordinates fall in pixel `p` of the
+/// `2^m x 2^m` grid: since Sobol' (0, 1) is a (0, 2)-sequence, every frame of `2^2m`
+/// consecutive indices holds one such index, `i 2^2m + l`, and `l` solves a `2m x 2m`
+/// system over GF(2). The matrices are computed by [`ImageSobol::new`] (Gaussian
+/// elimination on the first two Sobol' dimensions), not shipped.
+///
+/// `get_pixel_2d` is the unscrambled point scaled into the pixel; 1D and 2D values start at
+/// Sobol' dimension 2 (a counter below 2 reads as 2; pbrt wraps to 2 at
+/// [`PBRT_SOBOL_DIMS`]), scrambled with `low32(Hash(d, seed))`. Needs
+/// `spp 2^2m <= 2^32` (32-bit Sobol' indices; pbrt allows 52 bits).
+/// Cost: setup `O(m^2)`; per sample `O(m + log2 spp)` XORs for the index, then one Sobol'
+/// value (32 AND/XOR) and the scramble.
+///
+/// ```
+/// use qmckit::pixel::{ImageSobol, PixelSampler, Randomization};
+/// let s = ImageSobol::new(16, 9, 4, Randomization::FastOwen, 0)?;
+/// let index = s.sample_index(3, 5, 2, 0)?.unwrap_or(0);
+/// assert_eq!(index >> 8, 2); // frame 2 of 256 indices
+/// let [u, v] = s.get_pixel_2d_f32(3, 5, 2, 0)?;
+/// assert!((0.0..1.0).contains(&u) && (0.0..1.0).contains(&v));
+/// # Ok::<(), qmckit::Error>(())
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct ImageSobol {
+    grid: PixelGrid,
+    randomize: Randomization,
+    seed: u32,
+    m: u32,
+    /// `f(2^(2m + c))`: what frame bit `c` adds to the pixel code.
+    frame_cols: [u32; 32],
+    /// The index `l < 2^2m` with `f(l) = 2^c`.
+    inverse: [u32; 32],
+}
+
+/// The pixel code of Sobol' index `i` on the `2^m` grid:
+/// `(top m bits of x) << m | (top m bits of y)`. Linear over GF(2) in the bits of `i`.
+fn code(m: u32, i: u64) -> u32 {
+    if m == 0 {
+        return 0;
+    }
+    ((sobol0(i) >> (32 - m)) << m) | (sobol1(i) >> (32 - m))
+}
+
+impl ImageSobol {
+    /// The sampler of a `width x height` image with `spp` samples a pixel (any count; pbrt
+    /// advises a power of two). `seed` is pbrt's `int` seed, as its 32 bits.
+    ///
+    /// # Errors
+    /// As [`PixelGrid::new`]; [`Error::TooLarge`] when `spp 2^2m` passes `2^32`.
+    pub fn new(
+        width: u32,
+        height: u32,
+        spp: u32,
+        randomize: Randomization,
+        seed: u32,
+    ) -> Result<Self> {
+        let grid = PixelGrid::new(width, height, spp, false)?;
+        let m = grid.pow2_side().trailing_zeros();
+        // m <= 30 (sides up to 2^30), so the shift stays inside u64.
+        let needed = (spp as u64) << (2 * m).min(63);
+        if 2 * m > 32 || needed > 1 << 32 {
+            return Err(Error::TooLarge {
+                what: "Sobol' indices of the image (spp * side^2)",
+                requested: needed,
+                max: 1 << 32,
+            });
+        }
+        let n = (2 * m) as usize;
+        let mut frame_cols = [0u32; 32];
+        for (c, col) in frame_cols.iter_mut().enumerate().take(32 - n) {
+            *col = code(m, 1u64 << (n + c));
+        }
+        // Gauss-Jordan: cols[j] = f(comb[j]); reduce cols to the unit vectors.
+        let mut cols = [0u32; 32];
+        let mut comb = [0u32; 32];
+        for j in 0..n {
+            if let (Some(c), Some(k)) = (cols.get_mut(j), comb.get_mut(j)) {
+                *c = code(m, 1u64 << j);
+                *k = 1 << j;
+            }
+        }
+        for bit in 0..n {
+            let pivot = (bit..n).find(|&j| cols.get(j).is_some_and(|c| c >> bit & 1 == 1));
+            let Some(p) = pivot else {
+                return Err(Error::Unsupported {
+                    what: "a singular pixel-code matrix (not a (0,2)-sequence)",
+                });
+            };
+            cols.swap(bit, p);
+            comb.swap(bit, p);
+            let (pc, pk) = (
+                cols.get(bit).copied().unwrap_or(0),
+                comb.get(bit).copied().unwrap_or(0),
+            );
+            for j in 0..n {
+                if j != bit
+                    && let (Some(c), Some(k)) = (cols.get_mut(j), comb.get_mut(j))
+                    && *c >> bit & 1 == 1
+                {
+                    *c ^= pc;
+                    *k ^= pk;
+                }
+            }
+        }
+        Ok(ImageSobol {
+            grid,
+            randomize,
+            seed,
+            m,
+            frame_cols,
+            inverse: comb,
+        })
+    }
+
+    /// pbrt's `SobolIntervalToIndex(m, frame, p)`: the Sobol' index of frame `frame` whose
+    /// point lies in pixel `(x, y)` of the `2^m` grid (unchecked: `x, y < 2^m`, and
+    /// `frame 2^2m < 2^32`).
+    pub fn interval_to_index(&self, frame: u32, x: u32, y: u32) -> u64 {
+        let m = self.m;
+        if m == 0 {
+            return frame as u64;
+        }
+        let mut delta = 0u32;
+        let mut f = frame;
+        let mut c = 0;
+        while f != 0 {
+            if f & 1 == 1 {
+                delta ^= self.frame_cols.get(c).copied().unwrap_or(0);
+            }
+            f >>= 1;
+            c += 1;
+        }
+        let mut b = ((x << m) | y) ^ delta;
+        let mut low = 0u32;
+        let mut c = 0;
+        while b != 0 {
+            if b & 1 == 1 {
+                low ^= self.inverse.get(c).copied().unwrap_or(0);
+            }
+            b >>= 1;
+            c += 1;
+        }
+        ((frame as u64) << (2 * m)) | low as u64
+    }
+
+    /// Sobol' dimension `d` (>= 2) of `index`, scrambled with `low32(Hash(d, seed))`.
+    fn dimension(&self, index: u64, d: u32) -> Result<u32> {
+        let v = SobolDimension::new(d as usize)?.sample(index as u32);
+        Ok(match self.randomize {
+            Randomization::None => v,
+            r => r.apply(v, hash2(d, self.seed) as u32),
+        })
+    }
+
+    /// The checked index of a sample.
+    fn index(&self, x: u32, y: u32, index: u32) -> Result<u64> {
+        self.grid.check(x, y, index)?;
+        Ok(self.interval_to_index(index, x, y))
+    }
+}
+
+impl PixelSampler for ImageSobol {
+    fn grid(&self) -> PixelGrid {
+        self.grid
+    }
+
+    fn sample_index(&self, x: u32, y: u32, index: u32, _dim: u32) -> Result<Option<u64>> {
+        Ok(Some(self.index(x, y, index)?))
+    }
+
+    fn get_1d(&self, x: u32, y: u32, index: u32, dim: u32) -> Result<u32> {
+        let i = self.index(x, y, index)?;
+        let d = dim.max(2);
+        let d = if d >= PBRT_SOBOL_DIMS { 2 } else { d };
+        self.dimension(i, d)
+    }
+
+    fn get_2d(&self, x: u32, y: u32, index: u32, dim: u32) -> Result<[u32; 2]> {
+        let i = self.index(x, y, index)?;
+        let d = dim.max(2);
+        let d = if d + 1 >= PBRT_SOBOL_DIMS { 2 } else { d };
+        Ok([self.dimension(i, d)?, self.dimension(i, d + 1)?])
+    }
+
+    /// The unscrambled point of dimensions (0, 1) in pixel coordinates as a 0.32 fraction:
+    /// `frac(2^m u)`, the bits below the pixel's.
+    fn get_pixel_2d(&self, x: u32, y: u32, index: u32, _dim: u32) -> Result<[u32; 2]> {
+        let i = self.index(x, y, index)?;
+        let m = self.m;
+        Ok([sobol0(i) << m, sobol1(i) << m]) // m <= 16
+    }
+
+    fn pixel_2d_moves_counter(&self) -> bool {
+        false
+    }
+
+    /// pbrt's floats: `clamp(float(u) 2^m - p, 0, 1 - 2^-24)` with `float(u)` from
+    /// [`pbrt_f32`] (so it can differ from the fraction's conversion in the last bits).
+    fn get_pixel_2d_f32(&self, x: u32, y: u32, index: u32, _dim: u32) -> Result<[f32; 2]> {
+        let i = self.index(x, y, index)?;
+        let scale = (1u64 << self.m) as f32;
+        let f = |u: u32, p: u32| {
+            let t = pbrt_f32(u) * scale - p as f32;
+            t.clamp(0.0, F32_ONE_MINUS_EPSILON)
+        };
+        Ok([f(sobol0(i), x), f(sobol1(i), y)])
+    }
+}

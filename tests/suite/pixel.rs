@@ -1,0 +1,569 @@
+//! The pixel samplers against pbrt-v4's definitions: the check values pbrt gives, the golden
+//! file tests/golden/pbrt_samplers.txt (made by tests/golden/gen_pbrt_samplers.py, an
+//! independent Python reading of pbrt's code that brute-forces SobolIntervalToIndex), and
+//! the properties pbrt's own tests state (aligned, unique index blocks; per-pixel nets).
+
+// pbrt's check values are quoted as published, with 9 significant digits.
+#![allow(clippy::excessive_precision)]
+
+use crate::common::first_net_failure;
+use qmckit::Error;
+use qmckit::pixel::pbrt_hash::{hash2, hash4, mix_bits, permutation_element};
+use qmckit::pixel::{
+    ImageSobol, IndependentPixels, PaddedSobol, PixelSampler, PixelStream, Pmj02Pixels,
+    Randomization, ZSobol, pbrt_f32,
+};
+use qmckit::randomize::{FastOwenScrambler, OwenHash, PbrtOwenScrambler};
+
+const ALL: [Randomization; 4] = [
+    Randomization::None,
+    Randomization::PermuteDigits,
+    Randomization::FastOwen,
+    Randomization::Owen,
+];
+
+fn randomization(name: &str) -> Randomization {
+    match name {
+        "none" => Randomization::None,
+        "xor" => Randomization::PermuteDigits,
+        "fastowen" => Randomization::FastOwen,
+        "owen" => Randomization::Owen,
+        _ => panic!("unknown randomization {name}"),
+    }
+}
+
+fn hex(s: &str) -> u64 {
+    u64::from_str_radix(s, 16).unwrap_or_else(|e| panic!("{s}: {e}"))
+}
+
+#[test]
+fn pbrt_hash_check_values() {
+    assert_eq!(hash2(0, 0), 0x7208_f7fa_198a_2d81);
+    assert_eq!(hash2(1, 0), 0x8fbb_8d81_5c9e_092e);
+    assert_eq!(hash2(3, 7), 0x7ddd_e854_6997_7f6a);
+    assert_eq!(hash4(3, 5, 0, 0), 0xd539_d46e_d315_9a89);
+    assert_eq!(mix_bits(1), 0xccde_22c1_faa4_d20f);
+    assert_eq!(permutation_element(3, 16, 0x1234_5678), 12);
+    assert_eq!(permutation_element(5, 7, 42), 3);
+    let fast = FastOwenScrambler::from_key(0x1234_5678, OwenHash::Vegdahl);
+    assert_eq!(fast.scramble(0x8000_0000), 0x87e3_2b06);
+    assert_eq!(
+        PbrtOwenScrambler::new(0x1234_5678).scramble(0x8000_0000),
+        0xbf7f_d854
+    );
+}
+
+#[test]
+fn zsobol_pbrt_check_values() {
+    let z = ZSobol::new(16, 9, 1, Randomization::FastOwen, 0).unwrap();
+    assert_eq!(z.sample_index(1, 0, 0, 0).unwrap(), Some(1));
+    assert_eq!(z.get_1d_f32(1, 0, 0, 0).unwrap(), 0.570_228_934);
+    assert_eq!(
+        z.get_2d_f32(1, 0, 0, 0).unwrap(),
+        [0.702_183_783, 0.853_890_479]
+    );
+    let z = ZSobol::new(16, 9, 4, Randomization::FastOwen, 0).unwrap();
+    assert_eq!(z.sample_index(1, 0, 3, 0).unwrap(), Some(4));
+    assert_eq!(z.get_1d_f32(1, 0, 3, 0).unwrap(), 0.336_978_048);
+}
+
+#[test]
+fn padded_sobol_pbrt_check_values() {
+    let p = PaddedSobol::new(16, 16, 16, Randomization::None, 0).unwrap();
+    assert_eq!(p.get_1d_f32(3, 5, 0, 0).unwrap(), 0.5625);
+    assert_eq!(p.get_2d_f32(3, 5, 0, 0).unwrap(), [0.5625, 0.4375]);
+    assert_eq!(p.get_2d_f32(3, 5, 1, 2).unwrap(), [0.75, 0.25]);
+    assert_eq!(p.get_2d_f32(3, 5, 15, 7).unwrap(), [0.0625, 0.9375]);
+    let p = PaddedSobol::new(16, 16, 16, Randomization::FastOwen, 0).unwrap();
+    assert_eq!(p.get_1d_f32(3, 5, 0, 0).unwrap(), 0.773_123_562);
+    assert_eq!(
+        p.get_2d_f32(3, 5, 0, 0).unwrap(),
+        [0.172_279, 0.043_057_885]
+    );
+    assert_eq!(p.get_1d_f32(3, 5, 5, 2).unwrap(), 0.537_301_898);
+    assert_eq!(
+        p.get_2d_f32(3, 5, 5, 2).unwrap(),
+        [0.243_017_271, 0.191_734_999]
+    );
+}
+
+/// Every line of the golden file, value for value and float bit for float bit.
+#[test]
+fn golden_pbrt_samplers() {
+    let path = format!(
+        "{}/tests/golden/pbrt_samplers.txt",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
+    let mut counts = [0usize; 3];
+    for line in text.lines().filter(|l| !l.starts_with('#')) {
+        let f: Vec<&str> = line.split_whitespace().collect();
+        let n = |k: usize| f[k].parse::<u32>().unwrap();
+        let (w, h, spp, seed, r) = (n(1), n(2), n(3), n(4), randomization(f[5]));
+        let (px, py, i, dim) = (n(6), n(7), n(8), n(9));
+        let index = hex(f[10]);
+        let want: Vec<u32> = f[11..].iter().map(|s| hex(s) as u32).collect();
+        let s: Box<dyn PixelSampler> = match f[0] {
+            "zsobol" => Box::new(ZSobol::new(w, h, spp, r, seed).unwrap()),
+            "padded" => Box::new(PaddedSobol::new(w, h, spp, r, seed).unwrap()),
+            "sobol" => Box::new(ImageSobol::new(w, h, spp, r, seed).unwrap()),
+            other => panic!("unknown sampler {other}"),
+        };
+        let got_1d = s.get_1d(px, py, i, dim).unwrap();
+        let got_2d = s.get_2d(px, py, i, dim).unwrap();
+        assert_eq!([got_1d, got_2d[0], got_2d[1]], want[..3], "{line}");
+        match f[0] {
+            "sobol" => {
+                counts[2] += 1;
+                assert_eq!(
+                    s.sample_index(px, py, i, dim).unwrap(),
+                    Some(index),
+                    "{line}"
+                );
+                let pix = s.get_pixel_2d_f32(px, py, i, dim).unwrap();
+                assert_eq!([pix[0].to_bits(), pix[1].to_bits()], want[3..5], "{line}");
+            }
+            kind => {
+                if kind == "zsobol" {
+                    counts[0] += 1;
+                    assert_eq!(
+                        s.sample_index(px, py, i, dim).unwrap(),
+                        Some(index),
+                        "{line}"
+                    );
+                } else {
+                    counts[1] += 1;
+                }
+                let f1 = s.get_1d_f32(px, py, i, dim).unwrap().to_bits();
+                let f2 = s.get_2d_f32(px, py, i, dim).unwrap().map(f32::to_bits);
+                assert_eq!([f1, f2[0], f2[1]], want[3..6], "{line}");
+            }
+        }
+    }
+    assert!(counts.iter().all(|&c| c >= 100), "{counts:?}");
+}
+
+/// pbrt's quirk: Get1D at dimension d uses the index of d but the scramble of Hash(d + 1).
+#[test]
+fn zsobol_get1d_hashes_the_incremented_dimension() {
+    let z = ZSobol::new(8, 8, 4, Randomization::PermuteDigits, 3).unwrap();
+    let none = ZSobol::new(8, 8, 4, Randomization::None, 3).unwrap();
+    for d in 0..6 {
+        let plain = none.get_1d(2, 5, 1, d).unwrap();
+        let key = hash2(d + 1, 3) as u32;
+        assert_eq!(z.get_1d(2, 5, 1, d).unwrap(), plain ^ key);
+        let idx = none.sample_index(2, 5, 1, d).unwrap().unwrap();
+        assert_eq!(plain, (idx as u32).reverse_bits());
+    }
+}
+
+/// pbrt's `ZSobolSampler.ValidIndices`-style check: each pixel's spp indices are one aligned
+/// block, and the blocks of distinct pixels are distinct.
+#[test]
+fn zsobol_blocks_are_aligned_and_unique() {
+    for log2_spp in 0..=10u32 {
+        let spp = 1 << log2_spp;
+        let (w, h) = (16u32, 9u32);
+        let z = ZSobol::new(w, h, spp, Randomization::FastOwen, 0).unwrap();
+        for dim in [0u32, 3, 6] {
+            let mut blocks = std::collections::HashSet::new();
+            for y in 0..h {
+                for x in 0..w {
+                    let idx: Vec<u64> = (0..spp)
+                        .map(|i| z.sample_index(x, y, i, dim).unwrap().unwrap())
+                        .collect();
+                    let block = idx[0] >> log2_spp;
+                    let mut low: Vec<u64> = idx
+                        .iter()
+                        .map(|&v| {
+                            assert_eq!(v >> log2_spp, block, "spp {spp} dim {dim} ({x},{y})");
+                            v & (spp as u64 - 1)
+                        })
+                        .collect();
+                    low.sort_unstable();
+                    assert!(low.iter().enumerate().all(|(k, &v)| v == k as u64));
+                    assert!(blocks.insert(block), "block reused: spp {spp} ({x},{y})");
+                }
+            }
+        }
+    }
+}
+
+/// Unscrambled or XOR-scrambled, every pixel's spp pixel samples are a (0, m, 2)-net
+/// (pbrt's `ZSobolSampler.ElementaryIntervals`); PaddedSobol's too, for every scramble,
+/// and PMJ02 pixels'.
+#[test]
+fn per_pixel_samples_are_nets() {
+    for seed in [0u32, 1, 5, 6, 10, 15] {
+        for m in 2..=8u32 {
+            let spp = 1 << m;
+            for r in [Randomization::None, Randomization::PermuteDigits] {
+                let z = ZSobol::new(10, 10, spp, r, seed).unwrap();
+                for (x, y) in [(0, 0), (3, 7), (9, 9), (5, 2)] {
+                    let mut pts = vec![[0u32; 2]; spp as usize];
+                    z.fill_2d(x, y, 0, &mut pts).unwrap();
+                    assert_eq!(first_net_failure(&pts, m), None, "{r:?} seed {seed} m {m}");
+                }
+            }
+            for r in ALL {
+                let p = PaddedSobol::new(10, 10, spp, r, seed).unwrap();
+                let mut pts = vec![[0u32; 2]; spp as usize];
+                p.fill_2d(4, 6, 2 * m, &mut pts).unwrap();
+                assert_eq!(first_net_failure(&pts, m), None, "padded {r:?} seed {seed}");
+            }
+            let q = Pmj02Pixels::new(10, 10, spp, seed).unwrap();
+            let mut pts = vec![[0u32; 2]; spp as usize];
+            q.fill_2d(7, 1, m, &mut pts).unwrap();
+            assert_eq!(first_net_failure(&pts, m), None, "pmj02 pixels seed {seed}");
+        }
+    }
+}
+
+/// SobolIntervalToIndex by the computed matrices equals the brute-force search, and the
+/// indices tile the image: frame f holds exactly one index per pixel of the 2^m grid.
+#[test]
+fn image_sobol_index_is_the_brute_force_one() {
+    for (w, h) in [(1u32, 1u32), (2, 2), (5, 3), (16, 9), (33, 20)] {
+        let s = ImageSobol::new(w, h, 4, Randomization::None, 0).unwrap();
+        let side = w.max(h).next_power_of_two();
+        let m = side.trailing_zeros();
+        for frame in 0..4u32 {
+            let mut seen = std::collections::HashMap::new();
+            for l in 0..(1u64 << (2 * m)) {
+                let i = ((frame as u64) << (2 * m)) | l;
+                let x = if m == 0 {
+                    0
+                } else {
+                    (i as u32).reverse_bits() >> (32 - m)
+                };
+                let y = if m == 0 {
+                    0
+                } else {
+                    qmckit::pixel::sobol1(i) >> (32 - m)
+                };
+                assert!(seen.insert((x, y), i).is_none(), "two indices in one pixel");
+            }
+            for y in 0..h {
+                for x in 0..w {
+                    assert_eq!(
+                        s.sample_index(x, y, frame, 0).unwrap(),
+                        Some(seen[&(x, y)]),
+                        "{w}x{h} frame {frame} ({x},{y})"
+                    );
+                    let [u, v] = s.get_pixel_2d_f32(x, y, frame, 0).unwrap();
+                    assert!((0.0..1.0).contains(&u) && (0.0..1.0).contains(&v));
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn stream_consumes_dimensions_like_pbrt() {
+    let z = ZSobol::new(16, 9, 4, Randomization::FastOwen, 0).unwrap();
+    let mut s = PixelStream::start(&z, 1, 0, 3, 0).unwrap();
+    let p = s.next_pixel_2d().unwrap();
+    let a = s.next_1d().unwrap();
+    let b = s.next_2d().unwrap();
+    assert_eq!(p, z.get_2d(1, 0, 3, 0).unwrap());
+    assert_eq!(a, z.get_1d(1, 0, 3, 2).unwrap());
+    assert_eq!(b, z.get_2d(1, 0, 3, 3).unwrap());
+    assert_eq!(s.dimension(), 5);
+    let img = ImageSobol::new(16, 9, 4, Randomization::FastOwen, 0).unwrap();
+    let mut s = PixelStream::start(&img, 1, 0, 3, 0).unwrap();
+    s.next_pixel_2d().unwrap();
+    assert_eq!(s.dimension(), 0); // the image-plane dimensions are outside the counter
+    assert_eq!(s.next_1d().unwrap(), img.get_1d(1, 0, 3, 2).unwrap());
+}
+
+#[test]
+fn bad_input_is_an_error() {
+    assert_eq!(
+        ZSobol::new(16, 9, 3, Randomization::None, 0),
+        Err(Error::NotPowerOfTwo { n: 3 })
+    );
+    assert_eq!(
+        ZSobol::new(0, 9, 4, Randomization::None, 0),
+        Err(Error::ZeroPoints)
+    );
+    assert!(matches!(
+        ZSobol::new(1 << 30, 1 << 30, 1 << 8, Randomization::None, 0),
+        Err(Error::TooLarge { .. })
+    ));
+    assert!(ZSobol::new(1 << 30, 1 << 30, 1 << 4, Randomization::None, 0).is_ok());
+    assert!(matches!(
+        ImageSobol::new(1 << 16, 1, 2, Randomization::None, 0),
+        Err(Error::TooLarge { .. })
+    ));
+    let z = ZSobol::new(16, 9, 4, Randomization::None, 0).unwrap();
+    assert!(matches!(
+        z.get_1d(16, 0, 0, 0),
+        Err(Error::InvalidParameter { .. })
+    ));
+    assert!(matches!(
+        z.get_1d(0, 9, 0, 0),
+        Err(Error::InvalidParameter { .. })
+    ));
+    assert_eq!(
+        z.get_2d(0, 0, 4, 0),
+        Err(Error::IndexOutOfRange { index: 4, len: 4 })
+    );
+    let mut five = [0u32; 5];
+    assert!(matches!(
+        z.fill_1d(0, 0, 0, &mut five),
+        Err(Error::BufferLength { .. })
+    ));
+    let p = PaddedSobol::new(4, 4, 6, Randomization::None, 0).unwrap();
+    assert!(p.get_1d(0, 0, 5, 0).is_ok()); // any spp for the padded sampler
+    let s = ImageSobol::new(16, 9, 4, Randomization::None, 0).unwrap();
+    assert!(matches!(
+        s.get_1d(0, 0, 0, 1_000_000),
+        Ok(_) | Err(Error::DimensionOutOfRange { .. })
+    ));
+}
+
+#[test]
+fn independent_pixels_are_uniform_and_decorrelated() {
+    let s = IndependentPixels::new(64, 64, 4, 9).unwrap();
+    let mut sum = 0.0;
+    let mut n = 0.0;
+    for y in 0..64 {
+        for x in 0..64 {
+            for i in 0..4 {
+                sum += pbrt_f32(s.get_1d(x, y, i, 0).unwrap()) as f64;
+                n += 1.0;
+            }
+        }
+    }
+    assert!((sum / n - 0.5).abs() < 0.01, "{}", sum / n);
+    assert_ne!(s.get_2d(0, 0, 0, 0).unwrap(), s.get_2d(0, 0, 0, 1).unwrap());
+}
+
+#[cfg(feature = "cli")]
+mod cli {
+    use crate::common::cli::{assert_usage_error, run};
+
+    fn lines(args: &[&str]) -> Vec<String> {
+        let out = run(args, "");
+        assert_eq!(out.status.code(), Some(0), "{args:?}: {:?}", out.stderr);
+        String::from_utf8(out.stdout)
+            .unwrap()
+            .lines()
+            .map(str::to_string)
+            .collect()
+    }
+
+    /// pbrt's check values through the command (16x9, seed 0, FastOwen).
+    #[test]
+    fn pixel_prints_pbrt_values() {
+        let base = ["pixel", "zsobol", "--resolution", "16x9", "--pixel", "1,0"];
+        let one = lines(&[&base[..], &["--spp", "1", "--format", "csv"]].concat());
+        assert_eq!(one, ["1,0.57022893,0.7021838,0.8538905"]);
+        let four = lines(&[&base[..], &["--spp", "4", "--format", "csv"]].concat());
+        assert_eq!(four.len(), 4);
+        assert!(four[3].starts_with("4,0.33697805,"), "{four:?}");
+        let padded = lines(&[
+            "pixel",
+            "padded-sobol",
+            "--resolution",
+            "16x16",
+            "--spp",
+            "16",
+            "--pixel",
+            "3,5",
+            "--randomize",
+            "none",
+            "--format",
+            "csv",
+        ]);
+        assert_eq!(padded[0], "-,0.5625,0.5625,0.4375");
+        let ind = lines(&[
+            "pixel",
+            "independent",
+            "--resolution",
+            "4x4",
+            "--spp",
+            "3",
+            "--pixel",
+            "0,0",
+        ]);
+        assert_eq!(ind.len(), 3);
+        assert!(
+            ind.iter()
+                .all(|l| l.starts_with("- ") && l.split(' ').count() == 4)
+        );
+        let pmj = lines(&[
+            "pixel",
+            "pmj02",
+            "--resolution",
+            "4x4",
+            "--spp",
+            "8",
+            "--pixel",
+            "1,2",
+        ]);
+        assert_eq!(pmj.len(), 8);
+        let sobol = lines(&[
+            "pixel",
+            "sobol",
+            "--resolution",
+            "16x9",
+            "--spp",
+            "2",
+            "--pixel",
+            "3,5",
+        ]);
+        let idx: Vec<u64> = sobol
+            .iter()
+            .map(|l| l.split(' ').next().unwrap().parse().unwrap())
+            .collect();
+        assert_eq!(idx.iter().map(|i| i >> 8).collect::<Vec<_>>(), [0, 1]);
+    }
+
+    #[test]
+    fn pixel_refuses_bad_input() {
+        let z = ["pixel", "zsobol", "--pixel", "1,0"];
+        assert_usage_error(
+            &[&z[..], &["--resolution", "16x9", "--spp", "3"]].concat(),
+            "",
+            "--spp 3",
+        );
+        assert_usage_error(
+            &[&z[..], &["--resolution", "16y9", "--spp", "4"]].concat(),
+            "",
+            "--resolution",
+        );
+        assert_usage_error(
+            &[&z[..], &["--resolution", "0x9", "--spp", "4"]].concat(),
+            "",
+            "at least 1",
+        );
+        assert_usage_error(
+            &[
+                "pixel",
+                "zsobol",
+                "--resolution",
+                "16x9",
+                "--spp",
+                "4",
+                "--pixel",
+                "16,0",
+            ],
+            "",
+            "outside the image",
+        );
+        assert_usage_error(
+            &[
+                "pixel",
+                "zsobol",
+                "--resolution",
+                "16x9",
+                "--spp",
+                "4",
+                "--pixel=-1,0",
+            ],
+            "",
+            "--pixel",
+        );
+        assert_usage_error(
+            &[
+                "pixel",
+                "sobol",
+                "--resolution",
+                "65536x1",
+                "--spp",
+                "4",
+                "--pixel",
+                "0,0",
+            ],
+            "",
+            "too many",
+        );
+        assert_usage_error(
+            &[
+                "pixel",
+                "independent",
+                "--resolution",
+                "4x4",
+                "--spp",
+                "4",
+                "--pixel",
+                "0,0",
+                "--randomize",
+                "owen",
+            ],
+            "",
+            "--randomize",
+        );
+    }
+}
+
+/// ZSobol's error is blue: at 1, 4 and 16 spp, its low-frequency error power (below a
+/// quarter of Nyquist) against per-pixel independently scrambled Sobol' (PaddedSobol, the
+/// same per-pixel nets without the Morton ordering), averaged over 16 seeds, 128 x 128
+/// pixels. Measured (ratio of low-band power, ratio of RMSE): Gaussian 0.26/1.00,
+/// 0.20/1.11, 0.10/0.79; step 0.28/1.00, 0.39/0.99, 0.41/1.03 at 1, 4, 16 spp. The bound is
+/// 0.35 except for the step at 4 and 16 spp, where pbrt's ZSobol reaches about 0.4; the
+/// RMSE within 15%. Independent pixels are white (normalized low band near 1).
+#[cfg(feature = "analysis")]
+#[test]
+fn zsobol_error_is_blue_noise() {
+    use qmckit::analysis::budget::Budget;
+    use qmckit::analysis::screen_error::{PixelIntegrand, screen_error};
+    const SEEDS: u32 = 16;
+    let mut report = String::new();
+    for f in [PixelIntegrand::GaussianBump, PixelIntegrand::Step] {
+        for spp in [1u32, 4, 16] {
+            let (mut z, mut p, mut ind) = ([0.0; 3], [0.0; 3], [0.0; 3]);
+            for seed in 0..SEEDS {
+                let zs = ZSobol::new(128, 128, spp, Randomization::FastOwen, seed).unwrap();
+                let ps = PaddedSobol::new(128, 128, spp, Randomization::FastOwen, seed).unwrap();
+                let is = IndependentPixels::new(128, 128, spp, seed as u64).unwrap();
+                for (acc, e) in [
+                    (&mut z, screen_error(&zs, f, &Budget::UNLIMITED).unwrap()),
+                    (&mut p, screen_error(&ps, f, &Budget::UNLIMITED).unwrap()),
+                    (&mut ind, screen_error(&is, f, &Budget::UNLIMITED).unwrap()),
+                ] {
+                    acc[0] += e.rmse * e.rmse / SEEDS as f64;
+                    acc[1] += e.low_band_absolute / SEEDS as f64;
+                    acc[2] += e.low_band / SEEDS as f64;
+                }
+            }
+            let ratio = z[1] / p[1];
+            let rmse = (z[0] / p[0]).sqrt();
+            report += &format!(
+                "{f:?} spp {spp}: low-band power ZSobol/PaddedSobol {ratio:.3}, RMSE ratio \
+                 {rmse:.3}, normalized low band z {:.3} padded {:.3} independent {:.3}\n",
+                z[2], p[2], ind[2]
+            );
+            let bound = if f == PixelIntegrand::Step && spp > 1 {
+                0.45
+            } else {
+                0.35
+            };
+            assert!(ratio <= bound, "{report}");
+            assert!(rmse <= 1.15, "{report}");
+            assert!((0.8..1.2).contains(&ind[2]), "{report}");
+            assert!((0.8..1.2).contains(&p[2]), "{report}");
+        }
+    }
+    println!("{report}");
+}
+
+/// The fixed-size hashes equal MurmurHash64A of their packed bytes.
+#[test]
+fn word_hashes_equal_the_byte_hash() {
+    use qmckit::pixel::pbrt_hash::murmur_hash64a;
+    for (a, b, c, d) in [
+        (0u32, 0u32, 0u32, 0u32),
+        (3, 5, 7, 11),
+        (u32::MAX, 1, 1 << 31, 99),
+    ] {
+        let mut bytes = [0u8; 16];
+        for (k, v) in [a, b, c, d].into_iter().enumerate() {
+            bytes[4 * k..4 * k + 4].copy_from_slice(&v.to_le_bytes());
+        }
+        assert_eq!(hash2(a, b), murmur_hash64a(&bytes[..8], 0));
+        assert_eq!(hash4(a, b, c, d), murmur_hash64a(&bytes, 0));
+    }
+}
