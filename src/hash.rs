@@ -44,8 +44,8 @@ pub const fn uniform(seed: u64, index: u32, dim: u64) -> u32 {
 ///
 /// A bijection for `index < n <= 2^32`; returns 0 for `n <= 1`, and reads `n > 2^32` as
 /// `2^32` (every `u32` index), so the result always fits a `u32` and is below `n`. An
-/// `index >= n` is first reduced into the mixer's domain (the result is then some value
-/// below `n`, not part of the bijection). `O(1)` expected.
+/// `index >= n` is taken modulo `n` (a walk started outside `[0, n)` might never enter it).
+/// `O(1)` expected.
 ///
 /// ```
 /// use qmckit::hash::permute;
@@ -67,7 +67,7 @@ pub const fn permute(index: u32, n: u64, key: u64) -> u32 {
     let k1 = mix64(key);
     let k2 = mix64(k1);
     let half = bits / 2 + 1;
-    let mut x = index as u64;
+    let mut x = index as u64 % n;
     loop {
         x = (x ^ k1) & mask;
         x = x.wrapping_mul(0x9E37_79B9_7F4A_7C15 | 1) & mask;

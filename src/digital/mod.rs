@@ -48,10 +48,14 @@
 //! ```
 
 mod faure;
+#[cfg(feature = "std")]
+mod file;
 #[cfg(feature = "analysis")]
 pub mod quality;
 
 pub use faure::faure_matrices;
+#[cfg(feature = "std")]
+pub use file::parse_dnet;
 
 use crate::error::{Error, Result};
 use crate::randomize::digits::DigitScramble;

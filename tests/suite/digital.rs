@@ -239,3 +239,54 @@ fn interlacing_is_the_digit_shuffle() {
     assert!(Interlaced::over(qmckit::Sobol::new(5).unwrap(), 2).is_err());
     assert!(h.sample(0, 3).is_err());
 }
+
+/// A Niederreiter–Xing net from the Magic Point Shop in LDData's format: its first 1024
+/// points equal QMCPy's `DigitalNetB2` on the same matrices (`gen_qmcpy_dnet.py`), and its
+/// leading `2^m` blocks are (1, m, 4)-nets, the published t of the 4-dimensional
+/// Niederreiter–Xing sequence (Sobol' has t = 2 or 3 there).
+#[test]
+fn niederreiter_xing_file_matches_qmcpy() {
+    use qmckit::digital::parse_dnet;
+    let net = parse_dnet(&golden("mps.nx_b2_m30_s4_Cs.txt")).unwrap();
+    assert_eq!((net.base(), net.dims(), net.len()), (2, 4, 1 << 30));
+    let want: Vec<Vec<u32>> = golden("mps_nx_s4_qmcpy.txt")
+        .lines()
+        .filter(|l| !l.starts_with('#'))
+        .map(|l| l.split_whitespace().map(|w| w.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(want.len(), 1024);
+    for (i, row) in want.iter().enumerate() {
+        for (d, &w) in row.iter().enumerate() {
+            assert_eq!(
+                net.sample(i as u32, d).unwrap(),
+                w << 2,
+                "point {i} dim {d}"
+            );
+        }
+    }
+    for m in 2..=12 {
+        let t = t_value(&net, 0, m, &Budget::DEFAULT).unwrap();
+        assert_eq!(t, 1, "m={m}");
+    }
+}
+
+#[test]
+fn dnet_files_refuse_bad_input() {
+    use qmckit::digital::parse_dnet;
+    for bad in [
+        "",
+        "2\n2\n3\n3\n4 2 1\n1 2 4\n",         // no format line
+        "# dnet\n2\n2\n3\n",                  // header too short
+        "# dnet\n4\n2\n3\n3\n4 2 1\n1 2 4\n", // base not prime
+        "# dnet\n2\n2\n3\n3\n4 2 1\n",        // a matrix line missing
+        "# dnet\n2\n2\n3\n3\n4 2 1\n1 2\n",   // ragged columns
+        "# dnet\n2\n2\n3\n3\n8 2 1\n1 2 4\n", // an entry with more than r digits
+        "# dnet\n2\n2\n5\n3\n4 2 1\n1 2 4\n", // k does not match the lines
+        "# dnet\n2\nx\n3\n3\n4 2 1\n1 2 4\n", // not a number
+        "# dnet\n2\n2\n3\n0\n4 2 1\n1 2 4\n", // zero rows
+    ] {
+        assert!(parse_dnet(bad).is_err(), "{bad:?}");
+    }
+    // b^k in place of k is accepted.
+    assert!(parse_dnet("# dnet\n2\n2\n8\n3\n4 2 1\n1 2 4\n").is_ok());
+}

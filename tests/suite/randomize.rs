@@ -806,3 +806,19 @@ mod properties {
         }
     }
 }
+
+/// An index past `n` used to start the cycle walk outside `[0, n)`, where it could circle
+/// forever (a proptest case hung): it is now reduced modulo `n` first.
+#[test]
+fn permute_of_an_index_past_n_terminates() {
+    use qmckit::hash::permute;
+    for n in [2u64, 3, 5, 100, 599] {
+        for key in 0..200u64 {
+            for index in [n as u32, n as u32 + 1, 1 << 20, u32::MAX] {
+                let p = permute(index, n, key);
+                assert!((p as u64) < n);
+                assert_eq!(p, permute((index as u64 % n) as u32, n, key));
+            }
+        }
+    }
+}
