@@ -1,5 +1,6 @@
 //! Side-by-side timings of the blue-noise constructions in one run: qmckit's Poisson disk
-//! against the `fast_poisson` crate (same radius, unit square, k = 30), and qmckit's
+//! against the `fast_poisson` crate (same radius, unit square, k = 30; qmckit also at k = 45,
+//! where its density passes fast_poisson's), and qmckit's
 //! void-and-cluster against the `blue-noise` crate (same size, sigma 1.5). One line per
 //! run: `impl task points density seconds ns_per_point` (density: N r^2). Used by
 //! `scripts/blue_noise_speed.py`, which adds SciPy's `qmc.PoissonDisk`.
@@ -32,6 +33,24 @@ fn main() {
             .unwrap();
         let secs = t.elapsed().as_secs_f64();
         line("qmckit", &task, s.count(), s.count() as f64 * r * r, secs);
+        // 45 candidates: at least fast_poisson's density (it draws the radius uniformly in
+        // [r, 2r], which packs more points than Bridson's uniform annulus).
+        let t = Instant::now();
+        let s = PoissonDisk::new(2, r)
+            .unwrap()
+            .candidates(45)
+            .unwrap()
+            .seed(seed)
+            .generate_within(&Budget::UNLIMITED)
+            .unwrap();
+        let secs = t.elapsed().as_secs_f64();
+        line(
+            "qmckit_k45",
+            &task,
+            s.count(),
+            s.count() as f64 * r * r,
+            secs,
+        );
         let t = Instant::now();
         let p = fast_poisson::Poisson2D::new()
             .with_dimensions([1.0, 1.0], r)

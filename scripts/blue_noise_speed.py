@@ -45,8 +45,12 @@ def main():
     big = f"poisson_r{a.radius}"
     q_small, s_small = best("qmckit", small), best("scipy", small)
     q_big, f_big = best("qmckit", big), best("fast_poisson", big)
+    q45 = best("qmckit_k45", big)
     print(f"scipy / qmckit per point (r={a.scipy_radius}): {s_small / q_small:.0f}x")
     print(f"fast_poisson / qmckit per point (r={a.radius}): {f_big / q_big:.2f}x")
+    dens = {r[0]: r[3] for r in rows if r[1] == big}
+    print(f"fast_poisson / qmckit k=45 per point (r={a.radius}, density {dens.get('qmckit_k45', 0):.4f}"
+          f" vs {dens.get('fast_poisson', 0):.4f}): {f_big / q45:.2f}x")
     v = best("blue-noise", "void_and_cluster_64x64")
     q = best("qmckit", "void_and_cluster_64x64")
     if v and q:

@@ -5,10 +5,12 @@ Run: `cargo build --release --features cli && python3 scripts/spectra_docs.py` f
 repository root (numpy for the slope fits). Prints markdown.
 
 1. Mean radial periodograms of 100 sets of N = 1024 points (K = 64) of white noise,
-   jittered, Halton, Sobol', Owen-scrambled Sobol' (`qmckit spectrum --average --radial`).
-   Halton's and Sobol's 100 sets are the consecutive blocks of 1024 points (`--start`).
+   jittered, Halton, Sobol', Owen-scrambled Sobol', Poisson disk (about N points on the
+   torus) and Gaussian blue noise (`qmckit spectrum --average --radial`). Halton's and
+   Sobol's 100 sets are the consecutive blocks of 1024 points (`--start`).
 2. `qmckit variance` for N = 16 ... 4096, disk R = 1/4 and Gaussian sigma = 0.1, with the
-   least-squares slopes of log Var against log N.
+   least-squares slopes of log Var against log N. Gaussian blue noise costs O(N) a point
+   and iteration (500 iterations), so it runs fewer sets at large N (SETS_GBN).
 """
 import subprocess
 
@@ -29,10 +31,15 @@ def points(sampler, s):
         return run(["points", "stratified", "-n", str(N), "--seed", str(s)])
     if sampler in ("halton", "sobol"):
         return run(["points", sampler, "-n", str(N), "--start", str(s * N)])
+    if sampler == "poisson":
+        return run(["points", "poisson", "-n", str(N), "--torus", "--seed", str(s)])
+    if sampler == "gaussian-blue-noise":
+        return run(["points", "gaussian-blue-noise", "-n", str(N), "--seed", str(s), "--max-seconds", "600"])
     return run(["points", "sobol", "-n", str(N), "--scramble", "owen", "--seed", str(s)])
 
 
-SAMPLERS = ["white", "jittered", "halton", "sobol", "owen-sobol"]
+SAMPLERS = ["white", "jittered", "halton", "sobol", "owen-sobol", "poisson", "gaussian-blue-noise"]
+SETS_GBN = {16: "200", 64: "200", 256: "100", 1024: "30", 4096: "10"}
 at = [4, 8, 16, 24, 32, 48, 64]
 print(f"| sampler ({SETS} sets, N = {N}) | mean P, |k| < 0.5 sqrt(N) | " + " | ".join(f"r = {r} ({r / 32:.3g} sqrt N)" for r in at) + " |")
 print("|---|---|" + "---|" * len(at))
@@ -50,11 +57,13 @@ ns = [16, 64, 256, 1024, 4096]
 for integrand in ["disk", "gaussian"]:
     print(f"| sampler ({integrand}) | " + " | ".join(f"N = {n}: predicted / measured" for n in ns) + " | slope predicted | slope measured |")
     print("|---|" + "---|" * len(ns) + "---|---|")
-    for sampler in ["independent", "jittered", "halton", "sobol", "owen-sobol"]:
+    for sampler in ["independent", "jittered", "halton", "sobol", "owen-sobol", "poisson", "gaussian-blue-noise"]:
         pred, meas, cells = [], [], []
         for n in ns:
             sets = "1000" if n <= 1024 else "300"
-            out = run(["variance", sampler, "-n", str(n), "--integrand", integrand, "--sets", sets, "--max-seconds", "600"])
+            if sampler == "gaussian-blue-noise":
+                sets = SETS_GBN[n]
+            out = run(["variance", sampler, "-n", str(n), "--integrand", integrand, "--sets", sets, "--max-seconds", "3000"])
             kv = dict(l.split(" ", 1) for l in out.splitlines())
             p, m = float(kv["predicted"]), float(kv["measured"])
             pred.append(p)

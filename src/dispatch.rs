@@ -8,9 +8,10 @@
 //! running CPU, which is the whole safety condition (the functions take only safe,
 //! bounds-checked slices). Without `std` or off x86-64 only the portable build exists.
 //!
-//! To add a kernel: a safe dispatcher function, one `#[target_feature]` wrapper per build,
-//! each call behind the matching detection, and a test that runs every build the CPU has
-//! against the portable one.
+//! To add a kernel: a struct holding its arguments that implements [`Kernel`] (safe code,
+//! `#[inline(always)]`), a dispatcher calling [`run_at`] (integer builds) or [`run_float`]
+//! (floating-point builds), and a test that runs every build the CPU has against the
+//! portable one. The `#[target_feature]` wrappers and the detection are written once.
 #![allow(unsafe_code)]
 
 use crate::bits::FromFraction;
@@ -49,6 +50,69 @@ pub(crate) fn level() -> Level {
     Level::Portable
 }
 
+/// A computation compiled once per build: `run` must be `#[inline(always)]`, so that its
+/// body is compiled inside each build's `#[target_feature]` function (and vectorized to
+/// that width) rather than called from it. Integer kernels run through [`run_at`], float
+/// kernels through [`run_float`].
+pub(crate) trait Kernel {
+    /// What the kernel returns.
+    type Output;
+    /// The computation (safe code; `#[inline(always)]`).
+    fn run(self) -> Self::Output;
+}
+
+/// `k.run()` in the widest build that is at most `want` and that the CPU runs.
+#[inline]
+pub(crate) fn run_at<K: Kernel>(want: Level, k: K) -> K::Output {
+    #[cfg(all(feature = "std", target_arch = "x86_64"))]
+    let detected = level();
+    match want {
+        #[cfg(all(feature = "std", target_arch = "x86_64"))]
+        Level::Avx512Gfni if detected == Level::Avx512Gfni => {
+            // SAFETY: `run_int_avx512` requires avx512f, avx512bw, avx512vl and gfni;
+            // `level()` detected all four on this CPU. The kernel itself is safe code.
+            unsafe { run_int_avx512(k) }
+        }
+        #[cfg(all(feature = "std", target_arch = "x86_64"))]
+        Level::Avx2 | Level::Avx512Gfni if detected != Level::Portable => {
+            // SAFETY: `run_int_avx2` requires avx2; `level()` returns Avx2 or Avx512Gfni
+            // only when avx2 was detected on this CPU (every AVX-512 CPU has AVX2, and the
+            // Avx2 answer is its own detection). The kernel itself is safe code.
+            unsafe { run_int_avx2(k) }
+        }
+        _ => k.run(),
+    }
+}
+
+#[cfg(all(feature = "std", target_arch = "x86_64"))]
+#[target_feature(enable = "avx2")]
+fn run_int_avx2<K: Kernel>(k: K) -> K::Output {
+    k.run()
+}
+
+/// With AVX-512 the 16 lanes of a `u32` kernel are one vector, and a bit reversal is a GFNI
+/// affine transform plus a byte shuffle.
+#[cfg(all(feature = "std", target_arch = "x86_64"))]
+#[target_feature(enable = "avx512f,avx512bw,avx512vl,gfni")]
+fn run_int_avx512<K: Kernel>(k: K) -> K::Output {
+    k.run()
+}
+
+/// The four-dimensional Owen-Sobol' `f32` fill.
+struct OwenSobol4<'a> {
+    s: &'a OwenSobol,
+    indices: &'a [u32],
+    out: &'a mut [[f32; 4]],
+}
+
+impl Kernel for OwenSobol4<'_> {
+    type Output = ();
+    #[inline(always)]
+    fn run(self) {
+        owen_fill_blocks(self.s, self.indices, self.out);
+    }
+}
+
 /// [`OwenSobol::fill_f32`] with the widest build that is at most `want` and that the CPU
 /// runs (for tests and benchmarks of each build).
 #[inline]
@@ -58,24 +122,7 @@ pub(crate) fn owen_sobol4_fill_f32_at(
     indices: &[u32],
     out: &mut [[f32; 4]],
 ) {
-    #[cfg(all(feature = "std", target_arch = "x86_64"))]
-    let detected = level();
-    match want {
-        #[cfg(all(feature = "std", target_arch = "x86_64"))]
-        Level::Avx512Gfni if detected == Level::Avx512Gfni => {
-            // SAFETY: `owen_sobol4_avx512` requires avx512f, avx512bw, avx512vl and gfni;
-            // `level()` detected all four on this CPU.
-            unsafe { owen_sobol4_avx512(s, indices, out) }
-        }
-        #[cfg(all(feature = "std", target_arch = "x86_64"))]
-        Level::Avx2 | Level::Avx512Gfni if detected != Level::Portable => {
-            // SAFETY: `owen_sobol4_avx2` requires avx2; `level()` returns Avx2 or
-            // Avx512Gfni only when avx2 was detected on this CPU (every AVX-512 CPU
-            // has AVX2, and the Avx2 answer is its own detection).
-            unsafe { owen_sobol4_avx2(s, indices, out) }
-        }
-        _ => owen_fill_blocks(s, indices, out),
-    }
+    run_at(want, OwenSobol4 { s, indices, out });
 }
 
 /// [`OwenSobol::fill_f32`]: the widest build this CPU runs.
@@ -84,18 +131,20 @@ pub(crate) fn owen_sobol4_fill_f32(s: &OwenSobol, indices: &[u32], out: &mut [[f
     owen_sobol4_fill_f32_at(level(), s, indices, out);
 }
 
-#[cfg(all(feature = "std", target_arch = "x86_64"))]
-#[target_feature(enable = "avx2")]
-fn owen_sobol4_avx2(s: &OwenSobol, indices: &[u32], out: &mut [[f32; 4]]) {
-    owen_fill_blocks(s, indices, out);
+/// One prepared scrambler over a column.
+struct ScrambleSlice<'a, S> {
+    s: S,
+    xs: &'a mut [u32],
 }
 
-/// With AVX-512 the 16 lanes are one vector, and the bit reversal is a GFNI affine
-/// transform plus a byte shuffle.
-#[cfg(all(feature = "std", target_arch = "x86_64"))]
-#[target_feature(enable = "avx512f,avx512bw,avx512vl,gfni")]
-fn owen_sobol4_avx512(s: &OwenSobol, indices: &[u32], out: &mut [[f32; 4]]) {
-    owen_fill_blocks(s, indices, out);
+impl<S: Scrambler> Kernel for ScrambleSlice<'_, S> {
+    type Output = ();
+    #[inline(always)]
+    fn run(self) {
+        for x in self.xs {
+            *x = self.s.scramble(*x);
+        }
+    }
 }
 
 /// `x = s.scramble(x)` for every `x` in `xs`: one prepared scrambler over a contiguous
@@ -109,42 +158,21 @@ pub(crate) fn scramble_slice<S: Scrambler>(s: S, xs: &mut [u32]) {
 /// [`scramble_slice`] with the widest build that is at most `want` and that the CPU runs.
 #[inline]
 pub(crate) fn scramble_slice_at<S: Scrambler>(want: Level, s: S, xs: &mut [u32]) {
-    #[cfg(all(feature = "std", target_arch = "x86_64"))]
-    let detected = level();
-    match want {
-        #[cfg(all(feature = "std", target_arch = "x86_64"))]
-        Level::Avx512Gfni if detected == Level::Avx512Gfni => {
-            // SAFETY: `scramble_slice_avx512` requires avx512f, avx512bw, avx512vl and gfni;
-            // `level()` detected all four on this CPU.
-            unsafe { scramble_slice_avx512(s, xs) }
-        }
-        #[cfg(all(feature = "std", target_arch = "x86_64"))]
-        Level::Avx2 | Level::Avx512Gfni if detected != Level::Portable => {
-            // SAFETY: `scramble_slice_avx2` requires avx2, which `level()` detected on this
-            // CPU whenever it answers Avx2 or Avx512Gfni.
-            unsafe { scramble_slice_avx2(s, xs) }
-        }
-        _ => scramble_slice_portable(s, xs),
+    run_at(want, ScrambleSlice { s, xs });
+}
+
+/// A row-major buffer scrambled lane by lane.
+struct ScrambleLanes<'a, S> {
+    lanes: &'a [S],
+    xs: &'a mut [u32],
+}
+
+impl<S: Scrambler> Kernel for ScrambleLanes<'_, S> {
+    type Output = ();
+    #[inline(always)]
+    fn run(self) {
+        S::scramble_lanes(self.lanes, self.xs);
     }
-}
-
-#[inline(always)]
-fn scramble_slice_portable<S: Scrambler>(s: S, xs: &mut [u32]) {
-    for x in xs {
-        *x = s.scramble(*x);
-    }
-}
-
-#[cfg(all(feature = "std", target_arch = "x86_64"))]
-#[target_feature(enable = "avx2")]
-fn scramble_slice_avx2<S: Scrambler>(s: S, xs: &mut [u32]) {
-    scramble_slice_portable(s, xs);
-}
-
-#[cfg(all(feature = "std", target_arch = "x86_64"))]
-#[target_feature(enable = "avx512f,avx512bw,avx512vl,gfni")]
-fn scramble_slice_avx512<S: Scrambler>(s: S, xs: &mut [u32]) {
-    scramble_slice_portable(s, xs);
 }
 
 /// `xs[j] = lanes[j % lanes.len()].scramble(xs[j])`: a row-major buffer whose rows hold one
@@ -159,40 +187,23 @@ pub(crate) fn scramble_lanes<S: Scrambler>(lanes: &[S], xs: &mut [u32]) {
 /// [`scramble_lanes`] with the widest build that is at most `want` and that the CPU runs.
 #[inline]
 pub(crate) fn scramble_lanes_at<S: Scrambler>(want: Level, lanes: &[S], xs: &mut [u32]) {
-    #[cfg(all(feature = "std", target_arch = "x86_64"))]
-    let detected = level();
-    match want {
-        #[cfg(all(feature = "std", target_arch = "x86_64"))]
-        Level::Avx512Gfni if detected == Level::Avx512Gfni => {
-            // SAFETY: `scramble_lanes_avx512` requires avx512f, avx512bw, avx512vl and gfni;
-            // `level()` detected all four on this CPU.
-            unsafe { scramble_lanes_avx512(lanes, xs) }
+    run_at(want, ScrambleLanes { lanes, xs });
+}
+
+/// Fractions to floats.
+struct Convert<'a, T> {
+    src: &'a [u32],
+    dst: &'a mut [T],
+}
+
+impl<T: FromFraction> Kernel for Convert<'_, T> {
+    type Output = ();
+    #[inline(always)]
+    fn run(self) {
+        for (y, &x) in self.dst.iter_mut().zip(self.src) {
+            *y = T::from_fraction(x);
         }
-        #[cfg(all(feature = "std", target_arch = "x86_64"))]
-        Level::Avx2 | Level::Avx512Gfni if detected != Level::Portable => {
-            // SAFETY: `scramble_lanes_avx2` requires avx2, which `level()` detected on this
-            // CPU whenever it answers Avx2 or Avx512Gfni.
-            unsafe { scramble_lanes_avx2(lanes, xs) }
-        }
-        _ => scramble_lanes_portable(lanes, xs),
     }
-}
-
-#[inline(always)]
-fn scramble_lanes_portable<S: Scrambler>(lanes: &[S], xs: &mut [u32]) {
-    S::scramble_lanes(lanes, xs);
-}
-
-#[cfg(all(feature = "std", target_arch = "x86_64"))]
-#[target_feature(enable = "avx2")]
-fn scramble_lanes_avx2<S: Scrambler>(lanes: &[S], xs: &mut [u32]) {
-    scramble_lanes_portable(lanes, xs);
-}
-
-#[cfg(all(feature = "std", target_arch = "x86_64"))]
-#[target_feature(enable = "avx512f,avx512bw,avx512vl,gfni")]
-fn scramble_lanes_avx512<S: Scrambler>(lanes: &[S], xs: &mut [u32]) {
-    scramble_lanes_portable(lanes, xs);
 }
 
 /// `dst[j] = T::from_fraction(src[j])` (the shorter length), in the widest build this CPU
@@ -205,42 +216,7 @@ pub(crate) fn convert<T: FromFraction>(src: &[u32], dst: &mut [T]) {
 /// [`convert`] with the widest build that is at most `want` and that the CPU runs.
 #[inline]
 pub(crate) fn convert_at<T: FromFraction>(want: Level, src: &[u32], dst: &mut [T]) {
-    #[cfg(all(feature = "std", target_arch = "x86_64"))]
-    let detected = level();
-    match want {
-        #[cfg(all(feature = "std", target_arch = "x86_64"))]
-        Level::Avx512Gfni if detected == Level::Avx512Gfni => {
-            // SAFETY: `convert_avx512` requires avx512f, avx512bw, avx512vl and gfni;
-            // `level()` detected all four on this CPU.
-            unsafe { convert_avx512(src, dst) }
-        }
-        #[cfg(all(feature = "std", target_arch = "x86_64"))]
-        Level::Avx2 | Level::Avx512Gfni if detected != Level::Portable => {
-            // SAFETY: `convert_avx2` requires avx2, which `level()` detected on this CPU
-            // whenever it answers Avx2 or Avx512Gfni.
-            unsafe { convert_avx2(src, dst) }
-        }
-        _ => convert_portable(src, dst),
-    }
-}
-
-#[inline(always)]
-fn convert_portable<T: FromFraction>(src: &[u32], dst: &mut [T]) {
-    for (y, &x) in dst.iter_mut().zip(src) {
-        *y = T::from_fraction(x);
-    }
-}
-
-#[cfg(all(feature = "std", target_arch = "x86_64"))]
-#[target_feature(enable = "avx2")]
-fn convert_avx2<T: FromFraction>(src: &[u32], dst: &mut [T]) {
-    convert_portable(src, dst);
-}
-
-#[cfg(all(feature = "std", target_arch = "x86_64"))]
-#[target_feature(enable = "avx512f,avx512bw,avx512vl,gfni")]
-fn convert_avx512<T: FromFraction>(src: &[u32], dst: &mut [T]) {
-    convert_portable(src, dst);
+    run_at(want, Convert { src, dst });
 }
 
 /// The builds of a floating-point kernel ([`run_float`]). A build the CPU lacks falls back
@@ -256,17 +232,6 @@ pub(crate) enum FloatBuild {
     Avx2,
     /// AVX-512 (F, VL), AVX2 and FMA: 8 `f64` lanes a register.
     Avx512,
-}
-
-/// A computation compiled once per [`FloatBuild`]: `run` must be `#[inline(always)]`, so
-/// that its body is compiled inside each build's `#[target_feature]` function (and
-/// vectorized to that width) rather than called from it.
-#[cfg(feature = "analysis")]
-pub(crate) trait Kernel {
-    /// What the kernel returns.
-    type Output;
-    /// The computation (safe code; `#[inline(always)]`).
-    fn run(self) -> Self::Output;
 }
 
 /// `k.run()` in the build `want`, or the widest narrower one this CPU runs.

@@ -97,6 +97,26 @@ pub trait Sampler {
         Ok(())
     }
 
+    /// [`fill`](Self::fill) with the affine map `maps(dim)` (`x -> M x ^ c` over GF(2))
+    /// applied to every coordinate of dimension `dim`: `Some` from samplers whose
+    /// coordinates are GF(2)-linear in the index bits (Sobol'), which fold the maps into
+    /// their generator matrices so the scramble costs nothing a value; `None` (the default)
+    /// when the sampler cannot, or when `maps` answers `None` for a dimension (then `out` may
+    /// be partly written: the caller fills it another way). [`crate::randomize::Scrambled`] calls it for affine scramblers (digital
+    /// shift, LMS).
+    ///
+    /// # Errors
+    /// As [`fill`](Self::fill), inside the `Some`.
+    fn fill_affine(
+        &self,
+        start: u32,
+        out: &mut [u32],
+        maps: &dyn Fn(usize) -> Option<crate::randomize::Affine>,
+    ) -> Option<Result<()>> {
+        let _ = (start, out, maps);
+        None
+    }
+
     /// [`fill`](Self::fill) into any coordinate type ([`FromFraction`]: `f64`, `f32`,
     /// `u32`, ...): the same values as converting the `u32` fill. The default fills whole
     /// points into a stack buffer of [`CONVERT_CHUNK`] `u32`s a call and converts them (point
@@ -241,6 +261,15 @@ macro_rules! forward_sampler {
 
             fn fill(&self, start: u32, out: &mut [u32]) -> Result<()> {
                 (**self).fill(start, out)
+            }
+
+            fn fill_affine(
+                &self,
+                start: u32,
+                out: &mut [u32],
+                maps: &dyn Fn(usize) -> Option<crate::randomize::Affine>,
+            ) -> Option<Result<()>> {
+                (**self).fill_affine(start, out, maps)
             }
         }
     };

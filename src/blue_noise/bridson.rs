@@ -14,24 +14,37 @@
 //! union of disks, so the cube count shrinks geometrically. Cubes below the finest side
 //! [`FINEST`]` r` get one last dart at their centre and are dropped.
 
-use super::grid::{Grid, axis_gap, quantize};
+use super::grid::{Grid, SCALE, axis_gap, quantize_units, to_unit};
 use super::rng::Rng;
 
 /// The side, relative to `r`, below which a cube is no longer split: its points lie within
 /// `r (1 + sqrt(d) 2^-21)` of a sample at the end.
 pub(crate) const FINEST: f64 = 1.0 / (1u64 << 20) as f64;
 
-/// A uniform point of the shell `r <= |y| < 2r` in `D` dimensions.
+/// A uniform point of the shell `r <= |y| < 2r` in `D` dimensions (any unit: the grid
+/// passes `r` in units of `2^-32`).
 #[inline]
 fn shell<const D: usize>(rng: &mut Rng, r: f64) -> [f64; D] {
     let mut y = [0.0; D];
     if D <= 3 {
-        // Rejection from the cube [-2r, 2r)^D: accepts 3 pi / 16 (2D), 7 pi / 48 (3D).
+        // Rejection from the cube [-2r, 2r)^D: accepts 3 pi / 16 (2D), 7 pi / 48 (3D). Each
+        // coordinate takes 32 bits (two a draw): offsets on a grid of step 4r 2^-32, finer
+        // than the grid the points are kept on for radii below a quarter of the side.
         let (lo, hi) = (r * r, 4.0 * r * r);
+        let step = 4.0 * r / 4_294_967_296.0;
         loop {
             let mut s = 0.0;
-            for v in y.iter_mut() {
-                *v = (rng.unit() * 4.0 - 2.0) * r;
+            let mut bits = 0u64;
+            for (k, v) in y.iter_mut().enumerate() {
+                if k % 2 == 0 {
+                    bits = rng.next_u64();
+                }
+                let half = if k % 2 == 0 {
+                    bits >> 32
+                } else {
+                    bits & 0xFFFF_FFFF
+                };
+                *v = half as f64 * step - 2.0 * r;
                 s += *v * *v;
             }
             if s >= lo && s < hi {
@@ -57,10 +70,10 @@ fn shell<const D: usize>(rng: &mut Rng, r: f64) -> [f64; D] {
 /// Runs Bridson's algorithm with `k` candidates a step into `grid` (empty).
 pub(crate) fn bridson<const D: usize>(grid: &mut Grid<D>, k: u32, rng: &mut Rng) {
     let torus = grid.torus;
-    let r = grid.r;
-    let mut first = [0.0; D];
+    let r_units = grid.r * SCALE;
+    let mut first = [0u32; D];
     for v in first.iter_mut() {
-        *v = f64::from(rng.fraction()) / super::grid::SCALE;
+        *v = rng.fraction();
     }
     let Some(i0) = grid.insert(first) else {
         return;
@@ -76,10 +89,10 @@ pub(crate) fn bridson<const D: usize>(grid: &mut Grid<D>, k: u32, rng: &mut Rng)
         };
         let mut placed = false;
         'tries: for _ in 0..k {
-            let off = shell::<D>(rng, r);
-            let mut p = [0.0; D];
-            for ((pk, c), o) in p.iter_mut().zip(&centre).zip(&off) {
-                match quantize(c + o, torus) {
+            let off = shell::<D>(rng, r_units);
+            let mut p = [0u32; D];
+            for ((pk, &c), o) in p.iter_mut().zip(&centre).zip(&off) {
+                match quantize_units(f64::from(c) + o, torus) {
                     Some(x) => *pk = x,
                     None => continue 'tries,
                 }
@@ -112,9 +125,10 @@ fn covered<const D: usize>(grid: &Grid<D>, cube: &Cube<D>) -> bool {
     for (c, lo) in centre.iter_mut().zip(&cube.lo) {
         *c = (lo + 0.5 * cube.side).min(1.0 - f64::EPSILON);
     }
-    let cell = grid.cell_of(&centre);
+    let cell = grid.cell_of_unit(&centre);
     let (r2, torus, half) = (grid.r * grid.r, grid.torus, 0.5 * cube.side);
-    grid.any_near(&cell, |p| {
+    grid.any_near(&cell, |q| {
+        let p = to_unit(q);
         let mut far2 = 0.0;
         for (x, c) in p.iter().zip(&centre) {
             let far = axis_gap(*x, *c, torus) + half;
@@ -126,9 +140,9 @@ fn covered<const D: usize>(grid: &Grid<D>, cube: &Cube<D>) -> bool {
 
 /// A dart at the point `x` (quantized): inserted when free.
 fn dart<const D: usize>(grid: &mut Grid<D>, x: &[f64; D]) {
-    let mut p = [0.0; D];
+    let mut p = [0u32; D];
     for (pk, v) in p.iter_mut().zip(x) {
-        match quantize(*v, grid.torus) {
+        match quantize_units(*v * SCALE, grid.torus) {
             Some(q) => *pk = q,
             None => return,
         }

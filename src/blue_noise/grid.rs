@@ -2,10 +2,14 @@
 //! unit cube (so a cell holds at most one point of an `r`-separated set, Bridson 2007), the
 //! points in insertion order, and the cell offsets that can hold a point closer than `r`.
 //!
-//! Distances are Euclidean in the box or toroidal (nearest image, per axis
-//! `min(|a - b|, 1 - |a - b|)`). A point is *free* when every stored point is at least `r`
-//! away. Points are kept on the 2^-32 grid, so they convert to 0.32 fractions exactly and
-//! the separation holds for the written values.
+//! Points are kept as 0.32 fixed-point coordinates (`u32`, the values written out), so the
+//! separation holds for the written values and distances are exact integer differences:
+//! squared distances are summed in `f64` in units of `2^-32` (the same bits as in unit
+//! scale: the scale is a power of two). Distances are Euclidean in the box or toroidal
+//! (nearest image: on the torus the wrapping `u32` difference read as `i32` is the
+//! nearest-image difference). A point is *free* when every stored point is at least `r`
+//! away. Which cells hold a point is a bit set (a few hundred KiB for a million points), so
+//! the neighbour test reads a cell's point only when there is one.
 
 use crate::size;
 use crate::{Error, Result};
@@ -13,19 +17,26 @@ use crate::{Error, Result};
 /// `2^32`, the 0.32 fixed-point scale.
 pub(crate) const SCALE: f64 = 4_294_967_296.0;
 
-/// `x` rounded down onto the 2^-32 grid; `None` outside `[0, 1)` (box) — on the torus `x`
-/// is first wrapped into `[0, 1)`.
+/// The coordinate `v` (in units of `2^-32`, any finite value) rounded down onto the grid:
+/// `None` outside `[0, 2^32)` in the box, wrapped modulo `2^32` on the torus. No `floor`
+/// call (a library call on baseline x86-64): truncation is the floor of a non-negative
+/// value, and a torus coordinate within one period below 0 is first lifted by `2^32`.
 #[inline]
-pub(crate) fn quantize(x: f64, torus: bool) -> Option<f64> {
-    let x = if torus { x - x.floor() } else { x };
-    if !(0.0..1.0).contains(&x) {
-        return None;
+pub(crate) fn quantize_units(v: f64, torus: bool) -> Option<u32> {
+    if torus {
+        let lifted = if v < 0.0 { v + SCALE } else { v };
+        if (0.0..2.0 * SCALE).contains(&lifted) {
+            // `as u32` of the truncated value wraps [2^32, 2^33) to [0, 2^32).
+            return Some(lifted as u64 as u32);
+        }
+        let w = v - (v / SCALE).floor() * SCALE;
+        return Some(if (0.0..SCALE).contains(&w) {
+            w as u32
+        } else {
+            0
+        });
     }
-    let q = (x * SCALE).floor();
-    if q >= SCALE {
-        return if torus { Some(0.0) } else { None };
-    }
-    Some(q / SCALE)
+    (0.0..SCALE).contains(&v).then_some(v as u32)
 }
 
 /// The distance along one axis (toroidal: to the nearest image).
@@ -35,36 +46,41 @@ pub(crate) fn axis_gap(a: f64, b: f64, torus: bool) -> f64 {
     if torus && d > 0.5 { 1.0 - d } else { d }
 }
 
-/// Squared distance between two points (toroidal or not).
+/// The squared distance between two grid points in units of `2^-64` (toroidal or not).
 #[inline]
-pub(crate) fn dist2<const D: usize>(a: &[f64; D], b: &[f64; D], torus: bool) -> f64 {
+pub(crate) fn dist2_units<const D: usize>(a: &[u32; D], b: &[u32; D], torus: bool) -> f64 {
     let mut s = 0.0;
-    for (x, y) in a.iter().zip(b) {
-        let d = axis_gap(*x, *y, torus);
+    for (&x, &y) in a.iter().zip(b) {
+        let d = if torus {
+            f64::from(x.wrapping_sub(y) as i32)
+        } else {
+            f64::from(x) - f64::from(y)
+        };
         s += d * d;
     }
     s
 }
 
-/// Whether a cell holds a point.
+/// A grid point in unit scale.
 #[inline]
-fn filled<const D: usize>(p: &[f64; D]) -> bool {
-    p.first().is_some_and(|x| !x.is_nan())
+pub(crate) fn to_unit<const D: usize>(p: &[u32; D]) -> [f64; D] {
+    p.map(|c| f64::from(c) / SCALE)
 }
 
 /// The grid and the points.
 pub(crate) struct Grid<const D: usize> {
     /// Cells per axis.
     pub(crate) g: usize,
-    /// The separation radius and its square.
+    /// The separation radius, and its square in units of `2^-64`.
     pub(crate) r: f64,
     r2: f64,
     pub(crate) torus: bool,
-    /// The point of each cell (first coordinate NaN when empty): the neighbour test reads
-    /// only this array, so it touches a few cache lines a query.
-    cells: Vec<[f64; D]>,
+    /// The point of each cell (meaningful where `full` has the cell's bit).
+    cells: Vec<[u32; D]>,
+    /// One bit a cell: whether it holds a point.
+    full: Vec<u64>,
     /// The points, in insertion order.
-    pub(crate) pts: Vec<[f64; D]>,
+    pub(crate) pts: Vec<[u32; D]>,
     /// Cell offsets in `[-reach, reach]^D` that may hold a point closer than `r` to a
     /// point of the centre cell, nearest first, and their row-major index differences.
     offsets: Vec<[i64; D]>,
@@ -76,6 +92,19 @@ pub(crate) struct Grid<const D: usize> {
 /// Cells per axis for radius `r` in `d` dimensions: `ceil(sqrt(d) / r)`, at least 1.
 pub(crate) fn cells_per_axis(r: f64, d: usize) -> f64 {
     ((d as f64).sqrt() / r).ceil().max(1.0)
+}
+
+/// A vector of `count` copies of `fill`, or [`Error::TooLarge`] past the allocation limit.
+fn try_vec<T: Copy>(count: usize, fill: T) -> Result<Vec<T>> {
+    let bytes = size::bytes(count, core::mem::size_of::<T>())?;
+    let mut v = Vec::new();
+    v.try_reserve_exact(count).map_err(|_| Error::TooLarge {
+        what: "bytes",
+        requested: bytes as u64,
+        max: size::MAX_ALLOC_BYTES,
+    })?;
+    v.resize(count, fill);
+    Ok(v)
 }
 
 impl<const D: usize> Grid<D> {
@@ -95,24 +124,10 @@ impl<const D: usize> Grid<D> {
         }
         let g = gf as usize;
         let count = g.pow(D as u32);
-        size::bytes(count, core::mem::size_of::<[f64; D]>())?;
-        let mut cells = Vec::new();
-        cells
-            .try_reserve_exact(count)
-            .map_err(|_| Error::TooLarge {
-                what: "bytes",
-                requested: (count * core::mem::size_of::<[f64; D]>()) as u64,
-                max: size::MAX_ALLOC_BYTES,
-            })?;
-        cells.resize(count, [f64::NAN; D]);
-        size::bytes(capacity, core::mem::size_of::<[f64; D]>())?;
-        let mut pts = Vec::new();
-        pts.try_reserve_exact(capacity)
-            .map_err(|_| Error::TooLarge {
-                what: "bytes",
-                requested: (capacity * core::mem::size_of::<[f64; D]>()) as u64,
-                max: size::MAX_ALLOC_BYTES,
-            })?;
+        let cells = try_vec(count, [0u32; D])?;
+        let full = try_vec(count.div_ceil(64), 0u64)?;
+        let mut pts = try_vec(capacity, [0u32; D])?;
+        pts.clear();
         let reach = (r * gf).ceil() as i64;
         let side = 1.0 / gf;
         let mut offsets = Vec::new();
@@ -139,12 +154,14 @@ impl<const D: usize> Grid<D> {
             .iter()
             .map(|o| o.iter().rev().fold(0i64, |acc, &v| acc * gi + v) as isize)
             .collect();
+        let ru = r * SCALE;
         Ok(Grid {
             g,
             r,
-            r2: r * r,
+            r2: ru * ru,
             torus,
             cells,
+            full,
             pts,
             offsets,
             deltas,
@@ -152,14 +169,16 @@ impl<const D: usize> Grid<D> {
         })
     }
 
-    /// The cell of a point of `[0, 1)^D`.
+    /// The cell of a grid point: `floor(x g / 2^32)` per axis, exact.
     #[inline]
-    pub(crate) fn cell_of(&self, p: &[f64; D]) -> [usize; D] {
-        let mut c = [0usize; D];
-        for (ci, x) in c.iter_mut().zip(p) {
-            *ci = ((x * self.g as f64) as usize).min(self.g - 1);
-        }
-        c
+    pub(crate) fn cell_of(&self, p: &[u32; D]) -> [usize; D] {
+        let g = self.g as u64;
+        p.map(|x| ((u64::from(x) * g) >> 32) as usize)
+    }
+
+    /// The cell holding the unit-scale point `p` (clamped into the grid).
+    pub(crate) fn cell_of_unit(&self, p: &[f64; D]) -> [usize; D] {
+        p.map(|x| ((x * self.g as f64) as usize).min(self.g - 1))
     }
 
     #[inline]
@@ -167,10 +186,20 @@ impl<const D: usize> Grid<D> {
         c.iter().rev().fold(0, |acc, &ci| acc * self.g + ci)
     }
 
+    /// The point of cell `idx`, if it holds one.
+    #[inline]
+    fn at(&self, idx: usize) -> Option<&[u32; D]> {
+        let word = self.full.get(idx / 64)?;
+        if word >> (idx % 64) & 1 == 0 {
+            return None;
+        }
+        self.cells.get(idx)
+    }
+
     /// Calls `f` on every stored point in the cells near cell `c`, until `f` returns `true`;
     /// returns whether it did.
     #[inline]
-    pub(crate) fn any_near(&self, c: &[usize; D], mut f: impl FnMut(&[f64; D]) -> bool) -> bool {
+    pub(crate) fn any_near(&self, c: &[usize; D], mut f: impl FnMut(&[u32; D]) -> bool) -> bool {
         let interior = c
             .iter()
             .all(|&ci| ci >= self.reach && ci + self.reach < self.g);
@@ -178,8 +207,7 @@ impl<const D: usize> Grid<D> {
             // No offset leaves the grid: plain index differences.
             let base = self.index(c) as isize;
             for &d in &self.deltas {
-                if let Some(p) = self.cells.get((base + d) as usize)
-                    && filled(p)
+                if let Some(p) = self.at((base + d) as usize)
                     && f(p)
                 {
                     return true;
@@ -201,8 +229,7 @@ impl<const D: usize> Grid<D> {
                 };
                 idx = idx * self.g + ck as usize;
             }
-            if let Some(p) = self.cells.get(idx)
-                && filled(p)
+            if let Some(p) = self.at(idx)
                 && f(p)
             {
                 return true;
@@ -213,30 +240,27 @@ impl<const D: usize> Grid<D> {
 
     /// Whether `p` is at least `r` from every stored point.
     #[inline]
-    pub(crate) fn is_free(&self, p: &[f64; D]) -> bool {
+    pub(crate) fn is_free(&self, p: &[u32; D]) -> bool {
         let c = self.cell_of(p);
         let (r2, torus) = (self.r2, self.torus);
-        !self.any_near(&c, |q| dist2(p, q, torus) < r2)
+        !self.any_near(&c, |q| dist2_units(p, q, torus) < r2)
     }
 
     /// Whether the cell `c` holds a point.
     pub(crate) fn occupied(&self, c: &[usize; D]) -> bool {
-        self.cells.get(self.index(c)).is_some_and(filled)
+        self.at(self.index(c)).is_some()
     }
 
     /// Stores `p` (which must be free) and returns its index; `None` when the point limit
     /// (2^32 - 1) is reached.
-    pub(crate) fn insert(&mut self, p: [f64; D]) -> Option<usize> {
+    pub(crate) fn insert(&mut self, p: [u32; D]) -> Option<usize> {
         let idx = self.index(&self.cell_of(&p));
         let n = self.pts.len();
-        if n >= u32::MAX as usize {
+        if n >= u32::MAX as usize || self.at(idx).is_some() {
             return None;
         }
-        let slot = self.cells.get_mut(idx)?;
-        if filled(slot) {
-            return None;
-        }
-        *slot = p;
+        *self.cells.get_mut(idx)? = p;
+        *self.full.get_mut(idx / 64)? |= 1 << (idx % 64);
         self.pts.push(p);
         Some(n)
     }

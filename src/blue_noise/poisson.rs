@@ -27,7 +27,7 @@
 
 use super::PointSet;
 use super::bridson::{bridson, fill_maximal};
-use super::grid::{Grid, SCALE, cells_per_axis};
+use super::grid::{Grid, cells_per_axis};
 use super::rng::Rng;
 use crate::analysis::budget::{Budget, Cost, Rate};
 use crate::{Error, Result};
@@ -311,9 +311,7 @@ impl PoissonDisk {
         let mut coords =
             crate::size::vec_zeroed::<u32>(crate::size::coordinates(grid.pts.len() as u64, D)?)?;
         for (row, p) in coords.chunks_exact_mut(D).zip(&grid.pts) {
-            for (c, x) in row.iter_mut().zip(p) {
-                *c = (x * SCALE) as u32;
-            }
+            row.copy_from_slice(p);
         }
         Ok((PointSet::new(coords, D)?, r))
     }

@@ -137,9 +137,17 @@ impl Randomizer for Lms {
 impl<S: Base2Digital + ?Sized> Randomizes<S> for Lms {}
 
 impl Scrambler for LmsDimension {
+    const AFFINE: bool = true;
     #[inline]
     fn scramble(&self, x: u32) -> u32 {
         self.apply(x)
+    }
+    #[inline]
+    fn affine(&self) -> Option<super::Affine> {
+        Some(super::Affine {
+            images: self.cols,
+            shift: 0,
+        })
     }
 }
 

@@ -68,6 +68,7 @@
 //! # Ok::<(), qmckit::Error>(())
 //! ```
 
+mod affine;
 mod lms;
 mod owen;
 mod pbrt_owen;
@@ -77,6 +78,7 @@ pub mod digits;
 pub mod shuffle;
 
 #[cfg(feature = "std")]
+pub use affine::Affine;
 pub use lms::LmsCache;
 pub use lms::{Lms, LmsDimension};
 #[allow(deprecated)]
@@ -95,8 +97,21 @@ use crate::sampler::Sampler;
 /// One dimension's randomization, prepared by [`Randomizer::scrambler`]: a tiny `Copy`
 /// value applied to every coordinate of that dimension.
 pub trait Scrambler: Copy {
+    /// Whether every scrambler of this type is affine over GF(2) (`x -> M x ^ c`) and
+    /// [`affine`](Self::affine) returns its map: the digital shift, LMS, the identity and
+    /// compositions of them. A linear sequence (Sobol') then folds the map into its
+    /// generator matrices ([`crate::Sampler::fill_affine`]).
+    const AFFINE: bool = false;
+
     /// The randomized coordinate (a 0.32 fraction). Pure.
     fn scramble(&self, x: u32) -> u32;
+
+    /// The map, when [`AFFINE`](Self::AFFINE): `scramble(x) == affine().apply(x)` for every
+    /// `x`. `None` (the default) otherwise.
+    #[inline]
+    fn affine(&self) -> Option<Affine> {
+        None
+    }
 
     /// `xs[j] = lanes[j % lanes.len()].scramble(xs[j])` for every `j`: scramblers laid over
     /// a row-major buffer. The default is that loop; scramblers whose per-value work has a
@@ -148,9 +163,14 @@ pub struct Identity;
 pub struct IdentityScrambler;
 
 impl Scrambler for IdentityScrambler {
+    const AFFINE: bool = true;
     #[inline]
     fn scramble(&self, x: u32) -> u32 {
         x
+    }
+    #[inline]
+    fn affine(&self) -> Option<Affine> {
+        Some(Affine::IDENTITY)
     }
 }
 
@@ -228,9 +248,14 @@ impl<S: Base2Digital + ?Sized> Randomizes<S> for &dyn Randomizer {}
 
 /// Composition: `self.0`, then `self.1`.
 impl<A: Scrambler, B: Scrambler> Scrambler for (A, B) {
+    const AFFINE: bool = A::AFFINE && B::AFFINE;
     #[inline]
     fn scramble(&self, x: u32) -> u32 {
         self.1.scramble(self.0.scramble(x))
+    }
+    #[inline]
+    fn affine(&self) -> Option<Affine> {
+        Some(self.0.affine()?.then(&self.1.affine()?))
     }
 }
 
@@ -334,13 +359,22 @@ impl<S: Sampler, R: Randomizes<S>> Sampler for Scrambled<S, R> {
         Ok(self.randomizer.scrambler(dim).scramble(x))
     }
 
-    /// The sampler's own (sequential) fill, then each dimension's scrambler, prepared once.
+    /// An affine scrambler (digital shift, LMS, compositions) folded into the sampler's
+    /// generator matrices where it has them ([`Sampler::fill_affine`]: Sobol'). Otherwise
+    /// the sampler's own (sequential) fill, then each dimension's scrambler, prepared once.
     /// Up to [`ROW_LANES`] dimensions the scramblers are repeated over a whole number of rows
     /// and applied element-wise to each chunk of that width; wider points have each column
     /// gathered [`COLUMN`] values at a time into a contiguous buffer, scrambled there and
     /// stored back. Both are vectorized (on x86-64 with `std` in the widest build the CPU
     /// runs).
     fn fill(&self, start: u32, out: &mut [u32]) -> Result<()> {
+        if <R::Scrambler as Scrambler>::AFFINE
+            && let Some(done) = self
+                .sampler
+                .fill_affine(start, out, &|dim| self.randomizer.scrambler(dim).affine())
+        {
+            return done;
+        }
         self.sampler.fill(start, out)?;
         let dims = self.dims();
         if dims == 0 {

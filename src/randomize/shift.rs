@@ -62,9 +62,14 @@ impl DigitalShiftScrambler {
 }
 
 impl Scrambler for DigitalShiftScrambler {
+    const AFFINE: bool = true;
     #[inline]
     fn scramble(&self, x: u32) -> u32 {
         DigitalShiftScrambler::scramble(self, x)
+    }
+    #[inline]
+    fn affine(&self) -> Option<super::Affine> {
+        Some(super::Affine::shift(self.shift))
     }
 }
 

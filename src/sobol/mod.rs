@@ -20,6 +20,7 @@
 
 use crate::bits::{gf2_mul, gray};
 use crate::error::{Error, Result};
+use crate::randomize::Affine;
 use crate::sampler::{Base2Digital, FULL_RANGE, Sampler, check};
 
 pub mod interlaced;
@@ -292,7 +293,14 @@ impl Sobol {
     /// each point is one element-wise XOR of a contiguous row into `L` running values: Gray
     /// order uses row `tz(i + 1)`, natural order row `trailing_ones(i)`. `32 L` words of
     /// stack.
-    fn fill_block<const L: usize>(&self, start: u32, out: &mut [u32], first: usize, block: usize) {
+    fn fill_block<const L: usize>(
+        &self,
+        start: u32,
+        out: &mut [u32],
+        first: usize,
+        block: usize,
+        maps: Option<&[Affine; L]>,
+    ) {
         let Some(dirs) = SOBOL_DIRECTIONS.get(first..first + block) else {
             return; // unreachable: dims <= SOBOL_MAX_DIMS
         };
@@ -309,15 +317,19 @@ impl Sobol {
                 Order::Gray => gray(start),
                 Order::Natural => start,
             };
+            // An affine scramble x -> M x ^ c folds in: rows M V_k, start M (C i0) ^ c.
+            let map = maps.and_then(|m| m.get(lane));
             let mut acc = 0;
             for (row, &vk) in table.iter_mut().zip(v).take(span) {
+                let vk = map.map_or(vk, |m| m.linear(vk));
                 acc ^= vk;
                 row[lane] = match self.order {
                     Order::Gray => vk,
                     Order::Natural => acc, // V_1 ^ .. ^ V_(k+1)
                 };
             }
-            x[lane] = if i0 == 0 { 0 } else { gf2_mul(v, i0) };
+            let x0 = if i0 == 0 { 0 } else { gf2_mul(v, i0) };
+            x[lane] = map.map_or(x0, |m| m.apply(x0));
         }
         let mut i = start;
         for (row, chunk) in out.chunks_exact_mut(self.dims.max(1)).enumerate() {
@@ -365,24 +377,76 @@ impl Sampler for Sobol {
     /// in blocks of up to 32 whose running values are updated by one element-wise XOR of a
     /// transposed row of direction numbers per point.
     fn fill(&self, start: u32, out: &mut [u32]) -> Result<()> {
-        let rows = crate::sampler::check_fill(self, start, out.len())?;
+        self.fill_maps(start, out, None).unwrap_or(Ok(()))
+    }
+
+    /// The scramble folded into the direction numbers: `(M C) i ^ c`, the cost of the plain
+    /// fill plus `span + 1` map applications a dimension (`span`: the index bits the fill
+    /// changes).
+    fn fill_affine(
+        &self,
+        start: u32,
+        out: &mut [u32],
+        maps: &dyn Fn(usize) -> Option<Affine>,
+    ) -> Option<Result<()>> {
+        self.fill_maps(start, out, Some(maps))
+    }
+}
+
+impl Sobol {
+    /// [`Sampler::fill`], with the dimensions' affine maps folded in when given; `None` when
+    /// a map is `None` (then `out` is partly written).
+    fn fill_maps(
+        &self,
+        start: u32,
+        out: &mut [u32],
+        maps: Option<&dyn Fn(usize) -> Option<Affine>>,
+    ) -> Option<Result<()>> {
+        let rows = match crate::sampler::check_fill(self, start, out.len()) {
+            Ok(rows) => rows,
+            Err(e) => return Some(Err(e)),
+        };
         if rows == 0 || self.dims == 0 {
-            return Ok(());
+            return Some(Ok(()));
         }
         let mut first = 0;
         while first < self.dims {
             let block = (self.dims - first).min(FILL_BLOCK);
             // Lanes rounded up to a power of two, so the XOR loop is a fixed-size one.
             match block {
-                1..=2 => self.fill_block::<2>(start, out, first, block),
-                3..=4 => self.fill_block::<4>(start, out, first, block),
-                5..=8 => self.fill_block::<8>(start, out, first, block),
-                9..=16 => self.fill_block::<16>(start, out, first, block),
-                _ => self.fill_block::<32>(start, out, first, block),
-            }
+                1..=2 => self.fill_mapped::<2>(start, out, first, block, maps),
+                3..=4 => self.fill_mapped::<4>(start, out, first, block, maps),
+                5..=8 => self.fill_mapped::<8>(start, out, first, block, maps),
+                9..=16 => self.fill_mapped::<16>(start, out, first, block, maps),
+                _ => self.fill_mapped::<32>(start, out, first, block, maps),
+            }?;
             first += block;
         }
-        Ok(())
+        Some(Ok(()))
+    }
+
+    /// [`fill_block`](Self::fill_block) with the block's maps gathered (identity past its
+    /// end); `None` when a map is `None`.
+    #[inline]
+    fn fill_mapped<const L: usize>(
+        &self,
+        start: u32,
+        out: &mut [u32],
+        first: usize,
+        block: usize,
+        maps: Option<&dyn Fn(usize) -> Option<Affine>>,
+    ) -> Option<()> {
+        match maps {
+            None => self.fill_block::<L>(start, out, first, block, None),
+            Some(f) => {
+                let mut m = [Affine::IDENTITY; L];
+                for (lane, slot) in m.iter_mut().enumerate().take(block) {
+                    *slot = f(first + lane)?;
+                }
+                self.fill_block::<L>(start, out, first, block, Some(&m));
+            }
+        }
+        Some(())
     }
 }
 

@@ -822,3 +822,48 @@ fn permute_of_an_index_past_n_terminates() {
         }
     }
 }
+
+/// The affine scrambles folded into Sobol's direction numbers (`Sampler::fill_affine`) give
+/// the bits of scrambling each value: LMS + digital shift, LMS alone, the shift alone, over
+/// both orders, block widths 1 to 40 and starts that cross high index bits; and a
+/// non-affine scramble (FastOwen) is untouched by the mechanism.
+#[test]
+fn affine_scrambles_folded_into_sobol_match_per_value() {
+    use qmckit::randomize::{Affine, Scrambler};
+    use qmckit::sobol::Order;
+    fn check<R: qmckit::randomize::Randomizes<Sobol> + Copy>(name: &str, s: Sobol, r: R) {
+        let sc = Scrambled::new(s, r);
+        let d = s.dims();
+        for start in [0u32, 1, 5, 1023, (1 << 20) - 3, u32::MAX - 70] {
+            let rows = 67usize.min((u32::MAX - start) as usize + 1);
+            let mut out = vec![0u32; rows * d];
+            sc.fill(start, &mut out).unwrap();
+            for (k, row) in out.chunks_exact(d).enumerate() {
+                for (dim, &v) in row.iter().enumerate() {
+                    let want = r
+                        .scrambler(dim)
+                        .scramble(s.sample(start + k as u32, dim).unwrap());
+                    assert_eq!(v, want, "{name}: d {d}, start {start}, row {k}, dim {dim}");
+                }
+            }
+        }
+    }
+    for order in [Order::Natural, Order::Gray] {
+        for d in [1, 2, 3, 4, 9, 17, 33, 40] {
+            let s = Sobol::with_order(d, order).unwrap();
+            check("lms+shift", s, (Lms::new(11), DigitalShift::new(12)));
+            check("shift+lms", s, (DigitalShift::new(13), Lms::new(14)));
+            check("lms", s, Lms::new(15));
+            check("shift", s, DigitalShift::new(16));
+            check("fastowen", s, FastOwen::new(17));
+        }
+    }
+    // The composition rule itself, against applying the two maps one after the other.
+    let (a, b) = (Lms::new(3).dimension(2), DigitalShift::new(4).scrambler(2));
+    let ab = (a, b).affine().unwrap();
+    for x in [0u32, 1, 0x8000_0000, 0xdead_beef, u32::MAX] {
+        assert_eq!(ab.apply(x), b.scramble(a.scramble(x)));
+    }
+    assert_eq!(Affine::IDENTITY.apply(0x1234_5678), 0x1234_5678);
+    assert!(FastOwen::new(1).scrambler(0).affine().is_none());
+}

@@ -202,7 +202,52 @@ fn cli_variance_prints_predicted_and_measured() {
         "",
         "radius",
     );
-    assert_usage_error(&["variance", "poisson", "-n", "64"], "", "poisson");
+    // Blue-noise sets: measured within 4 standard errors of the prediction, both well below
+    // white noise; Poisson sets have about N points.
+    for (sampler, n, sets) in [
+        ("poisson", "256", "400"),
+        ("gaussian-blue-noise", "64", "30"),
+    ] {
+        let out = run(
+            &[
+                "variance",
+                sampler,
+                "-n",
+                n,
+                "--sets",
+                sets,
+                "--max-seconds",
+                "600",
+            ],
+            "",
+        );
+        assert_eq!(out.status.code(), Some(0), "{sampler}");
+        let text = String::from_utf8(out.stdout).unwrap();
+        let kv = |key: &str| -> f64 {
+            text.lines()
+                .find_map(|l| l.strip_prefix(key).and_then(|r| r.strip_prefix(' ')))
+                .unwrap_or_else(|| panic!("{key} missing in {text}"))
+                .parse()
+                .unwrap()
+        };
+        let n: f64 = n.parse().unwrap();
+        assert!((kv("n_mean") / n - 1.0).abs() < 0.03, "{sampler}: {text}");
+        let (p, m, se) = (kv("predicted"), kv("measured"), kv("std_error"));
+        assert!((m - p).abs() < 4.0 * se, "{sampler}: {text}");
+        assert!(p < 0.3 * kv("white"), "{sampler}: {text}");
+    }
+    assert_usage_error(
+        &[
+            "variance",
+            "gaussian-blue-noise",
+            "-n",
+            "4096",
+            "--sets",
+            "100",
+        ],
+        "",
+        "raise it",
+    );
     assert_usage_error(
         &[
             "variance",

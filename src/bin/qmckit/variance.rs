@@ -7,9 +7,10 @@ use std::io::{BufWriter, Write};
 use clap::{Args, ValueEnum};
 use qmckit::analysis::Points;
 use qmckit::analysis::spectrum::{
-    DEFAULT_TOLERANCE, SPECTRUM_MAX_K, SpectrumMean, choose_method, estimated_cost, periodogram_2d,
+    DEFAULT_TOLERANCE, SPECTRUM_MAX_K, choose_method, estimated_cost, periodogram_2d,
 };
 use qmckit::analysis::variance::{Measured, TorusIntegrand, predicted_variance, shifted_error};
+use qmckit::blue_noise::{GaussianBlueNoise, PoissonDisk};
 use qmckit::randomize::{ExactOwen, Scrambled};
 use qmckit::{Halton, Independent, Jitter, Sampler, Sobol, Stratified};
 
@@ -24,13 +25,15 @@ offset, and the integrand (the disk of radius R, or the periodized Gaussian of s
 deviation sigma, centred at (1/2, 1/2)) is averaged over it. Output, one 'key value' line
 each:
   sampler, n, integrand, parameter (R or sigma), sets, k_max
-  predicted   (1/N) sum_{k != 0} |c_k|^2 E P(k), E P the mean periodogram of the S sets
-              on [-K, K]^2, the rest of Parseval's sum at E P = 1 (Pilleboue et al. 2015)
+  n_mean      the mean number of points a set (N, except for poisson: about N)
+  predicted   the mean over the S sets of (1/N_s) sum_{k != 0} |c_k|^2 P_s(k), P_s the
+              periodogram of set s on [-K, K]^2, the rest of Parseval's sum at P = 1
+              (Pilleboue et al. 2015; = (1/N) sum |c_k|^2 E P(k) at a fixed N)
   tail        the part of 'predicted' from outside [-K, K]^2
   measured    mean of the S squared errors (the exact integral is known)
   std_error   its standard error
   ratio       measured / predicted
-  white       the white-noise variance (||f||^2 - c_0^2) / N
+  white       the white-noise variance (||f||^2 - c_0^2) / n_mean
 Deterministic samplers (halton, sobol) have one set, shifted S times. Default K is
 2 ceil(sqrt(N)) (at least 16). Values with 17 significant digits. Refused when the S
 periodograms are estimated to exceed --max-seconds. Errors: one line, exit code 2.";
@@ -48,7 +51,12 @@ pub enum VarianceSampler {
     Sobol,
     /// Owen-scrambled (nested uniform) Sobol' points.
     OwenSobol,
-    // Poisson disk and blue-noise sets go here, with their point generation in `points_of`.
+    /// Bridson Poisson disk on the torus, about N points (the radius from N, as
+    /// `points poisson -n N --torus`; each set has its own count).
+    Poisson,
+    /// Gaussian blue noise (Ahmed, Ren & Wonka 2022) on the torus, exactly N points, the
+    /// default iterations of `points gaussian-blue-noise`.
+    GaussianBlueNoise,
 }
 
 /// `--integrand`.
@@ -91,9 +99,28 @@ pub struct VarianceArgs {
     budget: BudgetArgs,
 }
 
-/// Set `s` of the sampler, as 2D points in `[0, 1)`.
+/// Set `s` of the sampler, as 2D points in `[0, 1)` (the blue-noise sets unbudgeted: the
+/// caller checked the cost of all of them).
 fn points_of(which: VarianceSampler, n: u32, seed: u64, s: u32) -> qmckit::Result<Vec<f64>> {
     let key = qmckit::hash::hash3(seed, s as u64, 0x5e7);
+    let unlimited = &qmckit::analysis::budget::Budget::UNLIMITED;
+    let set = match which {
+        VarianceSampler::Poisson => Some(
+            PoissonDisk::with_points(2, u64::from(n))?
+                .torus(true)
+                .seed(key)
+                .generate_within(unlimited)?,
+        ),
+        VarianceSampler::GaussianBlueNoise => Some(
+            GaussianBlueNoise::new(u64::from(n))?
+                .seed(key)
+                .generate_within(unlimited)?,
+        ),
+        _ => None,
+    };
+    if let Some(set) = set {
+        return Ok(set.to_f64());
+    }
     let sampler: Box<dyn Sampler> = match which {
         VarianceSampler::Independent => Box::new(Independent::new(2, key)?),
         VarianceSampler::Jittered => {
@@ -103,6 +130,11 @@ fn points_of(which: VarianceSampler, n: u32, seed: u64, s: u32) -> qmckit::Resul
         VarianceSampler::Halton => Box::new(Halton::new(2)?),
         VarianceSampler::Sobol => Box::new(Sobol::new(2)?),
         VarianceSampler::OwenSobol => Box::new(Scrambled::new(Sobol::new(2)?, ExactOwen::new(key))),
+        VarianceSampler::Poisson | VarianceSampler::GaussianBlueNoise => {
+            return Err(qmckit::Error::InvalidParameter {
+                what: "a blue-noise set is not a Sampler",
+            });
+        }
     };
     let mut raw = vec![0u32; 2 * n as usize];
     sampler.fill(0, &mut raw)?;
@@ -149,38 +181,58 @@ pub fn run(args: &VarianceArgs) -> Result<(), Failure> {
     let method = choose_method(n as usize, k_max, DEFAULT_TOLERANCE);
     let one = estimated_cost(n as usize, k_max, method, DEFAULT_TOLERANCE).seconds();
     let evals = args.sets as f64 * n as f64 * 5e-9;
-    let total = one * spectra as f64 + evals;
+    let construct = match args.sampler {
+        VarianceSampler::Poisson => PoissonDisk::with_points(2, u64::from(n))
+            .and_then(|p| p.torus(true).cost())
+            .map_err(|e| Failure::usage(e.to_string()))?
+            .seconds(),
+        VarianceSampler::GaussianBlueNoise => GaussianBlueNoise::new(u64::from(n))
+            .map_err(|e| Failure::usage(e.to_string()))?
+            .cost()
+            .seconds(),
+        _ => 0.0,
+    };
+    let total = (one + construct) * spectra as f64 + evals;
     if total > budget.max_seconds() {
         return Err(Failure::usage(format!(
-            "{spectra} periodograms and {} evaluations: estimated {total:.1} s, more than \
+            "{spectra} sets, their periodograms and {} evaluations: estimated {total:.1} s, more than \
              --max-seconds {} (raise it to run them)",
             args.sets as u64 * n as u64,
             args.budget.max_seconds
         )));
     }
-    let (mean, errors) = with_spinner("variance", || -> qmckit::Result<_> {
-        let mut mean = SpectrumMean::new();
+    // The shift variance of one set is exactly (1/N_s) sum |c_k|^2 P_s(k), linear in P_s:
+    // the mean of the per-set predictions is the prediction of the mean periodogram, and it
+    // stays exact when the sets differ in size (Poisson disk by count).
+    let (predicted, counts, errors) = with_spinner("variance", || -> qmckit::Result<_> {
+        let (mut variance, mut tail, mut counts) = (0.0, 0.0, 0usize);
         let mut errors = Vec::with_capacity(args.sets as usize);
         let mut pts = Vec::new();
         for s in 0..args.sets {
             if random || s == 0 {
                 pts = points_of(args.sampler, n, args.seed, s)?;
                 let p = Points::new(&pts, 2)?;
-                mean.add(&periodogram_2d(
-                    p,
-                    k_max,
-                    method,
-                    DEFAULT_TOLERANCE,
-                    &qmckit::analysis::budget::Budget::UNLIMITED,
-                )?)?;
+                let one = predicted_variance(
+                    &periodogram_2d(
+                        p,
+                        k_max,
+                        method,
+                        DEFAULT_TOLERANCE,
+                        &qmckit::analysis::budget::Budget::UNLIMITED,
+                    )?,
+                    &f,
+                );
+                variance += one.variance;
+                tail += one.tail;
+                counts += pts.len() / 2;
             }
             let shift = [0, 1]
                 .map(|d| qmckit::bits::to_f64(qmckit::hash::uniform(args.seed ^ 0x5417, s, d)));
             errors.push(shifted_error(Points::new(&pts, 2)?, &f, shift)?);
         }
-        Ok((mean.mean()?, errors))
+        let inv = 1.0 / f64::from(spectra);
+        Ok(((variance * inv, tail * inv), counts as f64 * inv, errors))
     })?;
-    let predicted = predicted_variance(&mean, &f);
     let measured = Measured::from_errors(&errors)?;
     let mut out = BufWriter::new(std::io::stdout().lock());
     let (name, parameter) = match f {
@@ -197,12 +249,13 @@ pub fn run(args: &VarianceArgs) -> Result<(), Failure> {
     writeln!(out, "parameter {parameter}")?;
     writeln!(out, "sets {}", args.sets)?;
     writeln!(out, "k_max {k_max}")?;
-    writeln!(out, "predicted {:.16e}", predicted.variance)?;
-    writeln!(out, "tail {:.16e}", predicted.tail)?;
+    writeln!(out, "n_mean {counts}")?;
+    writeln!(out, "predicted {:.16e}", predicted.0)?;
+    writeln!(out, "tail {:.16e}", predicted.1)?;
     writeln!(out, "measured {:.16e}", measured.variance)?;
     writeln!(out, "std_error {:.16e}", measured.std_error)?;
-    writeln!(out, "ratio {:.16e}", measured.variance / predicted.variance)?;
-    writeln!(out, "white {:.16e}", f.white_noise_variance() / n as f64)?;
+    writeln!(out, "ratio {:.16e}", measured.variance / predicted.0)?;
+    writeln!(out, "white {:.16e}", f.white_noise_variance() / counts)?;
     out.flush()?;
     Ok(())
 }
