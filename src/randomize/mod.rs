@@ -14,10 +14,15 @@
 //! | [`CranleyPatterson`] | `x + u_d mod 1` (Cranley & Patterson 1976); does not keep nets | any [`Sampler`] | 1 add |
 //! | [`ExactOwen`] | nested uniform scrambling (Owen 1995), one random flip per bit prefix | [`Base2Digital`] | 32 hashes |
 //! | [`FastOwen`] | hash-based Owen scrambling (Laine & Karras 2011, Burley 2020, Vegdahl 2021) | [`Base2Digital`] | ~12 integer ops |
-//! | [`Lms`] | random lower-triangular matrix over GF(2) (Matoušek 1998) | [`Base2Digital`] | 32 AND/XOR |
+//! | [`Lms`] | random lower-triangular matrix over GF(2) (Matoušek 1998) | [`Base2Digital`] | 32 AND/XOR; none in a Sobol' fill (below) |
 //! | `(A, B)` | `A`, then `B` | what both apply to | sum |
 //! | [`shuffle::Shuffled`] | index permutation by a nested scramble (Burley 2020) | samplers of `2^m` points | ~12 ops |
 //! | [`digits::DigitScramble`] | base-`b` digit permutations, Faure, Owen in base `b` | inside [`crate::RadicalInverse`] (Halton, Hammersley, van der Corput `with_scramble`) | per digit |
+//!
+//! The affine scramblers (digital shift, LMS, the identity and their compositions, marked by
+//! [`Scrambler::AFFINE`]) are folded into Sobol's direction numbers by `Scrambled`'s `fill`
+//! ([`Affine`], [`crate::Sampler::fill_affine`]): `M (C i) ^ c = (M C) i ^ c`, so a filled
+//! LMS + shift Sobol' costs what the plain one does. Same bits as scrambling each value.
 //!
 //! Which randomizer applies to which construction is a type rule: `Scrambled<S, R>` is a
 //! [`Sampler`] only when `R:` [`Randomizes<S>`]. The base-2 digital randomizers require
