@@ -32,3 +32,4 @@ mod thiemard;
 mod tvalue;
 mod variance;
 mod warps;
+mod scene;
