@@ -3,7 +3,9 @@
 //! numbers of docs/scenes.md), else `quick()`; `--pgm DIR` also writes the reference, the
 //! seed-0 renders and the error images as 8-bit PGM files into DIR for a look.
 //!
-//! `cargo run --release --example scene_numbers -- [--full] [--pgm DIR]`
+//! `--seeds N`, `--reference N` and `--spp N` override the options' fields.
+//!
+//! `cargo run --release --example scene_numbers -- [--full] [--seeds N] [--reference N] [--spp N] [--pgm DIR]`
 
 use std::time::Instant;
 
@@ -22,7 +24,11 @@ fn lecture(s: Study) -> &'static str {
 }
 
 fn write_pgm(path: &std::path::Path, img: &SceneImage, signed: bool) -> std::io::Result<()> {
-    let max = img.pixels.iter().fold(0f64, |m, v| m.max(v.abs())).max(1e-12);
+    let max = img
+        .pixels
+        .iter()
+        .fold(0f64, |m, v| m.max(v.abs()))
+        .max(1e-12);
     let mut out = format!("P5\n{} {}\n255\n", img.width, img.height).into_bytes();
     for &v in &img.pixels {
         let g = if signed {
@@ -43,11 +49,24 @@ fn main() {
         .position(|a| a == "--pgm")
         .and_then(|k| args.get(k + 1))
         .map(std::path::PathBuf::from);
-    let o = if full {
+    let flag = |name: &str| -> Option<u32> {
+        let k = args.iter().position(|a| a == name)?;
+        match args.get(k + 1).and_then(|v| v.parse().ok()) {
+            Some(v) => Some(v),
+            None => {
+                eprintln!("{name} needs a number");
+                std::process::exit(2);
+            }
+        }
+    };
+    let mut o = if full {
         StudyOptions::full()
     } else {
         StudyOptions::quick()
     };
+    o.seeds = flag("--seeds").unwrap_or(o.seeds);
+    o.reference_spp = flag("--reference").unwrap_or(o.reference_spp);
+    o.spp = flag("--spp").unwrap_or(o.spp);
     println!(
         "{}x{} pixels, n = {}, {} seeds, reference {} spp; estimated {} samples",
         o.width,
@@ -67,7 +86,12 @@ fn main() {
                 std::process::exit(2);
             }
         };
-        println!("\n{} ({:.2} s); lecture: {}", st.name, t.elapsed().as_secs_f64(), lecture(s));
+        println!(
+            "\n{} ({:.2} s); lecture: {}",
+            st.name,
+            t.elapsed().as_secs_f64(),
+            lecture(s)
+        );
         println!("  sampler        MSE          +-         ratio     low band (norm, abs)");
         for e in &st.mse {
             println!(
@@ -78,7 +102,11 @@ fn main() {
         if let Some(dir) = &pgm {
             let tag = format!("{s:?}").to_lowercase();
             let _ = std::fs::create_dir_all(dir);
-            let _ = write_pgm(&dir.join(format!("{tag}_reference.pgm")), &st.reference, false);
+            let _ = write_pgm(
+                &dir.join(format!("{tag}_reference.pgm")),
+                &st.reference,
+                false,
+            );
             for ((name, r), (_, e)) in st.renders.iter().zip(&st.errors) {
                 let n: String = name.chars().filter(|c| c.is_alphanumeric()).collect();
                 let _ = write_pgm(&dir.join(format!("{tag}_{n}.pgm")), r, false);

@@ -34,7 +34,13 @@ impl Camera {
     /// # Errors
     /// [`Error::ZeroPoints`] for an empty image; [`Error::InvalidParameter`] for a field of
     /// view outside `(0, 180)` or a view direction along `y`.
-    pub fn look_at(eye: V3, target: V3, vfov_degrees: f64, width: u32, height: u32) -> Result<Self> {
+    pub fn look_at(
+        eye: V3,
+        target: V3,
+        vfov_degrees: f64,
+        width: u32,
+        height: u32,
+    ) -> Result<Self> {
         if width == 0 || height == 0 {
             return Err(Error::ZeroPoints);
         }
@@ -71,7 +77,11 @@ impl Camera {
     /// # Errors
     /// [`Error::InvalidParameter`] for a negative radius or a non-positive distance.
     pub fn with_lens(self, radius: f64, focus_distance: f64) -> Result<Self> {
-        if !(radius >= 0.0 && focus_distance > 0.0 && radius.is_finite() && focus_distance.is_finite()) {
+        if !(radius >= 0.0
+            && focus_distance > 0.0
+            && radius.is_finite()
+            && focus_distance.is_finite())
+        {
             return Err(Error::InvalidParameter {
                 what: "a lens needs a radius >= 0 and a focus distance > 0",
             });
@@ -106,10 +116,14 @@ impl Camera {
         let sy = (1.0 - 2.0 * py / self.height as f64) * self.tan_half;
         let dir = (self.forward + self.right * sx + self.up * sy).normalize();
         if self.lens_radius == 0.0 {
-            return Ray { origin: self.eye, dir };
+            return Ray {
+                origin: self.eye,
+                dir,
+            };
         }
         let d = crate::warp::disk::sample_uniform_disk_concentric([lens[0] as f32, lens[1] as f32]);
-        let origin = self.eye + (self.right * d[0] as f64 + self.up * d[1] as f64) * self.lens_radius;
+        let origin =
+            self.eye + (self.right * d[0] as f64 + self.up * d[1] as f64) * self.lens_radius;
         let focus = self.eye + dir * (self.focus_distance / dir.dot(self.forward));
         Ray::new(origin, focus - origin)
     }

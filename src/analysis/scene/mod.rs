@@ -16,7 +16,7 @@
 //! Everything is deterministic for a seed. A study renders `W H` pixels with
 //! `spp x seeds x samplers + reference_spp` samples each ([`Study::cost`], [`cost`]); a
 //! sample is one camera ray plus at most one shadow or occlusion ray against three spheres
-//! and a plane (about 10^7 samples a second on two cores). Options are validated by
+//! and a plane (a few million samples a second on two cores). Options are validated by
 //! [`check`]: zero sizes, non-power-of-two sample counts or more than
 //! [`MAX_STUDY_SAMPLES`] samples give an `Err`.
 //!

@@ -92,7 +92,13 @@ impl Prepared {
         }
         let m = spp.trailing_zeros();
         let zsobol = if kind == SceneSampler::ZSobol {
-            Some(ZSobol::new(width, height, spp, Randomization::FastOwen, seed as u32)?)
+            Some(ZSobol::new(
+                width,
+                height,
+                spp,
+                Randomization::FastOwen,
+                seed as u32,
+            )?)
         } else {
             None
         };

@@ -27,7 +27,9 @@ impl SceneImage {
     /// The value of pixel `(x, y)` (`None` outside the image).
     pub fn get(&self, x: u32, y: u32) -> Option<f64> {
         if x < self.width && y < self.height {
-            self.pixels.get(y as usize * self.width as usize + x as usize).copied()
+            self.pixels
+                .get(y as usize * self.width as usize + x as usize)
+                .copied()
         } else {
             None
         }
@@ -105,8 +107,8 @@ pub struct StudyOptions {
 }
 
 impl StudyOptions {
-    /// 64 x 64 pixels, 16 samples, 8 seeds, reference 1024: the five studies in about five
-    /// seconds on two cores (release).
+    /// 64 x 64 pixels, 16 samples, 8 seeds, reference 1024: 2.9e7 samples, the five studies
+    /// in about 12 s on a loaded two-core machine (release).
     pub const fn quick() -> Self {
         StudyOptions {
             width: 64,
@@ -117,19 +119,21 @@ impl StudyOptions {
         }
     }
 
-    /// 128 x 128 pixels, 16 samples, 32 seeds, reference 4096: about a minute for all.
+    /// 128 x 128 pixels, 16 samples, 16 seeds, reference 2048: 2.3e8 samples, a few minutes
+    /// for all five (32 seeds and reference 4096, twice the work, took 7.4 minutes on a
+    /// heavily loaded two-core machine).
     pub const fn full() -> Self {
         StudyOptions {
             width: 128,
             height: 128,
             spp: 16,
-            seeds: 32,
-            reference_spp: 4096,
+            seeds: 16,
+            reference_spp: 2048,
         }
     }
 }
 
-/// The most integrand samples one study may take (about three minutes on two cores).
+/// The most integrand samples one study may take (several minutes on two cores).
 pub const MAX_STUDY_SAMPLES: u64 = 1 << 31;
 
 /// The most pixels a study image may have.
@@ -270,7 +274,11 @@ impl Study {
             let k = o.seeds as f64;
             let mean = per_seed.iter().sum::<f64>() / k;
             let var = if o.seeds > 1 {
-                per_seed.iter().map(|m| (m - mean) * (m - mean)).sum::<f64>() / (k - 1.0)
+                per_seed
+                    .iter()
+                    .map(|m| (m - mean) * (m - mean))
+                    .sum::<f64>()
+                    / (k - 1.0)
             } else {
                 0.0
             };
@@ -343,7 +351,7 @@ pub fn check(o: &StudyOptions) -> Result<()> {
 }
 
 /// Estimated work of all five studies with options `o`, in integrand samples (each a camera
-/// ray and at most one secondary ray; about 10^7 a second on two cores). A caller compares
+/// ray and at most one secondary ray; a few million a second on two cores). A caller compares
 /// it with its budget; each study also refuses past [`MAX_STUDY_SAMPLES`] by itself.
 ///
 /// ```
@@ -457,8 +465,16 @@ pub fn low_band(err: &[f64], w: usize, h: usize) -> (f64, f64) {
     let (mut s, mut n) = (0.0, 0usize);
     for ky in 0..h {
         for kx in 0..w {
-            let fx = if kx <= w / 2 { kx as f64 } else { kx as f64 - w as f64 };
-            let fy = if ky <= h / 2 { ky as f64 } else { ky as f64 - h as f64 };
+            let fx = if kx <= w / 2 {
+                kx as f64
+            } else {
+                kx as f64 - w as f64
+            };
+            let fy = if ky <= h / 2 {
+                ky as f64
+            } else {
+                ky as f64 - h as f64
+            };
             let r = ((fx * side / w as f64).powi(2) + (fy * side / h as f64).powi(2)).sqrt();
             if (1.0..hi).contains(&r) {
                 s += data[ky * w + kx].norm_sqr() / px;
@@ -588,7 +604,10 @@ pub fn quad_light_points(o_spp: u32, seed: u64) -> Result<(Vec<[f64; 2]>, Vec<[f
 /// The world `(x, z)` ranges of the studies' quad light: `([x_min, x_max], [z_min, z_max])`.
 pub fn quad_light_extent() -> ([f64; 2], [f64; 2]) {
     let c = standard_scene().light.corners();
-    let (mut x, mut z) = ([f64::INFINITY, f64::NEG_INFINITY], [f64::INFINITY, f64::NEG_INFINITY]);
+    let (mut x, mut z) = (
+        [f64::INFINITY, f64::NEG_INFINITY],
+        [f64::INFINITY, f64::NEG_INFINITY],
+    );
     for p in c {
         x = [x[0].min(p.x), x[1].max(p.x)];
         z = [z[0].min(p.z), z[1].max(p.z)];
