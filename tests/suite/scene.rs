@@ -2,7 +2,7 @@
 //! polygon irradiance against a closed form, the area and cosine estimators' means, and the
 //! studies' qualitative claims (the lecture's MSE ordering, blue-noise AO error).
 
-use qmckit::analysis::scene::geometry::{Plane, Quad, Ray, Scene, Sphere, V3};
+use qmckit::analysis::scene::geometry::{Plane, Ray, Scene, Sphere, V3};
 use qmckit::analysis::scene::integrands::{
     ao_sample, lambert_irradiance, light_irradiance, light_sample, standard_camera, standard_scene,
 };
@@ -11,7 +11,7 @@ use qmckit::analysis::scene::{
     pixel_light_study, quad_light_points, quad_light_uv, reference_image, soft_shadow_study,
 };
 use qmckit::bits::to_f64;
-use qmckit::{Independent, OwenSobol, Sampler};
+use qmckit::{Independent, OwenSobol};
 use std::f64::consts::PI;
 
 fn small() -> StudyOptions {

@@ -37,8 +37,8 @@ pub mod samplers;
 pub mod study;
 
 pub use study::{
-    MAX_PIXELS, MAX_STUDY_SAMPLES, MseEntry, REFERENCE_SEED, SceneImage, SceneStudy, Study,
-    StudyOptions, ambient_occlusion_study, check, cost, low_band, motion_defocus_study,
+    MAX_PIXELS, MAX_STUDY_SAMPLES, MseEntry, PatternPair, REFERENCE_SEED, SceneImage, SceneStudy,
+    Study, StudyOptions, ambient_occlusion_study, check, cost, low_band, motion_defocus_study,
     pixel_area_study, pixel_light_study, quad_light_extent, quad_light_points, quad_light_uv,
     reference_image, soft_shadow_study,
 };

@@ -540,13 +540,16 @@ pub fn ambient_occlusion_study(o: &StudyOptions) -> Result<SceneStudy> {
     Study::AmbientOcclusion.run(o, &no_progress)
 }
 
+/// Two 2D patterns of the quad-light figure: `(stratified, Sobol')`.
+pub type PatternPair = (Vec<[f64; 2]>, Vec<[f64; 2]>);
+
 /// The `spp`-point patterns of the "warping samples to a quad light" figure, in the quad's
 /// `(u, v)` in `[0, 1)^2`: a jittered `2^ceil(m/2) x 2^floor(m/2)` grid (4 x 4 for 16) and
 /// the first `spp` Owen-scrambled Sobol' points, both from `seed`. O(spp).
 ///
 /// # Errors
 /// [`Error::ZeroPoints`]; [`Error::NotPowerOfTwo`]; [`Error::TooLarge`] past 2^16 points.
-pub fn quad_light_uv(spp: u32, seed: u64) -> Result<(Vec<[f64; 2]>, Vec<[f64; 2]>)> {
+pub fn quad_light_uv(spp: u32, seed: u64) -> Result<PatternPair> {
     if spp == 0 {
         return Err(Error::ZeroPoints);
     }
@@ -587,7 +590,7 @@ pub fn quad_light_uv(spp: u32, seed: u64) -> Result<(Vec<[f64; 2]>, Vec<[f64; 2]
 /// assert!(st.iter().chain(&so).all(|p| (-0.5..=1.0).contains(&p[0]) && (-0.5..=0.5).contains(&p[1])));
 /// # Ok::<(), qmckit::Error>(())
 /// ```
-pub fn quad_light_points(o_spp: u32, seed: u64) -> Result<(Vec<[f64; 2]>, Vec<[f64; 2]>)> {
+pub fn quad_light_points(o_spp: u32, seed: u64) -> Result<PatternPair> {
     let (a, b) = quad_light_uv(o_spp, seed)?;
     let q = standard_scene().light;
     let land = |v: Vec<[f64; 2]>| -> Vec<[f64; 2]> {
