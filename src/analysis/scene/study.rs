@@ -119,9 +119,8 @@ impl StudyOptions {
         }
     }
 
-    /// 128 x 128 pixels, 16 samples, 16 seeds, reference 2048: 2.3e8 samples, a few minutes
-    /// for all five (32 seeds and reference 4096, twice the work, took 7.4 minutes on a
-    /// heavily loaded two-core machine).
+    /// 128 x 128 pixels, 16 samples, 16 seeds, reference 2048: 2.3e8 samples, the five
+    /// studies in about two minutes on a shared two-core machine (release).
     pub const fn full() -> Self {
         StudyOptions {
             width: 128,
