@@ -16,6 +16,7 @@
 //! | [`variance`] | integration variance predicted from a mean spectrum (torus-shifted samplers, disk and Gaussian integrands) and measured beside it |
 //! | [`pcf`] | pair correlation function of 2D point sets (UTK's definition, optionally toroidal) and the structure factor from it |
 //! | [`pointfile`] | reading point sets from text (the `qmckit discrepancy` input format) |
+//! | [`scene`] | analytic render scenes (spheres, plane, quad light, thin lens, motion blur, ambient occlusion) and the MSE of samplers against a reference |
 
 pub mod budget;
 pub mod distance;
@@ -24,6 +25,7 @@ pub mod integration;
 pub mod l2;
 pub mod pcf;
 pub mod pointfile;
+pub mod scene;
 pub mod screen_error;
 pub mod spectrum;
 pub mod star;

@@ -25,6 +25,7 @@ mod pixel;
 mod pmj;
 mod randomize;
 mod samplers;
+mod scene;
 mod spectrum;
 mod star_discrepancy;
 mod star_lower;
