@@ -3,7 +3,6 @@
 
 use qmckit::analysis::Points;
 use qmckit::analysis::integration::{Integrand, integration_error};
-use qmckit::analysis::star::star_2d;
 use qmckit::plot::{ConvergenceFigure, Curve, Domain, PointsFigure};
 use qmckit::randomize::digits::DigitScramble;
 use qmckit::{Halton, Hammersley, RadicalInverse, Sobol, VanDerCorput, bits};
@@ -103,7 +102,7 @@ fn halton(ctx: &Ctx) -> Result<Section, Failure> {
         format!("(Phi_2(i), Phi_3(i)) for i < {n}: relatively prime bases, any number of points and dimensions."),
     );
     s.figures.push(ctx.figure("halton.svg", &PointsFigure::new(format!("Halton, {n} points"), p.clone()).radius(2), PLOT, "Halton bases 2, 3")?);
-    s.rows.push(row(format!("D* of {n} Halton points"), sig(star_2d(Points::new(&flat(&p), 2)?)?, 4), ""));
+    s.rows.push(row(format!("D* of {n} Halton points"), sig(ctx.star(&p)?, 4), ""));
     Ok(s)
 }
 
@@ -118,8 +117,8 @@ fn hammersley(ctx: &Ctx) -> Result<Section, Failure> {
         format!("(i/N, Phi_2(i)) for N = {n}: with N known in advance one dimension becomes i/N."),
     );
     s.figures.push(ctx.figure("hammersley.svg", &PointsFigure::new(format!("Hammersley, {n} points"), p.clone()).radius(2), PLOT, "Hammersley")?);
-    let dh = star_2d(Points::new(&flat(&p), 2)?)?;
-    let dt = star_2d(Points::new(&flat(&hp), 2)?)?;
+    let dh = ctx.star(&p)?;
+    let dt = ctx.star(&hp)?;
     s.rows.push(row(format!("D* Hammersley, N = {n}"), sig(dh, 4), ""));
     s.rows.push(row(format!("D* Halton, N = {n}"), sig(dt, 4), ""));
     s.rows.push(row("Hammersley lower than Halton?", if dh < dt { "yes" } else { "no" }, "slightly lower discrepancy than Halton"));
@@ -140,8 +139,8 @@ fn permuted(ctx: &Ctx) -> Result<Section, Failure> {
     );
     s.figures.push(ctx.figure("phi29-31.svg", &PointsFigure::new("(Phi_29, Phi_31) unscrambled", plain.clone()).radius(2), PLOT, "unscrambled")?);
     s.figures.push(ctx.figure("phi29-31-perm.svg", &PointsFigure::new("(Phi_29, Phi_31) permuted", scr.clone()).radius(2), PLOT, "random digit permutations")?);
-    let d0 = star_2d(Points::new(&flat(&plain), 2)?)?;
-    let d1 = star_2d(Points::new(&flat(&scr), 2)?)?;
+    let d0 = ctx.star(&plain)?;
+    let d1 = ctx.star(&scr)?;
     s.rows.push(row(format!("D* unscrambled (N = {n})"), sig(d0, 4), ""));
     s.rows.push(row(format!("D* with random digit permutations (N = {n})"), sig(d1, 4), ""));
     Ok(s)

@@ -128,6 +128,17 @@ impl Ctx {
         if self.quick { quick } else { full }
     }
 
+    /// The exact star discrepancy of 2D points, refused past the budget (`N^2` steps).
+    pub fn star(&self, p: &[[f64; 2]]) -> Result<f64, Failure> {
+        let data = flat(p);
+        let points = qmckit::analysis::Points::new(&data, 2)?;
+        Ok(qmckit::analysis::star::star_exact_within(
+            points,
+            &self.budget,
+            &qmckit::analysis::budget::no_progress,
+        )?)
+    }
+
     /// Renders `fig` into `DIR/name` (format from the extension) and returns its [`Fig`].
     pub fn figure<F: Figure>(
         &self,
