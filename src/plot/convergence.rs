@@ -29,12 +29,14 @@ pub struct ConvergenceFigure {
     pub curves: Vec<Curve>,
     /// The y-axis label.
     pub y_label: String,
+    /// Draw the dashed `N^-1/2` reference line (default true).
+    pub reference: bool,
 }
 
 impl ConvergenceFigure {
     /// The figure of `curves`.
     pub fn new(title: impl Into<String>, curves: Vec<Curve>) -> Self {
-        ConvergenceFigure { title: title.into(), curves, y_label: "error".to_owned() }
+        ConvergenceFigure { title: title.into(), curves, y_label: "error".to_owned(), reference: true }
     }
 
     /// The least-squares slope of each curve (`None` where fewer than two usable pairs).
@@ -113,7 +115,7 @@ impl Figure for ConvergenceFigure {
                 .draw_series(usable(&c.points).map(|p| Circle::new(p, 3, col.filled())))
                 .map_err(drawing)?;
         }
-        if let Some((n, e)) = self.curves.first().and_then(|c| usable(&c.points).next()) {
+        if let Some((n, e)) = self.curves.first().and_then(|c| usable(&c.points).next()).filter(|_| self.reference) {
             let r = vec![(n, e), (x1, e * (n / x1).sqrt())];
             chart
                 .draw_series(DashedLineSeries::new(r, 6, 4, RGBColor(120, 120, 120).stroke_width(1)))

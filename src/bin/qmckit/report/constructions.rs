@@ -63,7 +63,7 @@ fn radical_inverse() -> Result<Section, Failure> {
     let lecture3 = ["0", "0.333..", "0.666...", "0.111...", "0.444...", "0.777...", "0.222...", "0.555...", "0.888..."];
     for (n, l) in lecture2.iter().enumerate() {
         let v = bits::to_f64(r2.sample(n as u32));
-        s.rows.push(row(format!("Phi_2({n}) = 0.{:b}_2 reversed", n), sig(v, 6), *l));
+        s.rows.push(row(format!("Phi_2({n}), n = {n:b}_2"), sig(v, 6), *l));
     }
     for (n, l) in lecture3.iter().enumerate() {
         let v = bits::to_f64(r3.sample(n as u32));

@@ -64,6 +64,7 @@ fn definition(ctx: &Ctx) -> Result<Section, Failure> {
     }
     let fig = ConvergenceFigure {
         y_label: "D*".into(),
+        reference: false,
         ..ConvergenceFigure::new(
             "star discrepancy against N",
             vec![
@@ -103,13 +104,16 @@ fn koksma_hlawka(ctx: &Ctx) -> Result<Section, Failure> {
         err.push((n as f64, e));
         bound.push((n as f64, b));
     }
-    let fig = ConvergenceFigure::new(
-        "f(x,y) = xy on Sobol' points",
-        vec![
-            Curve { label: "bound V(f) D*".into(), points: bound.clone() },
-            Curve { label: "actual |error|".into(), points: err.clone() },
-        ],
-    );
+    let fig = ConvergenceFigure {
+        reference: false,
+        ..ConvergenceFigure::new(
+            "f(x,y) = xy on Sobol' points",
+            vec![
+                Curve { label: "bound V(f) D*".into(), points: bound.clone() },
+                Curve { label: "actual |error|".into(), points: err.clone() },
+            ],
+        )
+    };
     let mut s = Section::new(
         "koksma-hlawka",
         "Koksma-Hlawka: |error| <= V(f) D_N, not a tight bound",

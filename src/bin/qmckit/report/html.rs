@@ -10,7 +10,7 @@ pub fn esc(s: &str) -> String {
 const STYLE: &str = "body{font-family:sans-serif;max-width:1150px;margin:auto;padding:1em;color:#222}\
 section{border-top:1px solid #ccc;padding:.5em 0 1em}\
 .figs{display:flex;flex-wrap:wrap;gap:10px}figure{margin:0;text-align:center}\
-figure img{width:360px;height:auto;border:1px solid #eee}figcaption{font-size:90%;max-width:360px}\
+figure img{max-width:560px;height:auto;border:1px solid #eee}figcaption{font-size:90%;max-width:420px;margin:auto}\
 table{border-collapse:collapse;margin:.6em 0}td,th{border:1px solid #bbb;padding:3px 8px;text-align:left}\
 th.lecture,td.lecture{color:#864}.note{font-style:italic;color:#555}";
 
