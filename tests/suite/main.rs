@@ -32,3 +32,5 @@ mod thiemard;
 mod tvalue;
 mod variance;
 mod warps;
+mod plot;
+mod report;

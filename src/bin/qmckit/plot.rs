@@ -17,7 +17,7 @@ use super::Failure;
 pub const AFTER_HELP: &str = "\
 Input (FILE, or standard input for '-' or none), by --kind (auto: from the first bytes):
   points       a point file as 'qmckit points' writes it (real or u32 coordinates); the
-               first two coordinates of each point are drawn (1D files: at height 1/2)
+               first two coordinates of each point are drawn (1D files are refused)
   spectrum     'qmckit spectrum' output ('# kx ky power' lines): a log-scaled image with
                the DC term circled and a colour bar in dB
   radial       'qmckit spectrum --radial' output ('# radius count mean anisotropy')
@@ -188,6 +188,12 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
         Kind::Points | Kind::Auto => {
             let sets = parse_point_sets(text()?).map_err(|e| Failure::usage(format!("{name}: {e}")))?;
             let set = &sets[0];
+            if set.dims < 2 {
+                return Err(Failure::usage(format!(
+                    "{name}: a point plot needs 2D points, this set has {} coordinate a point",
+                    set.dims
+                )));
+            }
             let pts: Vec<[f64; 2]> = set
                 .data
                 .chunks_exact(set.dims)
@@ -216,6 +222,14 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
             let block = &parse_table(text()?, 3).map_err(input)?[0];
             let k = block.iter().map(|r| r[0].abs().max(r[1].abs())).fold(0.0, f64::max) as usize;
             let side = 2 * k + 1;
+            if block.len() != side * side || block.iter().any(|r| r[0].fract() != 0.0 || r[1].fract() != 0.0) {
+                return Err(Failure::usage(format!(
+                    "{name}: a spectrum needs 'kx ky power' lines at every integer frequency of \
+                     [-K, K]^2 ({} for K = {k}), found {}",
+                    side * side,
+                    block.len()
+                )));
+            }
             let mut values = vec![0.0; side * side];
             for r in block {
                 let (kx, ky) = (r[0] as i64 + k as i64, r[1] as i64 + k as i64);

@@ -53,6 +53,9 @@ pub struct ReportArgs {
     /// Smaller sizes and fewer seeds: under a minute.
     #[arg(long)]
     pub quick: bool,
+    /// Write every figure as PNG (plots too), e.g. to embed them where SVG is not shown.
+    #[arg(long)]
+    pub png: bool,
     #[command(flatten)]
     pub budget: BudgetArgs,
 }
@@ -118,6 +121,8 @@ pub struct Ctx {
     pub quick: bool,
     /// The time budget of each super-linear step.
     pub budget: Budget,
+    /// `--png`: plots as PNG too.
+    pub png: bool,
     /// Files written so far (for the summary).
     written: Mutex<Vec<String>>,
 }
@@ -147,6 +152,14 @@ impl Ctx {
         size: (u32, u32),
         caption: impl Into<String>,
     ) -> Result<Fig, Failure> {
+        let png_name;
+        let name = match name.strip_suffix(".svg") {
+            Some(stem) if self.png => {
+                png_name = format!("{stem}.png");
+                png_name.as_str()
+            }
+            _ => name,
+        };
         let format = Format::from_path(name).map_err(|e| Failure::usage(e.0))?;
         let bytes = render(fig, format, size.0, size.1)
             .map_err(|e| Failure::usage(format!("figure {name}: {e}")))?;
@@ -201,7 +214,7 @@ pub fn run(args: &ReportArgs) -> Result<(), Failure> {
         code: 1,
         message: format!("{}: {e}", dir.display()),
     })?;
-    let ctx = Ctx { dir, quick: args.quick, budget, written: Mutex::new(Vec::new()) };
+    let ctx = Ctx { dir, quick: args.quick, budget, png: args.png, written: Mutex::new(Vec::new()) };
     let started = std::time::Instant::now();
     let sections = with_progress("report", |progress| {
         let mut all = Vec::new();
@@ -212,7 +225,8 @@ pub fn run(args: &ReportArgs) -> Result<(), Failure> {
         progress(GROUPS.len(), GROUPS.len());
         Ok::<_, Failure>(all)
     })?;
-    let page = html::page(&sections, args.quick, started.elapsed().as_secs_f64());
+    let files = ctx.written.lock().map(|w| w.len()).unwrap_or(0);
+    let page = html::page(&sections, files, args.quick, started.elapsed().as_secs_f64());
     write(&ctx.dir.join("index.html"), page.as_bytes())
 }
 
