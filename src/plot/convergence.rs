@@ -36,7 +36,12 @@ pub struct ConvergenceFigure {
 impl ConvergenceFigure {
     /// The figure of `curves`.
     pub fn new(title: impl Into<String>, curves: Vec<Curve>) -> Self {
-        ConvergenceFigure { title: title.into(), curves, y_label: "error".to_owned(), reference: true }
+        ConvergenceFigure {
+            title: title.into(),
+            curves,
+            y_label: "error".to_owned(),
+            reference: true,
+        }
     }
 
     /// The least-squares slope of each curve (`None` where fewer than two usable pairs).
@@ -52,7 +57,9 @@ impl ConvergenceFigure {
 }
 
 fn usable(p: &[(f64, f64)]) -> impl Iterator<Item = (f64, f64)> + '_ {
-    p.iter().copied().filter(|&(n, e)| n > 0.0 && e > 0.0 && n.is_finite() && e.is_finite())
+    p.iter()
+        .copied()
+        .filter(|&(n, e)| n > 0.0 && e > 0.0 && n.is_finite() && e.is_finite())
 }
 
 impl Figure for ConvergenceFigure {
@@ -110,18 +117,32 @@ impl Figure for ConvergenceFigure {
                 .draw_series(LineSeries::new(usable(&c.points), col.stroke_width(2)))
                 .map_err(drawing)?
                 .label(label)
-                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], col.stroke_width(2)));
+                .legend(move |(x, y)| {
+                    PathElement::new(vec![(x, y), (x + 18, y)], col.stroke_width(2))
+                });
             chart
                 .draw_series(usable(&c.points).map(|p| Circle::new(p, 3, col.filled())))
                 .map_err(drawing)?;
         }
-        if let Some((n, e)) = self.curves.first().and_then(|c| usable(&c.points).next()).filter(|_| self.reference) {
+        if let Some((n, e)) = self
+            .curves
+            .first()
+            .and_then(|c| usable(&c.points).next())
+            .filter(|_| self.reference)
+        {
             let r = vec![(n, e), (x1, e * (n / x1).sqrt())];
             chart
-                .draw_series(DashedLineSeries::new(r, 6, 4, RGBColor(120, 120, 120).stroke_width(1)))
+                .draw_series(DashedLineSeries::new(
+                    r,
+                    6,
+                    4,
+                    RGBColor(120, 120, 120).stroke_width(1),
+                ))
                 .map_err(drawing)?
                 .label("N^-1/2")
-                .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], RGBColor(120, 120, 120)));
+                .legend(|(x, y)| {
+                    PathElement::new(vec![(x, y), (x + 18, y)], RGBColor(120, 120, 120))
+                });
         }
         chart
             .configure_series_labels()

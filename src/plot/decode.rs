@@ -18,7 +18,9 @@ fn err(m: impl Into<String>) -> PlotError {
 
 fn check_size(w: usize, h: usize) -> Result<(), PlotError> {
     if w == 0 || h == 0 || w.saturating_mul(h) > MAX_PIXELS {
-        return Err(err(format!("image size {w}x{h} is outside 1 to {MAX_PIXELS} pixels")));
+        return Err(err(format!(
+            "image size {w}x{h} is outside 1 to {MAX_PIXELS} pixels"
+        )));
     }
     Ok(())
 }
@@ -54,7 +56,9 @@ fn decode_png(bytes: &[u8]) -> Result<Decoded, PlotError> {
         .output_buffer_size()
         .ok_or_else(|| err("PNG: the image is too large"))?;
     let mut buf = vec![0u8; size];
-    let frame = reader.next_frame(&mut buf).map_err(|e| err(format!("PNG: {e}")))?;
+    let frame = reader
+        .next_frame(&mut buf)
+        .map_err(|e| err(format!("PNG: {e}")))?;
     let channels = frame.color_type.samples();
     let wide = frame.bit_depth == png::BitDepth::Sixteen;
     let bytes_per = if wide { 2 } else { 1 };
@@ -96,8 +100,11 @@ fn token(mut s: &[u8]) -> Option<(&[u8], &[u8])> {
             s = &s[end..];
             continue;
         }
-        let end = s.iter().position(|c| c.is_ascii_whitespace()).unwrap_or(s.len());
-        return (end > 0).then(|| (&s[..end], &s[end..]));
+        let end = s
+            .iter()
+            .position(|c| c.is_ascii_whitespace())
+            .unwrap_or(s.len());
+        return (end > 0).then_some((&s[..end], &s[end..]));
     }
 }
 
@@ -126,7 +133,10 @@ fn decode_pgm(bytes: &[u8]) -> Result<Decoded, PlotError> {
         let wide = maxval > 255;
         let need = if wide { 2 * n } else { n };
         if data.len() < need {
-            return Err(err(format!("PGM: {} bytes of pixels, {need} needed", data.len())));
+            return Err(err(format!(
+                "PGM: {} bytes of pixels, {need} needed",
+                data.len()
+            )));
         }
         let v = (0..n)
             .map(|i| {
@@ -171,7 +181,11 @@ fn decode_text(text: &str) -> Result<Decoded, PlotError> {
         if rows == 0 {
             w = row.len();
         } else if row.len() != w {
-            return Err(err(format!("line {}: {} values, the first row has {w}", k + 1, row.len())));
+            return Err(err(format!(
+                "line {}: {} values, the first row has {w}",
+                k + 1,
+                row.len()
+            )));
         }
         v.extend(row);
         rows += 1;

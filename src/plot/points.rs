@@ -190,7 +190,10 @@ impl Figure for PointsFigure {
         };
         let grey = RGBColor(150, 150, 150);
         chart
-            .draw_series(std::iter::once(PathElement::new(outline, grey.stroke_width(1))))
+            .draw_series(std::iter::once(PathElement::new(
+                outline,
+                grey.stroke_width(1),
+            )))
             .map_err(drawing)?;
         if let Some((a, b)) = self.intervals {
             let line = RGBColor(120, 160, 220).stroke_width(1);

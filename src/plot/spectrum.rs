@@ -32,7 +32,11 @@ impl SpectrumFigure {
     ///
     /// # Errors
     /// A [`PlotError`] unless `values.len() = (2K + 1)^2`.
-    pub fn new(title: impl Into<String>, k_max: usize, values: Vec<f64>) -> Result<Self, PlotError> {
+    pub fn new(
+        title: impl Into<String>,
+        k_max: usize,
+        values: Vec<f64>,
+    ) -> Result<Self, PlotError> {
         let side = 2 * k_max + 1;
         if values.len() != side * side {
             return Err(PlotError::new(format!(
@@ -41,7 +45,13 @@ impl SpectrumFigure {
                 values.len()
             )));
         }
-        Ok(SpectrumFigure { title: title.into(), k_max, values, floor: 1e-2, ceiling: None })
+        Ok(SpectrumFigure {
+            title: title.into(),
+            k_max,
+            values,
+            floor: 1e-2,
+            ceiling: None,
+        })
     }
 
     /// From a computed [`Spectrum`].
@@ -53,7 +63,13 @@ impl SpectrumFigure {
                 values.push(s.get(kx, ky).unwrap_or(0.0));
             }
         }
-        SpectrumFigure { title: title.into(), k_max: k as usize, values, floor: 1e-2, ceiling: None }
+        SpectrumFigure {
+            title: title.into(),
+            k_max: k as usize,
+            values,
+            floor: 1e-2,
+            ceiling: None,
+        }
     }
 
     /// Sets the top of the colour range.
@@ -86,9 +102,14 @@ impl Figure for SpectrumFigure {
                 .fold(self.floor * 10.0, f64::max),
         };
         if !(top.is_finite() && self.floor > 0.0 && self.floor.is_finite()) {
-            return Err(PlotError::new("a spectrum's values must be finite and non-negative"));
+            return Err(PlotError::new(
+                "a spectrum's values must be finite and non-negative",
+            ));
         }
-        let (lo, hi) = (self.floor.log10(), top.log10().max(self.floor.log10() + 1.0));
+        let (lo, hi) = (
+            self.floor.log10(),
+            top.log10().max(self.floor.log10() + 1.0),
+        );
         let scale = |v: f64| ((v.max(self.floor).log10() - lo) / (hi - lo)).clamp(0.0, 1.0);
         let (w, _) = area.dim_in_pixel();
         let (left, right) = area.split_horizontally(w.saturating_sub(90).max(1));
@@ -105,18 +126,27 @@ impl Figure for SpectrumFigure {
             .disable_mesh()
             .x_desc("kx")
             .y_desc("ky")
+            .x_label_formatter(&|v| format!("{v:.0}"))
+            .y_label_formatter(&|v| format!("{v:.0}"))
             .label_style(label_font())
             .draw()
             .map_err(drawing)?;
         let cells = self.values.iter().enumerate().map(|(i, &v)| {
             let kx = (i % side) as f64 - k as f64;
             let ky = (i / side) as f64 - k as f64;
-            Rectangle::new([(kx - 0.5, ky - 0.5), (kx + 0.5, ky + 0.5)], viridis(scale(v)).filled())
+            Rectangle::new(
+                [(kx - 0.5, ky - 0.5), (kx + 0.5, ky + 0.5)],
+                viridis(scale(v)).filled(),
+            )
         });
         chart.draw_series(cells).map_err(drawing)?;
         let mark = (k as f64 / 12.0).max(1.2);
         chart
-            .draw_series(std::iter::once(Circle::new((0.0, 0.0), 6, RED.stroke_width(2))))
+            .draw_series(std::iter::once(Circle::new(
+                (0.0, 0.0),
+                6,
+                RED.stroke_width(2),
+            )))
             .map_err(drawing)?;
         chart
             .draw_series(std::iter::once(Text::new(
@@ -125,7 +155,7 @@ impl Figure for SpectrumFigure {
                 ("sans-serif", 13).into_font().color(&RED),
             )))
             .map_err(drawing)?;
-        colour_bar(&right, lo * 10.0, hi * 10.0, "dB", |t| viridis(t))
+        colour_bar(&right, lo * 10.0, hi * 10.0, "dB", viridis)
     }
 }
 
@@ -160,7 +190,10 @@ where
     let strips = (0..steps).map(|s| {
         let a = lo + (hi - lo) * s as f64 / steps as f64;
         let b = lo + (hi - lo) * (s + 1) as f64 / steps as f64;
-        Rectangle::new([(0.0, a), (1.0, b)], colour((s as f64 + 0.5) / steps as f64).filled())
+        Rectangle::new(
+            [(0.0, a), (1.0, b)],
+            colour((s as f64 + 0.5) / steps as f64).filled(),
+        )
     });
     bar.draw_series(strips).map_err(drawing)?;
     Ok(())
@@ -198,7 +231,9 @@ impl Figure for RadialFigure {
             y1 = y1.max(y);
         }
         if x1 <= 0.0 {
-            return Err(PlotError::new("a radial spectrum needs a positive frequency"));
+            return Err(PlotError::new(
+                "a radial spectrum needs a positive frequency",
+            ));
         }
         let mut chart = ChartBuilder::on(area)
             .caption(&self.title, caption_font())
@@ -229,7 +264,9 @@ impl Figure for RadialFigure {
                 .draw_series(LineSeries::new(pts.iter().copied(), c.stroke_width(2)))
                 .map_err(drawing)?
                 .label(label.clone())
-                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], c.stroke_width(2)));
+                .legend(move |(x, y)| {
+                    PathElement::new(vec![(x, y), (x + 18, y)], c.stroke_width(2))
+                });
         }
         chart
             .configure_series_labels()

@@ -109,7 +109,11 @@ pub struct PlotArgs {
 
 /// Parses `AxB` with both positive and at most `max`.
 fn pair(text: &str, option: &str, max: u32) -> Result<(u32, u32), Failure> {
-    let bad = || Failure::usage(format!("{option} must be AxB with A, B in 1..={max}, not {text:?}"));
+    let bad = || {
+        Failure::usage(format!(
+            "{option} must be AxB with A, B in 1..={max}, not {text:?}"
+        ))
+    };
     let (a, b) = text.split_once(['x', 'X']).ok_or_else(bad)?;
     let a: u32 = a.trim().parse().map_err(|_| bad())?;
     let b: u32 = b.trim().parse().map_err(|_| bad())?;
@@ -126,7 +130,10 @@ fn read(file: Option<&str>) -> Result<(String, Vec<u8>), Failure> {
     let (name, r) = match file {
         None | Some("-") => (
             "<stdin>".to_owned(),
-            std::io::stdin().lock().take(limit + 1).read_to_end(&mut bytes),
+            std::io::stdin()
+                .lock()
+                .take(limit + 1)
+                .read_to_end(&mut bytes),
         ),
         Some(p) => (
             format!("{p:?}").trim_matches('"').to_owned(),
@@ -135,7 +142,9 @@ fn read(file: Option<&str>) -> Result<(String, Vec<u8>), Failure> {
     };
     r.map_err(|e| Failure::usage(format!("{name}: {e}")))?;
     if bytes.len() as u64 > limit {
-        return Err(Failure::usage(format!("{name}: more than {limit} bytes of input")));
+        return Err(Failure::usage(format!(
+            "{name}: more than {limit} bytes of input"
+        )));
     }
     if bytes.iter().all(u8::is_ascii_whitespace) {
         return Err(Failure::usage(format!("{name}: empty input")));
@@ -170,14 +179,21 @@ fn detect(bytes: &[u8]) -> Kind {
 pub fn run(args: &PlotArgs) -> Result<(), Failure> {
     let format = Format::from_path(&args.out).map_err(|e| Failure::usage(e.0))?;
     let (w, h) = pair(&args.size, "--size", 8192)?;
-    let intervals = args.intervals.as_deref().map(|t| pair(t, "--intervals", 4096)).transpose()?;
+    let intervals = args
+        .intervals
+        .as_deref()
+        .map(|t| pair(t, "--intervals", 4096))
+        .transpose()?;
     let (name, bytes) = read(args.file.as_deref())?;
     let kind = match args.kind {
         Kind::Auto => detect(&bytes),
         k => k,
     };
-    if kind != Kind::Points && (intervals.is_some() || args.warp.is_some() || args.groups.is_some()) {
-        return Err(Failure::usage("--intervals, --warp and --groups apply to point sets only"));
+    if kind != Kind::Points && (intervals.is_some() || args.warp.is_some() || args.groups.is_some())
+    {
+        return Err(Failure::usage(
+            "--intervals, --warp and --groups apply to point sets only",
+        ));
     }
     let input = |e: PlotError| Failure::usage(format!("{name}: {e}"));
     let text = || {
@@ -186,7 +202,8 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
     let title = |default: &str| args.title.clone().unwrap_or_else(|| default.to_owned());
     let out = match kind {
         Kind::Points | Kind::Auto => {
-            let sets = parse_point_sets(text()?).map_err(|e| Failure::usage(format!("{name}: {e}")))?;
+            let sets =
+                parse_point_sets(text()?).map_err(|e| Failure::usage(format!("{name}: {e}")))?;
             let set = &sets[0];
             if set.dims < 2 {
                 return Err(Failure::usage(format!(
@@ -220,9 +237,16 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
         }
         Kind::Spectrum => {
             let block = &parse_table(text()?, 3).map_err(input)?[0];
-            let k = block.iter().map(|r| r[0].abs().max(r[1].abs())).fold(0.0, f64::max) as usize;
+            let k = block
+                .iter()
+                .map(|r| r[0].abs().max(r[1].abs()))
+                .fold(0.0, f64::max) as usize;
             let side = 2 * k + 1;
-            if block.len() != side * side || block.iter().any(|r| r[0].fract() != 0.0 || r[1].fract() != 0.0) {
+            if block.len() != side * side
+                || block
+                    .iter()
+                    .any(|r| r[0].fract() != 0.0 || r[1].fract() != 0.0)
+            {
                 return Err(Failure::usage(format!(
                     "{name}: a spectrum needs 'kx ky power' lines at every integer frequency of \
                      [-K, K]^2 ({} for K = {k}), found {}",
@@ -243,9 +267,18 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
             let curves = blocks
                 .iter()
                 .enumerate()
-                .map(|(i, b)| (format!("set {}", i + 1), b.iter().map(|r| (r[0], r[2])).collect()))
+                .map(|(i, b)| {
+                    (
+                        format!("set {}", i + 1),
+                        b.iter().map(|r| (r[0], r[2])).collect(),
+                    )
+                })
                 .collect();
-            let fig = RadialFigure { title: title("radial power spectrum"), x_label: "radius |k|".into(), curves };
+            let fig = RadialFigure {
+                title: title("radial power spectrum"),
+                x_label: "radius |k|".into(),
+                curves,
+            };
             draw(&fig, format, w, h, &name)?
         }
         Kind::Convergence => {
@@ -253,7 +286,10 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
             let curves = blocks
                 .iter()
                 .enumerate()
-                .map(|(i, b)| Curve { label: format!("set {}", i + 1), points: b.iter().map(|r| (r[0], r[1])).collect() })
+                .map(|(i, b)| Curve {
+                    label: format!("set {}", i + 1),
+                    points: b.iter().map(|r| (r[0], r[1])).collect(),
+                })
                 .collect();
             let fig = ConvergenceFigure::new(title("integration error"), curves);
             draw(&fig, format, w, h, &name)?
@@ -276,6 +312,12 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
     })
 }
 
-fn draw<F: Figure>(fig: &F, format: Format, w: u32, h: u32, name: &str) -> Result<Vec<u8>, Failure> {
+fn draw<F: Figure>(
+    fig: &F,
+    format: Format,
+    w: u32,
+    h: u32,
+    name: &str,
+) -> Result<Vec<u8>, Failure> {
     render(fig, format, w, h).map_err(|e| Failure::usage(format!("{name}: {e}")))
 }

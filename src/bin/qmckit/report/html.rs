@@ -4,7 +4,10 @@ use super::Section;
 
 /// Escapes text for HTML.
 pub fn esc(s: &str) -> String {
-    s.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('"', "&quot;")
+    s.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+        .replace('"', "&quot;")
 }
 
 const STYLE: &str = "body{font-family:sans-serif;max-width:1150px;margin:auto;padding:1em;color:#222}\
@@ -33,11 +36,20 @@ pub fn page(sections: &[Section], files: usize, quick: bool, seconds: f64) -> St
         env!("CARGO_PKG_VERSION")
     ));
     for s in sections {
-        out.push_str(&format!("<li><a href=\"#{}\">{}</a></li>", s.id, esc(&s.title)));
+        out.push_str(&format!(
+            "<li><a href=\"#{}\">{}</a></li>",
+            s.id,
+            esc(&s.title)
+        ));
     }
     out.push_str("</ol>\n");
     for s in sections {
-        out.push_str(&format!("<section id=\"{}\">\n<h2>{}</h2>\n<p>{}</p>\n", s.id, esc(&s.title), esc(&s.text)));
+        out.push_str(&format!(
+            "<section id=\"{}\">\n<h2>{}</h2>\n<p>{}</p>\n",
+            s.id,
+            esc(&s.title),
+            esc(&s.text)
+        ));
         if !s.figures.is_empty() {
             out.push_str("<div class=\"figs\">");
             for f in &s.figures {
@@ -53,7 +65,11 @@ pub fn page(sections: &[Section], files: usize, quick: bool, seconds: f64) -> St
         if !s.rows.is_empty() {
             out.push_str("<table><tr><th>measured</th><th>qmckit</th><th class=\"lecture\">lecture</th></tr>");
             for r in &s.rows {
-                let lecture = if r.lecture.is_empty() { "—".to_owned() } else { esc(&r.lecture) };
+                let lecture = if r.lecture.is_empty() {
+                    "—".to_owned()
+                } else {
+                    esc(&r.lecture)
+                };
                 out.push_str(&format!(
                     "<tr><td>{}</td><td>{}</td><td class=\"lecture\">{}</td></tr>",
                     esc(&r.what),

@@ -12,8 +12,9 @@ mod discrepancy;
 mod html;
 mod nets;
 // TODO(integrator): when `qmckit::analysis::scene` (task S) is on main, replace the next
-// two lines by `mod scenes;` (src/bin/qmckit/report/scenes.rs is written against its API)
-// and delete scenes_pending.rs.
+// two lines by `mod scenes;` (src/bin/qmckit/report/scenes.rs is written against its API,
+// including `quad_light_uv` and `MseEntry::low_band` of S's branch) and delete
+// scenes_pending.rs.
 #[path = "scenes_pending.rs"]
 mod scenes;
 mod spectra;
@@ -72,7 +73,11 @@ pub struct Row {
 
 /// Builds a [`Row`].
 pub fn row(what: impl Into<String>, ours: impl Into<String>, lecture: impl Into<String>) -> Row {
-    Row { what: what.into(), ours: ours.into(), lecture: lecture.into() }
+    Row {
+        what: what.into(),
+        ours: ours.into(),
+        lecture: lecture.into(),
+    }
 }
 
 /// A figure file and its caption.
@@ -167,7 +172,10 @@ impl Ctx {
         if let Ok(mut w) = self.written.lock() {
             w.push(name.to_owned());
         }
-        Ok(Fig { file: name.to_owned(), caption: caption.into() })
+        Ok(Fig {
+            file: name.to_owned(),
+            caption: caption.into(),
+        })
     }
 }
 
@@ -214,7 +222,13 @@ pub fn run(args: &ReportArgs) -> Result<(), Failure> {
         code: 1,
         message: format!("{}: {e}", dir.display()),
     })?;
-    let ctx = Ctx { dir, quick: args.quick, budget, png: args.png, written: Mutex::new(Vec::new()) };
+    let ctx = Ctx {
+        dir,
+        quick: args.quick,
+        budget,
+        png: args.png,
+        written: Mutex::new(Vec::new()),
+    };
     let started = std::time::Instant::now();
     let sections = with_progress("report", |progress| {
         let mut all = Vec::new();
@@ -226,7 +240,12 @@ pub fn run(args: &ReportArgs) -> Result<(), Failure> {
         Ok::<_, Failure>(all)
     })?;
     let files = ctx.written.lock().map(|w| w.len()).unwrap_or(0);
-    let page = html::page(&sections, files, args.quick, started.elapsed().as_secs_f64());
+    let page = html::page(
+        &sections,
+        files,
+        args.quick,
+        started.elapsed().as_secs_f64(),
+    );
     write(&ctx.dir.join("index.html"), page.as_bytes())
 }
 

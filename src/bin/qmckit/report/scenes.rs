@@ -6,7 +6,7 @@
 use qmckit::analysis::budget::{Cost, Rate};
 use qmckit::analysis::scene::{
     self, SceneImage, SceneStudy, StudyOptions, ambient_occlusion_study, motion_defocus_study,
-    pixel_area_study, pixel_light_study, quad_light_points, soft_shadow_study,
+    pixel_area_study, pixel_light_study, quad_light_uv, soft_shadow_study,
 };
 use qmckit::plot::{ColourMap, ImageFigure, PointsFigure};
 
@@ -42,10 +42,11 @@ pub fn sections(ctx: &Ctx) -> Result<Vec<Section>, Failure> {
     let mut quad = Section::new(
         "quad-light",
         "Warping samples to a quad light: 4x4 stratified vs 16 Sobol'",
-        "16 samples of the unit square warped to a rectangular area light: 4x4 stratified and the \
-         first 16 Sobol' points.",
+        "16 samples of the unit square, as they are warped to the rectangular area light (the \
+         area map is affine, so the pattern lands unchanged): 4x4 stratified and the first 16 \
+         Owen-scrambled Sobol' points, with the soft-shadow renders that use them.",
     );
-    let (strat, sob) = quad_light_points(16, 1)?;
+    let (strat, sob) = quad_light_uv(16, 1)?;
     quad.figures.push(ctx.figure("quad-stratified.svg", &PointsFigure::new("4x4 stratified", strat).intervals(4, 4), (320, 320), "4x4 stratified")?);
     quad.figures.push(ctx.figure("quad-sobol.svg", &PointsFigure::new("16 Sobol'", sob).intervals(4, 4), (320, 320), "16 Sobol'")?);
     add_renders(ctx, &mut quad, "quad", &shadow)?;
@@ -107,6 +108,13 @@ fn add_study(ctx: &Ctx, s: &mut Section, stem: &str, st: &SceneStudy, lecture: &
             format!("{}: {}, {} spp, {} seeds: MSE {}", st.name, e.sampler, st.spp, st.seeds, sig(e.mse, 3)),
             if k == 0 { "1x".to_owned() } else { format!("1/{}x", sig(e.relative, 3)) },
             theirs,
+        ));
+    }
+    for e in &st.mse {
+        s.rows.push(row(
+            format!("{}: {}: error power below a quarter of Nyquist (white = 1)", st.name, e.sampler),
+            sig(e.low_band, 3),
+            "",
         ));
     }
     Ok(())

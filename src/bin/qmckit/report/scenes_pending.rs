@@ -8,11 +8,26 @@ use crate::Failure;
 /// The slides of this group.
 pub fn sections(_ctx: &Ctx) -> Result<Vec<Section>, Failure> {
     let slides: [(&'static str, &str, &[(&str, &str)]); 5] = [
-        ("mse-tables-n16", "MSE tables at n = 16", &[("stratified", "1/2.41x, 1/2.12x"), ("Sobol'", "1/3.38x, 1/3.95x")]),
+        (
+            "mse-tables-n16",
+            "MSE tables at n = 16",
+            &[
+                ("stratified", "1/2.41x, 1/2.12x"),
+                ("Sobol'", "1/3.38x, 1/3.95x"),
+            ],
+        ),
         ("quad-light", "Warping samples to a quad light", &[]),
-        ("motion-blur-defocus", "Sampling motion blur + defocus", &[("Halton", "1/1.13x"), ("Sobol'", "1/1.80x")]),
+        (
+            "motion-blur-defocus",
+            "Sampling motion blur + defocus",
+            &[("Halton", "1/1.13x"), ("Sobol'", "1/1.80x")],
+        ),
         ("pixel-light", "Pixel x light sampling", &[]),
-        ("ambient-occlusion", "Ambient occlusion: white vs blue noise", &[]),
+        (
+            "ambient-occlusion",
+            "Ambient occlusion: white vs blue noise",
+            &[],
+        ),
     ];
     Ok(slides
         .iter()
@@ -24,7 +39,11 @@ pub fn sections(_ctx: &Ctx) -> Result<Vec<Section>, Failure> {
                  part of it yet.",
             );
             for (what, lecture) in numbers.iter() {
-                s.rows.push(row(format!("MSE relative to independent, {what}"), "not measured", *lecture));
+                s.rows.push(row(
+                    format!("MSE relative to independent, {what}"),
+                    "not measured",
+                    *lecture,
+                ));
             }
             s
         })
