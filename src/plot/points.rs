@@ -122,7 +122,7 @@ impl PointsFigure {
             count[(j * a as u64 + i) as usize] += 1;
         }
         let n = self.points.len() as u64;
-        let good = if n % cells == 0 {
+        let good = if n.is_multiple_of(cells) {
             count.iter().filter(|&&c| c == n / cells).count() as u64
         } else {
             0

@@ -21,9 +21,9 @@ pub struct SpectrumFigure {
     pub values: Vec<f64>,
     /// The smallest value shown (default `1e-2`).
     pub floor: f64,
-    /// Clip the top of the colour range at this value (e.g. a few times the white level
-    /// 1) so the DC peak `P(0) = N` does not squeeze the rest; `None`: the largest value
-    /// other than DC.
+    /// Clip the top of the colour range at this value (e.g. a few times the white level,
+    /// one) so the DC peak `P(0) = N` does not squeeze the rest; `None`: the largest
+    /// value other than DC.
     pub ceiling: Option<f64>,
 }
 

@@ -7,7 +7,7 @@ use qmckit::plot::{
     ConvergenceFigure, Curve, Format, ImageFigure, PointsFigure, SpectrumFigure, decode_image,
     parse_table, render,
 };
-use qmckit::{Sampler, Sobol, bits};
+use qmckit::{Sobol, bits};
 
 use crate::common::cli::{assert_usage_error, run};
 

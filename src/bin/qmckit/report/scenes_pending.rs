@@ -5,9 +5,16 @@
 use super::{Ctx, Section, row};
 use crate::Failure;
 
+/// A slide: id, title, and (sampler, the lecture's relative MSE) pairs.
+type Slide = (
+    &'static str,
+    &'static str,
+    &'static [(&'static str, &'static str)],
+);
+
 /// The slides of this group.
 pub fn sections(_ctx: &Ctx) -> Result<Vec<Section>, Failure> {
-    let slides: [(&'static str, &str, &[(&str, &str)]); 5] = [
+    let slides: [Slide; 5] = [
         (
             "mse-tables-n16",
             "MSE tables at n = 16",
