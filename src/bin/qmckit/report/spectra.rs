@@ -157,11 +157,8 @@ fn dithering(ctx: &Ctx) -> Result<Section, Failure> {
     )?);
     s.rows
         .push(row("blurred RMS error, white noise", sig(ew, 3), ""));
-    s.rows.push(row(
-        "blurred RMS error, blue noise",
-        sig(eb, 3),
-        "blue looks smoother",
-    ));
+    s.rows
+        .push(row("blurred RMS error, blue noise", sig(eb, 3), ""));
     Ok(s)
 }
 
