@@ -12,8 +12,10 @@ mod mask;
 mod output;
 mod pcf;
 mod pixel;
+mod plot;
 mod points;
 mod progress;
+mod report;
 mod spectrum;
 mod toolbox;
 mod tvalue;
@@ -62,6 +64,12 @@ enum Command {
     /// The samples of one pixel from a renderer's pixel sampler (pbrt-v4 compatible).
     #[command(after_help = pixel::AFTER_HELP)]
     Pixel(pixel::PixelArgs),
+    /// A figure (SVG or PNG) of a point file, a spectrum, a convergence table or an image.
+    #[command(after_help = plot::AFTER_HELP)]
+    Plot(plot::PlotArgs),
+    /// The lecture's figures and tables regenerated: DIR/index.html and its figures.
+    #[command(after_help = report::AFTER_HELP)]
+    Report(report::ReportArgs),
 }
 
 /// A failure to report: one line and an exit code.
@@ -141,7 +149,7 @@ where
             if err.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand {
                 report(
                     "a command is needed: points, pixel, discrepancy, tvalue, convergence, \
-                     spectrum, pcf, variance or mask (see 'qmckit --help')",
+                     spectrum, pcf, variance, mask, plot or report (see 'qmckit --help')",
                 );
                 return 2;
             }
@@ -159,6 +167,8 @@ where
         Command::Variance(args) => variance::run(&args),
         Command::Mask(args) => mask::run(&args),
         Command::Pixel(args) => pixel::run(&args),
+        Command::Plot(args) => plot::run(&args),
+        Command::Report(args) => report::run(&args),
     };
     match result {
         Ok(()) => 0,
