@@ -11,11 +11,6 @@ mod constructions;
 mod discrepancy;
 mod html;
 mod nets;
-// TODO(integrator): when `qmckit::analysis::scene` (task S) is on main, replace the next
-// two lines by `mod scenes;` (src/bin/qmckit/report/scenes.rs is written against its API,
-// including `quad_light_uv` and `MseEntry::low_band` of S's branch) and delete
-// scenes_pending.rs.
-#[path = "scenes_pending.rs"]
 mod scenes;
 mod spectra;
 
