@@ -91,7 +91,10 @@ pub fn pixel<W: Write>(out: &mut W) -> fmt::Result {
 
 /// A short name without allocation: `kind-randomization` in a fixed buffer.
 fn format_name(kind: &str, r: &str) -> Name {
-    let mut n = Name { buf: [0; 24], len: 0 };
+    let mut n = Name {
+        buf: [0; 24],
+        len: 0,
+    };
     for part in [kind, "-", r] {
         for &c in part.as_bytes() {
             if n.len < n.buf.len() {
@@ -121,7 +124,11 @@ pub fn pmj<W: Write>(out: &mut W) -> fmt::Result {
     let mut pts = [[0u32; 2]; 64];
     if fill(black_box(5), &mut pts).is_ok() {
         for k in [0usize, 1, 2, 3, 17, 63] {
-            writeln!(out, "pmj02 seed 5 #{k}: {:08x} {:08x}", pts[k][0], pts[k][1])?;
+            writeln!(
+                out,
+                "pmj02 seed 5 #{k}: {:08x} {:08x}",
+                pts[k][0], pts[k][1]
+            )?;
         }
     }
     let p = Pmj02::new(black_box(5));
@@ -149,7 +156,11 @@ fn pmj02bn<W: Write>(out: &mut W) -> fmt::Result {
     match bn::fill(black_box(5), 8, &mut pts, &mut work) {
         Ok(()) => {
             for k in [0usize, 1, 2, 3, 17, 255] {
-                writeln!(out, "pmj02bn seed 5 #{k}: {:08x} {:08x}", pts[k][0], pts[k][1])?;
+                writeln!(
+                    out,
+                    "pmj02bn seed 5 #{k}: {:08x} {:08x}",
+                    pts[k][0], pts[k][1]
+                )?;
             }
             let mut d = Digest::new();
             pts.iter().for_each(|q| d.push_all(q));
@@ -157,5 +168,9 @@ fn pmj02bn<W: Write>(out: &mut W) -> fmt::Result {
         }
         Err(_) => writeln!(out, "pmj02bn: error")?,
     }
-    writeln!(out, "pmj02bn short work: {}", Res(bn::fill(5, 8, &mut pts, &mut work[..10]).map(|_| 0)))
+    writeln!(
+        out,
+        "pmj02bn short work: {}",
+        Res(bn::fill(5, 8, &mut pts, &mut work[..10]).map(|_| 0))
+    )
 }
