@@ -4,20 +4,26 @@
 //!
 //! * `qmckit_zsobol`: [`ZSobol`] (pbrt-v4's blue-noise Sobol'), the pixel prepared once,
 //!   then `get_2d` at dimensions 0 and 2 per sample (two permuted indices, two hashes);
+//! * `qmckit_zsobol_prepared`: the same values through [`ZSobolPixel::dim`], the pixel and
+//!   dimension prepared once (the permuted high digits and the hashes), then
+//!   `ceil(log4 spp)` MixBits a sample;
 //! * `qmckit_padded_sobol`: [`PaddedSobol`], `get_2d_f32` at dimensions 0 and 2;
 //! * `qmckit_owen_sobol_reseed`: `OwenSobol` reseeded per pixel, `fill_f32` of the 16
 //!   indices (per-pixel-seeded Owen-Sobol', the same as `benches/render.rs`);
 //! * `sobol_burley_sample_4d`: `sobol_burley::sample_4d(i, 0, seed)`;
 //! * `openqmc_sampler_domain`: openqmc-rs, `draw_sample_f32::<4>()` of one domain.
 //!
-//! A second group generates 65,536 PMJ02 points ([`qmckit::pmj::fill`]).
+//! A second group generates 65,536 PMJ02 points ([`qmckit::pmj::fill`], stochastic) and
+//! PMJ02BN points ([`qmckit::pmj::bn::fill`], Christensen's construction with 1 and with
+//! 100 best-candidate trials a point, pmj-cpp's `GetPMJ02Samples` and
+//! `GetPMJ02SamplesWithBlueNoise`).
 //! Run: `cargo bench --bench pixel -- --measurement-time 2 --warm-up-time 1`.
 
 use std::hint::black_box;
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use qmckit::hash::mix64;
-use qmckit::pixel::{PaddedSobol, PixelSampler, Randomization, ZSobol, pbrt_f32};
+use qmckit::pixel::{PaddedSobol, PixelSampler, Randomization, ZSobol, ZSobolPixel, pbrt_f32};
 use qmckit::sobol::OwenSobol;
 
 const SIDE: u32 = 256;
@@ -47,6 +53,24 @@ fn pixels(c: &mut Criterion) {
                     for (i, slot) in px.iter_mut().enumerate() {
                         let [a, b] = p.get_2d(i as u32, 0);
                         let [c, d] = p.get_2d(i as u32, 2);
+                        *slot = [pbrt_f32(a), pbrt_f32(b), pbrt_f32(c), pbrt_f32(d)];
+                    }
+                    black_box(&mut px);
+                }
+            }
+        })
+    });
+    group.bench_function("qmckit_zsobol_prepared", |bch| {
+        bch.iter(|| {
+            let z = black_box(&z);
+            let mut px = [[0f32; D]; SPP];
+            for y in 0..SIDE {
+                for x in 0..SIDE {
+                    let p: ZSobolPixel<'_> = z.pixel(x, y).expect("in the image");
+                    let (d0, d2) = (p.dim(0), p.dim(2));
+                    for (i, slot) in px.iter_mut().enumerate() {
+                        let [a, b] = d0.get_2d(i as u32);
+                        let [c, d] = d2.get_2d(i as u32);
                         *slot = [pbrt_f32(a), pbrt_f32(b), pbrt_f32(c), pbrt_f32(d)];
                     }
                     black_box(&mut px);
@@ -118,6 +142,19 @@ fn pixels(c: &mut Criterion) {
             black_box(&mut out);
         })
     });
+    let mut work = vec![0u32; qmckit::pmj::bn::workspace_len(65_536).expect("small")];
+    for (name, k) in [
+        ("qmckit_pmj02_christensen_k1", 1),
+        ("qmckit_pmj02bn_k100", 100),
+    ] {
+        group.bench_function(name, |bch| {
+            let mut out = vec![[0u32; 2]; 65_536];
+            bch.iter(|| {
+                qmckit::pmj::bn::fill(black_box(7), k, &mut out, &mut work).expect("length");
+                black_box(&mut out);
+            })
+        });
+    }
     group.finish();
 }
 

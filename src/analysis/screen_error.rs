@@ -20,12 +20,36 @@ pub enum PixelIntegrand {
     GaussianBump,
     /// `1` where `u + 0.37 v < 0.61`, else 0 (a visibility-like edge).
     Step,
+    /// `1` where `u + 0.37 v < t(x, y)`, else 0, with a threshold varying smoothly over the
+    /// image, `t = 0.675 + 0.25 sin(2 pi x / W) cos(2 pi y / H)` at the pixel centre: the
+    /// "ambient occlusion" case, where the edge moves across the image (per-pixel integral
+    /// `t - 0.185`, the line meeting both `v = 0` and `v = 1` inside the square).
+    Visibility,
 }
 
 impl PixelIntegrand {
-    /// `f(u, v)`.
+    /// `f(u, v)` (for [`Visibility`](Self::Visibility), at the image centre, `t = 0.675`).
     pub fn eval(self, u: f64, v: f64) -> f64 {
+        self.eval_at(0.5, 0.5, u, v)
+    }
+
+    /// The threshold of [`Visibility`](Self::Visibility) at image position `(px, py)` in
+    /// `[0, 1)^2`.
+    fn threshold(px: f64, py: f64) -> f64 {
+        let tau = 2.0 * core::f64::consts::PI;
+        0.675 + 0.25 * (tau * px).sin() * (tau * py).cos()
+    }
+
+    /// `f(u, v)` in the pixel whose centre is at `(px, py)` in `[0, 1)^2` of the image.
+    pub fn eval_at(self, px: f64, py: f64, u: f64, v: f64) -> f64 {
         match self {
+            PixelIntegrand::Visibility => {
+                if u + 0.37 * v < Self::threshold(px, py) {
+                    1.0
+                } else {
+                    0.0
+                }
+            }
             PixelIntegrand::GaussianBump => {
                 let (a, b) = (u - 0.5, v - 0.5);
                 (-(a * a + b * b) / (2.0 * 0.04)).exp()
@@ -40,9 +64,16 @@ impl PixelIntegrand {
         }
     }
 
-    /// The exact integral over `[0, 1)^2`.
+    /// The exact integral over `[0, 1)^2` (for [`Visibility`](Self::Visibility), at the
+    /// image centre).
     pub fn exact(self) -> f64 {
+        self.exact_at(0.5, 0.5)
+    }
+
+    /// The exact integral in the pixel centred at `(px, py)`.
+    pub fn exact_at(self, px: f64, py: f64) -> f64 {
         match self {
+            PixelIntegrand::Visibility => Self::threshold(px, py) - 0.185,
             // (∫_0^1 exp(-(t - 1/2)^2 / (2 s^2)) dt)^2 = (s sqrt(2 pi) erf(1 / (2 sqrt(2) s)))^2
             PixelIntegrand::GaussianBump => {
                 let s = 0.2f64;
@@ -126,16 +157,17 @@ pub fn screen_error<S: PixelSampler + ?Sized>(
     let px = (w as f64) * (h as f64);
     let steps = px * (g.spp as f64) + px * ((w + h) as f64) * 4.0;
     budget.check("screen-space error", Cost::steps(steps, DFT_RATE))?;
-    let exact = f.exact();
     let mut error = Vec::with_capacity(w * h);
     for y in 0..g.height {
+        let py = (y as f64 + 0.5) / h as f64;
         for x in 0..g.width {
+            let px = (x as f64 + 0.5) / w as f64;
             let mut sum = 0.0;
             for i in 0..g.spp {
                 let [u, v] = sampler.get_pixel_2d_f32(x, y, i, 0)?;
-                sum += f.eval(u as f64, v as f64);
+                sum += f.eval_at(px, py, u as f64, v as f64);
             }
-            error.push(sum / g.spp as f64 - exact);
+            error.push(sum / g.spp as f64 - f.exact_at(px, py));
         }
     }
     let mean = error.iter().sum::<f64>() / px;

@@ -18,6 +18,7 @@
 //! | [`ImageSobol`] | pbrt's `SobolSampler`: one Sobol' sequence over the image plane (Grünschloss et al. 2012) | yes |
 //! | [`PaddedSobol`] | per pixel and dimension: hashed index permutation and scramble of Sobol' (0, 1) | no |
 //! | [`Pmj02Pixels`] | a seeded PMJ02 sequence per pixel and dimension, index permuted (the layout of pbrt's `PMJ02BNSampler`, generated) | no |
+//! | [`Pmj02BnPixels`] | pbrt's `PMJ02BNSampler` layout: one PMJ02BN table bucketed into a pixel tile, permuted blocks plus blue-noise shifts for the other dimensions | no |
 //! | [`IndependentPixels`] | independent uniform values from a hash of `(seed, pixel, index, dimension)` | no |
 //!
 //! Values are 0.32 fractions (`u32`); [`pbrt_f32`] converts them as pbrt does
@@ -36,6 +37,7 @@ mod image_sobol;
 mod independent;
 mod padded;
 pub mod pbrt_hash;
+pub mod pmj02bn;
 mod pmj_pixels;
 mod zsobol;
 
@@ -43,9 +45,12 @@ pub use image_sobol::{ImageSobol, PBRT_SOBOL_DIMS};
 pub use independent::IndependentPixels;
 pub use padded::PaddedSobol;
 pub use pmj_pixels::Pmj02Pixels;
-pub use zsobol::ZSobol;
+pub use pmj02bn::Pmj02BnPixels;
+#[cfg(feature = "std")]
+pub use pmj02bn::Pmj02BnTables;
+pub use zsobol::{ZSobol, ZSobolPixel, ZSobolPixelDim};
 
-use crate::bits::{gf2_mul, reverse_bits};
+use crate::bits::reverse_bits;
 use crate::error::{Error, Result};
 use crate::randomize::{FastOwenScrambler, OwenHash, PbrtOwenScrambler};
 
@@ -101,20 +106,6 @@ pub const fn pbrt_f32(v: u32) -> f32 {
     }
 }
 
-/// The 32 columns of the Pascal matrix mod 2 (Sobol' dimension 1): column `k + 1` is
-/// `c ^ (c >> 1)` of column `k`, starting from the top bit.
-const PASCAL: [u32; 32] = {
-    let mut cols = [0u32; 32];
-    let mut c = 1u32 << 31;
-    let mut k = 0;
-    while k < 32 {
-        cols[k] = c;
-        c ^= c >> 1;
-        k += 1;
-    }
-    cols
-};
-
 /// Sobol' dimension 0 of a 64-bit index, as pbrt's 52-column `SobolSample`: the bit
 /// reversal of the low 32 bits (higher bits have zero columns).
 #[inline]
@@ -125,14 +116,26 @@ pub const fn sobol0(index: u64) -> u32 {
 /// Sobol' dimension 1 (the Pascal matrix mod 2) of a 64-bit index. By Lucas' theorem
 /// column `32 + k` equals column `k` in the top 32 rows, so it is `P(low) ^ P(high)`.
 #[inline]
-pub fn sobol1(index: u64) -> u32 {
+pub const fn sobol1(index: u64) -> u32 {
     let hi = (index >> 32) as u32;
-    let lo = gf2_mul(&PASCAL, index as u32);
-    if hi == 0 {
-        lo
-    } else {
-        lo ^ gf2_mul(&PASCAL, hi)
-    }
+    let lo = pascal(index as u32);
+    if hi == 0 { lo } else { lo ^ pascal(hi) }
+}
+
+/// The Pascal matrix mod 2 times the bits of `i` (column `k + 1` is `c ^ (c >> 1)` of
+/// column `k`, from the top bit), in 5 steps: by
+/// Lucas' theorem output bit `31 - j` is the XOR of the bits `k` of `i` with `k ⊇ j` (as
+/// 5-bit sets), so on the reversed bits `r` (bit `31 - k` = bit `k` of `i`, Sobol'
+/// dimension 0) output bit `P` is the XOR of `r`'s bits at the subsets of `P`: the subset
+/// XOR transform, one shift-mask-XOR per bit of the position.
+#[inline]
+const fn pascal(i: u32) -> u32 {
+    let mut v = reverse_bits(i);
+    v ^= (v << 1) & 0xaaaa_aaaa;
+    v ^= (v << 2) & 0xcccc_cccc;
+    v ^= (v << 4) & 0xf0f0_f0f0;
+    v ^= (v << 8) & 0xff00_ff00;
+    v ^ ((v << 16) & 0xffff_0000)
 }
 
 /// An image size and a per-pixel sample count, validated once.

@@ -132,11 +132,32 @@ impl ZSobol {
     /// digits (plus the hashed last bit when `log2(spp)` is odd).
     #[inline]
     pub const fn permuted_index(&self, morton: u64, dim: u32) -> u64 {
-        let salt = 0x5555_5555u32.wrapping_mul(dim) as u64;
+        let salt = Self::salt(dim);
+        let low = self.low_digits();
+        self.permute_digits(morton, salt, low, self.digits) | self.permute_low(morton, salt)
+    }
+
+    /// pbrt's salt of dimension `dim`: `0x55555555 * dim` as a `u32`, zero-extended.
+    #[inline]
+    const fn salt(dim: u32) -> u64 {
+        0x5555_5555u32.wrapping_mul(dim) as u64
+    }
+
+    /// The number of base-4 digits that hold bits of the sample index (`ceil(log2(spp) / 2)`);
+    /// the digits above them, and the nodes that permute them, depend on the pixel only.
+    #[inline]
+    const fn low_digits(&self) -> u32 {
+        self.log2_spp.div_ceil(2)
+    }
+
+    /// The permuted digits `from..to` (the bits `2 i - odd ..` of digit `i`) of `morton`.
+    #[inline]
+    const fn permute_digits(&self, morton: u64, salt: u64, from: u32, to: u32) -> u64 {
         let odd = self.log2_spp & 1;
+        let from = if from > odd { from } else { odd };
         let mut index = 0u64;
-        let mut i = self.digits;
-        while i > odd {
+        let mut i = to;
+        while i > from {
             i -= 1;
             let shift = 2 * i - odd;
             let digit = ((morton >> shift) & 3) as usize;
@@ -147,7 +168,15 @@ impl ZSobol {
             let p = ((mix_bits(higher ^ salt) >> 24) % 24) as usize;
             index |= (PERMUTATIONS_24[p][digit] as u64) << shift;
         }
-        if odd == 1 {
+        index
+    }
+
+    /// The permuted digits below [`low_digits`](Self::low_digits), with the hashed last
+    /// bit of an odd `log2(spp)`: the part of the index that changes with the sample.
+    #[inline]
+    const fn permute_low(&self, morton: u64, salt: u64) -> u64 {
+        let mut index = self.permute_digits(morton, salt, 0, self.low_digits());
+        if self.log2_spp & 1 == 1 {
             index |= (morton & 1) ^ (mix_bits((morton >> 1) ^ salt) & 1);
         }
         index
@@ -207,6 +236,80 @@ impl ZSobolPixel<'_> {
     pub fn get_2d(&self, index: u32, dim: u32) -> [u32; 2] {
         let i = index & (self.sampler.grid.spp - 1);
         self.sampler.value_2d(self.base | i as u64, dim)
+    }
+}
+
+impl<'a> ZSobolPixel<'a> {
+    /// The pixel prepared for the samples of one dimension counter `dim`: the permuted
+    /// digits of the pixel's part of the Morton index (all but the lowest
+    /// `ceil(log2(spp) / 2)` digits) and the scramble keys `Hash(dim + 1, seed)`,
+    /// `Hash(dim + 2, seed)` computed once, so a sample costs `ceil(log4 spp)` [`mix_bits`]
+    /// and the scramble instead of `log4(side^2 spp)` and a MurmurHash. Bit-identical to
+    /// [`ZSobol::get_1d`] and [`ZSobol::get_2d`].
+    ///
+    /// ```
+    /// use qmckit::pixel::{PixelSampler, Randomization, ZSobol};
+    /// let z = ZSobol::new(1920, 1080, 16, Randomization::FastOwen, 3)?;
+    /// let d = z.pixel(700, 300)?.dim(4);
+    /// for i in 0..16 {
+    ///     assert_eq!(d.get_2d(i), z.get_2d(700, 300, i, 4)?);
+    ///     assert_eq!(d.get_1d(i), z.get_1d(700, 300, i, 4)?);
+    /// }
+    /// # Ok::<(), qmckit::Error>(())
+    /// ```
+    #[inline]
+    pub fn dim(&self, dim: u32) -> ZSobolPixelDim<'a> {
+        let z = self.sampler;
+        let salt = ZSobol::salt(dim);
+        ZSobolPixelDim {
+            sampler: z,
+            base: self.base,
+            salt,
+            high: z.permute_digits(self.base, salt, z.low_digits(), z.digits),
+            key1: hash2(dim.wrapping_add(1), z.seed) as u32,
+            key2: hash2(dim.wrapping_add(2), z.seed),
+        }
+    }
+}
+
+/// One pixel and dimension counter of a [`ZSobol`] sampler, prepared by
+/// [`ZSobolPixel::dim`].
+#[derive(Clone, Copy, Debug)]
+pub struct ZSobolPixelDim<'a> {
+    sampler: &'a ZSobol,
+    base: u64,
+    salt: u64,
+    high: u64,
+    key1: u32,
+    key2: u64,
+}
+
+impl ZSobolPixelDim<'_> {
+    /// pbrt's `GetSampleIndex` of sample `index` (reduced modulo `spp`).
+    #[inline]
+    pub fn sample_index(&self, index: u32) -> u64 {
+        let z = self.sampler;
+        let morton = self.base | (index & (z.grid.spp - 1)) as u64;
+        self.high | z.permute_low(morton, self.salt)
+    }
+
+    /// The 1D value of sample `index` (reduced modulo `spp`).
+    #[inline]
+    pub fn get_1d(&self, index: u32) -> u32 {
+        let z = self.sampler;
+        z.randomize
+            .apply(sobol0(self.sample_index(index)), self.key1)
+    }
+
+    /// The 2D value of sample `index` (reduced modulo `spp`).
+    #[inline]
+    pub fn get_2d(&self, index: u32) -> [u32; 2] {
+        let z = self.sampler;
+        let i = self.sample_index(index);
+        [
+            z.randomize.apply(sobol0(i), self.key2 as u32),
+            z.randomize.apply(sobol1(i), (self.key2 >> 32) as u32),
+        ]
     }
 }
 

@@ -18,6 +18,9 @@
 //! * [`fill`]: the first `n` points into caller-provided storage (for `no_std`), `O(1)` a
 //!   point (each point reads its parent from the buffer).
 //!
+//! The best-candidate variant PMJ02BN is in [`bn`] (Christensen's construction, which
+//! leaves the strata free for the candidates to choose).
+//!
 //! The jitter of point `k` in dimension `d` is the top bits of
 //! [`crate::hash::uniform`]`(seed, k, d)`.
 //!
@@ -34,6 +37,8 @@
 //! assert!(seen.iter().all(|&s| s));
 //! # Ok::<(), qmckit::Error>(())
 //! ```
+
+pub mod bn;
 
 use crate::error::{Error, Result};
 use crate::hash::uniform;

@@ -567,3 +567,222 @@ fn word_hashes_equal_the_byte_hash() {
         assert_eq!(hash4(a, b, c, d), murmur_hash64a(&bytes, 0));
     }
 }
+
+/// Sobol' dimension 1 by the 5-step subset-XOR transform equals the Pascal-matrix product
+/// column by column (`bits::gf2_mul` with columns `c_{k+1} = c_k ^ (c_k >> 1)`).
+#[test]
+fn sobol1_is_the_pascal_matrix_product() {
+    use qmckit::bits::gf2_mul;
+    use qmckit::pixel::sobol1;
+    let mut cols = [0u32; 32];
+    let mut c = 1u32 << 31;
+    for col in cols.iter_mut() {
+        *col = c;
+        c ^= c >> 1;
+    }
+    let mut x = 0x1234_5678_9abc_def0u64;
+    for k in 0..100_000u64 {
+        x = qmckit::hash::mix64(x ^ k);
+        let want = gf2_mul(&cols, x as u32) ^ gf2_mul(&cols, (x >> 32) as u32);
+        assert_eq!(sobol1(x), want, "{x:#x}");
+        assert_eq!(sobol1(k), gf2_mul(&cols, k as u32));
+    }
+}
+
+/// The prepared pixel-and-dimension path of ZSobol is bit-identical to the random-access
+/// one (odd and even log2 spp, an image whose indices pass 2^32, all randomizations).
+#[test]
+fn zsobol_prepared_dimension_is_identical() {
+    for (w, h, spp) in [
+        (16u32, 9u32, 1u32),
+        (16, 9, 2),
+        (256, 256, 16),
+        (3840, 2160, 1024),
+        (7, 5, 8),
+    ] {
+        for r in ALL {
+            let z = ZSobol::new(w, h, spp, r, 5).unwrap();
+            for (x, y) in [(0, 0), (w - 1, h - 1), (w / 2, h / 3)] {
+                let px = z.pixel(x, y).unwrap();
+                for dim in [0u32, 1, 2, 5, 1000] {
+                    let d = px.dim(dim);
+                    for i in (0..spp).step_by((spp as usize / 64).max(1)) {
+                        assert_eq!(
+                            Some(d.sample_index(i)),
+                            z.sample_index(x, y, i, dim).unwrap()
+                        );
+                        assert_eq!(d.get_1d(i), z.get_1d(x, y, i, dim).unwrap());
+                        assert_eq!(d.get_2d(i), z.get_2d(x, y, i, dim).unwrap());
+                        assert_eq!(px.get_2d(i, dim), d.get_2d(i));
+                    }
+                }
+            }
+        }
+    }
+}
+
+mod pmj02bn_pixels {
+    use crate::common::first_net_failure;
+    use qmckit::pixel::pmj02bn::{TABLE_LEN, build_tables};
+    use qmckit::pixel::{PixelSampler, Pmj02BnPixels, Pmj02BnTables};
+    use qmckit::pmj::bn::workspace_len;
+
+    fn tables(spp: u32) -> (Vec<[u32; 2]>, Vec<[u32; 2]>) {
+        let (mut table, mut tile) = (vec![[0u32; 2]; TABLE_LEN], vec![[0u32; 2]; TABLE_LEN]);
+        let mut work = vec![0u32; workspace_len(TABLE_LEN).unwrap()];
+        build_tables(3, 2, spp, &mut table, &mut tile, &mut work).unwrap();
+        (table, tile)
+    }
+
+    /// The tile holds every table point exactly once, each in its pixel; a pixel's samples
+    /// are a (0, m, 2)-net for spp = 4^k, and the other dimensions are stratified in 1D.
+    #[test]
+    fn tile_is_the_table_and_pixels_are_nets() {
+        for (spp, t) in [
+            (1u32, 256u32),
+            (4, 128),
+            (16, 64),
+            (64, 32),
+            (256, 16),
+            (8, 64),
+        ] {
+            let (table, tile) = tables(spp);
+            let s = Pmj02BnPixels::new(300, 200, spp, 1, &table, &tile).unwrap();
+            let per = (spp.next_power_of_two().trailing_zeros().div_ceil(2) * 2) as usize;
+            let per = 1usize << per;
+            let mut rebuilt: Vec<[u32; 2]> = Vec::with_capacity(TABLE_LEN);
+            let tb = t.trailing_zeros();
+            for py in 0..t {
+                for px in 0..t {
+                    for i in 0..per {
+                        let q = tile[((py * t + px) as usize) * per + i];
+                        let back = |c: u32, p: u32| {
+                            if tb == 0 {
+                                c
+                            } else {
+                                (p << (32 - tb)) | (c >> tb)
+                            }
+                        };
+                        rebuilt.push([back(q[0], px), back(q[1], py)]);
+                    }
+                }
+            }
+            let mut want = table.clone();
+            // The low tb bits are lost in the bucketing shift.
+            let strip = |v: &mut Vec<[u32; 2]>| {
+                v.iter_mut().for_each(|p| {
+                    if tb > 0 {
+                        p[0] &= !((1u32 << tb) - 1);
+                        p[1] &= !((1u32 << tb) - 1);
+                    }
+                });
+                v.sort_unstable();
+            };
+            strip(&mut rebuilt);
+            strip(&mut want);
+            assert_eq!(rebuilt, want, "spp {spp}");
+            for (x, y) in [(0u32, 0u32), (299, 199), (t, 1), (17, 130)] {
+                let pts: Vec<[u32; 2]> = (0..spp)
+                    .map(|i| s.get_pixel_2d(x, y, i, 0).unwrap())
+                    .collect();
+                if spp.trailing_zeros() % 2 == 0 {
+                    let m = spp.trailing_zeros();
+                    assert_eq!(first_net_failure(&pts, m), None, "spp {spp} ({x}, {y})");
+                }
+                // Tiles repeat with period T.
+                assert_eq!(
+                    s.get_pixel_2d(x % t, y % t, 0, 0).unwrap(),
+                    s.get_pixel_2d(x, y, 0, 0).unwrap()
+                );
+                for dim in [2u32, 3, 7, 40] {
+                    let mut strata = vec![false; spp as usize];
+                    for i in 0..spp {
+                        let v = s.get_1d(x, y, i, dim).unwrap();
+                        strata[((v as u64 * spp as u64) >> 32) as usize] = true;
+                    }
+                    assert!(strata.iter().all(|&b| b), "1D strata, spp {spp} dim {dim}");
+                    let a = s.get_2d(x, y, 0, dim).unwrap();
+                    assert_ne!(a, s.get_2d(x, y, 0, dim + 2).unwrap());
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn bad_input_is_an_error() {
+        let (table, tile) = tables(16);
+        assert!(Pmj02BnPixels::new(10, 10, 0, 0, &table, &tile).is_err());
+        assert!(Pmj02BnPixels::new(10, 10, 1 << 17, 0, &table, &tile).is_err());
+        assert!(Pmj02BnPixels::new(10, 10, 16, 0, &table[..100], &tile).is_err());
+        let s = Pmj02BnPixels::new(10, 10, 16, 0, &table, &tile).unwrap();
+        assert!(s.get_2d(10, 0, 0, 2).is_err());
+        assert!(s.get_1d(0, 0, 16, 2).is_err());
+        assert!(s.get_pixel_2d(0, 10, 0, 0).is_err());
+        let (mut a, mut b) = (vec![[0u32; 2]; TABLE_LEN], vec![[0u32; 2]; 10]);
+        let mut work = vec![0u32; workspace_len(TABLE_LEN).unwrap()];
+        assert!(build_tables(0, 1, 16, &mut a, &mut b, &mut work).is_err());
+        assert!(Pmj02BnTables::new(1 << 17, 0).is_err());
+    }
+}
+
+/// The screen-space error study behind docs/pixel-samplers.md (one run, numbers printed):
+/// image sides 64, 128 and 256, 16 seeds (8 at 256), the Gaussian, the fixed step and the
+/// moving "visibility" step, ZSobol against PaddedSobol (per-pixel independent Owen-Sobol'),
+/// independent random pixels and the PMJ02BN pixel sampler. Run with
+/// `cargo test --release --all-features --test suite screen_error_study -- --ignored --nocapture`.
+#[cfg(feature = "analysis")]
+#[test]
+#[ignore = "a study: about a minute; prints the table of docs/pixel-samplers.md"]
+fn screen_error_study() {
+    use qmckit::analysis::budget::Budget;
+    use qmckit::analysis::screen_error::{PixelIntegrand, screen_error};
+    use qmckit::pixel::Pmj02BnTables;
+    println!(
+        "side f spp | low Z/P  low Z/I  low B/P | rmse Z/P rmse Z/I rmse B/P | norm low Z P I B"
+    );
+    for side in [64u32, 128, 256] {
+        let seeds: u32 = if side == 256 { 8 } else { 16 };
+        for spp in [1u32, 4, 16] {
+            let tables: Vec<Pmj02BnTables> = (0..seeds)
+                .map(|s| Pmj02BnTables::new(spp, s as u64).unwrap())
+                .collect();
+            for f in [
+                PixelIntegrand::GaussianBump,
+                PixelIntegrand::Step,
+                PixelIntegrand::Visibility,
+            ] {
+                // [rmse^2, absolute low band, normalized low band] for Z, P, I, B.
+                let mut acc = [[0.0f64; 3]; 4];
+                for seed in 0..seeds {
+                    let z = ZSobol::new(side, side, spp, Randomization::FastOwen, seed).unwrap();
+                    let p =
+                        PaddedSobol::new(side, side, spp, Randomization::FastOwen, seed).unwrap();
+                    let i = IndependentPixels::new(side, side, spp, seed as u64).unwrap();
+                    let b = tables[seed as usize].sampler(side, side, seed).unwrap();
+                    let samplers: [&dyn PixelSampler; 4] = [&z, &p, &i, &b];
+                    for (a, s) in acc.iter_mut().zip(samplers) {
+                        let e = screen_error(s, f, &Budget::UNLIMITED).unwrap();
+                        a[0] += e.rmse * e.rmse / seeds as f64;
+                        a[1] += e.low_band_absolute / seeds as f64;
+                        a[2] += e.low_band / seeds as f64;
+                    }
+                }
+                let r = |a: usize, b: usize| acc[a][1] / acc[b][1];
+                let q = |a: usize, b: usize| (acc[a][0] / acc[b][0]).sqrt();
+                println!(
+                    "{side} {f:?} {spp} | {:.3} {:.4} {:.3} | {:.3} {:.3} {:.3} | {:.3} {:.3} {:.3} {:.3}",
+                    r(0, 1),
+                    r(0, 2),
+                    r(3, 1),
+                    q(0, 1),
+                    q(0, 2),
+                    q(3, 1),
+                    acc[0][2],
+                    acc[1][2],
+                    acc[2][2],
+                    acc[3][2]
+                );
+            }
+        }
+    }
+}

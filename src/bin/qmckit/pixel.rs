@@ -6,8 +6,8 @@ use std::io::{BufWriter, Write};
 
 use clap::{Args, ValueEnum};
 use qmckit::pixel::{
-    ImageSobol, IndependentPixels, PaddedSobol, PixelSampler, Pmj02Pixels, Randomization, ZSobol,
-    pbrt_f32,
+    ImageSobol, IndependentPixels, PaddedSobol, PixelSampler, Pmj02BnTables, Pmj02Pixels,
+    Randomization, ZSobol, pbrt_f32,
 };
 
 use super::Failure;
@@ -20,7 +20,9 @@ dimension D and the 2D value at dimension D: pbrt-v4's Get1D and Get2D called wi
 dimension counter at D (ZSobolSampler, SobolSampler, PaddedSobolSampler; bit-identical).
 independent is qmckit's hashed white noise, not pbrt's PCG stream; pmj02 is a seeded PMJ02
 sequence per pixel and dimension through a hashed index permutation (pbrt's layout, without
-its tables and blue-noise shifts).
+its tables and blue-noise shifts); pmj02bn is pbrt's PMJ02BNSampler layout on a generated
+65,536-point PMJ02BN table (seeded by --seed): the 2D value at D is Get2D with the counter at
+max(D, 2), and the pixel position (GetPixel2D, a tile of the table) is not printed.
 
 --randomize (zsobol, sobol, padded-sobol): none, xor (pbrt's PermuteDigits), fast-owen (the
 default), owen. --spp must be a power of two for zsobol. --seed is pbrt's int seed (32 bits).
@@ -39,6 +41,8 @@ pub enum PixelSamplerName {
     PaddedSobol,
     /// A seeded PMJ02 sequence per pixel and dimension, index permuted per pixel.
     Pmj02,
+    /// pbrt-v4 PMJ02BNSampler layout on a generated PMJ02BN table.
+    Pmj02bn,
     /// Independent uniform values per pixel (hashed).
     Independent,
 }
@@ -124,25 +128,31 @@ pub fn run(args: &PixelArgs) -> Result<(), Failure> {
             "--spp {spp}: zsobol needs a power of two"
         )));
     }
+    let tables;
     let sampler: Box<dyn PixelSampler> = match args.sampler {
         PixelSamplerName::Zsobol => Box::new(ZSobol::new(w, h, spp, r, seed)?),
         PixelSamplerName::Sobol => Box::new(ImageSobol::new(w, h, spp, r, seed)?),
         PixelSamplerName::PaddedSobol => Box::new(PaddedSobol::new(w, h, spp, r, seed)?),
-        PixelSamplerName::Independent | PixelSamplerName::Pmj02 => {
+        PixelSamplerName::Independent | PixelSamplerName::Pmj02 | PixelSamplerName::Pmj02bn => {
             if args.randomize != RandomizeName::FastOwen {
                 return Err(Failure::usage(format!(
                     "--randomize does not apply to {} (its randomness is its own)",
-                    if args.sampler == PixelSamplerName::Pmj02 {
-                        "pmj02"
-                    } else {
-                        "independent"
+                    match args.sampler {
+                        PixelSamplerName::Pmj02 => "pmj02",
+                        PixelSamplerName::Pmj02bn => "pmj02bn",
+                        _ => "independent",
                     }
                 )));
             }
-            if args.sampler == PixelSamplerName::Pmj02 {
-                Box::new(Pmj02Pixels::new(w, h, spp, seed)?)
-            } else {
-                Box::new(IndependentPixels::new(w, h, spp, seed as u64)?)
+            match args.sampler {
+                PixelSamplerName::Pmj02 => Box::new(Pmj02Pixels::new(w, h, spp, seed)?),
+                PixelSamplerName::Pmj02bn => {
+                    // Validates the image before the table is built.
+                    qmckit::pixel::PixelGrid::new(w, h, spp, false)?;
+                    tables = Pmj02BnTables::new(spp, seed as u64)?;
+                    Box::new(tables.sampler(w, h, seed)?)
+                }
+                _ => Box::new(IndependentPixels::new(w, h, spp, seed as u64)?),
             }
         }
     };

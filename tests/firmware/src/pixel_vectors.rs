@@ -67,6 +67,20 @@ pub fn pixel<W: Write>(out: &mut W) -> fmt::Result {
             }
         }
         writeln!(out, "zsobol 32x32x16 digest {d}")?;
+        // The same values through the prepared pixel-and-dimension path.
+        let mut d = Digest::new();
+        for y in 0..32 {
+            for x in 0..32 {
+                if let Ok(p) = z.pixel(x, y) {
+                    let (d0, d2) = (p.dim(black_box(0)), p.dim(2));
+                    for i in 0..16 {
+                        d.push_all(&d0.get_2d(i));
+                        d.push(d2.get_1d(i));
+                    }
+                }
+            }
+        }
+        writeln!(out, "zsobol 32x32x16 digest {d} (prepared)")?;
     }
     writeln!(
         out,
@@ -77,7 +91,10 @@ pub fn pixel<W: Write>(out: &mut W) -> fmt::Result {
 
 /// A short name without allocation: `kind-randomization` in a fixed buffer.
 fn format_name(kind: &str, r: &str) -> Name {
-    let mut n = Name { buf: [0; 24], len: 0 };
+    let mut n = Name {
+        buf: [0; 24],
+        len: 0,
+    };
     for part in [kind, "-", r] {
         for &c in part.as_bytes() {
             if n.len < n.buf.len() {
@@ -107,7 +124,11 @@ pub fn pmj<W: Write>(out: &mut W) -> fmt::Result {
     let mut pts = [[0u32; 2]; 64];
     if fill(black_box(5), &mut pts).is_ok() {
         for k in [0usize, 1, 2, 3, 17, 63] {
-            writeln!(out, "pmj02 seed 5 #{k}: {:08x} {:08x}", pts[k][0], pts[k][1])?;
+            writeln!(
+                out,
+                "pmj02 seed 5 #{k}: {:08x} {:08x}",
+                pts[k][0], pts[k][1]
+            )?;
         }
     }
     let p = Pmj02::new(black_box(5));
@@ -122,5 +143,34 @@ pub fn pmj<W: Write>(out: &mut W) -> fmt::Result {
         let y = Res(p.sample(black_box(k), 1));
         writeln!(out, "pmj02 seed 5 #{k}: {x} {y}")?;
     }
-    writeln!(out, "pmj02 dim 2: {}", Res(p.sample(0, black_box(2))))
+    writeln!(out, "pmj02 dim 2: {}", Res(p.sample(0, black_box(2))))?;
+    pmj02bn(out)
+}
+
+/// PMJ02BN (best candidate, Christensen's construction) in caller storage: 256 points with
+/// 8 candidates, a few points and a digest.
+fn pmj02bn<W: Write>(out: &mut W) -> fmt::Result {
+    use qmckit::pmj::bn;
+    let mut pts = [[0u32; 2]; 256];
+    let mut work = [0u32; 400];
+    match bn::fill(black_box(5), 8, &mut pts, &mut work) {
+        Ok(()) => {
+            for k in [0usize, 1, 2, 3, 17, 255] {
+                writeln!(
+                    out,
+                    "pmj02bn seed 5 #{k}: {:08x} {:08x}",
+                    pts[k][0], pts[k][1]
+                )?;
+            }
+            let mut d = Digest::new();
+            pts.iter().for_each(|q| d.push_all(q));
+            writeln!(out, "pmj02bn seed 5 256 digest {d}")?;
+        }
+        Err(_) => writeln!(out, "pmj02bn: error")?,
+    }
+    writeln!(
+        out,
+        "pmj02bn short work: {}",
+        Res(bn::fill(5, 8, &mut pts, &mut work[..10]).map(|_| 0))
+    )
 }
