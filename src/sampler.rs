@@ -139,22 +139,36 @@ pub trait Sampler {
     where
         Self: Sized,
     {
-        let rows = check_fill(self, start, out.len())?;
-        let dims = self.dims();
-        if dims > CONVERT_CHUNK {
-            for (k, row) in out.chunks_exact_mut(dims).enumerate().take(rows) {
-                for (dim, slot) in row.iter_mut().enumerate() {
-                    *slot = T::from_fraction(self.sample(start + k as u32, dim)?);
-                }
+        fill_as_by_chunks(self, start, out)
+    }
+}
+
+/// The default [`Sampler::fill_as`]: whole points through [`Sampler::fill`] into a stack
+/// buffer of [`CONVERT_CHUNK`] `u32`s, converted (point by point through `sample` when one
+/// point is larger). For samplers that override `fill_as` and fall back to it.
+///
+/// # Errors
+/// As [`Sampler::fill`].
+pub fn fill_as_by_chunks<S: Sampler + ?Sized, T: FromFraction>(
+    s: &S,
+    start: u32,
+    out: &mut [T],
+) -> Result<()> {
+    let rows = check_fill(s, start, out.len())?;
+    let dims = s.dims();
+    if dims > CONVERT_CHUNK {
+        for (k, row) in out.chunks_exact_mut(dims).enumerate().take(rows) {
+            for (dim, slot) in row.iter_mut().enumerate() {
+                *slot = T::from_fraction(s.sample(start + k as u32, dim)?);
             }
-            return Ok(());
         }
-        // A small buffer for small requests (no 4 KiB to clear for a pixel's samples).
-        if out.len() <= SMALL_CHUNK {
-            convert_via::<SMALL_CHUNK, _, _>(self, start, out, dims)
-        } else {
-            convert_via::<CONVERT_CHUNK, _, _>(self, start, out, dims)
-        }
+        return Ok(());
+    }
+    // A small buffer for small requests (no 4 KiB to clear for a pixel's samples).
+    if out.len() <= SMALL_CHUNK {
+        convert_via::<SMALL_CHUNK, _, _>(s, start, out, dims)
+    } else {
+        convert_via::<CONVERT_CHUNK, _, _>(s, start, out, dims)
     }
 }
 

@@ -349,6 +349,52 @@ impl<S: Sampler, R: Randomizes<S>> Scrambled<S, R> {
     }
 }
 
+/// A sampler with its dimensions' affine maps prepared (`Scrambled::fill_as`).
+#[cfg(feature = "std")]
+struct Prepared<'a, S> {
+    sampler: &'a S,
+    maps: &'a [Affine],
+}
+
+#[cfg(feature = "std")]
+impl<S: Sampler> Prepared<'_, S> {
+    fn map(&self, dim: usize) -> Affine {
+        self.maps.get(dim).copied().unwrap_or(Affine::IDENTITY)
+    }
+}
+
+#[cfg(feature = "std")]
+impl<S: Sampler> Sampler for Prepared<'_, S> {
+    fn dims(&self) -> usize {
+        self.sampler.dims()
+    }
+
+    fn len(&self) -> u64 {
+        self.sampler.len()
+    }
+
+    fn sample(&self, index: u32, dim: usize) -> Result<u32> {
+        Ok(self.map(dim).apply(self.sampler.sample(index, dim)?))
+    }
+
+    fn fill(&self, start: u32, out: &mut [u32]) -> Result<()> {
+        if let Some(done) = self
+            .sampler
+            .fill_affine(start, out, &|dim| self.maps.get(dim).copied())
+        {
+            return done;
+        }
+        self.sampler.fill(start, out)?;
+        let dims = self.dims().max(1);
+        for row in out.chunks_exact_mut(dims) {
+            for (dim, x) in row.iter_mut().enumerate() {
+                *x = self.map(dim).apply(*x);
+            }
+        }
+        Ok(())
+    }
+}
+
 impl<S: Sampler, R: Randomizes<S>> Sampler for Scrambled<S, R> {
     fn dims(&self) -> usize {
         self.sampler.dims()
@@ -362,6 +408,36 @@ impl<S: Sampler, R: Randomizes<S>> Sampler for Scrambled<S, R> {
     fn sample(&self, index: u32, dim: usize) -> Result<u32> {
         let x = self.sampler.sample(index, dim)?;
         Ok(self.randomizer.scrambler(dim).scramble(x))
+    }
+
+    /// With `std` and an affine scrambler, the dimensions' maps are prepared once for the
+    /// whole request (a conversion runs `fill` a chunk at a time, which would prepare them
+    /// per chunk); otherwise the default.
+    #[cfg(feature = "std")]
+    fn fill_as<T: crate::bits::FromFraction>(&self, start: u32, out: &mut [T]) -> Result<()>
+    where
+        Self: Sized,
+    {
+        if <R::Scrambler as Scrambler>::AFFINE {
+            let dims = self.dims();
+            let mut maps = Vec::new();
+            if maps.try_reserve_exact(dims).is_ok() {
+                for dim in 0..dims {
+                    match self.randomizer.scrambler(dim).affine() {
+                        Some(m) => maps.push(m),
+                        None => break,
+                    }
+                }
+                if maps.len() == dims {
+                    let prepared = Prepared {
+                        sampler: &self.sampler,
+                        maps: &maps,
+                    };
+                    return crate::sampler::fill_as_by_chunks(&prepared, start, out);
+                }
+            }
+        }
+        crate::sampler::fill_as_by_chunks(self, start, out)
     }
 
     /// An affine scrambler (digital shift, LMS, compositions) folded into the sampler's

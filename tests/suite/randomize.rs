@@ -834,8 +834,14 @@ fn affine_scrambles_folded_into_sobol_match_per_value() {
     fn check<R: qmckit::randomize::Randomizes<Sobol> + Copy>(name: &str, s: Sobol, r: R) {
         let sc = Scrambled::new(s, r);
         let d = s.dims();
-        for start in [0u32, 1, 5, 1023, (1 << 20) - 3, u32::MAX - 70] {
-            let rows = 67usize.min((u32::MAX - start) as usize + 1);
+        for (start, rows) in [
+            (0u32, 67usize),
+            (1, 67),
+            (5, 700),
+            (1023, 67),
+            ((1 << 20) - 3, 67),
+            (u32::MAX - 70, 67),
+        ] {
             let mut out = vec![0u32; rows * d];
             sc.fill(start, &mut out).unwrap();
             for (k, row) in out.chunks_exact(d).enumerate() {
@@ -845,6 +851,16 @@ fn affine_scrambles_folded_into_sobol_match_per_value() {
                         .scramble(s.sample(start + k as u32, dim).unwrap());
                     assert_eq!(v, want, "{name}: d {d}, start {start}, row {k}, dim {dim}");
                 }
+            }
+            // The conversion path prepares the maps once for all its chunks.
+            let mut f = vec![0f64; out.len()];
+            sc.fill_as(start, &mut f).unwrap();
+            for (a, &b) in f.iter().zip(&out) {
+                assert_eq!(
+                    *a,
+                    qmckit::bits::to_f64(b),
+                    "{name}: fill_as, d {d}, start {start}"
+                );
             }
         }
     }

@@ -22,10 +22,15 @@ const RENDER: (u32, u32) = (360, 320);
 
 /// The slides of this group.
 pub fn sections(ctx: &Ctx) -> Result<Vec<Section>, Failure> {
-    let o = if ctx.quick { StudyOptions::quick() } else { StudyOptions::full() };
+    let o = if ctx.quick {
+        StudyOptions::quick()
+    } else {
+        StudyOptions::full()
+    };
     // scene::cost counts all five studies; each is one step of the budget.
     let each = scene::cost(&o) as f64 / 5.0;
-    ctx.budget.check("each rendered study", Cost::steps(each, SCENE_RATE))?;
+    ctx.budget
+        .check("each rendered study", Cost::steps(each, SCENE_RATE))?;
     let area = pixel_area_study(&o)?;
     let shadow = soft_shadow_study(&o)?;
     let mut mse = Section::new(
@@ -34,8 +39,20 @@ pub fn sections(ctx: &Ctx) -> Result<Vec<Section>, Failure> {
         "Two renders at 16 samples a pixel: the MSE against a high-sample reference, over several \
          seeds, relative to independent sampling (1/Rx: R times lower).",
     );
-    add_study(ctx, &mut mse, "mse-area", &area, &[("1x", 0), ("1/2.41x", 1), ("1/3.38x", 2)])?;
-    add_study(ctx, &mut mse, "mse-shadow", &shadow, &[("1x", 0), ("1/2.12x", 1), ("1/3.95x", 2)])?;
+    add_study(
+        ctx,
+        &mut mse,
+        "mse-area",
+        &area,
+        &[("1x", 0), ("1/2.41x", 1), ("1/3.38x", 2)],
+    )?;
+    add_study(
+        ctx,
+        &mut mse,
+        "mse-shadow",
+        &shadow,
+        &[("1x", 0), ("1/2.12x", 1), ("1/3.95x", 2)],
+    )?;
     mse.note = "Our scene (spheres on a plane) and integrands differ from the lecture's, so the \
                 ratios differ; their order (independent > stratified > Sobol') is the claim."
         .into();
@@ -48,8 +65,18 @@ pub fn sections(ctx: &Ctx) -> Result<Vec<Section>, Failure> {
          Owen-scrambled Sobol' points, with the soft-shadow renders that use them.",
     );
     let (strat, sob) = quad_light_uv(16, 1)?;
-    quad.figures.push(ctx.figure("quad-stratified.svg", &PointsFigure::new("4x4 stratified", strat).intervals(4, 4), (320, 320), "4x4 stratified")?);
-    quad.figures.push(ctx.figure("quad-sobol.svg", &PointsFigure::new("16 Sobol'", sob).intervals(4, 4), (320, 320), "16 Sobol'")?);
+    quad.figures.push(ctx.figure(
+        "quad-stratified.svg",
+        &PointsFigure::new("4x4 stratified", strat).intervals(4, 4),
+        (320, 320),
+        "4x4 stratified",
+    )?);
+    quad.figures.push(ctx.figure(
+        "quad-sobol.svg",
+        &PointsFigure::new("16 Sobol'", sob).intervals(4, 4),
+        (320, 320),
+        "16 Sobol'",
+    )?);
     add_renders(ctx, &mut quad, "quad", &shadow)?;
 
     let motion = motion_defocus_study(&o)?;
@@ -58,8 +85,15 @@ pub fn sections(ctx: &Ctx) -> Result<Vec<Section>, Failure> {
         "Sampling motion blur + defocus: independent, Halton, Sobol'",
         "Four dimensions a sample (pixel x, y, lens u, v, and time); MSE relative to independent.",
     );
-    add_study(ctx, &mut md, "motion", &motion, &[("1x", 0), ("1/1.13x", 1), ("1/1.80x", 2)])?;
-    md.note = "A different scene and shutter/aperture than the lecture's; the ratios are ours.".into();
+    add_study(
+        ctx,
+        &mut md,
+        "motion",
+        &motion,
+        &[("1x", 0), ("1/1.13x", 1), ("1/1.80x", 2)],
+    )?;
+    md.note =
+        "A different scene and shutter/aperture than the lecture's; the ratios are ours.".into();
 
     let pl = pixel_light_study(&o)?;
     let mut pls = Section::new(
@@ -81,39 +115,90 @@ pub fn sections(ctx: &Ctx) -> Result<Vec<Section>, Failure> {
 }
 
 fn image(title: &str, im: &SceneImage, map: ColourMap) -> Result<ImageFigure, Failure> {
-    let fig = ImageFigure::new(title, im.width as usize, im.height as usize, im.pixels.clone())
-        .map_err(|e| Failure::usage(e.0))?;
+    let fig = ImageFigure::new(
+        title,
+        im.width as usize,
+        im.height as usize,
+        im.pixels.clone(),
+    )
+    .map_err(|e| Failure::usage(e.0))?;
     Ok(fig.map(map))
 }
 
 /// The reference, the renders and their errors as figures.
 fn add_renders(ctx: &Ctx, s: &mut Section, stem: &str, st: &SceneStudy) -> Result<(), Failure> {
-    let top = st.reference.pixels.iter().copied().fold(0.0f64, f64::max).max(1e-9);
-    s.figures.push(ctx.figure(&format!("{stem}-reference.png"), &image("reference", &st.reference, ColourMap::Grey)?.range(0.0, top), RENDER, format!("{}: reference", st.name))?);
+    let top = st
+        .reference
+        .pixels
+        .iter()
+        .copied()
+        .fold(0.0f64, f64::max)
+        .max(1e-9);
+    s.figures.push(ctx.figure(
+        &format!("{stem}-reference.png"),
+        &image("reference", &st.reference, ColourMap::Grey)?.range(0.0, top),
+        RENDER,
+        format!("{}: reference", st.name),
+    )?);
     for (k, (name, im)) in st.renders.iter().enumerate() {
-        s.figures.push(ctx.figure(&format!("{stem}-render-{k}.png"), &image(name, im, ColourMap::Grey)?.range(0.0, top), RENDER, format!("{name}, {} spp", st.spp))?);
+        s.figures.push(ctx.figure(
+            &format!("{stem}-render-{k}.png"),
+            &image(name, im, ColourMap::Grey)?.range(0.0, top),
+            RENDER,
+            format!("{name}, {} spp", st.spp),
+        )?);
     }
-    let m = st.errors.iter().flat_map(|e| e.1.pixels.iter()).fold(0.0f64, |a, v| a.max(v.abs())).max(1e-12);
+    let m = st
+        .errors
+        .iter()
+        .flat_map(|e| e.1.pixels.iter())
+        .fold(0.0f64, |a, v| a.max(v.abs()))
+        .max(1e-12);
     for (k, (name, im)) in st.errors.iter().enumerate() {
-        s.figures.push(ctx.figure(&format!("{stem}-error-{k}.png"), &image(&format!("error, {name}"), im, ColourMap::Diverging)?.range(-m, m), RENDER, format!("error, {name}"))?);
+        s.figures.push(ctx.figure(
+            &format!("{stem}-error-{k}.png"),
+            &image(&format!("error, {name}"), im, ColourMap::Diverging)?.range(-m, m),
+            RENDER,
+            format!("error, {name}"),
+        )?);
     }
     Ok(())
 }
 
 /// The renders and the MSE rows; `lecture[k]` is the lecture's ratio for entry `k`.
-fn add_study(ctx: &Ctx, s: &mut Section, stem: &str, st: &SceneStudy, lecture: &[(&str, usize)]) -> Result<(), Failure> {
+fn add_study(
+    ctx: &Ctx,
+    s: &mut Section,
+    stem: &str,
+    st: &SceneStudy,
+    lecture: &[(&str, usize)],
+) -> Result<(), Failure> {
     add_renders(ctx, s, stem, st)?;
     for (k, e) in st.mse.iter().enumerate() {
         let theirs = lecture.iter().find(|l| l.1 == k).map_or("", |l| l.0);
         s.rows.push(row(
-            format!("{}: {}, {} spp, {} seeds: MSE {}", st.name, e.sampler, st.spp, st.seeds, sig(e.mse, 3)),
-            if k == 0 { "1x".to_owned() } else { format!("1/{}x", sig(e.relative, 3)) },
+            format!(
+                "{}: {}, {} spp, {} seeds: MSE {}",
+                st.name,
+                e.sampler,
+                st.spp,
+                st.seeds,
+                sig(e.mse, 3)
+            ),
+            if k == 0 {
+                "1x".to_owned()
+            } else {
+                format!("1/{}x", sig(e.relative, 3))
+            },
             theirs,
         ));
     }
     for e in &st.mse {
         s.rows.push(row(
-            format!("{}: {}: error power below a quarter of Nyquist (white = 1)", st.name, e.sampler),
+            format!(
+                "{}: {}: error power below a quarter of Nyquist (white = 1)",
+                st.name, e.sampler
+            ),
             sig(e.low_band, 3),
             "",
         ));
