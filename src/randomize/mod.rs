@@ -82,8 +82,8 @@ mod shift;
 pub mod digits;
 pub mod shuffle;
 
-#[cfg(feature = "std")]
 pub use affine::Affine;
+#[cfg(feature = "std")]
 pub use lms::LmsCache;
 pub use lms::{Lms, LmsDimension};
 #[allow(deprecated)]
