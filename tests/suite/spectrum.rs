@@ -318,11 +318,21 @@ fn cli_averages_sets_and_switches_methods() {
     assert!(radial.starts_with("# mean of 2 sets\n# radius count mean anisotropy\n"));
     assert_usage_error(&["spectrum", "--tolerance", "0"], sets, "--tolerance 0");
     assert_usage_error(&["spectrum", "--method", "fft"], sets, "--method");
-    assert_usage_error(
-        &["spectrum", "--average"],
-        "0.1 0.2\n#\n0.3 0.4\n0.5 0.6\n",
-        "--average needs sets of equal size",
-    );
+    // Sets of different sizes average too (each periodogram normalized by its own N):
+    // P(0) is the mean size, 1.5.
+    let mixed = String::from_utf8(
+        run(
+            &["spectrum", "--average", "--k-max", "1"],
+            "0.1 0.2\n#\n0.3 0.4\n0.5 0.6\n",
+        )
+        .stdout,
+    )
+    .unwrap();
+    let dc = mixed
+        .lines()
+        .find_map(|l| l.strip_prefix("0 0 "))
+        .unwrap_or_else(|| panic!("{mixed}"));
+    assert_eq!(dc.trim().parse::<f64>().unwrap(), 1.5, "{mixed}");
     assert_usage_error(
         &[
             "spectrum",

@@ -31,7 +31,8 @@ r = 1..K, over the frequencies with round(|k|) = r; anisotropy = variance / mean
 annulus (1 for white noise; 10 log10 of it is Ulichney's anisotropy in dB).
 
 --average prints one block: the mean periodogram (or its radial average) over all the
-point sets of the input, which must all have the same number of points.
+point sets of the input, each normalized by its own size (sets may differ in size, as
+Poisson-disk sets by count do; P(0) is then the mean size).
 
 --method: 'direct' sums exactly (up to rounding), at N (K + 1)(2K + 1) complex
 multiply-adds, about 1e9 a second; 'nufft' (type-1 non-uniform FFT, exponential-of-
@@ -105,16 +106,6 @@ pub fn run(args: &SpectrumArgs) -> Result<(), Failure> {
         })
         .collect();
     if args.average {
-        if let Some(first) = sets.first()
-            && let Some(k) = sets.iter().position(|s| s.len() != first.len())
-        {
-            return Err(Failure::usage(format!(
-                "{name}: --average needs sets of equal size; set {} has {} points, set 1 has {}",
-                k + 1,
-                sets.get(k).map_or(0, |s| s.len()),
-                first.len()
-            )));
-        }
         let total = sets
             .iter()
             .zip(&methods)
