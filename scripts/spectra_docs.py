@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """The tables of docs/spectra.md, from the `qmckit` command alone.
 
-Run: `cargo build --release --features cli && python3 scripts/spectra_docs.py` from the
-repository root (numpy for the slope fits). Prints markdown.
+Run: `cargo build --release --features cli && python3 scripts/spectra_docs.py [SAMPLER..]`
+from the repository root (numpy for the slope fits; the optional names restrict the rows).
+Prints markdown.
 
 1. Mean radial periodograms of 100 sets of N = 1024 points (K = 64) of white noise,
    jittered, Halton, Sobol', Owen-scrambled Sobol', Poisson disk (about N points on the
@@ -13,6 +14,7 @@ repository root (numpy for the slope fits). Prints markdown.
    and iteration (500 iterations), so it runs fewer sets at large N (SETS_GBN).
 """
 import subprocess
+import sys
 
 import numpy as np
 
@@ -40,10 +42,14 @@ def points(sampler, s):
 
 SAMPLERS = ["white", "jittered", "halton", "sobol", "owen-sobol", "poisson", "gaussian-blue-noise"]
 SETS_GBN = {16: "200", 64: "200", 256: "100", 1024: "30", 4096: "10"}
+# Optional: the samplers to run (names of either table), e.g. `poisson gaussian-blue-noise`.
+ONLY = set(sys.argv[1:])
 at = [4, 8, 16, 24, 32, 48, 64]
 print(f"| sampler ({SETS} sets, N = {N}) | mean P, |k| < 0.5 sqrt(N) | " + " | ".join(f"r = {r} ({r / 32:.3g} sqrt N)" for r in at) + " |")
 print("|---|---|" + "---|" * len(at))
 for name in SAMPLERS:
+    if ONLY and name not in ONLY:
+        continue
     text = "#\n".join(points(name, s) for s in range(SETS))
     out = run(["spectrum", "--average", "--radial", "--k-max", str(K)], text)
     rows = [l.split() for l in out.splitlines() if not l.startswith("#")]
@@ -58,6 +64,8 @@ for integrand in ["disk", "gaussian"]:
     print(f"| sampler ({integrand}) | " + " | ".join(f"N = {n}: predicted / measured" for n in ns) + " | slope predicted | slope measured |")
     print("|---|" + "---|" * len(ns) + "---|---|")
     for sampler in ["independent", "jittered", "halton", "sobol", "owen-sobol", "poisson", "gaussian-blue-noise"]:
+        if ONLY and sampler not in ONLY:
+            continue
         pred, meas, cells = [], [], []
         for n in ns:
             sets = "1000" if n <= 1024 else "300"

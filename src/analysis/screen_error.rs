@@ -170,52 +170,71 @@ pub fn screen_error<S: PixelSampler + ?Sized>(
             error.push(sum / g.spp as f64 - f.exact_at(px, py));
         }
     }
-    let mean = error.iter().sum::<f64>() / px;
-    let var = error.iter().map(|e| (e - mean) * (e - mean)).sum::<f64>() / px;
-    if var <= 0.0 {
-        return Err(Error::InvalidParameter {
-            what: "a constant error image has no spectrum to normalize",
-        });
-    }
-    let rmse = (error.iter().map(|e| e * e).sum::<f64>() / px).sqrt();
-    let power = dft_power(&error, w, h);
-    let spectrum: Vec<f64> = power.iter().map(|p| p / (px * var)).collect();
-    let side = w.min(h) as f64;
-    let band = |lo: f64, hi: f64, norm: bool| {
-        let (mut s, mut n) = (0.0, 0usize);
-        for ky in 0..h {
-            for kx in 0..w {
-                let fx = if kx <= w / 2 {
-                    kx as f64
-                } else {
-                    kx as f64 - w as f64
-                };
-                let fy = if ky <= h / 2 {
-                    ky as f64
-                } else {
-                    ky as f64 - h as f64
-                };
-                // Frequencies in cycles per min(W, H) pixels, so the bands are radial.
-                let r = ((fx * side / w as f64).powi(2) + (fy * side / h as f64).powi(2)).sqrt();
-                if r >= lo && r < hi {
-                    let k = ky * w + kx;
-                    s += if norm { spectrum[k] } else { power[k] / px };
-                    n += 1;
+    ScreenError::from_error(error, w, h)
+}
+
+impl ScreenError {
+    /// The measurements of an error image `E` (`w x h`, row-major): its spectrum normalized
+    /// by `W H var(E)`, the RMSE and the band powers. Cost: a separable DFT, `W H (W + H)`.
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] for an image smaller than 8 x 8 or of the wrong length,
+    /// or a constant image (no spectrum to normalize).
+    pub fn from_error(error: Vec<f64>, w: usize, h: usize) -> Result<ScreenError> {
+        if w < 8 || h < 8 || error.len() != w * h {
+            return Err(Error::InvalidParameter {
+                what: "an error image needs at least 8 x 8 pixels and w h values",
+            });
+        }
+        let px = (w as f64) * (h as f64);
+        let mean = error.iter().sum::<f64>() / px;
+        let var = error.iter().map(|e| (e - mean) * (e - mean)).sum::<f64>() / px;
+        if var <= 0.0 {
+            return Err(Error::InvalidParameter {
+                what: "a constant error image has no spectrum to normalize",
+            });
+        }
+        let rmse = (error.iter().map(|e| e * e).sum::<f64>() / px).sqrt();
+        let power = dft_power(&error, w, h);
+        let spectrum: Vec<f64> = power.iter().map(|p| p / (px * var)).collect();
+        let side = w.min(h) as f64;
+        let band = |lo: f64, hi: f64, norm: bool| {
+            let (mut s, mut n) = (0.0, 0usize);
+            for ky in 0..h {
+                for kx in 0..w {
+                    let fx = if kx <= w / 2 {
+                        kx as f64
+                    } else {
+                        kx as f64 - w as f64
+                    };
+                    let fy = if ky <= h / 2 {
+                        ky as f64
+                    } else {
+                        ky as f64 - h as f64
+                    };
+                    // Frequencies in cycles per min(W, H) pixels, so the bands are radial.
+                    let r =
+                        ((fx * side / w as f64).powi(2) + (fy * side / h as f64).powi(2)).sqrt();
+                    if r >= lo && r < hi {
+                        let k = ky * w + kx;
+                        s += if norm { spectrum[k] } else { power[k] / px };
+                        n += 1;
+                    }
                 }
             }
-        }
-        if n == 0 { 0.0 } else { s / n as f64 }
-    };
-    Ok(ScreenError {
-        width: w,
-        height: h,
-        low_band: band(1.0, side / 8.0, true),
-        high_band: band(side / 4.0, side / 2.0, true),
-        low_band_absolute: band(1.0, side / 8.0, false),
-        error,
-        spectrum,
-        rmse,
-    })
+            if n == 0 { 0.0 } else { s / n as f64 }
+        };
+        Ok(ScreenError {
+            width: w,
+            height: h,
+            low_band: band(1.0, side / 8.0, true),
+            high_band: band(side / 4.0, side / 2.0, true),
+            low_band_absolute: band(1.0, side / 8.0, false),
+            error,
+            spectrum,
+            rmse,
+        })
+    }
 }
 
 /// `|DFT(e)|^2` of a real `w x h` image, row-major, by a separable DFT (rows, then columns)

@@ -6,10 +6,10 @@ use super::geometry::Scene;
 use super::integrands::{Integrand, standard_camera, standard_scene};
 use super::samplers::{Prepared, SceneSampler};
 use crate::analysis::budget::{Progress, no_progress};
+use crate::analysis::screen_error::ScreenError;
 use crate::{Error, Jitter, OwenSobol, Result, Stratified};
 use rayon::prelude::*;
-use rustfft::FftPlanner;
-use rustfft::num_complex::Complex;
+
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// An image of linear values, row-major, row 0 at the top.
@@ -433,60 +433,15 @@ pub fn reference_image(study: Study, o: &StudyOptions, spp: u32, seed: u64) -> R
     )
 }
 
-/// The normalized and absolute low-band power of an error image (see [`MseEntry`]), by a
-/// 2D FFT (rustfft). A constant image has normalized power 0. O(W H log(W H)).
+/// The normalized and absolute low-band power of an error image (see [`MseEntry`]): the
+/// `low_band` and `low_band_absolute` of [`ScreenError::from_error`] (the same bands as the
+/// screen-space error of the pixel samplers), `(0, 0)` for a constant image.
+/// O(W H (W + H)).
 pub fn low_band(err: &[f64], w: usize, h: usize) -> (f64, f64) {
-    let px = (w * h) as f64;
-    if err.len() != w * h || w == 0 || h == 0 {
-        return (0.0, 0.0);
+    match ScreenError::from_error(err.to_vec(), w, h) {
+        Ok(e) => (e.low_band, e.low_band_absolute),
+        Err(_) => (0.0, 0.0),
     }
-    let mean = err.iter().sum::<f64>() / px;
-    let var = err.iter().map(|e| (e - mean) * (e - mean)).sum::<f64>() / px;
-    let mut data: Vec<Complex<f64>> = err.iter().map(|&e| Complex::new(e, 0.0)).collect();
-    let mut planner = FftPlanner::new();
-    let fw = planner.plan_fft_forward(w);
-    for row in data.chunks_exact_mut(w) {
-        fw.process(row);
-    }
-    let fh = planner.plan_fft_forward(h);
-    let mut col = vec![Complex::new(0.0, 0.0); h];
-    for kx in 0..w {
-        for (y, c) in col.iter_mut().enumerate() {
-            *c = data[y * w + kx];
-        }
-        fh.process(&mut col);
-        for (y, c) in col.iter().enumerate() {
-            data[y * w + kx] = *c;
-        }
-    }
-    let side = w.min(h) as f64;
-    let hi = side / 8.0;
-    let (mut s, mut n) = (0.0, 0usize);
-    for ky in 0..h {
-        for kx in 0..w {
-            let fx = if kx <= w / 2 {
-                kx as f64
-            } else {
-                kx as f64 - w as f64
-            };
-            let fy = if ky <= h / 2 {
-                ky as f64
-            } else {
-                ky as f64 - h as f64
-            };
-            let r = ((fx * side / w as f64).powi(2) + (fy * side / h as f64).powi(2)).sqrt();
-            if (1.0..hi).contains(&r) {
-                s += data[ky * w + kx].norm_sqr() / px;
-                n += 1;
-            }
-        }
-    }
-    if n == 0 {
-        return (0.0, 0.0);
-    }
-    let absolute = s / n as f64;
-    let normalized = if var > 0.0 { absolute / var } else { 0.0 };
-    (normalized, absolute)
 }
 
 /// Lecture table 1 at `n = spp`: the pixel-area integrand ([`Integrand::PixelArea`], 2D:
