@@ -7,8 +7,8 @@ use qmckit::plot::{ConvergenceFigure, Curve, Domain, PointsFigure};
 use qmckit::randomize::digits::DigitScramble;
 use qmckit::{Halton, Hammersley, RadicalInverse, Sobol, VanDerCorput, bits};
 
+use super::super::Failure;
 use super::{Ctx, PLOT, Section, WIDE, flat, pts2, row, sig};
-use crate::Failure;
 
 /// The slides of this group.
 pub fn sections(ctx: &Ctx) -> Result<Vec<Section>, Failure> {

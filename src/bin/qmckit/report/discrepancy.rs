@@ -6,9 +6,9 @@ use qmckit::plot::{ConvergenceFigure, Curve, PointsFigure};
 use qmckit::stratified::{Jitter, Stratified};
 use qmckit::{Halton, Hammersley, Independent, LarcherPillichshammer, OwenSobol, Sobol};
 
+use super::super::Failure;
 use super::constructions::rmse_curve;
 use super::{Ctx, PLOT, Section, WIDE, pts2, row, sig};
-use crate::Failure;
 
 /// The slides of this group.
 pub fn sections(ctx: &Ctx) -> Result<Vec<Section>, Failure> {

@@ -8,8 +8,8 @@ use qmckit::pixel::{IndependentPixels, Randomization, ZSobol};
 use qmckit::plot::{ColourMap, ImageFigure, PointsFigure};
 use qmckit::{Sampler, Sobol};
 
+use super::super::Failure;
 use super::{Ctx, Section, pts2, row, sig};
-use crate::Failure;
 
 /// The slides of this group.
 pub fn sections(ctx: &Ctx) -> Result<Vec<Section>, Failure> {

@@ -10,8 +10,8 @@ use qmckit::analysis::scene::{
 };
 use qmckit::plot::{ColourMap, ImageFigure, PointsFigure};
 
+use super::super::Failure;
 use super::{Ctx, Section, row, sig};
-use crate::Failure;
 
 /// The rate of [`scene::cost`]'s unit, integrand samples (a camera ray and at most one
 /// secondary ray): a few million a second on two cores.

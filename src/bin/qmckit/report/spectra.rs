@@ -9,8 +9,8 @@ use qmckit::plot::{ImageFigure, PointsFigure, RadialFigure, SpectrumFigure};
 use qmckit::stratified::{Jitter, Stratified};
 use qmckit::{Halton, Independent, OwenSobol, Sampler, Sobol, bits};
 
+use super::super::Failure;
 use super::{Ctx, PLOT, Section, WIDE, flat, pts2, row, sig};
-use crate::Failure;
 
 /// Size of a spectrum image (PNG).
 const SPEC: (u32, u32) = (440, 360);
