@@ -223,7 +223,13 @@ pub trait PixelSampler {
     ///
     /// # Errors
     /// As [`PixelGrid::check`].
-    fn sample_index(&self, x: u32, y: u32, index: u32, dim: u32) -> Result<Option<u64>>;
+    /// The default is `None` after the range check: samplers without a global sequence
+    /// (independent, PMJ02 tables) keep it.
+    fn sample_index(&self, x: u32, y: u32, index: u32, dim: u32) -> Result<Option<u64>> {
+        let _ = dim;
+        self.grid().check(x, y, index)?;
+        Ok(None)
+    }
 
     /// The 1D value (0.32 fraction) of sample `index` of pixel `(x, y)` with the dimension
     /// counter at `dim` (pbrt's `Get1D`, which then moves the counter to `dim + 1`).

@@ -64,11 +64,6 @@ impl PixelSampler for PaddedSobol {
         self.grid
     }
 
-    fn sample_index(&self, x: u32, y: u32, index: u32, _dim: u32) -> Result<Option<u64>> {
-        self.grid.check(x, y, index)?;
-        Ok(None)
-    }
-
     fn get_1d(&self, x: u32, y: u32, index: u32, dim: u32) -> Result<u32> {
         self.grid.check(x, y, index)?;
         let (h, i) = self.index(x, y, index, dim);

@@ -59,11 +59,6 @@ impl PixelSampler for Pmj02Pixels {
         self.grid
     }
 
-    fn sample_index(&self, x: u32, y: u32, index: u32, _dim: u32) -> Result<Option<u64>> {
-        self.grid.check(x, y, index)?;
-        Ok(None)
-    }
-
     fn get_1d(&self, x: u32, y: u32, index: u32, dim: u32) -> Result<u32> {
         self.grid.check(x, y, index)?;
         let (p, i) = self.point(x, y, index, dim);
