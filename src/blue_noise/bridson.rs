@@ -16,61 +16,16 @@
 
 use super::grid::{Grid, SCALE, axis_gap, quantize_units, to_unit};
 use super::rng::Rng;
+use super::shell::Shell;
 
 /// The side, relative to `r`, below which a cube is no longer split: its points lie within
 /// `r (1 + sqrt(d) 2^-21)` of a sample at the end.
 pub(crate) const FINEST: f64 = 1.0 / (1u64 << 20) as f64;
 
-/// A uniform point of the shell `r <= |y| < 2r` in `D` dimensions (any unit: the grid
-/// passes `r` in units of `2^-32`).
-#[inline]
-fn shell<const D: usize>(rng: &mut Rng, r: f64) -> [f64; D] {
-    let mut y = [0.0; D];
-    if D <= 3 {
-        // Rejection from the cube [-2r, 2r)^D: accepts 3 pi / 16 (2D), 7 pi / 48 (3D). Each
-        // coordinate takes 32 bits (two a draw): offsets on a grid of step 4r 2^-32, finer
-        // than the grid the points are kept on for radii below a quarter of the side.
-        let (lo, hi) = (r * r, 4.0 * r * r);
-        let step = 4.0 * r / 4_294_967_296.0;
-        loop {
-            let mut s = 0.0;
-            let mut bits = 0u64;
-            for (k, v) in y.iter_mut().enumerate() {
-                if k % 2 == 0 {
-                    bits = rng.next_u64();
-                }
-                let half = if k % 2 == 0 {
-                    bits >> 32
-                } else {
-                    bits & 0xFFFF_FFFF
-                };
-                *v = half as f64 * step - 2.0 * r;
-                s += *v * *v;
-            }
-            if s >= lo && s < hi {
-                return y;
-            }
-        }
-    }
-    // A uniform direction (normal vector) and the radius r (1 + u (2^D - 1))^(1/D).
-    let mut s = 0.0;
-    for v in y.iter_mut() {
-        *v = rng.normal();
-        s += *v * *v;
-    }
-    let u = rng.unit();
-    let rho = r * (1.0 + u * ((1u64 << D) as f64 - 1.0)).powf(1.0 / D as f64);
-    let scale = if s > 0.0 { rho / s.sqrt() } else { 0.0 };
-    for v in y.iter_mut() {
-        *v *= scale;
-    }
-    y
-}
-
 /// Runs Bridson's algorithm with `k` candidates a step into `grid` (empty).
 pub(crate) fn bridson<const D: usize>(grid: &mut Grid<D>, k: u32, rng: &mut Rng) {
     let torus = grid.torus;
-    let r_units = grid.r * SCALE;
+    let shell = Shell::<D>::new(grid.r * SCALE);
     let mut first = [0u32; D];
     for v in first.iter_mut() {
         *v = rng.fraction();
@@ -89,7 +44,7 @@ pub(crate) fn bridson<const D: usize>(grid: &mut Grid<D>, k: u32, rng: &mut Rng)
         };
         let mut placed = false;
         'tries: for _ in 0..k {
-            let off = shell::<D>(rng, r_units);
+            let off = shell.draw(rng);
             let mut p = [0u32; D];
             for ((pk, &c), o) in p.iter_mut().zip(&centre).zip(&off) {
                 match quantize_units(f64::from(c) + o, torus) {

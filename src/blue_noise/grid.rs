@@ -238,6 +238,34 @@ impl<const D: usize> Grid<D> {
         false
     }
 
+    /// The neighbour-cell offsets (see [`Grid::new`]), nearest first.
+    pub(crate) fn neighbour_offsets(&self) -> &[[i64; D]] {
+        &self.offsets
+    }
+
+    /// The largest offset along an axis.
+    pub(crate) fn reach(&self) -> usize {
+        self.reach
+    }
+
+    /// The point of the cell with (unwrapped) coordinates `c`: wrapped on the torus,
+    /// `None` outside the box or when the cell is empty.
+    pub(crate) fn point_at(&self, c: &[i64; D]) -> Option<[u32; D]> {
+        let g = self.g as i64;
+        let mut idx = 0usize;
+        for &ck in c.iter().rev() {
+            let ck = if self.torus {
+                ck.rem_euclid(g)
+            } else if (0..g).contains(&ck) {
+                ck
+            } else {
+                return None;
+            };
+            idx = idx * self.g + ck as usize;
+        }
+        self.at(idx).copied()
+    }
+
     /// Whether `p` is at least `r` from every stored point.
     #[inline]
     pub(crate) fn is_free(&self, p: &[u32; D]) -> bool {

@@ -29,6 +29,10 @@ pub mod poisson;
 #[cfg(feature = "analysis")]
 mod rng;
 #[cfg(feature = "analysis")]
+mod shell;
+#[cfg(feature = "analysis")]
+mod tiles;
+#[cfg(feature = "analysis")]
 mod tournament;
 #[cfg(feature = "analysis")]
 pub mod void_and_cluster;

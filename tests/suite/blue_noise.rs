@@ -102,6 +102,234 @@ fn poisson_disk_pairs_are_at_least_r_apart() {
     }
 }
 
+/// The smallest pairwise distance in 2D by a sweep along x (toroidal or not): points
+/// sorted by x, each compared with those less than `r` further on (and, on the torus,
+/// with the first ones moved by +1).
+fn min_distance_sweep(x: &[f64], r: f64, torus: bool) -> f64 {
+    let mut p: Vec<[f64; 2]> = x.chunks_exact(2).map(|c| [c[0], c[1]]).collect();
+    p.sort_by(|a, b| a[0].total_cmp(&b[0]));
+    if torus {
+        let wrap: Vec<[f64; 2]> = p
+            .iter()
+            .take_while(|q| q[0] < r)
+            .map(|q| [q[0] + 1.0, q[1]])
+            .collect();
+        p.extend(wrap);
+    }
+    let mut best = f64::INFINITY;
+    for i in 0..p.len() {
+        for j in i + 1..p.len() {
+            if p[j][0] - p[i][0] >= r {
+                break;
+            }
+            let dy = gap(p[i][1], p[j][1], torus);
+            best = best.min(((p[j][0] - p[i][0]).powi(2) + dy * dy).sqrt());
+        }
+    }
+    best
+}
+
+/// The tile borders of the 2D Poisson-disk construction at radius `r` (as documented in
+/// `PoissonDisk`: cells of side `1/g`, `g = ceil(sqrt(2) / r)`, split into `n` tiles of at
+/// most 128 cells, `n` even and at least 2 on the torus; tile `i` starts at cell
+/// `floor(i g / n)`; colours by the parity of column and row, even first), as coordinates
+/// in `[0, 1)`, each with whether the tile before it (lower coordinates) grows first.
+fn tile_borders(r: f64, torus: bool) -> Vec<(f64, bool)> {
+    let g = (2f64.sqrt() / r).ceil() as usize;
+    let mut n = g.div_ceil(128);
+    if torus {
+        n = (n + n % 2).max(2);
+    }
+    let first = if torus { 0 } else { 1 };
+    (first..n)
+        .map(|i| ((i * g / n) as f64 / g as f64, i % 2 == 1))
+        .collect()
+}
+
+#[test]
+fn tiled_poisson_sets_are_r_separated_across_tiles() {
+    // r = 0.003: 472 cells a side, 4 tiles; about 68 000 points a set.
+    let r = 0.003;
+    for torus in [false, true] {
+        for seed in 0..2 {
+            let s = PoissonDisk::new(2, r)
+                .unwrap()
+                .torus(torus)
+                .seed(seed)
+                .generate()
+                .unwrap();
+            assert!(s.count() > 60_000, "{}", s.count());
+            let m = min_distance_sweep(&coords(&s), r, torus);
+            assert!(m >= r, "torus {torus} seed {seed}: min distance {m} < {r}");
+        }
+    }
+}
+
+#[test]
+fn tiled_poisson_sets_have_no_seams() {
+    // The density profile across tile borders, in strips of width r/2 from 2r on the side
+    // grown first to 2r on the side grown later (both axes, 16 seeds), against the same
+    // strips around the tiles' middle lines (the control: the box's own edge effects are
+    // in both): flat within 5%. A tile that filled up to its border before its neighbour
+    // grew would pack points against the border (about +58% just before it, -55% just
+    // after).
+    let r = 0.004;
+    let g = (2f64.sqrt() / r).ceil() as usize;
+    for torus in [false, true] {
+        let borders = tile_borders(r, torus);
+        let n = if torus {
+            borders.len()
+        } else {
+            borders.len() + 1
+        };
+        let middles: Vec<(f64, bool)> = (0..n)
+            .map(|i| {
+                (
+                    ((i * g / n + (i + 1) * g / n) as f64 / 2.0) / g as f64,
+                    true,
+                )
+            })
+            .collect();
+        assert!(borders.len() >= 2, "{borders:?}");
+        let profile = |lines: &[(f64, bool)], x: &[f64], bins: &mut [usize; 8]| {
+            for v in x {
+                for &(b, before_first) in lines {
+                    let mut d = v - b;
+                    if d > 0.5 {
+                        d -= 1.0;
+                    } else if d < -0.5 {
+                        d += 1.0;
+                    }
+                    if !before_first {
+                        d = -d;
+                    }
+                    let bin = (d / (0.5 * r) + 4.0).floor();
+                    if (0.0..8.0).contains(&bin) {
+                        bins[bin as usize] += 1;
+                    }
+                }
+            }
+        };
+        let (mut at_borders, mut at_middles) = ([0usize; 8], [0usize; 8]);
+        for seed in 0..16 {
+            let x = coords(
+                &PoissonDisk::new(2, r)
+                    .unwrap()
+                    .torus(torus)
+                    .seed(seed)
+                    .generate()
+                    .unwrap(),
+            );
+            profile(&borders, &x, &mut at_borders);
+            profile(&middles, &x, &mut at_middles);
+        }
+        let control = at_middles.iter().sum::<usize>() as f64 / (8 * middles.len()) as f64;
+        let ratio: Vec<f64> = at_borders
+            .iter()
+            .map(|&c| c as f64 / borders.len() as f64 / control)
+            .collect();
+        eprintln!("torus {torus}: density across tile borders / control {ratio:.3?}");
+        for (i, v) in ratio.iter().enumerate() {
+            assert!(
+                (v - 1.0).abs() < 0.05,
+                "torus {torus}: strip {i} density ratio {v} ({ratio:?})"
+            );
+        }
+    }
+}
+
+/// The largest distance from a probe of a grid of spacing r/2 to its nearest sample
+/// (buckets of side at least 2r; distances past 2r are reported as 2r).
+fn largest_gap(x: &[f64], r: f64, torus: bool) -> f64 {
+    let b = (1.0 / (2.0 * r)).floor() as usize;
+    let mut buckets = vec![Vec::new(); b * b];
+    let at = |v: f64| ((v * b as f64) as usize).min(b - 1);
+    for p in x.chunks_exact(2) {
+        buckets[at(p[1]) * b + at(p[0])].push([p[0], p[1]]);
+    }
+    let m = (2.0 / r) as usize;
+    let mut worst = 0.0f64;
+    for py in 0..m {
+        for px in 0..m {
+            let q = [(px as f64 + 0.5) / m as f64, (py as f64 + 0.5) / m as f64];
+            let (cx, cy) = (at(q[0]) as i64, at(q[1]) as i64);
+            let mut best = 4.0 * r * r;
+            for dy in -1..=1 {
+                for dx in -1..=1 {
+                    let (bx, by) = (cx + dx, cy + dy);
+                    let (bx, by) = if torus {
+                        (bx.rem_euclid(b as i64), by.rem_euclid(b as i64))
+                    } else if bx < 0 || by < 0 || bx >= b as i64 || by >= b as i64 {
+                        continue;
+                    } else {
+                        (bx, by)
+                    };
+                    for p in &buckets[by as usize * b + bx as usize] {
+                        best = best.min(dist2(&q, p, torus));
+                    }
+                }
+            }
+            worst = worst.max(best.sqrt());
+        }
+    }
+    worst
+}
+
+#[test]
+fn tiled_poisson_sets_leave_no_holes() {
+    // Bridson's front reaches everywhere: no probe is 2r or farther from every sample (a
+    // tile whose front was starved would leave a hole of many r).
+    let r = 0.004;
+    for torus in [false, true] {
+        for seed in 0..8 {
+            let s = PoissonDisk::new(2, r).unwrap().torus(torus).seed(seed);
+            let worst = largest_gap(&coords(&s.generate().unwrap()), r, torus);
+            assert!(worst < 2.0 * r, "torus {torus} seed {seed}: gap {worst}");
+        }
+    }
+}
+
+#[test]
+#[ignore = "10^6 points: a long check"]
+fn million_point_poisson_sets_leave_no_holes() {
+    // The sets of the speed comparison (r = 0.00078, unit square, seeds 1 and 2).
+    let r = 0.00078;
+    for seed in 1..=2 {
+        let s = PoissonDisk::new(2, r)
+            .unwrap()
+            .seed(seed)
+            .generate()
+            .unwrap();
+        let nr2 = s.count() as f64 * r * r;
+        assert!((0.61..0.62).contains(&nr2), "seed {seed}: N r^2 = {nr2}");
+        let worst = largest_gap(&coords(&s), r, false);
+        assert!(worst < 2.0 * r, "seed {seed}: gap {worst}");
+    }
+}
+
+#[test]
+fn poisson_sets_do_not_depend_on_the_thread_count() {
+    let make = || {
+        PoissonDisk::new(2, 0.003)
+            .unwrap()
+            .torus(true)
+            .seed(11)
+            .generate()
+            .unwrap()
+    };
+    let one = rayon::ThreadPoolBuilder::new()
+        .num_threads(1)
+        .build()
+        .unwrap()
+        .install(make);
+    let three = rayon::ThreadPoolBuilder::new()
+        .num_threads(3)
+        .build()
+        .unwrap()
+        .install(make);
+    assert_eq!(one, three);
+}
+
 #[test]
 fn bridson_density_matches_the_literature() {
     // N r^2 about 0.61 in 2D with k = 30 (SciPy's qmc.PoissonDisk: 0.608 to 0.625).
