@@ -244,7 +244,7 @@ pub(crate) fn bridson_tiled(grid: &mut Grid<2>, k: u32, seed: u64) -> bool {
 }
 
 /// The private copy of a tile's cells (with halo) and its free test.
-struct Copy {
+struct TileCopy {
     /// The cells in `f64`, unwrapped into the tile's frame; empty cells hold [`SENTINEL`].
     cells: Vec<[f64; 2]>,
     /// Index differences of the neighbour cells, nearest first, and the ends of the
@@ -255,7 +255,7 @@ struct Copy {
     r2: f64,
 }
 
-impl Copy {
+impl TileCopy {
     /// Stores the free point `p` (unwrapped) in cell `at`.
     fn place(&mut self, at: usize, p: [f64; 2]) {
         if let Some(c) = self.cells.get_mut(at) {
@@ -430,7 +430,7 @@ fn grow(ctx: &Context, job: &Job) -> Grown {
         .map(|&m| ctx.offsets.iter().filter(|o| norm2(o) <= m).count())
         .collect();
     let ru = ctx.grid.r * SCALE;
-    let mut copy = Copy {
+    let mut copy = TileCopy {
         cells,
         deltas,
         ends,
@@ -450,7 +450,7 @@ fn grow(ctx: &Context, job: &Job) -> Grown {
     let mut active: Vec<[u32; 2]> = job.active.clone();
     // Places `p` if free: a centre of this loop (in this tile or a finished one) or an
     // active point of a later tile.
-    let try_place = |copy: &mut Copy, out: &mut Grown, active: &mut Vec<[u32; 2]>, p| {
+    let try_place = |copy: &mut TileCopy, out: &mut Grown, active: &mut Vec<[u32; 2]>, p| {
         let Spot::Near {
             at,
             unwrapped,
