@@ -138,9 +138,6 @@ struct Context<'a> {
     k: u32,
     seed: u64,
     shell: Shell<2>,
-    /// Offsets (dx, dy) of the neighbour cells, nearest first, and their largest entry.
-    offsets: Vec<[i64; 2]>,
-    reach: usize,
     /// The margin around a tile where its loop places points, in cells.
     margin: usize,
     phase: usize,
@@ -156,8 +153,6 @@ pub(crate) fn bridson_tiled(grid: &mut Grid<2>, k: u32, seed: u64) -> bool {
         return false;
     };
     let n = layout.n;
-    let offsets = grid.neighbour_offsets().to_vec();
-    let reach = grid.reach();
     let margin = (2.0 * grid.r * grid.g as f64).ceil() as usize;
     let mut deferred: Vec<Deferred> = Vec::new();
     let mut spilled: Vec<[u32; 2]> = Vec::new();
@@ -221,8 +216,6 @@ pub(crate) fn bridson_tiled(grid: &mut Grid<2>, k: u32, seed: u64) -> bool {
                 k,
                 seed,
                 shell: Shell::<2>::new(grid.r * SCALE),
-                offsets: offsets.clone(),
-                reach,
                 margin,
                 phase,
             };
@@ -395,7 +388,7 @@ impl Frame {
 fn grow(ctx: &Context, job: &Job) -> Grown {
     let layout = ctx.layout;
     let g = layout.g;
-    let halo = ctx.margin + ctx.reach + 1;
+    let halo = ctx.margin + ctx.grid.reach() + 1;
     let (x_lo, x_hi) = (layout.start(job.tx), layout.start(job.tx + 1));
     let (y_lo, y_hi) = (layout.start(job.ty), layout.start(job.ty + 1));
     let frame = Frame {
@@ -417,8 +410,8 @@ fn grow(ctx: &Context, job: &Job) -> Grown {
             cells.push(p);
         }
     }
-    let deltas = ctx
-        .offsets
+    let offsets = ctx.grid.neighbour_offsets();
+    let deltas = offsets
         .iter()
         .map(|o| (o[0] + o[1] * width as i64) as isize)
         .collect();
@@ -427,7 +420,7 @@ fn grow(ctx: &Context, job: &Job) -> Grown {
     let norm2 = |o: &[i64; 2]| o[0] * o[0] + o[1] * o[1];
     let ends = [1, 2, i64::MAX]
         .iter()
-        .map(|&m| ctx.offsets.iter().filter(|o| norm2(o) <= m).count())
+        .map(|&m| offsets.iter().filter(|o| norm2(o) <= m).count())
         .collect();
     let ru = ctx.grid.r * SCALE;
     let mut copy = TileCopy {
