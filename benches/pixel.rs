@@ -13,9 +13,10 @@
 //! * `sobol_burley_sample_4d`: `sobol_burley::sample_4d(i, 0, seed)`;
 //! * `openqmc_sampler_domain`: openqmc-rs, `draw_sample_f32::<4>()` of one domain.
 //!
-//! A second group generates 65,536 PMJ02 points ([`qmckit::pmj::fill`], stochastic) and
-//! PMJ02BN points ([`qmckit::pmj::bn::fill`], Christensen's construction with 1 and with
-//! 100 best-candidate trials a point, pmj-cpp's `GetPMJ02Samples` and
+//! A second group generates 65,536 points: PMJ02 ([`qmckit::pmj::fill`], stochastic),
+//! PMJ02BN ([`qmckit::pmj::bn::fill`], PMJ02 then nested-flip spreading), and
+//! Christensen's construction ([`qmckit::pmj::christensen::fill`]) with 1 and with 100
+//! best-candidate trials a point (pmj-cpp's `GetPMJ02Samples` and
 //! `GetPMJ02SamplesWithBlueNoise`).
 //! Run: `cargo bench --bench pixel -- --measurement-time 2 --warm-up-time 1`.
 
@@ -143,14 +144,23 @@ fn pixels(c: &mut Criterion) {
         })
     });
     let mut work = vec![0u32; qmckit::pmj::bn::workspace_len(65_536).expect("small")];
+    group.bench_function("qmckit_pmj02bn", |bch| {
+        let mut out = vec![[0u32; 2]; 65_536];
+        bch.iter(|| {
+            qmckit::pmj::bn::fill(black_box(7), &mut out, &mut work).expect("length");
+            black_box(&mut out);
+        })
+    });
+    let mut work = vec![0u32; qmckit::pmj::christensen::workspace_len(65_536).expect("small")];
     for (name, k) in [
         ("qmckit_pmj02_christensen_k1", 1),
-        ("qmckit_pmj02bn_k100", 100),
+        ("qmckit_pmj02_christensen_k100", 100),
     ] {
         group.bench_function(name, |bch| {
             let mut out = vec![[0u32; 2]; 65_536];
             bch.iter(|| {
-                qmckit::pmj::bn::fill(black_box(7), k, &mut out, &mut work).expect("length");
+                qmckit::pmj::christensen::fill(black_box(7), k, &mut out, &mut work)
+                    .expect("length");
                 black_box(&mut out);
             })
         });

@@ -30,21 +30,19 @@ const fn tile_log2(spp: u32) -> Result<(u32, u32)> {
 }
 
 /// The two tables a [`Pmj02BnPixels`] reads: fills `table` (`TABLE_LEN` points) with the
-/// PMJ02BN sequence of `seed` ([`bn::fill`], `candidates` trials a point) and `tile`
+/// PMJ02BN sequence of `seed` ([`bn::fill`]) and `tile`
 /// (`TABLE_LEN` entries) with the same points bucketed by pixel: with `T = 2^(8 -
 /// log4 spp')`, `spp' = RoundUpPow4(spp)`, the `T x T` pixels of a tile each get exactly the
 /// `spp'` points of the table that fall in them (a (0, 16, 2)-net puts that many in each
 /// cell of side `1/T`), in table order, as positions in the pixel (`frac(T p)`), pixel
 /// `(x, y)` at entries `(y T + x) spp' ..`. `work` is scratch of [`bn::workspace_len`]`(TABLE_LEN)`
-/// words. Cost: that of [`bn::fill`] for 65,536 points (tens of milliseconds with 100
-/// candidates) plus one pass.
+/// words. Cost: that of [`bn::fill`] for 65,536 points plus one pass.
 ///
 /// # Errors
 /// [`Error::BufferLength`] for a `table` or `tile` not of [`TABLE_LEN`] entries or a
 /// short `work`; as [`bn::fill`]; [`Error::TooLarge`] for `spp > 65536`.
 pub fn build_tables(
     seed: u64,
-    candidates: u32,
     spp: u32,
     table: &mut [[u32; 2]],
     tile: &mut [[u32; 2]],
@@ -59,7 +57,7 @@ pub fn build_tables(
             });
         }
     }
-    bn::fill(seed, candidates, table, work)?;
+    bn::fill(seed, table, work)?;
     let cells = 1usize << (2 * tb);
     let per = 1u32 << (2 * log4);
     let counts = work.get_mut(..cells).ok_or(Error::BufferLength {
@@ -125,7 +123,7 @@ const fn blue_noise(seed: u32, t: u32, x: u32, y: u32) -> u32 {
 /// use qmckit::pixel::{PixelSampler, Pmj02BnPixels, pmj02bn};
 /// let (mut table, mut tile) = (vec![[0u32; 2]; 65536], vec![[0u32; 2]; 65536]);
 /// let mut work = vec![0u32; qmckit::pmj::bn::workspace_len(65536)?];
-/// pmj02bn::build_tables(0, 4, 16, &mut table, &mut tile, &mut work)?;
+/// pmj02bn::build_tables(0, 16, &mut table, &mut tile, &mut work)?;
 /// let s = Pmj02BnPixels::new(100, 100, 16, 0, &table, &tile)?;
 /// let mut cols = [false; 16];
 /// for i in 0..16 {
@@ -246,8 +244,8 @@ pub struct Pmj02BnTables {
 
 #[cfg(feature = "std")]
 impl Pmj02BnTables {
-    /// [`build_tables`] for `spp` samples a pixel with [`bn::DEFAULT_CANDIDATES`], into
-    /// new buffers (1 MiB of tables, 7 MiB of scratch while building).
+    /// [`build_tables`] for `spp` samples a pixel, into
+    /// new buffers (1 MiB of tables, 2 MiB of scratch while building).
     ///
     /// # Errors
     /// As [`build_tables`]; an allocation failure as [`crate::size::vec_zeroed`].
@@ -255,14 +253,7 @@ impl Pmj02BnTables {
         let mut table = crate::size::vec_zeroed::<[u32; 2]>(TABLE_LEN)?;
         let mut tile = crate::size::vec_zeroed::<[u32; 2]>(TABLE_LEN)?;
         let mut work = crate::size::vec_zeroed::<u32>(bn::workspace_len(TABLE_LEN)?)?;
-        build_tables(
-            seed,
-            bn::DEFAULT_CANDIDATES,
-            spp,
-            &mut table,
-            &mut tile,
-            &mut work,
-        )?;
+        build_tables(seed, spp, &mut table, &mut tile, &mut work)?;
         Ok(Pmj02BnTables { spp, table, tile })
     }
 

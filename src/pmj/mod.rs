@@ -18,8 +18,8 @@
 //! * [`fill`]: the first `n` points into caller-provided storage (for `no_std`), `O(1)` a
 //!   point (each point reads its parent from the buffer).
 //!
-//! The best-candidate variant PMJ02BN is in [`bn`] (Christensen's construction, which
-//! leaves the strata free for the candidates to choose).
+//! The blue-noise variant PMJ02BN is in [`bn`]: these points, spread apart by nested flips
+//! ([`spread`]). Christensen's best-candidate construction is in [`christensen`].
 //!
 //! The jitter of point `k` in dimension `d` is the top bits of
 //! [`crate::hash::uniform`]`(seed, k, d)`.
@@ -39,10 +39,30 @@
 //! ```
 
 pub mod bn;
+pub mod christensen;
+pub mod spread;
 
 use crate::error::{Error, Result};
 use crate::hash::uniform;
 use crate::sampler::{FULL_RANGE, Sampler, check, check_fill};
+
+/// `log2` of the smallest power of two `>= n` (`0` for `n <= 1`).
+pub(crate) const fn ceil_log2(n: usize) -> u32 {
+    if n <= 1 {
+        0
+    } else {
+        usize::BITS - (n - 1).leading_zeros()
+    }
+}
+
+/// The top `b` bits of a 0.32 fraction (`b <= 32`; `0` for `b = 0`).
+#[inline]
+pub(crate) const fn top(v: u32, b: u32) -> u32 {
+    match v.checked_shr(32 - b) {
+        Some(t) if b > 0 => t,
+        _ => 0,
+    }
+}
 
 /// Unsigned Stirling numbers of the first kind mod 2, `s(n, k)` for `n, k <= 33`, row `n`
 /// as a bit mask over `k` (`s(n + 1, k) = n s(n, k) + s(n, k - 1)`).

@@ -29,7 +29,8 @@ pub struct BlueNoiseArgs {
     /// gaussian-blue-noise: gradient-descent iterations [default: 500].
     #[arg(long, value_name = "I")]
     pub iterations: Option<u32>,
-    /// The time budget of the blue-noise sets ('inf': no limit) [default: 10].
+    /// The time budget of the blue-noise sets and of pmj02bn ('inf': no limit)
+    /// [default: 10].
     #[arg(long, value_name = "SECONDS")]
     pub max_seconds: Option<f64>,
 }
@@ -46,22 +47,24 @@ pub enum Kind {
 }
 
 impl BlueNoiseArgs {
-    /// The first blue-noise option given, for refusing it on other samplers.
-    pub fn first_given(&self) -> Option<&'static str> {
+    /// The first blue-noise option given, for refusing it on other samplers; `budgeted`
+    /// samplers (pmj02bn) take `--max-seconds`.
+    pub fn first_given(&self, budgeted: bool) -> Option<&'static str> {
         [
             ("--radius", self.radius.is_some()),
             ("--torus", self.torus),
             ("--maximal", self.maximal),
             ("--candidates", self.candidates.is_some()),
             ("--iterations", self.iterations.is_some()),
-            ("--max-seconds", self.max_seconds.is_some()),
+            ("--max-seconds", self.max_seconds.is_some() && !budgeted),
         ]
         .into_iter()
         .find(|(_, given)| *given)
         .map(|(name, _)| name)
     }
 
-    fn budget(&self) -> Result<Budget, Failure> {
+    /// The time budget `--max-seconds` sets.
+    pub fn budget(&self) -> Result<Budget, Failure> {
         let s = self.max_seconds.unwrap_or(DEFAULT_SECONDS);
         Budget::seconds(s).map_err(|_| {
             Failure::usage(format!(

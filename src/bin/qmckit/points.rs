@@ -215,6 +215,8 @@ pub struct Spec {
     pub vector: Option<std::path::PathBuf>,
     /// Lattice: a Korobov parameter.
     pub korobov: Option<u64>,
+    /// The time budget of sets built whole at super-linear cost (pmj02bn).
+    pub budget: qmckit::analysis::budget::Budget,
 }
 
 impl Spec {
@@ -240,6 +242,7 @@ impl Spec {
             centered: false,
             vector: None,
             korobov: None,
+            budget: qmckit::analysis::budget::Budget::DEFAULT,
         }
     }
 }
@@ -307,6 +310,7 @@ impl PointsArgs {
             centered: self.centered,
             vector: self.vector.clone(),
             korobov: self.korobov,
+            budget: self.blue.budget()?,
         })
     }
 }
@@ -483,7 +487,7 @@ fn construct(args: &Spec, digits: DigitScramble) -> Result<Built, Failure> {
                     "pmj02bn is two-dimensional: -d must be 2, got {d}"
                 )));
             }
-            Box::new(pmj02bn_set(total, args.seed)?)
+            Box::new(pmj02bn_set(total, args.seed, args.budget)?)
         }
         SamplerName::Halton => Box::new(Halton::with_scramble(d, digits)?),
         SamplerName::Vdc => {
@@ -575,9 +579,15 @@ pub fn run(args: &PointsArgs) -> Result<(), Failure> {
     if let Some(kind) = args.sampler.blue_noise() {
         return args.run_blue_noise(kind);
     }
-    if let Some(option) = args.blue.first_given() {
+    let budgeted = args.sampler == SamplerName::Pmj02bn;
+    if let Some(option) = args.blue.first_given(budgeted) {
+        let to = if option == "--max-seconds" {
+            "poisson, best-candidate, gaussian-blue-noise, pmj02bn"
+        } else {
+            "poisson, best-candidate, gaussian-blue-noise"
+        };
         return Err(Failure::usage(format!(
-            "{option} does not apply to {} (only to poisson, best-candidate, gaussian-blue-noise)",
+            "{option} does not apply to {} (only to {to})",
             value_name(&args.sampler)
         )));
     }
@@ -700,22 +710,28 @@ pub fn samples_u32(spec: &Spec) -> Result<(Vec<u32>, usize), Failure> {
     Ok((buf, dims))
 }
 
-/// The first `n` points of the PMJ02BN sequence of `seed` (100 candidates a point), as a
-/// point set: `O(n log n + 100 n)`, estimated and refused past the default time budget,
+/// The first `n` points of the PMJ02BN sequence of `seed` (PMJ02 spread by nested flips),
+/// as a point set: `O(n log n)`, estimated and refused past `budget` (`--max-seconds`),
 /// memory checked by `size::vec_zeroed`.
-fn pmj02bn_set(n: u64, seed: u64) -> Result<qmckit::blue_noise::PointSet, Failure> {
-    use qmckit::analysis::budget::{Budget, Cost, Rate};
+fn pmj02bn_set(
+    n: u64,
+    seed: u64,
+    budget: qmckit::analysis::budget::Budget,
+) -> Result<qmckit::blue_noise::PointSet, Failure> {
+    use qmckit::analysis::budget::{Cost, Rate};
     use qmckit::pmj::bn;
     let len = usize::try_from(n).unwrap_or(usize::MAX);
     let work_len = bn::workspace_len(len)?;
-    // About 10 M candidate distance searches a second on one loaded core (measured 2026-12).
-    let steps = n as f64 * (bn::DEFAULT_CANDIDATES as f64 + 2.0 * (n.max(2) as f64).log2());
-    Budget::DEFAULT
-        .check("pmj02bn points", Cost::steps(steps, Rate::per_second(1e7)))
+    // The spread evaluates about 60 K kernels a point (K = log2 n), 1e8 a second on one
+    // loaded core.
+    let k = (n.max(2) as f64).log2().ceil();
+    let steps = n as f64 * 60.0 * k;
+    budget
+        .check("pmj02bn points", Cost::steps(steps, Rate::per_second(1e8)))
         .map_err(|e| Failure::usage(super::budget::over_budget(e)))?;
     let mut pts = qmckit::size::vec_zeroed::<[u32; 2]>(len)?;
     let mut work = qmckit::size::vec_zeroed::<u32>(work_len)?;
-    bn::fill(seed, bn::DEFAULT_CANDIDATES, &mut pts, &mut work)?;
+    bn::fill(seed, &mut pts, &mut work)?;
     Ok(qmckit::blue_noise::PointSet::new(
         pts.into_iter().flatten().collect(),
         2,

@@ -147,15 +147,23 @@ pub fn pmj<W: Write>(out: &mut W) -> fmt::Result {
     pmj02bn(out)
 }
 
-/// PMJ02BN (best candidate, Christensen's construction) in caller storage: 256 points with
-/// 8 candidates, a few points and a digest.
+/// PMJ02BN (PMJ02 spread by nested flips) in caller storage: 128 points (1 KiB, and
+/// 4 KiB of workspace: the micro:bit has 16 KiB of RAM), a few points and a digest; Christensen's best-candidate construction, 8 candidates, likewise.
 fn pmj02bn<W: Write>(out: &mut W) -> fmt::Result {
-    use qmckit::pmj::bn;
-    let mut pts = [[0u32; 2]; 256];
-    let mut work = [0u32; 400];
-    match bn::fill(black_box(5), 8, &mut pts, &mut work) {
+    use qmckit::pmj::{bn, christensen};
+    let mut pts = [[0u32; 2]; 128];
+    let mut work = [0u32; 1016];
+    match christensen::fill(black_box(5), 8, &mut pts, &mut work) {
         Ok(()) => {
-            for k in [0usize, 1, 2, 3, 17, 255] {
+            let mut d = Digest::new();
+            pts.iter().for_each(|q| d.push_all(q));
+            writeln!(out, "pmj02 best candidate seed 5 128 digest {d}")?;
+        }
+        Err(_) => writeln!(out, "pmj02 best candidate: error")?,
+    }
+    match bn::fill(black_box(5), &mut pts, &mut work) {
+        Ok(()) => {
+            for k in [0usize, 1, 2, 3, 17, 127] {
                 writeln!(
                     out,
                     "pmj02bn seed 5 #{k}: {:08x} {:08x}",
@@ -164,13 +172,13 @@ fn pmj02bn<W: Write>(out: &mut W) -> fmt::Result {
             }
             let mut d = Digest::new();
             pts.iter().for_each(|q| d.push_all(q));
-            writeln!(out, "pmj02bn seed 5 256 digest {d}")?;
+            writeln!(out, "pmj02bn seed 5 128 digest {d}")?;
         }
         Err(_) => writeln!(out, "pmj02bn: error")?,
     }
     writeln!(
         out,
         "pmj02bn short work: {}",
-        Res(bn::fill(5, 8, &mut pts, &mut work[..10]).map(|_| 0))
+        Res(bn::fill(5, &mut pts, &mut work[..10]).map(|_| 0))
     )
 }
