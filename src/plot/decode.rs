@@ -197,20 +197,40 @@ fn decode_text(text: &str) -> Result<Decoded, PlotError> {
     Ok((w, rows, v))
 }
 
+/// One block of a measurement table: its rows, and the name a `# label: NAME` line gave it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Block {
+    /// The block's name, if a `# label:` line gave one.
+    pub label: Option<String>,
+    /// Rows of numbers.
+    pub rows: Vec<Vec<f64>>,
+}
+
 /// Rows of numbers from a measurement table: lines not starting with `#`, split on
 /// whitespace, each with at least `min_columns` finite numbers. Blocks separated by
-/// `# set K` lines are kept apart (`qmckit spectrum` with several sets): the result has one
-/// entry per block.
+/// `# set K` or `# mean ...` lines (`qmckit spectrum` with several sets) or by lines holding
+/// only `#` are kept apart: the result has one entry per block. A `# label: NAME` line names
+/// the block it is in.
 ///
 /// # Errors
 /// A [`PlotError`] for a line that is not numbers, a short line, or no rows at all.
-pub fn parse_table(text: &str, min_columns: usize) -> Result<Vec<Vec<Vec<f64>>>, PlotError> {
-    let mut blocks: Vec<Vec<Vec<f64>>> = vec![Vec::new()];
+pub fn parse_blocks(text: &str, min_columns: usize) -> Result<Vec<Block>, PlotError> {
+    let empty = || Block {
+        label: None,
+        rows: Vec::new(),
+    };
+    let mut blocks = vec![empty()];
     for (k, line) in text.lines().enumerate() {
         let line = line.trim();
-        if line.starts_with("# set") || line.starts_with("# mean") {
-            if !blocks.last().is_some_and(Vec::is_empty) {
-                blocks.push(Vec::new());
+        if line == "#" || line.starts_with("# set") || line.starts_with("# mean") {
+            if !blocks.last().is_some_and(|b| b.rows.is_empty()) {
+                blocks.push(empty());
+            }
+            continue;
+        }
+        if let Some(name) = line.strip_prefix("# label:") {
+            if let Some(b) = blocks.last_mut() {
+                b.label = Some(name.trim().to_owned());
             }
             continue;
         }
@@ -230,12 +250,23 @@ pub fn parse_table(text: &str, min_columns: usize) -> Result<Vec<Vec<Vec<f64>>>,
             )));
         }
         if let Some(b) = blocks.last_mut() {
-            b.push(row);
+            b.rows.push(row);
         }
     }
-    blocks.retain(|b| !b.is_empty());
+    blocks.retain(|b| !b.rows.is_empty());
     if blocks.is_empty() {
         return Err(err("the input holds no rows of numbers"));
     }
     Ok(blocks)
+}
+
+/// The rows of [`parse_blocks`], without the labels.
+///
+/// # Errors
+/// As [`parse_blocks`].
+pub fn parse_table(text: &str, min_columns: usize) -> Result<Vec<Vec<Vec<f64>>>, PlotError> {
+    Ok(parse_blocks(text, min_columns)?
+        .into_iter()
+        .map(|b| b.rows)
+        .collect())
 }

@@ -45,7 +45,7 @@ mod spectrum;
 pub use backend::{Figure, Format, MAX_ELEMENTS, PlotError, render};
 pub use colour::{grey, viridis};
 pub use convergence::{ConvergenceFigure, Curve};
-pub use decode::{Decoded, decode_image, parse_table};
+pub use decode::{Block, Decoded, decode_image, parse_blocks, parse_table};
 pub use image::{ColourMap, ImageFigure};
 pub use points::{Domain, PointsFigure};
 pub use spectrum::{RadialFigure, SpectrumFigure};

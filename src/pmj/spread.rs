@@ -31,7 +31,9 @@
 //! coordinates, where the neighbours of a point are the points of the `3 x 3` cells around
 //! it (`3 x 5` for odd `k`, whose cells are shorter than `R_k`), and the `2^k` strata of x
 //! and of y (point indices), where a flipped column's points are one run. A column wider than a cell swaps its halves
-//! rigidly, so only its points within `R_k` of the halves' edges are visited.
+//! rigidly, so only its points within `R_k` of the halves' edges are visited; a flip that
+//! keeps every point in its cell is scored before and after in one pass, without applying
+//! it.
 //!
 //! Cost: `O(K n)` kernel evaluations for `n` points, `K = ceil(log2 n)`, integer
 //! arithmetic only (timings in docs/pixel-samplers.md). Storage: the caller's
@@ -233,15 +235,12 @@ impl Prefix {
         }
     }
 
-    /// Twice the energy between point `i` and its neighbours in this prefix, counting the
-    /// pairs inside `flip`'s column once and the others twice (so that summing over the
-    /// column's points counts every pair the flip can change exactly twice).
-    fn energy(&self, work: &[u32], p: [u32; 2], flip: Flip) -> u64 {
+    /// Calls `f` with every point of this prefix in the square-grid cells around `p`'s
+    /// (within the kernel's reach), other than `p`.
+    #[inline]
+    fn for_each_neighbour<F: FnMut(&[u32; 2])>(&self, work: &[u32], p: [u32; 2], mut f: F) {
         let sq = self.square();
         let cells = self.coords(work);
-        let r2 = 1u64 << (64 - self.k);
-        // The kernel's fraction keeps 16 bits: (R^2 - r^2) / R^2 in 0.16.
-        let shift = 48 - self.k;
         let reach = self.reach();
         let mut lo = [0u32; 2];
         let mut span = [0u32; 2];
@@ -255,25 +254,70 @@ impl Prefix {
                 lo[ax] = top(p[ax], sq.bits[ax]).wrapping_sub(reach[ax]) & (side - 1);
             }
         }
-        let mut sum = 0u64;
         for oy in 0..span[1] {
             let cy = (lo[1] + oy) & ((1u32 << sq.bits[1]) - 1);
             for ox in 0..span[0] {
                 let cx = (lo[0] + ox) & ((1u32 << sq.bits[0]) - 1);
                 let q = &cells[sq.cell([cx, cy])];
-                if *q == p || *q == [EMPTY; 2] {
-                    continue;
-                }
-                let (dx, dy) = (wrap(p[0], q[0]), wrap(p[1], q[1]));
-                let d2 = dx * dx + dy * dy;
-                if d2 < r2 {
-                    let u = (r2 - d2) >> shift;
-                    let w = (u * u) >> 8;
-                    sum += if flip.holds(q) { w } else { 2 * w };
+                if *q != p && *q != [EMPTY; 2] {
+                    f(q);
                 }
             }
         }
+    }
+
+    /// The kernel `(1 - r^2 / R_k^2)^2` of two points, in 0.24 fixed point (0 past `R_k`).
+    #[inline]
+    fn kernel(&self, p: &[u32; 2], q: &[u32; 2]) -> u64 {
+        let r2 = 1u64 << (64 - self.k);
+        let (dx, dy) = (wrap(p[0], q[0]), wrap(p[1], q[1]));
+        let d2 = dx * dx + dy * dy;
+        if d2 < r2 {
+            // The fraction keeps 16 bits: (R^2 - r^2) / R^2 in 0.16.
+            let u = (r2 - d2) >> (48 - self.k);
+            (u * u) >> 8
+        } else {
+            0
+        }
+    }
+
+    /// Twice the energy between `p` and its neighbours in this prefix, counting the pairs
+    /// inside `flip`'s column once and the others twice (so that summing over the column's
+    /// points counts every pair the flip can change exactly twice).
+    fn energy(&self, work: &[u32], p: [u32; 2], flip: Flip) -> u64 {
+        let mut sum = 0u64;
+        self.for_each_neighbour(work, p, |q| {
+            let w = self.kernel(&p, q);
+            sum += if flip.holds(q) { w } else { 2 * w };
+        });
         sum
+    }
+
+    /// [`Self::energy`] of `p` before and after `flip`, in one pass, for a flip that moves
+    /// no point out of its cell of the square grid: after it, `p` and its neighbours in the
+    /// column have the flipped bit complemented, the others are where they were.
+    fn energy_pair(&self, work: &[u32], p: [u32; 2], flip: Flip) -> (u64, u64) {
+        let bit = 1u32 << (31 - flip.depth);
+        let mut moved = p;
+        moved[flip.axis] ^= bit;
+        let (mut before, mut after) = (0u64, 0u64);
+        self.for_each_neighbour(work, p, |q| {
+            if flip.holds(q) {
+                let mut q2 = *q;
+                q2[flip.axis] ^= bit;
+                before += self.kernel(&p, q);
+                after += self.kernel(&moved, &q2);
+            } else {
+                before += 2 * self.kernel(&p, q);
+                after += 2 * self.kernel(&moved, q);
+            }
+        });
+        (before, after)
+    }
+
+    /// Whether `flip` moves points between cells of this prefix's square grid.
+    const fn moves_cells(&self, flip: Flip) -> bool {
+        flip.depth < self.square().bits[flip.axis]
     }
 
     /// Fills this prefix's grids from the first `2^k` points.
@@ -328,17 +372,40 @@ impl Prefix {
     }
 }
 
-/// The weighted energy every prefix's points in `flip`'s column have: `sum_k 2^(K-k)` times
-/// each prefix's (each prefix weighs the same per point).
+/// The weighted energy every prefix's points in `flip`'s column have, over the prefixes
+/// whose square grid the flip rearranges: `sum_k 2^(K-k)` times each prefix's (each prefix
+/// weighs the same per point).
 fn column_energy(work: &[u32], pts: &[[u32; 2]], top_k: u32, flip: Flip) -> u64 {
     let mut total = 0u64;
     for k in flip.depth + 1..=top_k {
         let pre = Prefix { k };
-        let mut e = 0u64;
-        pre.for_each_in(work, flip, |i| e += pre.energy(work, pts[i as usize], flip));
-        total += e << (top_k - k);
+        if pre.moves_cells(flip) {
+            let mut e = 0u64;
+            pre.for_each_in(work, flip, |i| e += pre.energy(work, pts[i as usize], flip));
+            total += e << (top_k - k);
+        }
     }
     total
+}
+
+/// The weighted energies, before and after `flip`, over the other prefixes (those whose
+/// points the flip moves inside their cells), without applying it.
+fn column_energy_pair(work: &[u32], pts: &[[u32; 2]], top_k: u32, flip: Flip) -> (u64, u64) {
+    let (mut before, mut after) = (0u64, 0u64);
+    for k in flip.depth + 1..=top_k {
+        let pre = Prefix { k };
+        if !pre.moves_cells(flip) {
+            let (mut b, mut a) = (0u64, 0u64);
+            pre.for_each_in(work, flip, |i| {
+                let (eb, ea) = pre.energy_pair(work, pts[i as usize], flip);
+                b += eb;
+                a += ea;
+            });
+            before += b << (top_k - k);
+            after += a << (top_k - k);
+        }
+    }
+    (before, after)
 }
 
 /// Applies `flip` to the points and to every prefix's grids.
@@ -399,10 +466,17 @@ pub fn spread(pts: &mut [[u32; 2]], work: &mut [u32]) -> Result<()> {
         for axis in 0..2 {
             for q in 0..1u32 << depth {
                 let flip = Flip { axis, depth, q };
-                let before = column_energy(work, pts, top_k, flip);
-                apply(work, pts, top_k, flip);
-                let after = column_energy(work, pts, top_k, flip);
-                if after >= before {
+                // Prefixes whose cells the flip keeps: both energies in one pass. The
+                // others (the flip swaps their half-columns): before, apply, after.
+                let (mut before, mut after) = column_energy_pair(work, pts, top_k, flip);
+                if (Prefix { k: top_k }).moves_cells(flip) {
+                    before += column_energy(work, pts, top_k, flip);
+                    apply(work, pts, top_k, flip);
+                    after += column_energy(work, pts, top_k, flip);
+                    if after >= before {
+                        apply(work, pts, top_k, flip);
+                    }
+                } else if after < before {
                     apply(work, pts, top_k, flip);
                 }
             }

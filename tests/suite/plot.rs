@@ -5,7 +5,7 @@
 
 use qmckit::plot::{
     ConvergenceFigure, Curve, Format, ImageFigure, PointsFigure, SpectrumFigure, decode_image,
-    parse_table, render,
+    parse_blocks, parse_table, render,
 };
 use qmckit::{Sobol, bits};
 
@@ -148,6 +148,16 @@ fn images_decode_exactly() {
     assert!(parse_table("# n rmse\n", 2).is_err());
     let t = parse_table("# set 1\n1 2\n# set 2\n3 4\n", 2).unwrap();
     assert_eq!(t, vec![vec![vec![1.0, 2.0]], vec![vec![3.0, 4.0]]]);
+    // A bare '#' separates sets too (as every command's input does), and '# label:' names
+    // a set; a header after the separator does not open a third.
+    let b = parse_blocks(
+        "# label: a\n1 2\n#\n# mean of 2 sets\n# label: b\n3 4\n5 6\n",
+        2,
+    )
+    .unwrap();
+    assert_eq!(b.len(), 2);
+    assert_eq!((b[0].label.as_deref(), b[0].rows.len()), (Some("a"), 1));
+    assert_eq!((b[1].label.as_deref(), b[1].rows.len()), (Some("b"), 2));
 }
 
 fn pipe(producer: &[&str], plot: &[&str]) -> std::process::Output {

@@ -8,7 +8,7 @@ use clap::{Args, ValueEnum};
 use qmckit::analysis::pointfile::parse_point_sets;
 use qmckit::plot::{
     ColourMap, ConvergenceFigure, Curve, Domain, Figure, Format, ImageFigure, PlotError,
-    PointsFigure, RadialFigure, SpectrumFigure, decode_image, parse_table, render,
+    PointsFigure, RadialFigure, SpectrumFigure, decode_image, parse_blocks, parse_table, render,
 };
 
 use super::Failure;
@@ -25,7 +25,8 @@ Input (FILE, or standard input for '-' or none), by --kind (auto: from the first
   image        PGM (P2/P5), PNG, or text rows of numbers ('qmckit mask' output), with a
                colour bar
 auto reads '# kx ky', '# radius', '# n rmse' headers, PNG/PGM signatures, and points
-otherwise. Several sets (lines holding only '#') are drawn as separate curves (radial,
+otherwise. Several sets (split by lines holding only '#', or '# set K') are drawn as
+separate curves, named by a '# label: NAME' line in the set or 'set K' (radial,
 convergence), or the first is drawn (points, spectrum).
 
 --intervals AxB overlays the A x B grid of elementary intervals (A columns, B rows) and
@@ -263,14 +264,14 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
             draw(&fig, format, w, h, &name)?
         }
         Kind::Radial => {
-            let blocks = parse_table(text()?, 3).map_err(input)?;
+            let blocks = parse_blocks(text()?, 3).map_err(input)?;
             let curves = blocks
                 .iter()
                 .enumerate()
                 .map(|(i, b)| {
                     (
-                        format!("set {}", i + 1),
-                        b.iter().map(|r| (r[0], r[2])).collect(),
+                        curve_label(b, i),
+                        b.rows.iter().map(|r| (r[0], r[2])).collect(),
                     )
                 })
                 .collect();
@@ -282,13 +283,13 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
             draw(&fig, format, w, h, &name)?
         }
         Kind::Convergence => {
-            let blocks = parse_table(text()?, 2).map_err(input)?;
+            let blocks = parse_blocks(text()?, 2).map_err(input)?;
             let curves = blocks
                 .iter()
                 .enumerate()
                 .map(|(i, b)| Curve {
-                    label: format!("set {}", i + 1),
-                    points: b.iter().map(|r| (r[0], r[1])).collect(),
+                    label: curve_label(b, i),
+                    points: b.rows.iter().map(|r| (r[0], r[1])).collect(),
                 })
                 .collect();
             let fig = ConvergenceFigure::new(title("integration error"), curves);
@@ -320,4 +321,9 @@ fn draw<F: Figure>(
     name: &str,
 ) -> Result<Vec<u8>, Failure> {
     render(fig, format, w, h).map_err(|e| Failure::usage(format!("{name}: {e}")))
+}
+
+/// A curve's legend: the block's `# label:` or `set K`.
+fn curve_label(b: &qmckit::plot::Block, i: usize) -> String {
+    b.label.clone().unwrap_or_else(|| format!("set {}", i + 1))
 }
