@@ -68,7 +68,7 @@
 //! # Ok::<(), qmckit::Error>(())
 //! ```
 
-use super::{ceil_log2, top};
+use super::{ceil_log2, check_len, top};
 use crate::error::{Error, Result};
 use crate::hash::uniform;
 
@@ -93,11 +93,8 @@ const EMPTY: u32 = u32::MAX;
 /// # Errors
 /// [`Error::TooManyPoints`] past [`MAX_POINTS`].
 pub const fn workspace_len(n: usize) -> Result<usize> {
-    if n > MAX_POINTS {
-        return Err(Error::TooManyPoints {
-            requested: n as u64,
-            max: MAX_POINTS as u64,
-        });
+    if let Err(e) = check_len(n, MAX_POINTS) {
+        return Err(e);
     }
     if n == 0 {
         return Ok(0);

@@ -46,6 +46,18 @@ use crate::error::{Error, Result};
 use crate::hash::uniform;
 use crate::sampler::{FULL_RANGE, Sampler, check, check_fill};
 
+/// `n <= max` points, or [`Error::TooManyPoints`].
+pub(crate) const fn check_len(n: usize, max: usize) -> Result<()> {
+    if n > max {
+        Err(Error::TooManyPoints {
+            requested: n as u64,
+            max: max as u64,
+        })
+    } else {
+        Ok(())
+    }
+}
+
 /// `log2` of the smallest power of two `>= n` (`0` for `n <= 1`).
 pub(crate) const fn ceil_log2(n: usize) -> u32 {
     if n <= 1 {

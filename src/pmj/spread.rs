@@ -53,7 +53,7 @@
 //! # Ok::<(), qmckit::Error>(())
 //! ```
 
-use super::{ceil_log2, top};
+use super::{ceil_log2, check_len, top};
 use crate::error::{Error, Result};
 
 /// The longest sequence [`spread`] accepts, `2^30` points.
@@ -69,11 +69,8 @@ const EMPTY: u32 = u32::MAX;
 /// # Errors
 /// [`Error::TooManyPoints`] past [`MAX_POINTS`].
 pub const fn workspace_len(n: usize) -> Result<usize> {
-    if n > MAX_POINTS {
-        return Err(Error::TooManyPoints {
-            requested: n as u64,
-            max: MAX_POINTS as u64,
-        });
+    if let Err(e) = check_len(n, MAX_POINTS) {
+        return Err(e);
     }
     Ok(4 * table_offset(ceil_log2(n) + 1))
 }
@@ -109,7 +106,7 @@ impl Flip {
 }
 
 /// An elementary grid of `2^bits[0] x 2^bits[1]` cells, cell `(cx, cy)` at
-/// `cy 2^bits[0] + cx`, each holding the index of the point in it (or [`EMPTY`]).
+/// `cy 2^bits[0] + cx`, each holding the point in it (its index or its coordinates).
 #[derive(Clone, Copy)]
 struct Grid {
     bits: [u32; 2],
@@ -153,7 +150,9 @@ impl Grid {
 /// of x and of y (point indices), where the points of a flipped column are one run of
 /// cells and a flip swaps its two halves, and the near-square `2^floor(k/2) x
 /// 2^ceil(k/2)` grid the neighbours are found in, holding the points' coordinates (so a
-/// neighbour search reads neighbouring memory). An empty cell holds `[EMPTY, EMPTY]`.
+/// neighbour search reads neighbouring memory). An empty cell holds `[EMPTY, EMPTY]` (a point
+/// exactly there, probability `2^-64` for uniform jitter, would be taken for an empty
+/// cell: it is left out of the energy, which only weakens the spacing, never the nets).
 struct Prefix {
     k: u32,
 }
@@ -209,14 +208,27 @@ impl Prefix {
         [1, 1 + (self.k & 1)]
     }
 
+    /// The strata of the flip's axis that hold this prefix's points in `flip`'s column: a
+    /// run of `2^(k-d)`, or the one stratum that contains a column narrower than a stratum
+    /// (its point may lie outside the column: see [`Flip::holds`]).
+    const fn run(&self, flip: Flip) -> core::ops::Range<usize> {
+        if flip.depth < self.k {
+            let first = (flip.q as usize) << (self.k - flip.depth);
+            first..first + (1 << (self.k - flip.depth))
+        } else {
+            let s = (flip.q >> (flip.depth - self.k)) as usize;
+            s..s + 1
+        }
+    }
+
     /// The points of this prefix in `flip`'s column whose energy the flip can change. When
     /// the column is wider than a cell of the square grid, its two halves swap rigidly, so
     /// only pairs with a point within the kernel's reach of a half's edges change: only
     /// the square grid's columns at those edges are visited.
     fn for_each_in<F: FnMut(u32)>(&self, work: &[u32], flip: Flip, mut f: F) {
         let strata = self.strata(work, flip.axis);
-        let half = 1usize << (self.k - flip.depth - 1);
-        let first = (flip.q as usize) << (self.k - flip.depth);
+        let run = self.run(flip);
+        let (first, half) = (run.start, run.len() / 2);
         let w = (self.reach()[flip.axis] as usize) << (self.k - self.square().bits[flip.axis]);
         let mut visit = |r: core::ops::Range<usize>| {
             for &i in &strata[r] {
@@ -353,16 +365,7 @@ impl Prefix {
         self.strata_grid(flip.axis).apply(strata, flip);
         let square = self.square();
         square.apply(sq, flip);
-        // The moved points: a run of strata, or at most one point when the column is
-        // narrower than a stratum.
-        let run = if flip.depth < self.k {
-            let first = (flip.q as usize) << (self.k - flip.depth);
-            first..first + (1 << (self.k - flip.depth))
-        } else {
-            let s = (flip.q >> (flip.depth - self.k)) as usize;
-            s..s + 1
-        };
-        for &i in &strata[run] {
+        for &i in &strata[self.run(flip)] {
             if let Some(p) = pts.get(i as usize)
                 && flip.holds(p)
             {
@@ -413,9 +416,7 @@ fn apply(work: &mut [u32], pts: &mut [[u32; 2]], top_k: u32, flip: Flip) {
     let bit = 1u32 << (31 - flip.depth);
     // The last prefix holds every point; its strata list the column's as one run.
     let last = Prefix { k: top_k };
-    let run = (flip.q as usize) << (top_k - flip.depth);
-    let strata = last.strata(work, flip.axis);
-    for &i in &strata[run..run + (1 << (top_k - flip.depth))] {
+    for &i in &last.strata(work, flip.axis)[last.run(flip)] {
         if let Some(p) = pts.get_mut(i as usize) {
             p[flip.axis] ^= bit;
         }

@@ -60,22 +60,23 @@ fn xor_values_match_the_published_ones() {
     }
 }
 
-#[test]
-fn every_aligned_block_is_a_net_for_1000_seeds() {
-    let n = 1 << 16;
+/// Every aligned block is a net for each seed of `seeds` (two threads); `make` builds the
+/// sequence of a seed.
+fn nets_over_seeds(seeds: std::ops::Range<u64>, make: impl Fn(u64) -> Vec<[u32; 2]> + Sync) {
+    let make = &make;
     let failures: Vec<String> = std::thread::scope(|s| {
-        let workers: Vec<_> = (0..2u64)
+        let workers: Vec<_> = (0..2usize)
             .map(|w| {
+                let seeds = seeds.clone();
                 s.spawn(move || {
-                    let mut pts = vec![[0u32; 2]; n];
-                    let mut bad = Vec::new();
-                    for seed in (w..1000).step_by(2) {
-                        fill(seed, &mut pts).unwrap();
-                        if let Some(f) = first_block_failure(&pts) {
-                            bad.push(format!("seed {seed}: (m, k, index) {f:?}"));
-                        }
-                    }
-                    bad
+                    seeds
+                        .skip(w)
+                        .step_by(2)
+                        .filter_map(|seed| {
+                            first_block_failure(&make(seed))
+                                .map(|f| format!("seed {seed}: (m, k, index) {f:?}"))
+                        })
+                        .collect::<Vec<_>>()
                 })
             })
             .collect();
@@ -85,6 +86,15 @@ fn every_aligned_block_is_a_net_for_1000_seeds() {
             .collect()
     });
     assert!(failures.is_empty(), "{failures:?}");
+}
+
+#[test]
+fn every_aligned_block_is_a_net_for_1000_seeds() {
+    nets_over_seeds(0..1000, |seed| {
+        let mut pts = vec![[0u32; 2]; 1 << 16];
+        fill(seed, &mut pts).unwrap();
+        pts
+    });
 }
 
 #[test]
@@ -125,7 +135,6 @@ fn seeds_give_different_sequences() {
 }
 
 mod christensen {
-    use super::first_block_failure;
     use qmckit::pmj::christensen::{self, DEFAULT_CANDIDATES, MAX_CANDIDATES, workspace_len};
     use qmckit::pmj::{XOR, fill as fill02};
 
@@ -137,27 +146,7 @@ mod christensen {
     }
 
     fn nets_over_seeds(seeds: std::ops::Range<u64>, k: u32, n: usize) {
-        let failures: Vec<String> = std::thread::scope(|s| {
-            let workers: Vec<_> = (0..2u64)
-                .map(|w| {
-                    let seeds = seeds.clone();
-                    s.spawn(move || {
-                        let mut bad = Vec::new();
-                        for seed in seeds.skip(w as usize).step_by(2) {
-                            if let Some(f) = first_block_failure(&make(seed, k, n)) {
-                                bad.push(format!("seed {seed}: (m, k, index) {f:?}"));
-                            }
-                        }
-                        bad
-                    })
-                })
-                .collect();
-            workers
-                .into_iter()
-                .flat_map(|h| h.join().unwrap())
-                .collect()
-        });
-        assert!(failures.is_empty(), "{failures:?}");
+        super::nets_over_seeds(seeds, |seed| make(seed, k, n));
     }
 
     #[test]
@@ -354,28 +343,7 @@ mod bn {
     }
 
     fn nets_over_seeds(seeds: std::ops::Range<u64>, n: usize) {
-        let failures: Vec<String> = std::thread::scope(|s| {
-            let workers: Vec<_> = (0..2usize)
-                .map(|w| {
-                    let seeds = seeds.clone();
-                    s.spawn(move || {
-                        seeds
-                            .skip(w)
-                            .step_by(2)
-                            .filter_map(|seed| {
-                                first_block_failure(&make(seed, n))
-                                    .map(|f| format!("seed {seed}: (m, k, index) {f:?}"))
-                            })
-                            .collect::<Vec<_>>()
-                    })
-                })
-                .collect();
-            workers
-                .into_iter()
-                .flat_map(|h| h.join().unwrap())
-                .collect()
-        });
-        assert!(failures.is_empty(), "{failures:?}");
+        super::nets_over_seeds(seeds, |seed| make(seed, n));
     }
 
     #[test]
