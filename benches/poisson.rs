@@ -8,8 +8,8 @@ use std::hint::black_box;
 use std::time::Duration;
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
-use qmckit::analysis::budget::Budget;
 use qmckit::blue_noise::{PoissonDisk, VoidAndCluster};
+use qmckit::work::Budget;
 
 fn poisson(c: &mut Criterion) {
     let r = 0.01;

@@ -9,8 +9,8 @@
 
 use std::time::Instant;
 
-use qmckit::analysis::budget::Budget;
 use qmckit::blue_noise::{PoissonDisk, VoidAndCluster};
+use qmckit::work::Budget;
 
 fn line(name: &str, task: &str, n: usize, density: f64, secs: f64) {
     println!(

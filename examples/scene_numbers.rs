@@ -9,8 +9,8 @@
 
 use std::time::Instant;
 
-use qmckit::analysis::budget::no_progress;
 use qmckit::analysis::scene::{SceneImage, Study, StudyOptions, cost};
+use qmckit::work::no_progress;
 
 /// The lecture's "MSE 1/r x" ratios, `r` per non-baseline sampler.
 fn lecture(s: Study) -> &'static str {

@@ -6,8 +6,8 @@
 //! For each `N` prints `d N D* seconds`.
 
 use qmckit::analysis::Points;
-use qmckit::analysis::budget::{Budget, no_progress};
 use qmckit::analysis::star::dem::star_dem_within;
+use qmckit::work::{Budget, no_progress};
 use qmckit::{Sampler, Sobol};
 use std::time::Instant;
 

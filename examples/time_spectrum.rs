@@ -9,8 +9,8 @@
 //! max_power` per method.
 
 use qmckit::analysis::Points;
-use qmckit::analysis::budget::Budget;
 use qmckit::analysis::spectrum::{Method, periodogram_2d};
+use qmckit::work::Budget;
 use std::time::Instant;
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {

@@ -7,8 +7,8 @@
 //! For each `N` prints `d N delta lower upper seconds accepted-by-default`.
 
 use qmckit::analysis::Points;
-use qmckit::analysis::budget::Budget;
 use qmckit::analysis::star::thiemard::bounds_within;
+use qmckit::work::Budget;
 use qmckit::{Independent, Sampler, Sobol};
 use std::time::Instant;
 

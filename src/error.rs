@@ -103,12 +103,20 @@ pub enum Error {
         max: u64,
     },
     /// A computation whose estimated running time exceeds its time budget (see
-    /// `analysis::budget`).
+    /// [`crate::work`]).
     OverBudget {
         /// The computation.
         what: &'static str,
         /// Estimated running time, in milliseconds (saturated).
         estimated_ms: u64,
+        /// The budget, in milliseconds.
+        budget_ms: u64,
+    },
+    /// A computation that was admitted by its estimate but ran past its deadline (see
+    /// [`crate::work`]): stopped, with nothing returned.
+    OutOfTime {
+        /// The computation.
+        what: &'static str,
         /// The budget, in milliseconds.
         budget_ms: u64,
     },
@@ -190,6 +198,10 @@ impl fmt::Display for Error {
                 write!(f, "{what}: estimated ")?;
                 write_seconds(f, estimated_ms)?;
                 write!(f, ", more than the time budget of ")?;
+                write_seconds(f, budget_ms)
+            }
+            Error::OutOfTime { what, budget_ms } => {
+                write!(f, "{what}: stopped, running past the time budget of ")?;
                 write_seconds(f, budget_ms)
             }
             Error::NotRepresentable { what } => {

@@ -102,6 +102,7 @@ pub mod stratified;
 pub mod van_der_corput;
 #[cfg(any(feature = "libm", feature = "fixed"))]
 pub mod warp;
+pub mod work;
 
 pub use error::{Error, Result};
 pub use halton::{HALTON_MAX_DIMS, Halton};

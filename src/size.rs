@@ -131,6 +131,52 @@ pub fn vec_zeroed<T: Default + Clone>(len: usize) -> Result<std::vec::Vec<T>> {
     Ok(v)
 }
 
+/// An empty `Vec` with room for `capacity` values, checked against [`MAX_ALLOC_BYTES`]; an
+/// allocation the system refuses is an error too (no abort). The checked counterpart of
+/// `Vec::with_capacity` for capacities derived from input.
+///
+/// # Errors
+/// [`Error::TooLarge`] (`what: "bytes"`).
+///
+/// ```
+/// let v: Vec<f64> = qmckit::size::vec_with_capacity(1000)?;
+/// assert!(v.capacity() >= 1000 && v.is_empty());
+/// assert!(qmckit::size::vec_with_capacity::<f64>(1 << 40).is_err());
+/// # Ok::<(), qmckit::Error>(())
+/// ```
+#[cfg(feature = "std")]
+pub fn vec_with_capacity<T>(capacity: usize) -> Result<std::vec::Vec<T>> {
+    let bytes = bytes(capacity, core::mem::size_of::<T>())?;
+    let mut v = std::vec::Vec::new();
+    v.try_reserve_exact(capacity).map_err(|_| Error::TooLarge {
+        what: "bytes",
+        requested: bytes as u64,
+        max: MAX_ALLOC_BYTES,
+    })?;
+    Ok(v)
+}
+
+/// Reserves room for `additional` more values in `v`, checked so that the whole buffer stays
+/// within [`MAX_ALLOC_BYTES`]; the checked counterpart of `Vec::reserve` for growth driven
+/// by input (parsers, accumulating loops).
+///
+/// # Errors
+/// [`Error::TooLarge`] (`what: "bytes"`).
+#[cfg(feature = "std")]
+pub fn reserve<T>(v: &mut std::vec::Vec<T>, additional: usize) -> Result<()> {
+    let total = v.len().checked_add(additional).ok_or(Error::TooLarge {
+        what: "bytes",
+        requested: u64::MAX,
+        max: MAX_ALLOC_BYTES,
+    })?;
+    let bytes = bytes(total, core::mem::size_of::<T>())?;
+    v.try_reserve(additional).map_err(|_| Error::TooLarge {
+        what: "bytes",
+        requested: bytes as u64,
+        max: MAX_ALLOC_BYTES,
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -18,7 +18,6 @@
 //! | [`pointfile`] | reading point sets from text (the `qmckit discrepancy` input format) |
 //! | [`scene`] | analytic render scenes (spheres, plane, quad light, thin lens, motion blur, ambient occlusion) and the MSE of samplers against a reference |
 
-pub mod budget;
 pub mod distance;
 pub mod integrate;
 pub mod integration;

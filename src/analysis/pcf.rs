@@ -26,7 +26,7 @@
 use rayon::prelude::*;
 
 use super::Points;
-use super::budget::{Budget, Cost, Rate};
+use crate::work::{Budget, Cost, Rate};
 use crate::{Error, Result};
 
 /// Pair steps (one distance, or one kernel value) a second (two threads, conservative).
@@ -85,7 +85,7 @@ pub fn pcf_cost(n: usize, opts: &PcfOptions) -> Cost {
 /// [`Error::OverBudget`] past the budget.
 ///
 /// ```
-/// use qmckit::analysis::{Points, budget::Budget, pcf::{PcfOptions, pcf_2d}};
+/// use qmckit::{work::Budget, analysis::{Points, pcf::{PcfOptions, pcf_2d}}};
 /// // The 4 x 4 grid on the torus: each point has 4 neighbours at 1/4, none nearer.
 /// let pts: Vec<f64> = (0..16).flat_map(|i| [(i % 4) as f64 / 4.0, (i / 4) as f64 / 4.0]).collect();
 /// let g = pcf_2d(Points::new(&pts, 2)?, &PcfOptions::new(0.3, 30, true), &Budget::DEFAULT)?;

@@ -9,9 +9,9 @@
 //! `1 <= |k| < min(W, H) / 8` (below a quarter of the Nyquist frequency), `high_band` over
 //! `min(W, H) / 4 <= |k| < min(W, H) / 2`.
 
-use super::budget::{Budget, Cost, Rate};
 use crate::error::{Error, Result};
 use crate::pixel::PixelSampler;
+use crate::work::{Budget, Cost, Rate};
 
 /// A test integrand on the unit square, with its exact integral.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -132,7 +132,7 @@ const DFT_RATE: Rate = Rate::per_second(2e8);
 /// than 8 x 8 (no low band) or a constant error image (no spectrum to normalize).
 ///
 /// ```
-/// use qmckit::analysis::budget::Budget;
+/// use qmckit::work::Budget;
 /// use qmckit::analysis::screen_error::{PixelIntegrand, screen_error};
 /// use qmckit::pixel::{PaddedSobol, Randomization, ZSobol};
 /// let z = ZSobol::new(32, 32, 4, Randomization::FastOwen, 0)?;

@@ -21,7 +21,7 @@
 use super::PointSet;
 use super::grid::{SCALE, axis_gap};
 use super::rng::Rng;
-use crate::analysis::budget::{Budget, Cost, Rate};
+use crate::work::{Budget, Cost, Rate};
 use crate::{Error, Result};
 
 /// The most points [`BestCandidate`] makes (its cost is quadratic): 2^20.

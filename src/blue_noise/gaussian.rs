@@ -26,7 +26,7 @@ use rayon::prelude::*;
 use super::PointSet;
 use super::grid::SCALE;
 use super::rng::Rng;
-use crate::analysis::budget::{Budget, Cost, Rate};
+use crate::work::{Budget, Cost, Rate};
 use crate::{Error, Result};
 
 /// The most points [`GaussianBlueNoise`] takes: 2^24.

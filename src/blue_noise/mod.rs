@@ -9,7 +9,7 @@
 //! * [`mask64`] — a 64×64 void-and-cluster rank mask as a static table, in `no_std` too.
 //!
 //! The set constructions need the `analysis` feature (they are budgeted like every
-//! super-linear computation of the crate, see [`crate::analysis::budget`]); they return a
+//! super-linear computation of the crate, see [`crate::work`]); they return a
 //! [`PointSet`], a finite [`Sampler`](crate::Sampler) of 0.32 fractions in generation order.
 
 pub mod mask64;

@@ -39,7 +39,7 @@ use super::bridson::{bridson, fill_maximal};
 use super::grid::{Grid, cells_per_axis};
 use super::rng::Rng;
 use super::tiles::bridson_tiled;
-use crate::analysis::budget::{Budget, Cost, Rate};
+use crate::work::{Budget, Cost, Rate};
 use crate::{Error, Result};
 
 /// The largest dimension [`PoissonDisk`] accepts.

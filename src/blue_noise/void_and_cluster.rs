@@ -34,7 +34,7 @@
 
 use super::rng::Rng;
 use super::tournament::{Best, Tournament};
-use crate::analysis::budget::{Budget, Cost, Rate};
+use crate::work::{Budget, Cost, Rate};
 use crate::{Error, Result};
 
 /// The largest side of a mask.

@@ -3,9 +3,9 @@
 
 use super::DigitalNetB;
 use crate::analysis::Points;
-use crate::analysis::budget::{Budget, Cost};
 use crate::analysis::tvalue::{COUNT_RATE, count_steps, t_value_points_within};
 use crate::error::{Error, Result};
+use crate::work::{Budget, Cost};
 
 /// The t-value in base `b` of points `start .. start + b^m` of `net`: the smallest `t`
 /// such that every elementary interval of volume `b^(t-m)` holds `b^t` of them.
@@ -17,7 +17,7 @@ use crate::error::{Error, Result};
 /// against `budget` before any work.
 ///
 /// ```
-/// use qmckit::analysis::budget::Budget;
+/// use qmckit::work::Budget;
 /// use qmckit::digital::{DigitalNetB, quality::t_value};
 /// let f = DigitalNetB::faure(5, 4)?;
 /// assert_eq!(t_value(&f, 0, 3, &Budget::DEFAULT)?, 0); // a (0, 3, 4)-net in base 5

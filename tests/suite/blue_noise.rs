@@ -7,9 +7,9 @@
 #![cfg(feature = "analysis")]
 
 use qmckit::analysis::Points;
-use qmckit::analysis::budget::Budget;
 use qmckit::analysis::spectrum::spectrum_2d;
 use qmckit::blue_noise::{BestCandidate, GaussianBlueNoise, PointSet, PoissonDisk};
+use qmckit::work::Budget;
 use qmckit::{Error, Independent, Sampler};
 
 fn gap(a: f64, b: f64, torus: bool) -> f64 {

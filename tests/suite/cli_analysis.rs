@@ -195,8 +195,8 @@ fn max_seconds_sets_the_star_budget() {
     assert!(lower <= got + 1e-12 && got < lower + 0.01, "{lower} {got}");
     let want = qmckit::analysis::star::star_exact_within(
         p,
-        &qmckit::analysis::budget::Budget::UNLIMITED,
-        &qmckit::analysis::budget::no_progress,
+        &qmckit::work::Budget::UNLIMITED,
+        &qmckit::work::no_progress,
     )
     .unwrap();
     assert_eq!(got, want);

@@ -3,9 +3,9 @@
 //! (elementary intervals in base b), unscrambled and scrambled.
 
 use qmckit::Sampler;
-use qmckit::analysis::budget::Budget;
 use qmckit::digital::{DigitalNetB, output_digits, quality::t_value};
 use qmckit::randomize::digits::DigitScramble;
+use qmckit::work::Budget;
 
 fn golden(name: &str) -> String {
     let path = format!("{}/tests/golden/{name}", env!("CARGO_MANIFEST_DIR"));

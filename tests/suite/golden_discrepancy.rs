@@ -613,7 +613,7 @@ fn high_dimensions_match_extended_precision_reference() {
 
 #[test]
 fn budgets_refuse_before_working_and_progress_ends_at_n() {
-    use qmckit::analysis::budget::{Budget, no_progress};
+    use qmckit::work::{Budget, no_progress};
     use std::sync::Mutex;
     let pts = uniform(3 * 500, 21);
     let p = Points::new(&pts, 3).unwrap();

@@ -138,7 +138,7 @@ fn bad_mask_sizes_are_errors() {
     ));
     assert!(VoidAndCluster::new(8, 8).unwrap().sigma(0.1).is_err());
     assert!(VoidAndCluster::new(8, 8).unwrap().sigma(f64::NAN).is_err());
-    let tight = qmckit::analysis::budget::Budget::seconds(1e-4).unwrap();
+    let tight = qmckit::work::Budget::seconds(1e-4).unwrap();
     assert!(matches!(
         VoidAndCluster::new(1024, 1024)
             .unwrap()

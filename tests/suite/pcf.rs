@@ -6,9 +6,9 @@
 
 use qmckit::Independent;
 use qmckit::analysis::Points;
-use qmckit::analysis::budget::Budget;
 use qmckit::analysis::pcf::{PcfOptions, pcf_2d, structure_factor};
 use qmckit::analysis::spectrum::{Method, SpectrumMean, periodogram_2d};
+use qmckit::work::Budget;
 
 use crate::common::sampler_points;
 

@@ -510,8 +510,8 @@ mod cli {
 #[cfg(feature = "analysis")]
 #[test]
 fn zsobol_error_is_blue_noise() {
-    use qmckit::analysis::budget::Budget;
     use qmckit::analysis::screen_error::{PixelIntegrand, screen_error};
+    use qmckit::work::Budget;
     const SEEDS: u32 = 16;
     let mut report = String::new();
     for f in [PixelIntegrand::GaussianBump, PixelIntegrand::Step] {
@@ -742,9 +742,9 @@ mod pmj02bn_pixels {
 #[test]
 #[ignore = "a study: about a minute; prints the table of docs/pixel-samplers.md"]
 fn screen_error_study() {
-    use qmckit::analysis::budget::Budget;
     use qmckit::analysis::screen_error::{PixelIntegrand, screen_error};
     use qmckit::pixel::Pmj02BnTables;
+    use qmckit::work::Budget;
     println!(
         "side f spp | low Z/P  low Z/I  low B/P | rmse Z/P rmse Z/I rmse B/P | norm low Z P I B"
     );

@@ -421,11 +421,8 @@ fn studies_are_deterministic() {
 fn scene_quick_timing() {
     let t = std::time::Instant::now();
     for s in Study::ALL {
-        s.run(
-            &StudyOptions::quick(),
-            &qmckit::analysis::budget::no_progress,
-        )
-        .unwrap();
+        s.run(&StudyOptions::quick(), &qmckit::work::no_progress)
+            .unwrap();
     }
     let secs = t.elapsed().as_secs_f64();
     println!("quick studies: {secs:.2} s");

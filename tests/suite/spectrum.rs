@@ -202,8 +202,8 @@ fn nufft_golden(text: &str) -> (Vec<f64>, Vec<GoldenPower>) {
 
 #[test]
 fn nufft_holds_its_tolerance_against_numpy_and_finufft() {
-    use qmckit::analysis::budget::Budget;
     use qmckit::analysis::spectrum::{Method, periodogram_2d};
+    use qmckit::work::Budget;
     for text in [
         include_str!("../golden/nufft_white_n4096_k256.txt"),
         include_str!("../golden/nufft_grid_n4096_k256.txt"),
@@ -246,8 +246,8 @@ fn nufft_holds_its_tolerance_against_numpy_and_finufft() {
 
 #[test]
 fn nufft_matches_the_direct_sum_everywhere_on_small_sets() {
-    use qmckit::analysis::budget::Budget;
     use qmckit::analysis::spectrum::{Method, periodogram_2d};
+    use qmckit::work::Budget;
     // Edge coordinates 0 and 1 (the same point on the torus), K = 0 and tiny grids.
     let pts = [0.0, 1.0, 1.0, 0.0, 0.5, 0.999_999, 0.123, 0.456, 0.75, 0.25];
     let p = Points::new(&pts, 2).unwrap();

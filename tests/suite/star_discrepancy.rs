@@ -506,9 +506,9 @@ fn dem_refuses_beyond_its_budget() {
 
 #[test]
 fn dem_within_a_budget_reports_progress() {
-    use qmckit::analysis::budget::{Budget, no_progress};
     use qmckit::analysis::star::dem::{max_points_within, star_dem_within, work_estimate};
     use qmckit::analysis::star::{STAR_RATE, star_exact_within};
+    use qmckit::work::{Budget, no_progress};
     use std::sync::Mutex;
     // Budgets in steps at STAR_RATE.
     let within = |steps: f64| Budget::seconds(steps / STAR_RATE.steps_per_second()).unwrap();
@@ -574,9 +574,9 @@ fn on_small_stack<T: Send + 'static>(f: impl FnOnce() -> T + Send + 'static) -> 
 
 #[test]
 fn star_of_one_point_in_huge_dimensions_needs_no_deep_stack() {
-    use qmckit::analysis::budget::{Budget, no_progress};
     use qmckit::analysis::star::dem::DEM_MAX_DIMS;
     use qmckit::analysis::star::star_exact_within;
+    use qmckit::work::{Budget, no_progress};
     for d in [DEM_MAX_DIMS + 1, 10_000, 21_201] {
         let got = on_small_stack(move || {
             // Three points, two with a coordinate 1 (never counted); the third is 1/2 in
@@ -619,8 +619,8 @@ fn single_point_closed_form_agrees_with_the_decomposition() {
         let vol: f64 = x.iter().product();
         (n - 1.0).max(n * largest).max(1.0 - n * vol) / n
     };
-    use qmckit::analysis::budget::{Budget, no_progress};
     use qmckit::analysis::star::star_exact_within;
+    use qmckit::work::{Budget, no_progress};
     let mut rng = Rng(17);
     for d in [3usize, 7, 40, 200, 255, 256, 600] {
         for extra in 0..3 {
@@ -642,8 +642,8 @@ fn single_point_closed_form_agrees_with_the_decomposition() {
 
 #[test]
 fn two_points_in_huge_dimensions_are_refused_at_once() {
-    use qmckit::analysis::budget::{Budget, no_progress};
     use qmckit::analysis::star::star_exact_within;
+    use qmckit::work::{Budget, no_progress};
     for d in [1000usize, 10_000, 21_201] {
         let data = vec![0.5; 2 * d];
         let p = Points::new(&data, d).unwrap();
@@ -667,8 +667,8 @@ fn two_points_in_huge_dimensions_are_refused_at_once() {
 
 #[test]
 fn decomposition_at_its_dimension_limit_runs_on_a_small_stack() {
-    use qmckit::analysis::budget::{Budget, no_progress};
     use qmckit::analysis::star::dem::{DEM_MAX_DIMS, star_dem_within};
+    use qmckit::work::{Budget, no_progress};
     let got = on_small_stack(|| {
         // Two points: the origin and (1/2, .., 1/2). The closed box [0, 1/2]^d holds both
         // (1 - 2^-d); a box holding only the origin has some side at most 1/2.
@@ -687,8 +687,8 @@ fn decomposition_at_its_dimension_limit_runs_on_a_small_stack() {
 
 #[test]
 fn exact_refusals_report_the_largest_set_within_the_budget() {
-    use qmckit::analysis::budget::Budget;
     use qmckit::analysis::star::max_points_within;
+    use qmckit::work::Budget;
     // 2D: floor(sqrt(3e8 s)) for s seconds.
     assert_eq!(max_points_within(2, &Budget::DEFAULT), 54_772);
     assert_eq!(
@@ -703,8 +703,8 @@ fn exact_refusals_report_the_largest_set_within_the_budget() {
 
 #[test]
 fn extreme_within_a_budget() {
-    use qmckit::analysis::budget::Budget;
     use qmckit::analysis::star::extreme_2d_within;
+    use qmckit::work::Budget;
     // N^3 / 2 steps at 1.7e8 a second: 1503 points within ten seconds (1503^3 / 2 =
     // 1.698e9 <= 1.7e9 < 1504^3 / 2), refused at once past it.
     let data = vec![0.5; 2 * 1504];

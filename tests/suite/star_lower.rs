@@ -71,8 +71,8 @@ fn sobol_20d_reaches_the_bracketing_lower_bound() {
 
 #[test]
 fn threshold_accepting_is_budgeted() {
-    use qmckit::analysis::budget::Budget;
     use qmckit::analysis::star::star_lower_bound_within;
+    use qmckit::work::Budget;
     // The same value as without a budget when it fits.
     let data: Vec<f64> = (0..60).map(|i| ((i * 37) % 60) as f64 / 60.0).collect();
     let p = Points::new(&data, 3).unwrap();

@@ -183,8 +183,8 @@ fn huge_dimensions_are_refused_at_once_without_allocating() {
 
 #[test]
 fn bounds_stay_in_the_unit_interval_and_in_order() {
-    use qmckit::analysis::budget::Budget;
     use qmckit::analysis::star::thiemard::bounds_within;
+    use qmckit::work::Budget;
     // The whole-cube bracket is worth exactly 1, the largest possible D*: the rounding
     // margin must not lift the bound above it.
     for (data, d) in [
@@ -212,8 +212,8 @@ fn bounds_stay_in_the_unit_interval_and_in_order() {
 
 #[test]
 fn a_smaller_budget_refuses_sooner() {
-    use qmckit::analysis::budget::Budget;
     use qmckit::analysis::star::thiemard::bounds_within;
+    use qmckit::work::Budget;
     // 1000 points in 5D at delta = 0.08 are accepted within ten seconds; a hundredth of a
     // second is far too little, and the refusal is immediate.
     let data: Vec<f64> = (0..5000)

@@ -454,8 +454,8 @@ fn rank_test_in_thousands_of_dimensions_needs_no_deep_stack() {
 
 #[test]
 fn rank_tests_past_the_budget_are_refused_at_once() {
-    use qmckit::analysis::budget::{Budget, no_progress};
     use qmckit::analysis::tvalue::t_value_within;
+    use qmckit::work::{Budget, no_progress};
     for (d, m) in [(50usize, 32u32), (1000, 20), (16, 32)] {
         let net = DigitalNet2::from_sobol(d, m).unwrap();
         let start = std::time::Instant::now();
@@ -491,8 +491,8 @@ fn rank_tests_past_the_budget_are_refused_at_once() {
 
 #[test]
 fn generated_points_and_counting_are_checked_in_size_and_time() {
-    use qmckit::analysis::budget::Budget;
     use qmckit::analysis::tvalue::t_value_u32_within;
+    use qmckit::work::Budget;
     // 2^32 points in 2D are 32 GiB: an error, not an allocation.
     let net = DigitalNet2::from_sobol(2, 32).unwrap();
     assert!(matches!(net.points(), Err(Error::TooLarge { .. })));

@@ -6,11 +6,11 @@
 #![cfg(feature = "analysis")]
 
 use qmckit::analysis::Points;
-use qmckit::analysis::budget::Budget;
 use qmckit::analysis::spectrum::{Method, SpectrumMean, periodogram_2d, spectrum_2d};
 use qmckit::analysis::variance::{
     Measured, TorusIntegrand, fit_slope, predicted_variance, shifted_error,
 };
+use qmckit::work::Budget;
 use qmckit::{Independent, Jitter, Sampler, Stratified};
 
 use crate::common::sampler_points;

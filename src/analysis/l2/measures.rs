@@ -8,7 +8,7 @@ use super::kernel::{Build, Loop, Ticker, min};
 use super::sums::{checked, combine, combine_wide, kernel_sums, pow2, root, wide_kernel_sums};
 use super::tree::l2_star_fast;
 use crate::Result;
-use crate::analysis::budget::no_progress;
+use crate::work::no_progress;
 
 /// The largest dimension computed in plain `f64` products by the L2-star, centered,
 /// wrap-around, mixture, symmetric and generalized L2 discrepancies (above it, with

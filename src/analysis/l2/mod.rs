@@ -117,8 +117,8 @@ pub use measures::{
 pub use tree::{TREE_MAX_D, l2_star_fast};
 
 use super::Points;
-use super::budget::{Budget, Cost, Progress, Rate, no_progress};
 use crate::Result;
+use crate::work::{Budget, Cost, Progress, Rate, no_progress};
 use kernel::{Build, Ticker};
 
 /// The throughput of the pair sum in the plain `f64` path, in pair steps of
@@ -263,7 +263,7 @@ impl L2Metric {
     /// sum (from `(0, n)` to `(n, n)`; only those two for the divide and conquer).
     ///
     /// ```
-    /// use qmckit::analysis::{Points, budget::{Budget, no_progress}, l2::L2Metric};
+    /// use qmckit::{work::{Budget, no_progress}, analysis::{Points, l2::L2Metric}};
     /// let data: Vec<f64> = (0..300).map(|i| (i as f64 * 0.618_033_988_749_895).fract()).collect();
     /// let p = Points::new(&data, 3)?;
     /// let budget = Budget::seconds(1.0)?;

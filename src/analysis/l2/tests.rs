@@ -4,7 +4,7 @@ use super::Points;
 use super::kernel::{Blocked, Build, GROUP, LANES, Loop, Ticker, off_diagonal};
 use super::measures::*;
 use super::*;
-use crate::analysis::budget::no_progress;
+use crate::work::no_progress;
 
 /// A ticker that reports nowhere.
 fn quiet(n: usize) -> Ticker<'static> {

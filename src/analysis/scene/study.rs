@@ -5,8 +5,8 @@ use super::camera::Camera;
 use super::geometry::Scene;
 use super::integrands::{Integrand, standard_camera, standard_scene};
 use super::samplers::{Prepared, SceneSampler};
-use crate::analysis::budget::{Progress, no_progress};
 use crate::analysis::screen_error::ScreenError;
+use crate::work::{Progress, no_progress};
 use crate::{Error, Jitter, OwenSobol, Result, Stratified};
 use rayon::prelude::*;
 

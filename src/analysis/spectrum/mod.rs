@@ -38,7 +38,7 @@ pub use average::SpectrumMean;
 pub use nufft::NUFFT_MIN_TOLERANCE;
 
 use super::Points;
-use super::budget::{Budget, Cost, Rate};
+use crate::work::{Budget, Cost, Rate};
 use crate::{Error, Result};
 
 /// Complex multiply-adds above which [`spectrum_2d`] refuses: [`SPECTRUM_RATE`] times the
@@ -139,7 +139,7 @@ pub fn spectrum_2d(points: Points<'_>, k_max: usize) -> Result<Spectrum> {
 /// this `K`.
 ///
 /// ```
-/// use qmckit::analysis::{Points, budget::Budget, spectrum::spectrum_2d_within};
+/// use qmckit::{work::Budget, analysis::{Points, spectrum::spectrum_2d_within}};
 /// let p = Points::new(&[0.5; 2000], 2)?; // 1000 points
 /// assert!(spectrum_2d_within(p, 64, &Budget::seconds(10.0)?).is_ok());
 /// assert!(spectrum_2d_within(p, 2048, &Budget::seconds(0.1)?).is_err());
@@ -248,7 +248,7 @@ pub fn choose_method(n: usize, k_max: usize, tolerance: f64) -> Method {
 /// exceeds `budget`; [`Error::TooLarge`] when the NUFFT grid does not fit in memory.
 ///
 /// ```
-/// use qmckit::analysis::{Points, budget::Budget, spectrum::{Method, periodogram_2d}};
+/// use qmckit::{work::Budget, analysis::{Points, spectrum::{Method, periodogram_2d}}};
 /// let p = Points::new(&[0.1, 0.2, 0.5, 0.7, 0.9, 0.35], 2)?;
 /// let s = periodogram_2d(p, 4, Method::Nufft, 1e-12, &Budget::DEFAULT)?;
 /// // Checked against the direct sum: P(1, 1) = 2.8074200179768365.

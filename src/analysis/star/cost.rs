@@ -1,5 +1,5 @@
 //! The calibrated rates of the star-discrepancy family, shared by its modules (see
-//! [`crate::analysis::budget`] for the mechanism).
+//! [`crate::work`] for the mechanism).
 //!
 //! Each rate converts a counted number of inner-loop steps into seconds. They were measured
 //! with the release build on two cores shared with other work (load average about 1.5), so
@@ -7,7 +7,7 @@
 //! (the 6D row of [`super::dem`], 500 Sobol' points, took 20.5 s instead of 8.4 s at a load
 //! average of 7).
 
-use crate::analysis::budget::{Budget, Cost, Rate};
+use crate::work::{Budget, Cost, Rate};
 
 /// Steps per second of the exact algorithms: `N^2` sweep steps in 2D, the units of
 /// [`work_estimate`] for `d >= 3`, fitted to the measured rows of [`super::dem`] (e.g. 500

@@ -83,7 +83,7 @@ use super::cells::{
 use super::cost::within;
 pub use super::cost::{max_points, max_points_within, work_estimate};
 use crate::analysis::Points;
-use crate::analysis::budget::{Budget, Progress, no_progress};
+use crate::work::{Budget, Progress, no_progress};
 use crate::{Error, Result};
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicU64, Ordering};
@@ -139,7 +139,7 @@ pub fn star_dem(points: Points<'_>) -> Result<f64> {
 /// in more than [`DEM_MAX_DIMS`] dimensions.
 ///
 /// ```
-/// use qmckit::analysis::budget::Budget;
+/// use qmckit::work::Budget;
 /// use qmckit::analysis::{Points, star::dem::star_dem_within};
 /// use std::sync::atomic::{AtomicUsize, Ordering};
 /// let calls = AtomicUsize::new(0);

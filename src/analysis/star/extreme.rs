@@ -2,7 +2,7 @@
 
 use super::sweep::{counted, grid, rank};
 use crate::analysis::Points;
-use crate::analysis::budget::{Budget, Rate};
+use crate::work::{Budget, Rate};
 use crate::{Error, Result};
 use rayon::prelude::*;
 
@@ -62,7 +62,7 @@ pub const EXTREME_RATE: Rate = Rate::per_second(1.7e8);
 /// budget, `max` the largest `N` within it.
 ///
 /// ```
-/// use qmckit::analysis::budget::Budget;
+/// use qmckit::work::Budget;
 /// use qmckit::analysis::{Points, star::extreme_2d_within};
 /// let p = Points::new(&[0.5, 0.5], 2)?;
 /// assert_eq!(extreme_2d_within(p, &Budget::DEFAULT)?, 1.0);

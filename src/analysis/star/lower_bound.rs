@@ -4,7 +4,7 @@ use super::cost::LOWER_BOUND_RATE;
 use super::sweep::counted;
 use crate::Result;
 use crate::analysis::Points;
-use crate::analysis::budget::{Budget, Cost};
+use crate::work::{Budget, Cost};
 
 /// SplitMix64 step, for the randomized search: a Weyl step of the state, then the crate's
 /// 64-bit finalizer [`crate::hash::mix64`].
@@ -88,7 +88,7 @@ pub fn lower_bound_steps(n: usize, d: usize, iterations: u64) -> f64 {
 /// fewer points or dimensions, are faster).
 ///
 /// ```
-/// use qmckit::analysis::budget::Budget;
+/// use qmckit::work::Budget;
 /// use qmckit::analysis::{Points, star::star_lower_bound_within};
 /// let p = Points::new(&[0.5, 0.5, 0.5], 3)?;
 /// assert!(star_lower_bound_within(p, 7, 1000, &Budget::DEFAULT)? >= 0.5);

@@ -62,7 +62,7 @@ pub use extreme::{EXTREME_2D_MAX_POINTS, EXTREME_RATE, extreme_2d, extreme_2d_wi
 pub use lower_bound::{lower_bound_steps, star_lower_bound, star_lower_bound_within};
 
 use super::Points;
-use super::budget::{Budget, Progress, no_progress};
+use crate::work::{Budget, Progress, no_progress};
 use crate::{Error, Result};
 
 /// Largest `N` [`star_2d`] (and [`star`], [`star_exact`] in 2D) accepts within
@@ -72,7 +72,7 @@ pub const STAR_2D_MAX_POINTS: u64 = 54_772;
 
 // The 2D limit is the default budget's: one rule for every exact entry point.
 const _: () = {
-    let steps = STAR_RATE.steps_per_second() * super::budget::DEFAULT_SECONDS;
+    let steps = STAR_RATE.steps_per_second() * crate::work::DEFAULT_SECONDS;
     assert!(
         (STAR_2D_MAX_POINTS * STAR_2D_MAX_POINTS) as f64 <= steps
             && ((STAR_2D_MAX_POINTS + 1) * (STAR_2D_MAX_POINTS + 1)) as f64 > steps
@@ -207,7 +207,7 @@ pub fn star_exact(points: Points<'_>) -> Result<f64> {
 /// in more than [`dem::DEM_MAX_DIMS`] dimensions.
 ///
 /// ```
-/// use qmckit::analysis::budget::{Budget, no_progress};
+/// use qmckit::work::{Budget, no_progress};
 /// use qmckit::analysis::{Points, star::star_exact_within};
 /// let p = Points::new(&[0.5, 0.5, 0.5], 3)?;
 /// assert_eq!(star_exact_within(p, &Budget::DEFAULT, &no_progress)?, 0.875);
@@ -243,7 +243,7 @@ pub fn star_exact_within(
 /// `d <= 2`, a binary search of 40 estimates otherwise.
 ///
 /// ```
-/// use qmckit::analysis::{budget::Budget, star::max_points_within};
+/// use qmckit::{work::Budget, star::max_points_within};
 /// assert_eq!(max_points_within(2, &Budget::DEFAULT), 54_772);
 /// assert_eq!(max_points_within(6, &Budget::DEFAULT), 478);
 /// ```

@@ -72,7 +72,7 @@ use super::thiemard_cost::{
     chain_step_cost, estimate, region_cost, root_chain_lower_bound, split_factor,
 };
 use crate::analysis::Points;
-use crate::analysis::budget::Budget;
+use crate::work::Budget;
 use crate::{Error, Result};
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
@@ -162,7 +162,7 @@ pub fn bounds(points: Points<'_>, delta: f64) -> Result<Bounds> {
 /// when the estimating pass would need more than [`crate::size::MAX_ALLOC_BYTES`].
 ///
 /// ```
-/// use qmckit::analysis::budget::Budget;
+/// use qmckit::work::Budget;
 /// use qmckit::analysis::{Points, star::thiemard::bounds_within};
 /// let data = vec![0.5; 2 * 1000]; // two points in 1000 dimensions
 /// let p = Points::new(&data, 1000)?;

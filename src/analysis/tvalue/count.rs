@@ -2,7 +2,7 @@
 //! that break a given `t`.
 
 use crate::analysis::Points;
-use crate::analysis::budget::{Budget, Cost, Rate};
+use crate::work::{Budget, Cost, Rate};
 use crate::{Error, Result};
 use core::fmt;
 use rayon::prelude::*;
@@ -387,7 +387,7 @@ fn search_levels(m: u32) -> u32 {
 /// As [`t_value_u32`], [`Error::OverBudget`] past `budget`.
 ///
 /// ```
-/// use qmckit::analysis::budget::Budget;
+/// use qmckit::work::Budget;
 /// use qmckit::analysis::tvalue::t_value_u32_within;
 /// let pts = vec![0u32; 4 << 10]; // 2^10 points at the origin in 4D
 /// assert_eq!(t_value_u32_within(&pts, 4, 10, &Budget::DEFAULT)?, 10);

@@ -3,7 +3,7 @@
 
 use super::DigitalNet2;
 use crate::Result;
-use crate::analysis::budget::{Budget, Cost, Progress, Rate, no_progress};
+use crate::work::{Budget, Cost, Progress, Rate, no_progress};
 
 /// Steps per second of the rank test's search: a step is one row inserted into the
 /// elimination (at most `m` XORs) or one search node entered (a 128-byte copy). Measured
@@ -93,7 +93,7 @@ pub fn t_value(net: &DigitalNet2) -> Result<u32> {
 /// [`crate::size::MAX_ALLOC_BYTES`].
 ///
 /// ```
-/// use qmckit::analysis::budget::{Budget, no_progress};
+/// use qmckit::work::{Budget, no_progress};
 /// use qmckit::analysis::tvalue::{DigitalNet2, t_value_within};
 /// let net = DigitalNet2::from_sobol(3, 10)?;
 /// assert_eq!(t_value_within(&net, &Budget::DEFAULT, &no_progress)?, 1);

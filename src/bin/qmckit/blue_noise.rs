@@ -4,8 +4,8 @@
 use std::io::BufWriter;
 
 use clap::Args;
-use qmckit::analysis::budget::{Budget, DEFAULT_SECONDS};
 use qmckit::blue_noise::{BestCandidate, GaussianBlueNoise, PointSet, PoissonDisk};
+use qmckit::work::{Budget, DEFAULT_SECONDS};
 
 use super::Failure;
 use super::output::{Format, PointWriter};
@@ -66,7 +66,7 @@ impl BlueNoiseArgs {
     /// The time budget `--max-seconds` sets.
     pub fn budget(&self) -> Result<Budget, Failure> {
         let s = self.max_seconds.unwrap_or(DEFAULT_SECONDS);
-        Budget::seconds(s).map_err(|_| {
+        Budget::seconds(s).map(Budget::started).map_err(|_| {
             Failure::usage(format!(
                 "--max-seconds must be a positive number of seconds, not {s}"
             ))

@@ -2,7 +2,7 @@
 //! input (`discrepancy`, `tvalue`, `convergence`, `spectrum`).
 
 use clap::Args;
-use qmckit::analysis::budget::{Budget, DEFAULT_SECONDS};
+use qmckit::work::{Budget, DEFAULT_SECONDS};
 
 use super::Failure;
 
@@ -16,14 +16,18 @@ pub struct BudgetArgs {
 }
 
 impl BudgetArgs {
-    /// The budget, or a usage error for a value that is not a positive number.
+    /// The budget, started: its deadline (1.25 times the budget from now) bounds every
+    /// computation of the command it is handed to. A usage error for a value that is not a
+    /// positive number.
     pub fn budget(&self) -> Result<Budget, Failure> {
-        Budget::seconds(self.max_seconds).map_err(|_| {
-            Failure::usage(format!(
-                "--max-seconds must be a positive number of seconds, not {}",
-                self.max_seconds
-            ))
-        })
+        Budget::seconds(self.max_seconds)
+            .map(Budget::started)
+            .map_err(|_| {
+                Failure::usage(format!(
+                    "--max-seconds must be a positive number of seconds, not {}",
+                    self.max_seconds
+                ))
+            })
     }
 }
 
@@ -31,6 +35,9 @@ impl BudgetArgs {
 pub fn over_budget(e: qmckit::Error) -> String {
     match e {
         qmckit::Error::OverBudget { .. } => format!("{e} (raise --max-seconds to run it)"),
+        qmckit::Error::OutOfTime { .. } => {
+            format!("{e}: the estimate was too low (raise --max-seconds to let it finish)")
+        }
         other => other.to_string(),
     }
 }

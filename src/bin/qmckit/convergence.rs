@@ -7,7 +7,7 @@ use clap::{Args, ValueEnum};
 use qmckit::analysis::Points;
 use qmckit::analysis::integration::{Integrand, integration_error};
 
-use qmckit::analysis::budget::{Cost, Rate};
+use qmckit::work::{Cost, Rate};
 
 use super::Failure;
 use super::budget::BudgetArgs;

@@ -4,11 +4,11 @@ use std::io::{BufWriter, Write};
 
 use clap::{Args, ValueEnum};
 use qmckit::analysis::Points;
-use qmckit::analysis::budget::Budget;
 use qmckit::analysis::l2::L2Metric;
 use qmckit::analysis::pointfile::PointSet;
 use qmckit::analysis::star;
 use qmckit::analysis::star::thiemard;
+use qmckit::work::Budget;
 
 use super::Failure;
 use super::budget::{BudgetArgs, over_budget};

@@ -3,6 +3,7 @@
 //! Errors go to stderr as one line, `qmckit: error: ...`, with exit code 2 for bad usage or
 //! input and 1 for failures of the environment (e.g. an unwritable output).
 
+mod atomic;
 mod blue_noise;
 mod budget;
 mod convergence;
@@ -125,7 +126,33 @@ fn report(message: &str) {
 }
 
 fn main() -> ExitCode {
+    threads();
     ExitCode::from(run_cli(std::env::args_os()))
+}
+
+/// Builds the worker pool before any command runs, so that a `RAYON_NUM_THREADS` the system
+/// cannot honour (too many threads for its memory or limits) is a note and a working run with
+/// the default number of threads, not a panic inside the first parallel loop.
+fn threads() {
+    if rayon::ThreadPoolBuilder::new().build_global().is_ok() {
+        return;
+    }
+    let fallback = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let requested = std::env::var("RAYON_NUM_THREADS").unwrap_or_default();
+    let built = rayon::ThreadPoolBuilder::new()
+        .num_threads(fallback)
+        .build_global()
+        .or_else(|_| {
+            rayon::ThreadPoolBuilder::new()
+                .num_threads(1)
+                .build_global()
+        });
+    let used = if built.is_ok() { fallback } else { 1 };
+    let _ = writeln!(
+        std::io::stderr().lock(),
+        "qmckit: note: could not start the worker threads asked for \
+         (RAYON_NUM_THREADS={requested:?}); using {used}"
+    );
 }
 
 /// Runs the command line `args` (the program name first) and returns the exit code: 0,

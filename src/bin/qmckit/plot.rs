@@ -307,10 +307,7 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
             draw(&fig, format, w, h, &name)?
         }
     };
-    std::fs::write(&args.out, out).map_err(|e| Failure {
-        code: 1,
-        message: format!("{}: {e}", args.out),
-    })
+    super::atomic::write_bytes(std::path::Path::new(&args.out), &out)
 }
 
 fn draw<F: Figure>(

@@ -216,7 +216,7 @@ pub struct Spec {
     /// Lattice: a Korobov parameter.
     pub korobov: Option<u64>,
     /// The time budget of sets built whole at super-linear cost (pmj02bn).
-    pub budget: qmckit::analysis::budget::Budget,
+    pub budget: qmckit::work::Budget,
 }
 
 impl Spec {
@@ -242,7 +242,7 @@ impl Spec {
             centered: false,
             vector: None,
             korobov: None,
-            budget: qmckit::analysis::budget::Budget::DEFAULT,
+            budget: qmckit::work::Budget::DEFAULT,
         }
     }
 }
@@ -716,10 +716,10 @@ pub fn samples_u32(spec: &Spec) -> Result<(Vec<u32>, usize), Failure> {
 fn pmj02bn_set(
     n: u64,
     seed: u64,
-    budget: qmckit::analysis::budget::Budget,
+    budget: qmckit::work::Budget,
 ) -> Result<qmckit::blue_noise::PointSet, Failure> {
-    use qmckit::analysis::budget::{Cost, Rate};
     use qmckit::pmj::bn;
+    use qmckit::work::{Cost, Rate};
     let len = usize::try_from(n).unwrap_or(usize::MAX);
     let work_len = bn::workspace_len(len)?;
     // The spread evaluates about 60 K kernels a point (K = log2 n), 1e8 a second on one

@@ -4,11 +4,11 @@
 use std::io::{BufWriter, Write};
 
 use clap::{Args, ValueEnum};
-use qmckit::analysis::budget::Budget;
 use qmckit::analysis::spectrum::{
     DEFAULT_TOLERANCE, Method, NUFFT_MIN_TOLERANCE, SPECTRUM_MAX_K, Spectrum, SpectrumMean,
     choose_method, estimated_cost, periodogram_2d, spectrum_2d_within,
 };
+use qmckit::work::Budget;
 
 use super::Failure;
 use super::budget::BudgetArgs;

@@ -4,12 +4,12 @@
 use std::path::Path;
 
 use qmckit::Sampler;
-use qmckit::analysis::budget::Budget;
 use qmckit::digital::{DigitalNetB, MAX_BASE, is_prime, quality};
 use qmckit::kronecker::Kronecker;
 use qmckit::lattice::{KUO_33002, Rank1Lattice, Tent, korobov, parse_lattice};
 use qmckit::randomize::digits::DigitScramble;
 use qmckit::randomize::{CranleyPatterson, Scrambled};
+use qmckit::work::Budget;
 
 use super::Failure;
 use super::points::{SamplerName, ScrambleName, Spec, value_name};

@@ -4,11 +4,11 @@
 use std::io::Write;
 
 use clap::{Args, ValueEnum};
-use qmckit::analysis::budget::{Budget, Cost};
 use qmckit::analysis::tvalue::{
     COUNT_RATE, DigitalNet2, IntervalFailure, count_steps, elementary_interval_failures_u32_within,
     t_value_u32_within, t_value_within,
 };
+use qmckit::work::{Budget, Cost};
 
 use super::Failure;
 use super::budget::BudgetArgs;

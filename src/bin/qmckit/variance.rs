@@ -103,7 +103,7 @@ pub struct VarianceArgs {
 /// caller checked the cost of all of them).
 fn points_of(which: VarianceSampler, n: u32, seed: u64, s: u32) -> qmckit::Result<Vec<f64>> {
     let key = qmckit::hash::hash3(seed, s as u64, 0x5e7);
-    let unlimited = &qmckit::analysis::budget::Budget::UNLIMITED;
+    let unlimited = &qmckit::work::Budget::UNLIMITED;
     let set = match which {
         VarianceSampler::Poisson => Some(
             PoissonDisk::with_points(2, u64::from(n))?
@@ -218,7 +218,7 @@ pub fn run(args: &VarianceArgs) -> Result<(), Failure> {
                         k_max,
                         method,
                         DEFAULT_TOLERANCE,
-                        &qmckit::analysis::budget::Budget::UNLIMITED,
+                        &qmckit::work::Budget::UNLIMITED,
                     )?,
                     &f,
                 );

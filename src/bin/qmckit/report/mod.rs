@@ -18,8 +18,8 @@ use std::path::{Path, PathBuf};
 use std::sync::Mutex;
 
 use clap::Args;
-use qmckit::analysis::budget::Budget;
 use qmckit::plot::{Figure, Format, render};
+use qmckit::work::Budget;
 
 use super::Failure;
 use super::budget::BudgetArgs;
@@ -140,7 +140,7 @@ impl Ctx {
         Ok(qmckit::analysis::star::star_exact_within(
             points,
             &self.budget,
-            &qmckit::analysis::budget::no_progress,
+            &qmckit::work::no_progress,
         )?)
     }
 
@@ -212,13 +212,11 @@ const GROUPS: [(&str, Builder); 6] = [
 /// Runs `qmckit report`.
 pub fn run(args: &ReportArgs) -> Result<(), Failure> {
     let budget = args.budget.budget()?;
-    let dir = PathBuf::from(&args.out);
-    std::fs::create_dir_all(&dir).map_err(|e| Failure {
-        code: 1,
-        message: format!("{}: {e}", dir.display()),
-    })?;
+    // Assembled out of sight and moved into place at the end: a failed or stopped report
+    // leaves the user's files (and an earlier report) as they were.
+    let staged = super::atomic::StagedDir::new("--out", &PathBuf::from(&args.out))?;
     let ctx = Ctx {
-        dir,
+        dir: staged.path().to_path_buf(),
         quick: args.quick,
         budget,
         png: args.png,
@@ -241,7 +239,8 @@ pub fn run(args: &ReportArgs) -> Result<(), Failure> {
         args.quick,
         started.elapsed().as_secs_f64(),
     );
-    write(&ctx.dir.join("index.html"), page.as_bytes())
+    write(&ctx.dir.join("index.html"), page.as_bytes())?;
+    staged.commit()
 }
 
 /// The first `n` points of `s` in the dimensions `dims`, as reals.

@@ -1,11 +1,11 @@
 //! Nets: elementary intervals of 32 Sobol' points, (0,2)-sequence power-of-two runs,
 //! blue-noise Sobol' (screen-space error of Morton-ordered Owen-scrambled Sobol').
 
-use qmckit::analysis::budget::Budget;
 use qmckit::analysis::screen_error::{PixelIntegrand, screen_error};
 use qmckit::analysis::tvalue::t_value_u32;
 use qmckit::pixel::{IndependentPixels, Randomization, ZSobol};
 use qmckit::plot::{ColourMap, ImageFigure, PointsFigure};
+use qmckit::work::Budget;
 use qmckit::{Sampler, Sobol};
 
 use super::super::Failure;

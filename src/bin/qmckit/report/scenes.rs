@@ -3,12 +3,12 @@
 //! (spheres and a plane, exact intersections), a reference at a high sample count, MSE over
 //! many seeds.
 
-use qmckit::analysis::budget::{Cost, Rate};
 use qmckit::analysis::scene::{
     self, SceneImage, SceneStudy, StudyOptions, ambient_occlusion_study, motion_defocus_study,
     pixel_area_study, pixel_light_study, quad_light_uv, soft_shadow_study,
 };
 use qmckit::plot::{ColourMap, ImageFigure, PointsFigure};
+use qmckit::work::{Cost, Rate};
 
 use super::super::Failure;
 use super::{Ctx, Section, row, sig};
