@@ -130,29 +130,39 @@ fn main() -> ExitCode {
     ExitCode::from(run_cli(std::env::args_os()))
 }
 
-/// Builds the worker pool before any command runs, so that a `RAYON_NUM_THREADS` the system
-/// cannot honour (too many threads for its memory or limits) is a note and a working run with
-/// the default number of threads, not a panic inside the first parallel loop.
+/// The most worker threads a core that `RAYON_NUM_THREADS` may ask for (at least 256 in all).
+const MAX_THREADS_PER_CORE: usize = 64;
+
+/// Builds the global worker pool before any command starts, so that a `RAYON_NUM_THREADS`
+/// the system cannot honour (more threads than its memory or limits allow) is a one-line
+/// note and a working run with the default number of threads, not a panic inside the first
+/// parallel loop. The count is tried on a private pool first, because a failed global build
+/// cannot be retried; a count past [`MAX_THREADS_PER_CORE`] threads a core is not tried at
+/// all (thousands of threads can exhaust memory inside the runtime, beyond any recovery).
 fn threads() {
-    if rayon::ThreadPoolBuilder::new().build_global().is_ok() {
-        return;
+    let works = |n: usize| rayon::ThreadPoolBuilder::new().num_threads(n).build().is_ok();
+    let requested = std::env::var("RAYON_NUM_THREADS").ok();
+    let default = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let wanted = match requested.as_deref().map(str::trim).map(str::parse::<usize>) {
+        Some(Ok(n)) if n > 0 => n,
+        _ => default,
+    };
+    let ceiling = default.saturating_mul(MAX_THREADS_PER_CORE).max(256);
+    let used = [wanted, default, 1]
+        .into_iter()
+        .find(|&n| n <= ceiling && works(n))
+        .unwrap_or(1);
+    let global = rayon::ThreadPoolBuilder::new()
+        .num_threads(used)
+        .build_global();
+    if used != wanted || global.is_err() {
+        let _ = writeln!(
+            std::io::stderr().lock(),
+            "qmckit: note: could not start {wanted} worker threads (RAYON_NUM_THREADS={}); \
+             using {used}",
+            requested.unwrap_or_default()
+        );
     }
-    let fallback = std::thread::available_parallelism().map_or(1, |n| n.get());
-    let requested = std::env::var("RAYON_NUM_THREADS").unwrap_or_default();
-    let built = rayon::ThreadPoolBuilder::new()
-        .num_threads(fallback)
-        .build_global()
-        .or_else(|_| {
-            rayon::ThreadPoolBuilder::new()
-                .num_threads(1)
-                .build_global()
-        });
-    let used = if built.is_ok() { fallback } else { 1 };
-    let _ = writeln!(
-        std::io::stderr().lock(),
-        "qmckit: note: could not start the worker threads asked for \
-         (RAYON_NUM_THREADS={requested:?}); using {used}"
-    );
 }
 
 /// Runs the command line `args` (the program name first) and returns the exit code: 0,
