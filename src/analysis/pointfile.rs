@@ -149,22 +149,20 @@ fn is_separator(c: char) -> bool {
     c == ' ' || c == '\t'
 }
 
-/// The tokens of one comment-free line, field by field: `Err` for an empty field.
-fn fields(text: &str) -> impl Iterator<Item = Result<Vec<&str>, String>> {
-    text.split(',').map(|field| {
-        let tokens: Vec<&str> = field
+/// The message for an empty comma-separated field.
+const EMPTY_FIELD: &str =
+    "empty field (two commas in a row, or a comma at the start or end of the line)";
+
+/// The tokens of one comment-free line, in order: `Err` for an empty comma-separated field.
+/// Allocates nothing.
+fn tokens(text: &str) -> impl Iterator<Item = Result<&str, String>> {
+    text.split(',').flat_map(|field| {
+        let mut toks = field
             .split(is_separator)
             .filter(|t| !t.is_empty())
-            .collect();
-        if tokens.is_empty() {
-            Err(
-                "empty field (two commas in a row, or a comma at the start or end \
-                 of the line)"
-                    .to_owned(),
-            )
-        } else {
-            Ok(tokens)
-        }
+            .peekable();
+        let empty = toks.peek().is_none().then(|| Err(EMPTY_FIELD.to_owned()));
+        empty.into_iter().chain(toks.map(Ok))
     })
 }
 
@@ -219,11 +217,15 @@ fn is_whole(token: &str) -> bool {
 /// Appends the coordinates of one (comment-free, non-blank) line to `out`; returns how many.
 fn parse_row(text: &str, encoding: Encoding, out: &mut Vec<f64>) -> Result<usize, String> {
     let mut count = 0;
-    for field in fields(text) {
-        for token in field? {
-            out.push(parse_value(token, encoding)?);
-            count += 1;
+    for token in tokens(text) {
+        let token = token?;
+        if out.len() == out.capacity() {
+            // Doubling growth through the checked helper: the 1 GiB rule holds for the
+            // parsed values, and a refused allocation is an error, not an abort.
+            crate::size::reserve(out, out.len().max(1024)).map_err(|e| e.to_string())?;
         }
+        out.push(parse_value(token, encoding)?);
+        count += 1;
     }
     Ok(count)
 }
@@ -242,17 +244,15 @@ fn is_set_separator(raw: &str) -> bool {
 pub fn detect_encoding(text: &str) -> Encoding {
     let mut above_one = false;
     for raw in lines(text) {
-        for field in fields(content(raw)).flatten() {
-            for token in field {
-                if !is_whole(token) {
-                    return Encoding::Real;
-                }
-                above_one |= token.trim_start_matches('0').len() > 1
-                    || token
-                        .trim_start_matches('0')
-                        .parse::<u8>()
-                        .is_ok_and(|v| v > 1);
+        for token in tokens(content(raw)).flatten() {
+            if !is_whole(token) {
+                return Encoding::Real;
             }
+            above_one |= token.trim_start_matches('0').len() > 1
+                || token
+                    .trim_start_matches('0')
+                    .parse::<u8>()
+                    .is_ok_and(|v| v > 1);
         }
     }
     if above_one {
@@ -261,6 +261,10 @@ pub fn detect_encoding(text: &str) -> Encoding {
         Encoding::Real
     }
 }
+
+/// The most coordinates read from one text, over all its sets: the parsed `f64` values stay
+/// within [`crate::size::MAX_ALLOC_BYTES`], whatever the text's size.
+pub const MAX_VALUES: usize = (crate::size::MAX_ALLOC_BYTES / 8) as usize;
 
 /// The set being read: its points and where its first point was.
 struct Current {
@@ -319,6 +323,7 @@ pub fn parse_point_sets_as(text: &str, encoding: Encoding) -> Result<Vec<PointSe
     let mut sets = Vec::new();
     let mut current = Current::new();
     let mut last_line = 0;
+    let mut total = 0usize;
     for (index, raw) in lines(text).enumerate() {
         let line = index + 1;
         last_line = line;
@@ -344,6 +349,14 @@ pub fn parse_point_sets_as(text: &str, encoding: Encoding) -> Result<Vec<PointSe
         };
         let before = current.set.data.len();
         let count = parse_row(content, encoding, &mut current.set.data).map_err(error)?;
+        total = total.saturating_add(count);
+        if total > MAX_VALUES {
+            return Err(error(format!(
+                "more than {MAX_VALUES} coordinates in all: the parsed values would pass the \
+                 {} byte limit; split the input",
+                crate::size::MAX_ALLOC_BYTES
+            )));
+        }
         if current.first_line == 0 {
             current.set.dims = count;
             current.first_line = line;

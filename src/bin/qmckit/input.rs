@@ -35,45 +35,162 @@ pub struct InputArgs {
 /// The first bytes of every NumPy `.npy` file.
 const NPY_MAGIC: &[u8] = b"\x93NUMPY";
 
-/// The largest input read: the crate's allocation limit (an endless input such as
-/// `/dev/zero` is refused once it passes it).
-const MAX_INPUT_BYTES: u64 = qmckit::size::MAX_ALLOC_BYTES;
+/// The first bytes of every PNG file.
+const PNG_MAGIC: &[u8] = b"\x89PNG";
 
-/// Reads the input bytes (at most [`MAX_INPUT_BYTES`]); the name errors give them.
-fn read_input(file: Option<&str>) -> Result<(String, Vec<u8>), Failure> {
-    let mut bytes = Vec::new();
-    let (name, result) = match file {
-        None | Some("-") => (
-            "<stdin>".to_owned(),
-            std::io::stdin()
-                .lock()
-                .take(MAX_INPUT_BYTES + 1)
-                .read_to_end(&mut bytes),
-        ),
-        Some(path) => (
-            // A name with a line break or other control character is quoted, so the
-            // error stays on one line.
-            if path.chars().any(char::is_control) {
-                format!("{path:?}")
-            } else {
-                path.to_owned()
-            },
-            std::fs::File::open(path)
-                .and_then(|f| f.take(MAX_INPUT_BYTES + 1).read_to_end(&mut bytes)),
-        ),
+/// The bounds of one input: the bytes read and the longest line of a text.
+#[derive(Clone, Copy, Debug)]
+pub struct Limits {
+    /// The most bytes read; a regular file longer than this is refused before reading.
+    pub bytes: u64,
+    /// The longest line of a text input, in bytes (binary formats, recognized by their
+    /// magic bytes, have no lines).
+    pub line: usize,
+    /// The option that names the input (`--vector`), or empty for the main input.
+    pub option: &'static str,
+}
+
+/// The limits of a point file, table or image: the crate's allocation limit (1 GiB), and
+/// lines of at most 64 MiB (a point of 21201 coordinates written in full takes 0.5 MiB).
+pub const DATA: Limits = Limits {
+    bytes: qmckit::size::MAX_ALLOC_BYTES,
+    line: 64 << 20,
+    option: "",
+};
+
+/// How much is read at a time.
+const CHUNK: usize = 1 << 20;
+
+/// The name errors give `file` (`-` or none: standard input), quoted when it holds a
+/// control character so the error stays on one line.
+pub fn shown_name(file: Option<&str>) -> String {
+    match file {
+        None | Some("-") => "<stdin>".to_owned(),
+        Some(path) if path.chars().any(char::is_control) => format!("{path:?}"),
+        Some(path) => path.to_owned(),
+    }
+}
+
+/// The one bounded input path: reads `file` (`-` or none: standard input) within `limits`
+/// and returns the name errors give it and its bytes.
+///
+/// Every source goes through here, files, pipes and devices alike: the bytes are counted as
+/// they are actually read (a device's size is not trusted), a regular file past the limit is
+/// refused from its size before anything is read, a text line past the line limit is
+/// refused as soon as it passes it (so `/dev/zero` is refused within the first chunks), and
+/// the buffer grows through the checked allocation helper. Cost: one pass over the input.
+///
+/// # Errors
+/// A usage failure (exit 2) naming the input: it cannot be opened or read, or it passes a
+/// limit.
+pub fn read_bounded(file: Option<&str>, limits: Limits) -> Result<(String, Vec<u8>), Failure> {
+    let name = shown_name(file);
+    let label = if limits.option.is_empty() {
+        name.clone()
+    } else {
+        format!("{} {name}", limits.option)
     };
-    result.map_err(|e| Failure::usage(format!("{name}: {e}")))?;
-    if bytes.len() as u64 > MAX_INPUT_BYTES {
-        return Err(Failure::usage(format!(
-            "{name}: more than {MAX_INPUT_BYTES} bytes of input; split it into smaller files"
-        )));
+    let fail = |message: String| Failure::usage(format!("{label}: {message}"));
+    let mut source: Box<dyn Read> = match file {
+        None | Some("-") => Box::new(std::io::stdin().lock()),
+        Some(path) => {
+            let f = std::fs::File::open(path).map_err(|e| fail(e.to_string()))?;
+            let meta = f.metadata().map_err(|e| fail(e.to_string()))?;
+            if meta.is_dir() {
+                return Err(fail("is a directory".to_owned()));
+            }
+            if meta.is_file() && meta.len() > limits.bytes {
+                return Err(fail(format!(
+                    "{} bytes, more than the {} bytes read; split it into smaller files",
+                    meta.len(),
+                    limits.bytes
+                )));
+            }
+            Box::new(f)
+        }
+    };
+    let mut bytes: Vec<u8> = Vec::new();
+    let mut binary = None;
+    let mut line_len = 0usize;
+    let mut line_no = 1u64;
+    let mut scanned = 0usize;
+    let mut chunk = vec![0u8; CHUNK];
+    loop {
+        let got = match source.read(&mut chunk) {
+            Ok(0) => break,
+            Ok(k) => k,
+            Err(e) if e.kind() == std::io::ErrorKind::Interrupted => continue,
+            Err(e) => return Err(fail(e.to_string())),
+        };
+        if bytes.len() as u64 + got as u64 > limits.bytes {
+            return Err(fail(format!(
+                "more than {} bytes of input; split it into smaller files",
+                limits.bytes
+            )));
+        }
+        qmckit::size::reserve(&mut bytes, got).map_err(|e| fail(e.to_string()))?;
+        bytes.extend_from_slice(&chunk[..got]);
+        if bytes.len() < 8 && binary.is_none() {
+            // Too short to tell yet; lines are checked once it is known.
+            continue;
+        }
+        let is_binary = *binary
+            .get_or_insert_with(|| bytes.starts_with(NPY_MAGIC) || bytes.starts_with(PNG_MAGIC));
+        if is_binary {
+            continue;
+        }
+        for &b in &bytes[scanned..] {
+            if b == b'\n' || b == b'\r' {
+                line_len = 0;
+                line_no += u64::from(b == b'\n');
+            } else {
+                line_len += 1;
+                if line_len > limits.line {
+                    return Err(fail(format!(
+                        "line {line_no} is longer than {} bytes (not a text of points?)",
+                        limits.line
+                    )));
+                }
+            }
+        }
+        scanned = bytes.len();
     }
     Ok((name, bytes))
+}
+
+/// Checks the header of a `.npy` file before any parser sizes a buffer from it: the
+/// header's stated length must fit in the bytes present. (The format: magic, version
+/// `major.minor`, then the header length as u16 (version 1) or u32 (versions 2 and 3).)
+fn check_npy_header(bytes: &[u8]) -> Result<(), String> {
+    let short = || "a .npy file cut short in its preamble".to_owned();
+    let major = *bytes.get(6).ok_or_else(short)?;
+    let (len, start) = match major {
+        1 => {
+            let b = bytes.get(8..10).ok_or_else(short)?;
+            (u64::from(u16::from_le_bytes([b[0], b[1]])), 10u64)
+        }
+        2 | 3 => {
+            let b = bytes.get(8..12).ok_or_else(short)?;
+            (
+                u64::from(u32::from_le_bytes([b[0], b[1], b[2], b[3]])),
+                12u64,
+            )
+        }
+        v => return Err(format!("a .npy file of unknown version {v}")),
+    };
+    if start + len > bytes.len() as u64 {
+        return Err(format!(
+            "a .npy header of {len} bytes, but the file holds {} (truncated?)",
+            bytes.len()
+        ));
+    }
+    Ok(())
 }
 
 /// The point set of a `.npy` file: float64 or float32, shape (N, D) or (N,), C or Fortran
 /// order.
 fn read_npy(bytes: &[u8]) -> Result<PointSet, String> {
+    check_npy_header(bytes)?;
     let file = npyz::NpyFile::new(bytes).map_err(|e| format!("not a readable .npy file: {e}"))?;
     let shape = file.shape().to_vec();
     let (n, dims) = match shape[..] {
@@ -99,6 +216,8 @@ fn read_npy(bytes: &[u8]) -> Result<PointSet, String> {
     };
     // The header's count must be backed by data before anything is allocated for it.
     let len = qmckit::size::coordinates(n, dims as usize).map_err(|e| e.to_string())?;
+    // The parsed form (f64) is held twice at most (Fortran order is transposed).
+    qmckit::size::bytes(len, 2 * std::mem::size_of::<f64>()).map_err(|e| e.to_string())?;
     if (len as u64).saturating_mul(item as u64) > bytes.len() as u64 {
         return Err(format!(
             "a .npy header for {n} x {dims} values, but the file holds fewer (truncated?)"
@@ -137,7 +256,7 @@ fn read_npy(bytes: &[u8]) -> Result<PointSet, String> {
 
 /// The point sets of the input (`-` or none: standard input) and the name errors give it.
 pub fn read_point_sets(input: &InputArgs) -> Result<(String, Vec<PointSet>), Failure> {
-    let (name, bytes) = read_input(input.file.as_deref())?;
+    let (name, bytes) = read_bounded(input.file.as_deref(), DATA)?;
     if bytes.starts_with(NPY_MAGIC) {
         let set = read_npy(&bytes).map_err(|e| Failure::usage(format!("{name}: {e}")))?;
         return Ok((name, vec![set]));

@@ -2,8 +2,6 @@
 //! [--intervals AxB] [--warp disk|hemisphere|triangle] [FILE|-]`: a figure of a point file, a
 //! spectrum, a convergence table or an image, read from a file or a pipe.
 
-use std::io::Read;
-
 use clap::{Args, ValueEnum};
 use qmckit::analysis::pointfile::parse_point_sets;
 use qmckit::plot::{
@@ -124,29 +122,9 @@ fn pair(text: &str, option: &str, max: u32) -> Result<(u32, u32), Failure> {
     Ok((a, b))
 }
 
-/// Reads the input, at most 1 GiB.
+/// Reads the input through the bounded reader; empty input is refused.
 fn read(file: Option<&str>) -> Result<(String, Vec<u8>), Failure> {
-    let mut bytes = Vec::new();
-    let limit = qmckit::size::MAX_ALLOC_BYTES;
-    let (name, r) = match file {
-        None | Some("-") => (
-            "<stdin>".to_owned(),
-            std::io::stdin()
-                .lock()
-                .take(limit + 1)
-                .read_to_end(&mut bytes),
-        ),
-        Some(p) => (
-            format!("{p:?}").trim_matches('"').to_owned(),
-            std::fs::File::open(p).and_then(|f| f.take(limit + 1).read_to_end(&mut bytes)),
-        ),
-    };
-    r.map_err(|e| Failure::usage(format!("{name}: {e}")))?;
-    if bytes.len() as u64 > limit {
-        return Err(Failure::usage(format!(
-            "{name}: more than {limit} bytes of input"
-        )));
-    }
+    let (name, bytes) = super::input::read_bounded(file, super::input::DATA)?;
     if bytes.iter().all(u8::is_ascii_whitespace) {
         return Err(Failure::usage(format!("{name}: empty input")));
     }

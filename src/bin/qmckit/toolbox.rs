@@ -76,16 +76,15 @@ fn lattice(spec: &Spec, d: usize) -> Result<Box<dyn Sampler>, Failure> {
 /// The first `d` components of the vector in `path` and its modulus.
 fn read_vector(path: &Path, d: usize) -> Result<(Vec<u32>, Option<u64>), Failure> {
     let shown = path.display();
-    let meta =
-        std::fs::metadata(path).map_err(|e| Failure::usage(format!("--vector {shown}: {e}")))?;
-    if meta.len() > MAX_VECTOR_FILE {
-        return Err(Failure::usage(format!(
-            "--vector {shown}: {} bytes, at most {MAX_VECTOR_FILE} read",
-            meta.len()
-        )));
-    }
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| Failure::usage(format!("--vector {shown}: {e}")))?;
+    let limits = super::input::Limits {
+        bytes: MAX_VECTOR_FILE,
+        line: 1 << 16,
+        option: "--vector",
+    };
+    let file = path.to_string_lossy();
+    let (_, bytes) = super::input::read_bounded(Some(&file), limits)?;
+    let text = String::from_utf8(bytes)
+        .map_err(|e| Failure::usage(format!("--vector {shown}: not UTF-8 text ({e})")))?;
     let mut z = qmckit::size::vec_zeroed(d)?;
     let info = parse_lattice(&text, &mut z).map_err(|e| Failure::usage(format!("{shown}: {e}")))?;
     if info.read < d {
