@@ -285,3 +285,57 @@ pub fn set_label(k: usize, count: usize) -> String {
         String::new()
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn scratch(name: &str, bytes: &[u8]) -> String {
+        let p = std::env::temp_dir().join(format!("qmckit-input-{name}-{}", std::process::id()));
+        std::fs::write(&p, bytes).unwrap();
+        p.to_string_lossy().into_owned()
+    }
+
+    #[test]
+    fn limits_are_counted_on_the_bytes_read() {
+        let small = Limits {
+            bytes: 16,
+            line: 4,
+            option: "--vector",
+        };
+        let ok = scratch("ok", b"0.5\n0.25\r\n1\n");
+        assert_eq!(read_bounded(Some(&ok), small).unwrap().1.len(), 12);
+        // Past the byte limit: refused from the size, before reading.
+        let big = scratch("big", &[b'1'; 17]);
+        let e = read_bounded(Some(&big), small).unwrap_err();
+        assert!(e.message.starts_with("--vector ") && e.message.contains("17 bytes"));
+        // A long line: refused at the line, whatever the byte limit.
+        let long = scratch("long", b"0.5\n0.125\n");
+        let e = read_bounded(Some(&long), small).unwrap_err();
+        assert!(
+            e.message.contains("line 2 is longer than 4 bytes"),
+            "{}",
+            e.message
+        );
+        // A device: its size says nothing; the bytes read are counted.
+        let e = read_bounded(Some("/dev/zero"), DATA).unwrap_err();
+        assert!(e.message.contains("line 1 is longer than"), "{}", e.message);
+        for f in [ok, big, long] {
+            std::fs::remove_file(f).unwrap();
+        }
+    }
+
+    #[test]
+    fn npy_headers_are_bounded_before_parsing() {
+        let mut evil = b"\x93NUMPY\x02\x00".to_vec();
+        evil.extend_from_slice(&u32::MAX.to_le_bytes());
+        evil.extend_from_slice(b"{}      ");
+        assert!(check_npy_header(&evil).unwrap_err().contains("4294967295"));
+        assert!(read_npy(&evil).is_err());
+        assert!(check_npy_header(b"\x93NUMPY\x01").is_err());
+        assert!(check_npy_header(b"\x93NUMPY\x07\x00\x00\x00").is_err());
+        let mut ok = b"\x93NUMPY\x01\x00\x04\x00".to_vec();
+        ok.extend_from_slice(b"{}  ");
+        assert!(check_npy_header(&ok).is_ok());
+    }
+}
