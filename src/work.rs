@@ -127,13 +127,13 @@ impl Budget {
     /// [`Error::OutOfTime`] naming `what` once the deadline has passed.
     pub fn check_deadline(&self, what: &'static str) -> Result<()> {
         #[cfg(feature = "std")]
-        if let Some(deadline) = self.deadline {
-            if std::time::Instant::now() > deadline {
-                return Err(Error::OutOfTime {
-                    what,
-                    budget_ms: millis(self.seconds),
-                });
-            }
+        if let Some(deadline) = self.deadline
+            && std::time::Instant::now() > deadline
+        {
+            return Err(Error::OutOfTime {
+                what,
+                budget_ms: millis(self.seconds),
+            });
         }
         let _ = what;
         Ok(())
@@ -189,12 +189,13 @@ impl Default for Budget {
 
 /// `seconds` in whole milliseconds, saturated (NaN counts as too long).
 fn millis(seconds: f64) -> u64 {
-    let ms = (seconds * 1000.0).ceil();
+    let ms = seconds * 1000.0;
     if ms.is_nan() || ms >= u64::MAX as f64 {
-        u64::MAX
-    } else {
-        ms as u64
+        return u64::MAX;
     }
+    // Rounded up without `f64::ceil`, which `core` lacks.
+    let whole = ms as u64;
+    if (whole as f64) < ms { whole + 1 } else { whole }
 }
 
 /// A cheap deadline check for an inner loop: [`Pacer::tick`] counts steps and reads the
@@ -223,7 +224,7 @@ impl Pacer {
     #[inline]
     pub fn tick(&mut self) -> Result<()> {
         self.count = self.count.wrapping_add(1);
-        if self.count % PACER_INTERVAL == 0 {
+        if self.count.is_multiple_of(PACER_INTERVAL) {
             self.budget.check_deadline(self.what)
         } else {
             Ok(())
