@@ -337,7 +337,7 @@ fn spectrum_grid(block: &[Vec<f64>]) -> Result<(usize, Vec<f64>), String> {
             block.len()
         )
     };
-    if !(kf <= bound) {
+    if kf > bound {
         return Err(bad(&kf, &"(2K + 1)^2"));
     }
     let k = kf as usize; // kf <= 2^10: exact
