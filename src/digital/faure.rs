@@ -6,7 +6,7 @@ use super::output_digits;
 use crate::error::{Error, Result};
 
 /// Fills `out` with Faure's matrices in base `base` for `dims` dimensions, `K x K` each
-/// (`K` = [`output_digits`]`(base).0`), in [`DigitalNetB`]'s layout:
+/// (`K` the first value of [`output_digits`]`(base)`), in [`DigitalNetB`]'s layout:
 /// `C_j[r][c] = C(c, r) j^(c - r) mod b` for `c >= r`, else 0 (`C_0` the identity).
 /// `O(dims K^2)`; no allocation.
 ///
@@ -28,7 +28,7 @@ pub fn faure_matrices(base: u32, dims: usize, out: &mut [u16]) -> Result<()> {
             what: "Faure's sequence needs a base at least the dimension (b >= s)",
         });
     }
-    let (k, _) = output_digits(base);
+    let (k, _) = output_digits(base)?;
     let expected = dims * k * k;
     if out.len() != expected {
         return Err(Error::BufferLength {
@@ -97,7 +97,7 @@ impl DigitalNetB<Vec<u16>> {
                 what: "Faure's sequence needs a base at least the dimension (b >= s)",
             });
         }
-        let (k, _) = output_digits(base);
+        let (k, _) = output_digits(base)?;
         let mut m = crate::size::vec_zeroed(crate::size::coordinates(dims as u64, k * k)?)?;
         faure_matrices(base, dims, &mut m)?;
         DigitalNetB::new(base, dims, k, m)

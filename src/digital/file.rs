@@ -62,23 +62,20 @@ pub fn parse_dnet(text: &str) -> Result<DigitalNetB<Vec<u16>>> {
     }
     let mut header = [0u64; 4];
     let mut got = 0;
-    let mut body = Vec::new();
-    for line in lines {
+    for line in lines.by_ref() {
         let content = line.split('#').next().unwrap_or("").trim();
-        if got < header.len() {
-            if content.is_empty() {
-                continue;
-            }
-            let v = content
-                .parse::<u64>()
-                .map_err(|_| bad("a dnet header value (b, s, k, r) is not a whole number"))?;
-            if let Some(slot) = header.get_mut(got) {
-                *slot = v;
-            }
-            got += 1;
-        } else if !line.trim().is_empty() && !line.trim_start().starts_with('#') {
-            // Comment lines between the header values and the matrices are skipped too.
-            body.push(line.trim());
+        if content.is_empty() {
+            continue;
+        }
+        let v = content
+            .parse::<u64>()
+            .map_err(|_| bad("a dnet header value (b, s, k, r) is not a whole number"))?;
+        if let Some(slot) = header.get_mut(got) {
+            *slot = v;
+        }
+        got += 1;
+        if got == header.len() {
+            break;
         }
     }
     if got < header.len() {
@@ -89,22 +86,33 @@ pub fn parse_dnet(text: &str) -> Result<DigitalNetB<Vec<u16>>> {
         return Err(bad("a dnet base must be a prime of at most 65521"));
     }
     let b32 = b as u32;
-    let (digits, _) = output_digits(b32);
+    let (digits, _) = output_digits(b32)?;
     let s = usize::try_from(s).map_err(|_| bad("a dnet dimension does not fit"))?;
-    if s == 0 || body.len() < s {
+    if s == 0 {
         return Err(bad("a dnet file has fewer matrix lines than dimensions"));
     }
+    // The matrix lines: comment lines between the header values and the matrices are
+    // skipped too; lines past the s-th are not read.
+    let body = lines
+        .map(str::trim)
+        .filter(|l| !l.is_empty() && !l.starts_with('#'))
+        .take(s);
     if r == 0 || r > 64 {
         return Err(bad("a dnet row count r must be 1 to 64"));
     }
     let limit = (b as u128).checked_pow(r as u32).unwrap_or(u128::MAX);
-    let rows = body
-        .iter()
-        .take(s)
-        .map(|l| l.split_whitespace().collect::<Vec<_>>());
     let mut k = None;
     let mut matrices = Vec::new();
-    for cols in rows {
+    let mut lines_read = 0usize;
+    for line in body {
+        // At most K + 1 words are looked at: more columns are refused below.
+        let mut cols = [""; super::MAX_DIGITS + 1];
+        let mut len = 0;
+        for (slot, word) in cols.iter_mut().zip(line.split_whitespace()) {
+            *slot = word;
+            len += 1;
+        }
+        let cols = cols.get(..len).unwrap_or(&[]);
         let kk = *k.get_or_insert(cols.len());
         if cols.len() != kk || kk == 0 {
             return Err(bad(
@@ -116,7 +124,10 @@ pub fn parse_dnet(text: &str) -> Result<DigitalNetB<Vec<u16>>> {
                 "a dnet file has more columns than the 0.32 output can index",
             ));
         }
+        lines_read += 1;
         let start = matrices.len();
+        // Grows with the file: checked against the allocation limit.
+        crate::size::reserve(&mut matrices, digits * kk)?;
         matrices.resize(start + digits * kk, 0u16);
         for (c, word) in cols.iter().enumerate() {
             let mut v = word
@@ -138,6 +149,9 @@ pub fn parse_dnet(text: &str) -> Result<DigitalNetB<Vec<u16>>> {
                 }
             }
         }
+    }
+    if lines_read < s {
+        return Err(bad("a dnet file has fewer matrix lines than dimensions"));
     }
     let k = k.unwrap_or(0);
     let n_matches = (b as u128).checked_pow(k as u32) == Some(k_or_n as u128);

@@ -67,30 +67,102 @@ pub const MAX_BASE: u32 = 65521;
 /// Most output digits (`K` for base 2).
 pub const MAX_DIGITS: usize = 32;
 
-/// `true` when `b` is prime (trial division, `O(sqrt b)`).
-pub const fn is_prime(b: u32) -> bool {
-    if b < 2 {
+/// `true` when `n` is prime, exactly, for every `u32`.
+///
+/// Trial division by the primes up to 37 settles `n < 41^2 = 1681`; above, a deterministic
+/// Miller–Rabin test with the bases 2, 7 and 61, which no odd composite below
+/// 4 759 123 141 > 2^32 passes (Jaeschke 1993). Products of residues below `n < 2^32` fit
+/// in 64 bits, so nothing overflows. Cost: `O(log n)` 64-bit multiplications (about 100),
+/// whatever `n`.
+///
+/// ```
+/// use qmckit::digital::is_prime;
+/// assert!(is_prime(65521) && is_prime(4_294_967_291)); // the largest primes below 2^16, 2^32
+/// assert!(!is_prime(561) && !is_prime(4_294_967_295)); // a Carmichael number; 2^32 - 1
+/// ```
+pub const fn is_prime(n: u32) -> bool {
+    const SMALL: [u32; 12] = [2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37];
+    if n < 2 {
         return false;
     }
-    let mut d = 2;
-    while d * d <= b {
-        if b.is_multiple_of(d) {
+    let mut i = 0;
+    while i < SMALL.len() {
+        let p = SMALL[i];
+        if n == p {
+            return true;
+        }
+        if n.is_multiple_of(p) {
             return false;
         }
-        d += 1;
+        i += 1;
+    }
+    if n < 41 * 41 {
+        return true;
+    }
+    // n - 1 = d 2^s with d odd (n is odd and above 1681 here).
+    let m = n as u64;
+    let s = (n - 1).trailing_zeros();
+    let d = ((n - 1) >> s) as u64;
+    let bases = [2u64, 7, 61];
+    let mut k = 0;
+    'witness: while k < bases.len() {
+        let mut x = pow_mod(bases[k], d, m);
+        k += 1;
+        if x == 1 || x == m - 1 {
+            continue;
+        }
+        let mut r = 1;
+        while r < s {
+            x = x * x % m;
+            if x == m - 1 {
+                continue 'witness;
+            }
+            r += 1;
+        }
+        return false;
     }
     true
 }
 
-/// `K`, the fewest base-`b` digits with `b^K >= 2^32`, and `b^K` (`2 <= b <= MAX_BASE`).
-pub const fn output_digits(b: u32) -> (usize, u64) {
+/// `a^e mod m` for `m < 2^32` (so every product of residues fits in 64 bits).
+const fn pow_mod(a: u64, mut e: u64, m: u64) -> u64 {
+    let mut base = a % m;
+    let mut acc = 1 % m;
+    while e > 0 {
+        if e & 1 == 1 {
+            acc = acc * base % m;
+        }
+        base = base * base % m;
+        e >>= 1;
+    }
+    acc
+}
+
+/// `K`, the fewest base-`b` digits with `b^K >= 2^32`, and `b^K`, for `b >= 2` (at most 32
+/// steps; `b^K < 2^32 b` fits in 64 bits for every `u32` base).
+///
+/// # Errors
+/// [`Error::BaseTooSmall`] for `b < 2`, which has no such `K`.
+///
+/// ```
+/// use qmckit::digital::output_digits;
+/// assert_eq!(output_digits(2)?, (32, 1 << 32));
+/// assert_eq!(output_digits(3)?, (21, 3u64.pow(21)));
+/// assert!(output_digits(1).is_err());
+/// # Ok::<(), qmckit::Error>(())
+/// ```
+pub const fn output_digits(b: u32) -> Result<(usize, u64)> {
+    if b < 2 {
+        return Err(Error::BaseTooSmall { base: b });
+    }
     let mut k = 0;
     let mut p = 1u64;
     while p < FULL_RANGE {
+        // p < 2^32 and b < 2^32: the product is below 2^64.
         p *= b as u64;
         k += 1;
     }
-    (k, p)
+    Ok((k, p))
 }
 
 /// A digital net or sequence in prime base `b`: `dims` generator matrices of `K` rows
@@ -131,7 +203,7 @@ impl<M: AsRef<[u16]>> DigitalNetB<M> {
         if dims == 0 {
             return Err(Error::ZeroDimensions);
         }
-        let (digits, scale) = output_digits(base);
+        let (digits, scale) = output_digits(base)?;
         if cols == 0 || cols > digits {
             return Err(Error::InvalidParameter {
                 what: "a digital net needs 1 to K index digits (b^K >= 2^32)",

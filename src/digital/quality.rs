@@ -48,7 +48,7 @@ pub fn t_value<M: AsRef<[u16]>>(
             COUNT_RATE,
         ),
     )?;
-    let (k, _) = super::output_digits(net.base());
+    let (k, _) = super::output_digits(net.base())?;
     let drop = b.pow((k as u32).saturating_sub(m));
     let cells = n as f64;
     let mut x = crate::size::vec_zeroed(crate::size::coordinates(n, s)?)?;

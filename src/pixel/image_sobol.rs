@@ -9,8 +9,25 @@ use super::{
 use crate::error::{Error, Result};
 use crate::sobol::SobolDimension;
 
-/// pbrt's number of Sobol' dimensions: the dimension counter wraps to 2 there.
+/// pbrt-v4's number of Sobol' dimensions (`NSobolDimensions`): its `SobolSampler` wraps
+/// the dimension counter to 2 there.
 pub const PBRT_SOBOL_DIMS: u32 = 1024;
+
+/// Where this build's [`ImageSobol`] wraps the dimension counter to 2: pbrt's rule applied to
+/// the Sobol' table compiled in, `min(`[`SOBOL_MAX_DIMS`](crate::sobol::SOBOL_MAX_DIMS)`,
+/// `[`PBRT_SOBOL_DIMS`]`)`. That is 1024, pbrt's own value, with the `sobol-dims-1024` or
+/// `sobol-dims-21201` feature (the `cli` feature enables the latter): every dimension is
+/// then bit-identical to pbrt. The default table holds 64 dimensions, so a default build
+/// matches pbrt below dimension 64 and from there reads dimensions 2, 3, ... again where
+/// pbrt reads its dimensions 64 to 1023.
+pub const IMAGE_SOBOL_DIMS: u32 = {
+    let compiled = crate::sobol::SOBOL_MAX_DIMS;
+    if compiled < PBRT_SOBOL_DIMS as usize {
+        compiled as u32
+    } else {
+        PBRT_SOBOL_DIMS
+    }
+};
 
 /// The image-plane Sobol' sampler. With `2^m = RoundUpPow2(max(w, h))`, sample `i` of pixel
 /// `p` is the `i`-th Sobol' index whose first two coordinates fall in pixel `p` of the
@@ -20,8 +37,11 @@ pub const PBRT_SOBOL_DIMS: u32 = 1024;
 /// elimination on the first two Sobol' dimensions), not shipped.
 ///
 /// `get_pixel_2d` is the unscrambled point scaled into the pixel; 1D and 2D values start at
-/// Sobol' dimension 2 (a counter below 2 reads as 2; pbrt wraps to 2 at
-/// [`PBRT_SOBOL_DIMS`]), scrambled with `low32(Hash(d, seed))`. Needs
+/// Sobol' dimension 2 (a counter below 2 reads as 2), scrambled with `low32(Hash(d, seed))`.
+/// Past the Sobol' table the sampler pads as pbrt's `Get1D`/`Get2D` do: a request whose
+/// dimension `d` (or `d + 1` for a pair) reaches [`IMAGE_SOBOL_DIMS`] reads dimension 2
+/// (and [`PixelStream`](super::PixelStream) counts on from there), so every counter value
+/// is answered; see [`IMAGE_SOBOL_DIMS`] for what that means for bit-exactness. Needs
 /// `spp 2^2m <= 2^32` (32-bit Sobol' indices; pbrt allows 52 bits).
 /// Cost: setup `O(m^2)`; per sample `O(m + log2 spp)` XORs for the index, then one Sobol'
 /// value (32 AND/XOR) and the scramble.
@@ -184,17 +204,25 @@ impl PixelSampler for ImageSobol {
         Ok(Some(self.index(x, y, index)?))
     }
 
+    /// pbrt's counter rule: `max(dim, 2)`, and 2 when the request's last dimension,
+    /// `dim + width - 1`, reaches [`IMAGE_SOBOL_DIMS`].
+    fn counter_dimension(&self, dim: u32, width: u32) -> u32 {
+        let d = dim.max(2);
+        if d.saturating_add(width.saturating_sub(1)) >= IMAGE_SOBOL_DIMS {
+            2
+        } else {
+            d
+        }
+    }
+
     fn get_1d(&self, x: u32, y: u32, index: u32, dim: u32) -> Result<u32> {
         let i = self.index(x, y, index)?;
-        let d = dim.max(2);
-        let d = if d >= PBRT_SOBOL_DIMS { 2 } else { d };
-        self.dimension(i, d)
+        self.dimension(i, self.counter_dimension(dim, 1))
     }
 
     fn get_2d(&self, x: u32, y: u32, index: u32, dim: u32) -> Result<[u32; 2]> {
         let i = self.index(x, y, index)?;
-        let d = dim.max(2);
-        let d = if d + 1 >= PBRT_SOBOL_DIMS { 2 } else { d };
+        let d = self.counter_dimension(dim, 2); // d + 1 < IMAGE_SOBOL_DIMS
         Ok([self.dimension(i, d)?, self.dimension(i, d + 1)?])
     }
 

@@ -41,7 +41,7 @@ pub mod pmj02bn;
 mod pmj_pixels;
 mod zsobol;
 
-pub use image_sobol::{ImageSobol, PBRT_SOBOL_DIMS};
+pub use image_sobol::{IMAGE_SOBOL_DIMS, ImageSobol, PBRT_SOBOL_DIMS};
 pub use independent::IndependentPixels;
 pub use padded::PaddedSobol;
 pub use pmj_pixels::Pmj02Pixels;
@@ -253,6 +253,17 @@ pub trait PixelSampler {
         self.get_2d(x, y, index, dim)
     }
 
+    /// The dimension a request of `width` values (1 for `Get1D`, 2 for `Get2D`) reads with
+    /// the counter at `dim`; [`PixelStream`] moves its counter on from there, as pbrt's
+    /// samplers do. `dim` itself, except for [`ImageSobol`], which reads a counter below 2
+    /// as 2 and wraps to 2 at the end of its Sobol' table ([`IMAGE_SOBOL_DIMS`]). The
+    /// samplers built on Sobol' dimensions (0, 1) ([`ZSobol`], [`PaddedSobol`]) need no
+    /// wrap: as in pbrt, their counter only feeds hashes, so every `u32` is a dimension.
+    fn counter_dimension(&self, dim: u32, width: u32) -> u32 {
+        let _ = width;
+        dim
+    }
+
     /// Whether pbrt's `GetPixel2D` moves the dimension counter (by 2): true except for
     /// [`ImageSobol`], whose pixel position uses Sobol' dimensions 0 and 1 outside the counter.
     fn pixel_2d_moves_counter(&self) -> bool {
@@ -392,7 +403,9 @@ impl<'a, S: PixelSampler + ?Sized> PixelStream<'a, S> {
     /// # Errors
     /// As [`PixelSampler::get_1d`].
     pub fn next_1d(&mut self) -> Result<u32> {
-        let v = self.sampler.get_1d(self.x, self.y, self.index, self.dim)?;
+        let d = self.sampler.counter_dimension(self.dim, 1);
+        let v = self.sampler.get_1d(self.x, self.y, self.index, d)?;
+        self.dim = d;
         self.advance(1)?;
         Ok(v)
     }
@@ -402,7 +415,9 @@ impl<'a, S: PixelSampler + ?Sized> PixelStream<'a, S> {
     /// # Errors
     /// As [`PixelSampler::get_2d`].
     pub fn next_2d(&mut self) -> Result<[u32; 2]> {
-        let v = self.sampler.get_2d(self.x, self.y, self.index, self.dim)?;
+        let d = self.sampler.counter_dimension(self.dim, 2);
+        let v = self.sampler.get_2d(self.x, self.y, self.index, d)?;
+        self.dim = d;
         self.advance(2)?;
         Ok(v)
     }

@@ -1,6 +1,7 @@
 //! Output: SVG (a string of text elements) or PNG (an RGB raster encoded with `png`).
 
 use std::fmt;
+
 use std::sync::OnceLock;
 
 use plotters::coord::Shift;
@@ -126,10 +127,16 @@ pub fn render<F: Figure>(
                 figure.draw(&root)?;
                 root.present().map_err(drawing)?;
             }
+            // Every text went through `clean`; this keeps the file well-formed XML even if a
+            // future figure forgets (plotters escapes markup, not control characters).
+            text.retain(xml_char);
             Ok(text.into_bytes())
         }
         Format::Png => {
-            let mut rgb = vec![255u8; width as usize * height as usize * 3];
+            let len = crate::size::product("bytes", u64::from(width) * 3, u64::from(height))
+                .map_err(|e| PlotError(e.to_string()))?;
+            let mut rgb: Vec<u8> =
+                crate::size::vec_zeroed(len).map_err(|e| PlotError(e.to_string()))?;
             {
                 let root =
                     BitMapBackend::with_buffer(&mut rgb, (width, height)).into_drawing_area();
@@ -155,6 +162,72 @@ fn encode_png(rgb: &[u8], width: u32, height: u32) -> Result<Vec<u8>, PlotError>
         w.finish().map_err(fail)?;
     }
     Ok(out)
+}
+
+/// Whether `c` may appear in an XML 1.0 document (`#x9 | #xA | #xD | [#x20-#xD7FF] |
+/// [#xE000-#xFFFD] | [#x10000-#x10FFFF]`; a Rust `char` is never a surrogate).
+fn xml_char(c: char) -> bool {
+    matches!(c, '\t' | '\n' | '\r') || !(c.is_control() || matches!(c, '\u{fffe}' | '\u{ffff}'))
+}
+
+/// Text as drawn: tabs and line breaks become spaces, other control characters (C0, DEL,
+/// C1) and the non-characters U+FFFE, U+FFFF are dropped, so a caption or label is
+/// well-formed in SVG (whose markup plotters escapes) and has no invisible glyphs in PNG.
+/// `O(len)`.
+pub(crate) fn clean(text: &str) -> String {
+    text.chars()
+        .filter_map(|c| match c {
+            '\t' | '\n' | '\r' => Some(' '),
+            c if xml_char(c) => Some(c),
+            _ => None,
+        })
+        .collect()
+}
+
+/// A linear axis `lo..hi`: both finite, `lo < hi`, and `hi - lo` finite (plotters' tick
+/// search does not end on an infinite or NaN span).
+///
+/// # Errors
+/// A [`PlotError`] naming `what` and the range otherwise.
+pub(crate) fn linear_axis(lo: f64, hi: f64, what: &str) -> Result<(f64, f64), PlotError> {
+    if lo.is_finite() && hi.is_finite() && lo < hi && (hi - lo).is_finite() {
+        Ok((lo, hi))
+    } else {
+        Err(PlotError::new(format!(
+            "the {what} range {lo:e} to {hi:e} cannot be drawn (it must be finite, \
+             increasing, and its width below {:e})",
+            f64::MAX
+        )))
+    }
+}
+
+/// A logarithmic axis `lo..hi`: `0 < lo < hi`, both finite, and `hi / lo` finite (at most
+/// about 308 decades; plotters' tick search runs in the ratio's decades, and forever when it
+/// is infinite).
+///
+/// # Errors
+/// A [`PlotError`] naming `what` and the range otherwise.
+pub(crate) fn log_axis(lo: f64, hi: f64, what: &str) -> Result<(f64, f64), PlotError> {
+    if lo > 0.0 && lo < hi && hi.is_finite() && (hi / lo).is_finite() {
+        Ok((lo, hi))
+    } else {
+        Err(PlotError::new(format!(
+            "the {what} range {lo:e} to {hi:e} cannot be drawn on a log axis (it must be \
+             positive, finite, and span at most {:e} times)",
+            f64::MAX
+        )))
+    }
+}
+
+/// A range around the single value `v` (a constant image): `v +- max(1/2, |v| 2^-20)`, moved
+/// inside the finite floats near `+-f64::MAX`.
+pub(crate) fn widen(v: f64) -> (f64, f64) {
+    let d = (v.abs() * (1.0 / 1_048_576.0)).max(0.5);
+    match (v - d, v + d) {
+        (a, b) if a.is_finite() && b.is_finite() => (a, b),
+        _ if v > 0.0 => (v - 2.0 * d, v),
+        _ => (v, v + 2.0 * d),
+    }
 }
 
 /// The caption font.

@@ -3,7 +3,7 @@
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::backend::{Figure, PlotError, caption_font, drawing, label_font};
+use super::backend::{Figure, PlotError, caption_font, clean, drawing, label_font, log_axis};
 use super::colour::PALETTE;
 use crate::analysis::variance::fit_slope;
 
@@ -19,8 +19,14 @@ pub struct Curve {
 /// Errors against `N` on log-log axes; each curve's legend gives the least-squares slope
 /// `a` of `log error = a log N + c` (−1/2 for Monte Carlo, near −1 for QMC on smooth
 /// integrands, −3/2 for Owen-scrambled nets), and an optional reference line `N^-1/2`
-/// through the first curve's first point, dashed. Pairs with a non-positive value are
-/// left out (an exact estimate has no logarithm).
+/// through the first curve's first point, dashed (cut where it leaves the axes). Pairs with
+/// a value that is not positive, not finite, or subnormal (below `f64::MIN_POSITIVE`, about
+/// 2.2e-308: numerically zero) are left out (an exact estimate has no logarithm);
+/// [`left_out`](Self::left_out) counts them.
+///
+/// The axes are logarithmic, so the drawn `N` and errors must each span a finite ratio
+/// (at most about 308 decades, the errors with a factor 1.5 of margin each side); wider
+/// data is refused, never drawn for ever.
 #[derive(Clone, Debug)]
 pub struct ConvergenceFigure {
     /// The caption.
@@ -54,12 +60,25 @@ impl ConvergenceFigure {
             })
             .collect()
     }
+
+    /// How many pairs are not drawn (a value not positive, not finite or subnormal).
+    pub fn left_out(&self) -> usize {
+        self.curves
+            .iter()
+            .map(|c| c.points.len() - usable(&c.points).count())
+            .sum()
+    }
+}
+
+/// A value a log axis can place: positive, normal and finite.
+fn placeable(v: f64) -> bool {
+    v >= f64::MIN_POSITIVE && v.is_finite()
 }
 
 fn usable(p: &[(f64, f64)]) -> impl Iterator<Item = (f64, f64)> + '_ {
     p.iter()
         .copied()
-        .filter(|&(n, e)| n > 0.0 && e > 0.0 && n.is_finite() && e.is_finite())
+        .filter(|&(n, e)| placeable(n) && placeable(e))
 }
 
 impl Figure for ConvergenceFigure {
@@ -82,25 +101,28 @@ impl Figure for ConvergenceFigure {
         }
         if x0 >= x1 || y0 > y1 {
             return Err(PlotError::new(
-                "a convergence plot needs at least two different N with a positive error",
+                "a convergence plot needs at least two different N with an error that is positive, \
+                 finite and not subnormal",
             ));
         }
         if y0 == y1 {
             y0 /= 2.0;
             y1 *= 2.0;
         }
+        let (x0, x1) = log_axis(x0, x1, "N")?;
+        let (ylo, yhi) = log_axis(y0 / 1.5, y1 * 1.5, "error")?;
         let mut chart = ChartBuilder::on(area)
-            .caption(&self.title, caption_font())
+            .caption(clean(&self.title), caption_font())
             .margin(12)
             .x_label_area_size(36)
             .y_label_area_size(60)
-            .build_cartesian_2d((x0..x1).log_scale(), (y0 / 1.5..y1 * 1.5).log_scale())
+            .build_cartesian_2d((x0..x1).log_scale(), (ylo..yhi).log_scale())
             .map_err(drawing)?;
         chart
             .configure_mesh()
             .light_line_style(RGBColor(235, 235, 235))
             .x_desc("N (points)")
-            .y_desc(&self.y_label)
+            .y_desc(clean(&self.y_label))
             .y_label_formatter(&|v| format!("{v:.0e}"))
             .x_label_formatter(&|v| format!("{v:.0}"))
             .label_style(label_font())
@@ -109,9 +131,9 @@ impl Figure for ConvergenceFigure {
         let slopes = self.slopes();
         for (i, c) in self.curves.iter().enumerate() {
             let col = PALETTE[i % PALETTE.len()];
-            let label = match slopes[i] {
-                Some(s) => format!("{} (slope {s:.2})", c.label),
-                None => c.label.clone(),
+            let label = match slopes.get(i).copied().flatten() {
+                Some(s) => format!("{} (slope {s:.2})", clean(&c.label)),
+                None => clean(&c.label),
             };
             chart
                 .draw_series(LineSeries::new(usable(&c.points), col.stroke_width(2)))
@@ -130,7 +152,9 @@ impl Figure for ConvergenceFigure {
             .and_then(|c| usable(&c.points).next())
             .filter(|_| self.reference)
         {
-            let r = vec![(n, e), (x1, e * (n / x1).sqrt())];
+            // e sqrt(n / x) falls to the bottom of the axes, ylo, at x = n (e / ylo)^2.
+            let x_end = x1.min(n * (e / ylo) * (e / ylo));
+            let r = vec![(n, e), (x_end, (e * (n / x_end).sqrt()).max(ylo))];
             chart
                 .draw_series(DashedLineSeries::new(
                     r,

@@ -8,6 +8,12 @@ use super::backend::PlotError;
 /// The largest image read (pixels).
 const MAX_PIXELS: usize = 1 << 22;
 
+/// The most rows a measurement table holds (a figure draws at most this many elements).
+const MAX_ROWS: usize = super::backend::MAX_ELEMENTS;
+
+/// The most numbers on one line of a measurement table (its rows hold a few columns).
+const MAX_COLUMNS: usize = 1024;
+
 /// A decoded image: `(width, height, values)`, row-major from the top, values as stored
 /// (grey levels, or ranks for a text mask).
 pub type Decoded = (usize, usize, Vec<f64>);
@@ -55,29 +61,37 @@ fn decode_png(bytes: &[u8]) -> Result<Decoded, PlotError> {
     let size = reader
         .output_buffer_size()
         .ok_or_else(|| err("PNG: the image is too large"))?;
-    let mut buf = vec![0u8; size];
+    let mut buf: Vec<u8> = crate::size::vec_zeroed(size).map_err(|e| err(format!("PNG: {e}")))?;
     let frame = reader
         .next_frame(&mut buf)
         .map_err(|e| err(format!("PNG: {e}")))?;
     let channels = frame.color_type.samples();
     let wide = frame.bit_depth == png::BitDepth::Sixteen;
     let bytes_per = if wide { 2 } else { 1 };
-    let sample = |i: usize| -> f64 {
-        if wide {
-            u16::from_be_bytes([buf[2 * i], buf[2 * i + 1]]) as f64
+    let truncated = || err("PNG: the decoded frame is shorter than its size");
+    let sample = |i: usize| -> Result<f64, PlotError> {
+        let v = if wide {
+            let at = i.checked_mul(2).ok_or_else(truncated)?;
+            match buf.get(at..at + 2) {
+                Some(&[a, b]) => u16::from_be_bytes([a, b]) as f64,
+                _ => return Err(truncated()),
+            }
         } else {
-            buf[i] as f64
-        }
+            *buf.get(i).ok_or_else(truncated)? as f64
+        };
+        Ok(v)
     };
     let line = frame.line_size;
-    let mut out = Vec::with_capacity(w * h);
+    let mut out: Vec<f64> =
+        crate::size::vec_with_capacity(w * h).map_err(|e| err(format!("PNG: {e}")))?;
     for y in 0..h {
         for x in 0..w {
+            // w, h <= 2^22 and line <= 8 w bytes: no overflow.
             let base = (y * line) / bytes_per + x * channels;
             let v = if channels >= 3 {
-                0.2126 * sample(base) + 0.7152 * sample(base + 1) + 0.0722 * sample(base + 2)
+                0.2126 * sample(base)? + 0.7152 * sample(base + 1)? + 0.0722 * sample(base + 2)?
             } else {
-                sample(base)
+                sample(base)?
             };
             out.push(v);
         }
@@ -172,26 +186,32 @@ fn decode_text(text: &str) -> Result<Decoded, PlotError> {
         if line.is_empty() {
             continue;
         }
-        let row: Vec<f64> = line
+        let start = v.len();
+        for word in line
             .split(|c: char| c == ',' || c.is_ascii_whitespace())
             .filter(|s| !s.is_empty())
-            .map(|s| s.parse::<f64>().ok().filter(|x| x.is_finite()))
-            .collect::<Option<_>>()
-            .ok_or_else(|| err(format!("line {}: not a row of finite numbers", k + 1)))?;
+        {
+            let x = word
+                .parse::<f64>()
+                .ok()
+                .filter(|x| x.is_finite())
+                .ok_or_else(|| err(format!("line {}: not a row of finite numbers", k + 1)))?;
+            // Checked before growing: the image never holds more than MAX_PIXELS values.
+            if v.len() >= MAX_PIXELS {
+                return Err(err(format!("more than {MAX_PIXELS} pixels")));
+            }
+            v.push(x);
+        }
+        let len = v.len() - start;
         if rows == 0 {
-            w = row.len();
-        } else if row.len() != w {
+            w = len;
+        } else if len != w {
             return Err(err(format!(
-                "line {}: {} values, the first row has {w}",
-                k + 1,
-                row.len()
+                "line {}: {len} values, the first row has {w}",
+                k + 1
             )));
         }
-        v.extend(row);
         rows += 1;
-        if v.len() > MAX_PIXELS {
-            return Err(err(format!("more than {MAX_PIXELS} pixels")));
-        }
     }
     check_size(w, rows).map_err(|_| err("the input holds no image (no rows of numbers)"))?;
     Ok((w, rows, v))
@@ -207,19 +227,22 @@ pub struct Block {
 }
 
 /// Rows of numbers from a measurement table: lines not starting with `#`, split on
-/// whitespace, each with at least `min_columns` finite numbers. Blocks separated by
+/// whitespace, each with at least `min_columns` and at most 1024 finite numbers,
+/// at most 2^22 rows in all (the most a figure draws). Blocks separated by
 /// `# set K` or `# mean ...` lines (`qmckit spectrum` with several sets) or by lines holding
 /// only `#` are kept apart: the result has one entry per block. A `# label: NAME` line names
 /// the block it is in.
 ///
 /// # Errors
-/// A [`PlotError`] for a line that is not numbers, a short line, or no rows at all.
+/// A [`PlotError`] for a line that is not numbers, a short or long line, too many rows, or
+/// no rows at all.
 pub fn parse_blocks(text: &str, min_columns: usize) -> Result<Vec<Block>, PlotError> {
     let empty = || Block {
         label: None,
         rows: Vec::new(),
     };
     let mut blocks = vec![empty()];
+    let mut total = 0usize;
     for (k, line) in text.lines().enumerate() {
         let line = line.trim();
         if line == "#" || line.starts_with("# set") || line.starts_with("# mean") {
@@ -239,9 +262,23 @@ pub fn parse_blocks(text: &str, min_columns: usize) -> Result<Vec<Block>, PlotEr
         }
         let row: Vec<f64> = line
             .split_ascii_whitespace()
+            .take(MAX_COLUMNS + 1)
             .map(|s| s.parse::<f64>().ok().filter(|x| x.is_finite()))
             .collect::<Option<_>>()
             .ok_or_else(|| err(format!("line {}: not a row of numbers", k + 1)))?;
+        if row.len() > MAX_COLUMNS {
+            return Err(err(format!(
+                "line {}: more than {MAX_COLUMNS} values",
+                k + 1
+            )));
+        }
+        total += 1;
+        if total > MAX_ROWS {
+            return Err(err(format!(
+                "line {}: more than {MAX_ROWS} rows of numbers",
+                k + 1
+            )));
+        }
         if row.len() < min_columns {
             return Err(err(format!(
                 "line {}: {} values, at least {min_columns} expected",

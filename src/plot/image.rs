@@ -3,7 +3,7 @@
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::backend::{Figure, PlotError, caption_font, drawing};
+use super::backend::{Figure, PlotError, caption_font, clean, drawing, linear_axis, widen};
 use super::colour::{diverging, grey, viridis};
 use super::spectrum::colour_bar;
 
@@ -21,8 +21,14 @@ pub enum ColourMap {
 }
 
 /// A `width x height` image of real values (row-major, row 0 at the top) drawn with a
-/// colour map over `[lo, hi]` (default: the data's range; for [`ColourMap::Diverging`]
+/// colour map over `[lo, hi]` (default: the data's range, widened to
+/// `v +- max(1/2, |v| 2^-20)` for a constant image `v`; for [`ColourMap::Diverging`]
 /// `[-m, m]` with `m` the largest magnitude) and a colour bar.
+///
+/// The colour range must be finite with `hi - lo` finite (so `|m| <= f64::MAX / 2` for the
+/// diverging map); a wider range, a `range` with `lo >= hi`, or pixels that do not match
+/// `width x height` are refused when drawing (the fields are public, so drawing checks
+/// them again). Cost: one pass over the pixels, one rectangle each.
 #[derive(Clone, Debug)]
 pub struct ImageFigure {
     /// The caption.
@@ -92,20 +98,34 @@ impl ImageFigure {
         self
     }
 
-    fn bounds(&self) -> (f64, f64) {
-        if let Some(r) = self.range {
-            return r;
+    /// The colour range, checked (see the type's documentation).
+    fn bounds(&self) -> Result<(f64, f64), PlotError> {
+        if self.width == 0 || self.width.checked_mul(self.height) != Some(self.pixels.len()) {
+            return Err(PlotError::new(format!(
+                "an image of {}x{} pixels needs {} values, not {}",
+                self.width,
+                self.height,
+                self.width.saturating_mul(self.height),
+                self.pixels.len()
+            )));
+        }
+        if let Some(v) = self.pixels.iter().find(|v| !v.is_finite()) {
+            return Err(PlotError::new(format!("image value {v} is not finite")));
+        }
+        if let Some((lo, hi)) = self.range {
+            return linear_axis(lo, hi, "colour");
         }
         let lo = self.pixels.iter().copied().fold(f64::MAX, f64::min);
         let hi = self.pixels.iter().copied().fold(f64::MIN, f64::max);
-        match self.map {
+        let (lo, hi) = match self.map {
             ColourMap::Diverging => {
                 let m = lo.abs().max(hi.abs()).max(f64::MIN_POSITIVE);
                 (-m, m)
             }
             _ if hi > lo => (lo, hi),
-            _ => (lo - 0.5, lo + 0.5),
-        }
+            _ => widen(lo),
+        };
+        linear_axis(lo, hi, "colour")
     }
 }
 
@@ -118,8 +138,8 @@ impl Figure for ImageFigure {
     where
         DB::ErrorType: 'static,
     {
-        let (lo, hi) = self.bounds();
-        let span = if hi > lo { hi - lo } else { 1.0 };
+        let (lo, hi) = self.bounds()?;
+        let span = hi - lo; // positive and finite (checked)
         let map = self.map;
         let colour = move |t: f64| match map {
             ColourMap::Grey => grey(t),
@@ -135,7 +155,7 @@ impl Figure for ImageFigure {
         };
         let (wf, hf) = (self.width as f64, self.height as f64);
         let mut chart = ChartBuilder::on(&left)
-            .caption(&self.title, caption_font())
+            .caption(clean(&self.title), caption_font())
             .margin(10)
             .build_cartesian_2d(0.0..wf, 0.0..hf)
             .map_err(drawing)?;

@@ -47,5 +47,5 @@ pub use colour::{grey, viridis};
 pub use convergence::{ConvergenceFigure, Curve};
 pub use decode::{Block, Decoded, decode_image, parse_blocks, parse_table};
 pub use image::{ColourMap, ImageFigure};
-pub use points::{Domain, PointsFigure};
+pub use points::{Domain, MAX_RADIUS, PointsFigure};
 pub use spectrum::{RadialFigure, SpectrumFigure};

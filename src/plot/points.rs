@@ -3,7 +3,7 @@
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::backend::{Figure, PlotError, caption_font, drawing, label_font};
+use super::backend::{Figure, PlotError, caption_font, clean, drawing, label_font};
 use super::colour::PALETTE;
 use crate::warp;
 
@@ -54,6 +54,11 @@ impl Domain {
 /// elementary intervals `[i/a, (i+1)/a) x [j/b, (j+1)/b)`, and the count of boxes holding
 /// exactly `N / (a b)` points in the caption; with [`groups`](Self::groups)`(g)` the points
 /// `k g .. (k + 1) g` in the k-th colour (e.g. the power-of-two runs of a (0,2)-sequence).
+///
+/// A point whose image lies outside the domain's box (or is not finite) is not drawn; the
+/// caption says how many ([`outside`](Self::outside)). Drawing refuses a zero interval
+/// count, a group size of 0, and a radius outside `1..=`[`MAX_RADIUS`] (the fields are
+/// public, so they are checked when drawing, not only by the builders).
 #[derive(Clone, Debug)]
 pub struct PointsFigure {
     /// The caption.
@@ -69,6 +74,9 @@ pub struct PointsFigure {
     /// Dot radius in pixels (default 3).
     pub radius: u32,
 }
+
+/// The largest dot radius, in pixels.
+pub const MAX_RADIUS: u32 = 1024;
 
 impl PointsFigure {
     /// A plot of `points` in the unit square.
@@ -95,16 +103,45 @@ impl PointsFigure {
         self
     }
 
-    /// Colours runs of `g` consecutive points.
+    /// Colours runs of `g` consecutive points (`g >= 1`; 0 is refused when drawing).
     pub fn groups(mut self, g: usize) -> Self {
-        self.groups = Some(g.max(1));
+        self.groups = Some(g);
         self
     }
 
-    /// The dot radius in pixels.
+    /// The dot radius in pixels (`1..=`[`MAX_RADIUS`]; others are refused when drawing).
     pub fn radius(mut self, r: u32) -> Self {
-        self.radius = r.max(1);
+        self.radius = r;
         self
+    }
+
+    /// The plotted box `(x0, x1, y0, y1)` of the domain.
+    fn plot_box(&self) -> (f64, f64, f64, f64) {
+        match self.domain {
+            Domain::Square => (0.0, 1.0, 0.0, 1.0),
+            Domain::Disk | Domain::Hemisphere => (-1.0, 1.0, -1.0, 1.0),
+            Domain::Triangle => (0.0, 1.0, 0.0, 3f64.sqrt() / 2.0),
+        }
+    }
+
+    /// The image of point `p` in plot coordinates, if it lies in the plotted box (with a
+    /// margin of `1e-6` for the rounding of the `f32` warps).
+    fn placed(&self, p: [f64; 2]) -> Option<(f64, f64)> {
+        const MARGIN: f64 = 1e-6;
+        let (x0, x1, y0, y1) = self.plot_box();
+        let q = self.domain.map(p);
+        let inside = (x0 - MARGIN..=x1 + MARGIN).contains(&q[0])
+            && (y0 - MARGIN..=y1 + MARGIN).contains(&q[1]);
+        inside.then_some((q[0], q[1]))
+    }
+
+    /// How many points are not drawn because their image lies outside the plotted box or
+    /// is not finite. `O(N)`.
+    pub fn outside(&self) -> usize {
+        self.points
+            .iter()
+            .filter(|&&p| self.placed(p).is_none())
+            .count()
     }
 
     /// How many of the `a x b` boxes hold exactly `N / (a b)` points (all of them for a
@@ -115,11 +152,14 @@ impl PointsFigure {
         if cells == 0 || cells > 1 << 22 {
             return None;
         }
-        let mut count = vec![0u64; cells as usize];
+        let mut count: Vec<u64> = crate::size::vec_zeroed(cells as usize).ok()?;
         for p in &self.points {
+            // Float-to-integer casts saturate (NaN reads 0), so the box is always valid.
             let i = ((p[0] * a as f64) as u64).min(a as u64 - 1);
             let j = ((p[1] * b as f64) as u64).min(b as u64 - 1);
-            count[(j * a as u64 + i) as usize] += 1;
+            if let Some(c) = count.get_mut((j * a as u64 + i) as usize) {
+                *c += 1;
+            }
         }
         let n = self.points.len() as u64;
         let good = if n.is_multiple_of(cells) {
@@ -143,6 +183,15 @@ impl Figure for PointsFigure {
     where
         DB::ErrorType: 'static,
     {
+        if self.groups == Some(0) {
+            return Err(PlotError::new("a group of points needs at least 1 point"));
+        }
+        if !(1..=MAX_RADIUS).contains(&self.radius) {
+            return Err(PlotError::new(format!(
+                "a dot radius must be 1 to {MAX_RADIUS} pixels, not {}",
+                self.radius
+            )));
+        }
         if let Some((a, b)) = self.intervals {
             if a == 0 || b == 0 {
                 return Err(PlotError::new("--intervals needs two positive counts, AxB"));
@@ -153,14 +202,14 @@ impl Figure for PointsFigure {
                 ));
             }
         }
-        let (x0, x1, y0, y1) = match self.domain {
-            Domain::Square => (0.0, 1.0, 0.0, 1.0),
-            Domain::Disk | Domain::Hemisphere => (-1.0, 1.0, -1.0, 1.0),
-            Domain::Triangle => (0.0, 1.0, 0.0, 3f64.sqrt() / 2.0),
-        };
-        let mut caption = self.title.clone();
+        let (x0, x1, y0, y1) = self.plot_box();
+        let mut caption = clean(&self.title);
         if let Some((good, cells)) = self.balanced_boxes() {
             caption = format!("{caption} ({good}/{cells} boxes balanced)");
+        }
+        let outside = self.outside();
+        if outside > 0 {
+            caption = format!("{caption} ({outside} outside, not drawn)");
         }
         let mut chart = ChartBuilder::on(area)
             .caption(caption, caption_font())
@@ -209,13 +258,13 @@ impl Figure for PointsFigure {
             chart.draw_series(horizontal).map_err(drawing)?;
         }
         let r = self.radius as i32;
-        let dots = self.points.iter().enumerate().map(|(i, &p)| {
-            let q = self.domain.map(p);
+        let dots = self.points.iter().enumerate().filter_map(|(i, &p)| {
+            let q = self.placed(p)?;
             let c = match self.groups {
-                Some(g) => PALETTE[(i / g) % PALETTE.len()],
+                Some(g) => PALETTE[(i / g.max(1)) % PALETTE.len()],
                 None => BLACK,
             };
-            Circle::new((q[0], q[1]), r, c.filled())
+            Some(Circle::new(q, r, c.filled()))
         });
         chart.draw_series(dots).map_err(drawing)?;
         Ok(())

@@ -3,7 +3,9 @@
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::backend::{Figure, PlotError, caption_font, drawing, label_font};
+use super::backend::{
+    Figure, MAX_ELEMENTS, PlotError, caption_font, clean, drawing, label_font, linear_axis,
+};
 use super::colour::{PALETTE, viridis};
 use crate::analysis::spectrum::Spectrum;
 
@@ -31,20 +33,14 @@ impl SpectrumFigure {
     /// From `values` laid out as documented on [`values`](Self::values).
     ///
     /// # Errors
-    /// A [`PlotError`] unless `values.len() = (2K + 1)^2`.
+    /// A [`PlotError`] unless `values.len() = (2K + 1)^2` (computed without overflow, so
+    /// any `K` is answered).
     pub fn new(
         title: impl Into<String>,
         k_max: usize,
         values: Vec<f64>,
     ) -> Result<Self, PlotError> {
-        let side = 2 * k_max + 1;
-        if values.len() != side * side {
-            return Err(PlotError::new(format!(
-                "a spectrum with K = {k_max} has {} values, not {}",
-                side * side,
-                values.len()
-            )));
-        }
+        side(k_max, values.len())?;
         Ok(SpectrumFigure {
             title: title.into(),
             k_max,
@@ -54,10 +50,10 @@ impl SpectrumFigure {
         })
     }
 
-    /// From a computed [`Spectrum`].
+    /// From a computed [`Spectrum`] (which already holds its `(2K + 1)^2` values).
     pub fn from_spectrum(title: impl Into<String>, s: &Spectrum) -> Self {
-        let k = s.k_max() as i64;
-        let mut values = Vec::with_capacity(((2 * k + 1) * (2 * k + 1)) as usize);
+        let k = i64::try_from(s.k_max()).unwrap_or(i64::MAX / 4);
+        let mut values = Vec::new();
         for ky in -k..=k {
             for kx in -k..=k {
                 values.push(s.get(kx, ky).unwrap_or(0.0));
@@ -79,6 +75,20 @@ impl SpectrumFigure {
     }
 }
 
+/// `2K + 1` for a spectrum of `len` values, checked: `(2K + 1)^2 = len`, at most
+/// [`MAX_ELEMENTS`].
+fn side(k_max: usize, len: usize) -> Result<usize, PlotError> {
+    let side = k_max
+        .checked_mul(2)
+        .and_then(|t| t.checked_add(1))
+        .filter(|&s| s.checked_mul(s) == Some(len) && len <= MAX_ELEMENTS);
+    side.ok_or_else(|| {
+        PlotError::new(format!(
+            "a spectrum with K = {k_max} has (2K + 1)^2 values (at most {MAX_ELEMENTS}), not {len}"
+        ))
+    })
+}
+
 impl Figure for SpectrumFigure {
     fn elements(&self) -> usize {
         self.values.len() + 64
@@ -88,9 +98,9 @@ impl Figure for SpectrumFigure {
     where
         DB::ErrorType: 'static,
     {
-        let k = self.k_max as i64;
-        let side = (2 * k + 1) as usize;
-        let centre = (k as usize) * side + k as usize;
+        let side = side(self.k_max, self.values.len())?;
+        let k = self.k_max as i64; // at most 2^10 (checked by `side`)
+        let centre = self.k_max * side + self.k_max;
         let top = match self.ceiling {
             Some(c) => c,
             None => self
@@ -106,16 +116,17 @@ impl Figure for SpectrumFigure {
                 "a spectrum's values must be finite and non-negative",
             ));
         }
-        let (lo, hi) = (
+        let (lo, hi) = linear_axis(
             self.floor.log10(),
             top.log10().max(self.floor.log10() + 1.0),
-        );
+            "log10 power",
+        )?;
         let scale = |v: f64| ((v.max(self.floor).log10() - lo) / (hi - lo)).clamp(0.0, 1.0);
         let (w, _) = area.dim_in_pixel();
         let (left, right) = area.split_horizontally(w.saturating_sub(90).max(1));
         let kf = k as f64 + 0.5;
         let mut chart = ChartBuilder::on(&left)
-            .caption(&self.title, caption_font())
+            .caption(clean(&self.title), caption_font())
             .margin(10)
             .x_label_area_size(30)
             .y_label_area_size(40)
@@ -170,7 +181,7 @@ pub(crate) fn colour_bar<DB: DrawingBackend>(
 where
     DB::ErrorType: 'static,
 {
-    let (lo, hi) = if hi > lo { (lo, hi) } else { (lo, lo + 1.0) };
+    let (lo, hi) = linear_axis(lo, hi, unit)?;
     let mut bar = ChartBuilder::on(area)
         .margin_top(40)
         .margin_bottom(40)
@@ -202,6 +213,10 @@ where
 /// Radial averages of spectra: `(frequency, mean power)` curves, power on a linear axis
 /// from 0 (white noise sits at 1, drawn dashed), frequency in cycles per unit length or
 /// divided by `sqrt(N)` (then the blue-noise peak of any `N` sits near 1).
+///
+/// The axes run from `min(0, smallest value)` to the largest frequency and to
+/// `1.05 max(1.5, largest power)`; values must be finite and both spans finite (refused
+/// otherwise).
 #[derive(Clone, Debug)]
 pub struct RadialFigure {
     /// The caption.
@@ -222,12 +237,14 @@ impl Figure for RadialFigure {
         DB::ErrorType: 'static,
     {
         let all = self.curves.iter().flat_map(|c| c.1.iter());
-        let (mut x1, mut y1) = (0.0f64, 1.5f64);
+        let (mut x0, mut x1, mut y0, mut y1) = (0.0f64, 0.0f64, 0.0f64, 1.5f64);
         for &(x, y) in all {
             if !(x.is_finite() && y.is_finite()) {
                 return Err(PlotError::new("radial spectrum values must be finite"));
             }
+            x0 = x0.min(x);
             x1 = x1.max(x);
+            y0 = y0.min(y);
             y1 = y1.max(y);
         }
         if x1 <= 0.0 {
@@ -235,24 +252,26 @@ impl Figure for RadialFigure {
                 "a radial spectrum needs a positive frequency",
             ));
         }
+        let (x0, x1) = linear_axis(x0, x1, "frequency")?;
+        let (y0, y1) = linear_axis(y0, y1 * 1.05, "power")?;
         let mut chart = ChartBuilder::on(area)
-            .caption(&self.title, caption_font())
+            .caption(clean(&self.title), caption_font())
             .margin(12)
             .x_label_area_size(36)
             .y_label_area_size(44)
-            .build_cartesian_2d(0.0..x1, 0.0..y1 * 1.05)
+            .build_cartesian_2d(x0..x1, y0..y1)
             .map_err(drawing)?;
         chart
             .configure_mesh()
             .light_line_style(RGBColor(235, 235, 235))
-            .x_desc(&self.x_label)
+            .x_desc(clean(&self.x_label))
             .y_desc("mean power")
             .label_style(label_font())
             .draw()
             .map_err(drawing)?;
         chart
             .draw_series(DashedLineSeries::new(
-                vec![(0.0, 1.0), (x1, 1.0)],
+                vec![(x0, 1.0), (x1, 1.0)],
                 6,
                 4,
                 RGBColor(120, 120, 120).stroke_width(1),
@@ -263,7 +282,7 @@ impl Figure for RadialFigure {
             chart
                 .draw_series(LineSeries::new(pts.iter().copied(), c.stroke_width(2)))
                 .map_err(drawing)?
-                .label(label.clone())
+                .label(clean(label))
                 .legend(move |(x, y)| {
                     PathElement::new(vec![(x, y), (x + 18, y)], c.stroke_width(2))
                 });

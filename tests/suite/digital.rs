@@ -18,7 +18,7 @@ fn golden(name: &str) -> String {
 fn first_failure(net: &DigitalNetB<Vec<u16>>, start: u32, m: u32) -> Option<Vec<u32>> {
     let b = net.base() as u64;
     let s = net.dims();
-    let (k, _) = output_digits(net.base());
+    let (k, _) = output_digits(net.base()).unwrap();
     let n = b.pow(m);
     let vals: Vec<Vec<u64>> = (0..n as u32)
         .map(|i| (0..s).map(|d| net.value(start + i, d).unwrap()).collect())
@@ -86,7 +86,7 @@ fn faure_equals_qmcpy() {
         ("qmcpy_faure_d5_n625.txt", 5, 5),
     ] {
         let f = DigitalNetB::faure(base, d).unwrap();
-        let scale = output_digits(base).1 as f64;
+        let scale = output_digits(base).unwrap().1 as f64;
         let rows: Vec<Vec<f64>> = golden(file)
             .lines()
             .filter(|l| !l.starts_with('#'))
@@ -289,4 +289,111 @@ fn dnet_files_refuse_bad_input() {
     }
     // b^k in place of k is accepted.
     assert!(parse_dnet("# dnet\n2\n2\n8\n3\n4 2 1\n1 2 4\n").is_ok());
+}
+
+/// Primality by trial division in 64 bits (the reference; `O(sqrt n)`).
+fn trial_division(n: u64) -> bool {
+    if n < 2 {
+        return false;
+    }
+    let mut d = 2u64;
+    while d * d <= n {
+        if n.is_multiple_of(d) {
+            return false;
+        }
+        d += 1;
+    }
+    true
+}
+
+#[test]
+fn is_prime_is_exact_for_small_numbers() {
+    // Sieve of Eratosthenes below 200 000.
+    const N: usize = 200_000;
+    let mut composite = vec![false; N];
+    for p in 2..N {
+        if !composite[p] {
+            for q in (p * p..N).step_by(p) {
+                composite[q] = true;
+            }
+        }
+    }
+    for (n, &c) in composite.iter().enumerate() {
+        let want = n >= 2 && !c;
+        assert_eq!(qmckit::digital::is_prime(n as u32), want, "{n}");
+    }
+}
+
+#[test]
+fn is_prime_is_exact_and_fast_near_2_pow_32() {
+    use qmckit::digital::is_prime;
+    // The primes of (2^32 - 200, 2^32), from trial division.
+    let primes = [
+        4294967111u32,
+        4294967143,
+        4294967161,
+        4294967189,
+        4294967197,
+        4294967231,
+        4294967279,
+        4294967291,
+    ];
+    let start = std::time::Instant::now();
+    for n in u32::MAX - 199..=u32::MAX {
+        assert_eq!(is_prime(n), primes.contains(&n), "{n}");
+    }
+    // Trial division to 65536 would take about 30 000 steps a number; 200 numbers in far
+    // less than a second either way, but the old loop's d * d overflowed near 2^32.
+    assert!(start.elapsed().as_secs_f64() < 1.0, "{:?}", start.elapsed());
+    // Carmichael numbers, strong pseudoprimes to single bases (2047, 3277, 4033, 4681, 8321
+    // to base 2; 25, 325, 703, 2101, 2353 to base 7), the strong pseudoprime to bases
+    // 2, 3, 5, 7 (3215031751), and squares and products of the primes next to 2^16.
+    let composites = [
+        561u32, 1105, 1729, 2465, 2821, 6601, 8911, 41041, 825265, 321197185, 2047, 3277, 4033,
+        4681, 8321, 25, 325, 703, 2101, 2353, 3215031751, 25326001, 1194649, 12327121, 4293001441,
+        4292870399, 4294967295, 4294967293,
+    ];
+    for n in composites {
+        assert!(!is_prime(n), "{n}");
+        assert!(!trial_division(n as u64), "{n} (the list itself)");
+    }
+    // Pseudo-random u32s against trial division.
+    let mut x = 0x9e37_79b9_7f4a_7c15u64;
+    for _ in 0..2000 {
+        x = x
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        let n = (x >> 32) as u32 | 1;
+        assert_eq!(is_prime(n), trial_division(n as u64), "{n}");
+    }
+}
+
+#[test]
+fn output_digits_refuses_bases_below_2() {
+    // Both used to loop for ever (1^K never reaches 2^32; 0 neither).
+    for b in [0, 1] {
+        assert_eq!(
+            output_digits(b),
+            Err(qmckit::Error::BaseTooSmall { base: b })
+        );
+    }
+    assert_eq!(output_digits(2), Ok((32, 1 << 32)));
+    assert_eq!(output_digits(3), Ok((21, 3u64.pow(21))));
+    // Every base up to u32::MAX: b^K < 2^32 b stays in 64 bits.
+    assert_eq!(output_digits(u32::MAX), Ok((2, (u32::MAX as u64).pow(2))));
+    assert_eq!(output_digits(1 << 16), Ok((2, 1 << 32)));
+}
+
+#[test]
+fn dnet_files_with_more_dimensions_than_lines_are_refused() {
+    use qmckit::digital::parse_dnet;
+    // A dimension count far beyond the lines given: refused, nothing allocated for it.
+    let text = "# dnet\n2\n18446744073709551615\n3\n3\n4 2 1\n1 2 4\n";
+    assert!(parse_dnet(text).is_err());
+    // Lines past the declared dimensions are not read (a bad one there is harmless).
+    let text = "# dnet\n2\n2\n3\n3\n4 2 1\n1 2 4\nnot numbers\n";
+    assert_eq!(parse_dnet(text).unwrap().dims(), 2);
+    // A line of more than K columns is refused without collecting it.
+    let long = format!("# dnet\n2\n1\n3\n3\n{}\n", "1 ".repeat(100_000));
+    assert!(parse_dnet(&long).is_err());
 }

@@ -794,3 +794,60 @@ fn screen_error_study() {
         }
     }
 }
+
+#[test]
+fn image_sobol_pads_past_its_table_as_pbrt_does() {
+    use qmckit::pixel::{IMAGE_SOBOL_DIMS, PBRT_SOBOL_DIMS};
+    // pbrt's rule on the compiled table: min(table, 1024) (1024 with the CLI's features).
+    let table = qmckit::sobol::SOBOL_MAX_DIMS.min(PBRT_SOBOL_DIMS as usize) as u32;
+    assert_eq!(IMAGE_SOBOL_DIMS, table);
+    let last = IMAGE_SOBOL_DIMS - 1;
+    for r in ALL {
+        let s = ImageSobol::new(16, 9, 4, r, 7).unwrap();
+        let (x, y, i) = (3, 5, 2);
+        let at = |d| s.get_1d(x, y, i, d).unwrap();
+        let pair = |d| s.get_2d(x, y, i, d).unwrap();
+        // Get1D: `if (dimension >= NSobolDimensions) dimension = 2`.
+        assert_ne!(at(last), at(2));
+        for d in [IMAGE_SOBOL_DIMS, IMAGE_SOBOL_DIMS + 1, 100_000, u32::MAX] {
+            assert_eq!(at(d), at(2), "{r:?} 1D at {d}");
+        }
+        // Get2D: `if (dimension + 1 >= NSobolDimensions) dimension = 2`, so the pair at the
+        // last dimension wraps too, and a counter of u32::MAX neither overflows nor fails.
+        assert_eq!(pair(last - 1), [at(last - 1), at(last)]);
+        for d in [last, IMAGE_SOBOL_DIMS, u32::MAX - 1, u32::MAX] {
+            assert_eq!(pair(d), pair(2), "{r:?} 2D at {d}");
+        }
+        assert_eq!(pair(2), [at(2), at(3)]);
+    }
+}
+
+#[test]
+fn image_sobol_stream_counts_like_pbrt() {
+    use qmckit::pixel::IMAGE_SOBOL_DIMS;
+    let s = ImageSobol::new(16, 9, 4, Randomization::FastOwen, 0).unwrap();
+    // StartPixelSample sets dimension = max(2, dim): two Get1D calls read 2, then 3.
+    let mut st = PixelStream::start(&s, 1, 0, 3, 0).unwrap();
+    assert_eq!(st.next_1d().unwrap(), s.get_1d(1, 0, 3, 2).unwrap());
+    assert_eq!(st.next_1d().unwrap(), s.get_1d(1, 0, 3, 3).unwrap());
+    assert_eq!(st.dimension(), 4);
+    // At the end of the table the counter wraps to 2 and counts on from there.
+    let last = IMAGE_SOBOL_DIMS - 1;
+    let mut st = PixelStream::start(&s, 1, 0, 3, last).unwrap();
+    assert_eq!(st.next_1d().unwrap(), s.get_1d(1, 0, 3, last).unwrap());
+    assert_eq!(st.next_1d().unwrap(), s.get_1d(1, 0, 3, 2).unwrap());
+    assert_eq!(st.next_2d().unwrap(), s.get_2d(1, 0, 3, 3).unwrap());
+    assert_eq!(st.dimension(), 5);
+    // A pair that would straddle the end wraps whole.
+    let mut st = PixelStream::start(&s, 1, 0, 3, last).unwrap();
+    assert_eq!(st.next_2d().unwrap(), s.get_2d(1, 0, 3, 2).unwrap());
+    assert_eq!(st.dimension(), 4);
+    // The padded samplers reuse Sobol' (0, 1) under hashes: no wrap, every counter answers.
+    let z = ZSobol::new(16, 9, 4, Randomization::FastOwen, 0).unwrap();
+    let p = PaddedSobol::new(16, 9, 4, Randomization::FastOwen, 0).unwrap();
+    for d in [IMAGE_SOBOL_DIMS, 1 << 20, u32::MAX] {
+        assert!(z.get_2d(1, 0, 3, d).is_ok() && p.get_2d(1, 0, 3, d).is_ok());
+        assert_eq!(z.counter_dimension(d, 2), d);
+        assert_eq!(p.counter_dimension(d, 1), d);
+    }
+}

@@ -4,8 +4,8 @@
 #![cfg(feature = "cli")]
 
 use qmckit::plot::{
-    ConvergenceFigure, Curve, Format, ImageFigure, PointsFigure, SpectrumFigure, decode_image,
-    parse_blocks, parse_table, render,
+    ColourMap, ConvergenceFigure, Curve, Format, ImageFigure, PointsFigure, RadialFigure,
+    SpectrumFigure, decode_image, parse_blocks, parse_table, render,
 };
 use qmckit::{Sobol, bits};
 
@@ -306,4 +306,233 @@ fn plot_bad_input_is_one_line() {
     let r = run(&["plot", "--out", "/nonexistent-dir/p.svg"], "0.5 0.5\n");
     assert_eq!(r.status.code(), Some(1));
     assert_eq!(String::from_utf8(r.stderr).unwrap().lines().count(), 1);
+}
+
+/// `f()` on another thread, failing the test if it takes more than `secs` seconds (the
+/// figures below used to draw for ever).
+fn within<T: Send + 'static>(secs: u64, f: impl FnOnce() -> T + Send + 'static) -> T {
+    let (tx, rx) = std::sync::mpsc::channel();
+    std::thread::spawn(move || {
+        let _ = tx.send(f());
+    });
+    rx.recv_timeout(std::time::Duration::from_secs(secs))
+        .expect("drawing did not finish in time")
+}
+
+fn curve(points: Vec<(f64, f64)>) -> Curve {
+    Curve {
+        label: "c".into(),
+        points,
+    }
+}
+
+#[test]
+fn convergence_log_axes_are_bounded() {
+    // Errors spanning 1e308 .. 1e-300: the error axis would span 608 decades, and plotters'
+    // tick loop ran for ever; now a one-line refusal.
+    let fig = ConvergenceFigure::new("", vec![curve(vec![(1.0, 1e308), (2.0, 1e-300)])]);
+    let r = within(20, move || render(&fig, Format::Svg, 300, 300));
+    let e = r.unwrap_err().0;
+    assert!(e.contains("log axis"), "{e}");
+    // A subnormal error is numerically zero: left out (and counted), the rest drawn.
+    let fig = ConvergenceFigure::new(
+        "",
+        vec![curve(vec![(1.0, 1e-3), (2.0, 5e-324), (4.0, 1e-4)])],
+    );
+    assert_eq!(fig.left_out(), 1);
+    let r = within(20, move || render(&fig, Format::Png, 300, 300));
+    assert!(r.is_ok(), "{r:?}");
+    // Every value subnormal: nothing to draw, an error.
+    let fig = ConvergenceFigure::new("", vec![curve(vec![(1.0, 1e-310), (2.0, 1e-315)])]);
+    assert_eq!(fig.left_out(), 2);
+    assert!(within(20, move || render(&fig, Format::Svg, 300, 300)).is_err());
+    // N spanning more than a float's ratio.
+    let fig = ConvergenceFigure::new("", vec![curve(vec![(1e-300, 1.0), (1e300, 0.5)])]);
+    assert!(within(20, move || render(&fig, Format::Svg, 300, 300)).is_err());
+}
+
+#[test]
+fn image_colour_spans_are_finite() {
+    // A span of -1e308 .. 1e308 is infinite: refused (the colour bar's tick loop never ended).
+    for map in [ColourMap::Grey, ColourMap::Diverging] {
+        let fig = ImageFigure::new("", 2, 1, vec![-1e308, 1e308])
+            .unwrap()
+            .map(map);
+        let e = within(20, move || render(&fig, Format::Svg, 200, 200)).unwrap_err();
+        assert!(e.0.contains("colour range"), "{e}");
+    }
+    // A constant image at the largest float is drawn (its range is widened inside the floats).
+    let fig = ImageFigure::new("", 2, 1, vec![f64::MAX, f64::MAX]).unwrap();
+    assert!(within(20, move || render(&fig, Format::Svg, 200, 200)).is_ok());
+    // A subnormal span is drawn.
+    let fig = ImageFigure::new("", 2, 1, vec![0.0, 5e-324]).unwrap();
+    assert!(within(20, move || render(&fig, Format::Png, 200, 200)).is_ok());
+    // A given range must be finite and increasing: refused, never silently swapped.
+    for (lo, hi) in [
+        (0.0, f64::INFINITY),
+        (1.0, 1.0),
+        (2.0, 1.0),
+        (f64::NAN, 1.0),
+    ] {
+        let fig = ImageFigure::new("", 2, 1, vec![0.0, 1.0])
+            .unwrap()
+            .range(lo, hi);
+        assert!(
+            within(20, move || render(&fig, Format::Svg, 200, 200)).is_err(),
+            "{lo} {hi}"
+        );
+    }
+    // Public fields that disagree: an error, not a division by zero.
+    let mut fig = ImageFigure::new("", 2, 1, vec![0.0, 1.0]).unwrap();
+    fig.width = 0;
+    assert!(render(&fig, Format::Svg, 200, 200).is_err());
+}
+
+#[test]
+fn radial_axes_are_finite() {
+    let fig = RadialFigure {
+        title: String::new(),
+        x_label: String::new(),
+        curves: vec![("a".into(), vec![(0.5, 1.0), (1.0, f64::MAX)])],
+    };
+    // The power axis ends at 1.05 times the largest value: infinite here, refused.
+    match within(20, move || render(&fig, Format::Svg, 300, 300)) {
+        Err(e) => assert!(e.0.contains("power"), "{e}"),
+        Ok(_) => panic!("an infinite power axis was drawn"),
+    }
+    // Negative values widen the axes instead of leaving the picture.
+    let fig = RadialFigure {
+        title: String::new(),
+        x_label: String::new(),
+        curves: vec![("a".into(), vec![(-1.0, -2.0), (1.0, 1.0)])],
+    };
+    assert!(within(20, move || render(&fig, Format::Png, 300, 300)).is_ok());
+}
+
+/// Whether every character of `s` may appear in an XML 1.0 document.
+fn xml_chars(s: &str) -> bool {
+    s.chars().all(|c| {
+        matches!(c, '\t' | '\n' | '\r')
+            || (('\u{20}'..='\u{d7ff}').contains(&c)
+                && c != '\u{7f}'
+                && !('\u{80}'..='\u{9f}').contains(&c))
+            || ('\u{e000}'..='\u{fffd}').contains(&c)
+            || c >= '\u{10000}'
+    })
+}
+
+#[test]
+fn svg_text_is_well_formed() {
+    let nasty = "a\u{1}b\u{1b}[31mc<&>\"'\u{7f}\u{85}\u{fffe}d\te";
+    let check = |svg: Vec<u8>| {
+        let svg = String::from_utf8(svg).unwrap();
+        assert!(xml_chars(&svg), "{svg:?}");
+        assert!(svg.contains("ab[31mc&lt;&amp;&gt;&quot;&apos;d e"), "{svg}");
+    };
+    check(render(&PointsFigure::new(nasty, sobol(4)), Format::Svg, 300, 300).unwrap());
+    let mut c = curve(vec![(1.0, 1.0), (4.0, 0.5)]);
+    c.label = nasty.into();
+    let mut fig = ConvergenceFigure::new(nasty, vec![c]);
+    fig.y_label = nasty.into();
+    check(render(&fig, Format::Svg, 400, 400).unwrap());
+    let fig = RadialFigure {
+        title: nasty.into(),
+        x_label: nasty.into(),
+        curves: vec![(nasty.into(), vec![(0.5, 1.0), (1.0, 2.0)])],
+    };
+    check(render(&fig, Format::Svg, 400, 400).unwrap());
+    let fig = ImageFigure::new(nasty, 2, 2, vec![0.0, 1.0, 2.0, 3.0]).unwrap();
+    check(render(&fig, Format::Svg, 300, 300).unwrap());
+    let fig = SpectrumFigure::new(nasty, 1, vec![1.0; 9]).unwrap();
+    check(render(&fig, Format::Svg, 300, 300).unwrap());
+    // Through the command too.
+    let out = scratch("title.svg");
+    let r = run(
+        &["plot", "--out", out.to_str().unwrap(), "--title", nasty],
+        "0.5 0.5\n0.25 0.75\n",
+    );
+    assert_eq!(r.status.code(), Some(0), "{r:?}");
+    check(std::fs::read(&out).unwrap());
+}
+
+#[test]
+fn points_figure_options_are_checked() {
+    // Group size 0 and radii outside 1..=MAX_RADIUS are refused, not changed.
+    let fig = PointsFigure::new("", sobol(8)).groups(0);
+    assert!(render(&fig, Format::Svg, 200, 200).is_err());
+    for r in [0, qmckit::plot::MAX_RADIUS + 1, u32::MAX] {
+        let fig = PointsFigure::new("", sobol(8)).radius(r);
+        assert!(render(&fig, Format::Svg, 200, 200).is_err(), "{r}");
+    }
+    // Points outside the square are counted and not drawn (no dot at pixel 2^31).
+    let mut pts = sobol(8);
+    pts.push([1e300, 0.5]);
+    pts.push([f64::NAN, 0.5]);
+    let fig = PointsFigure::new("p", pts);
+    assert_eq!(fig.outside(), 2);
+    let svg = String::from_utf8(render(&fig, Format::Svg, 200, 200).unwrap()).unwrap();
+    assert!(svg.contains("(2 outside, not drawn)"), "{svg}");
+    assert_eq!(svg.matches("<circle").count(), 8);
+    assert!(within(20, move || render(&fig, Format::Png, 200, 200)).is_ok());
+}
+
+#[test]
+fn spectrum_sizes_are_checked() {
+    // K = 2^62: 2K + 1 wrapped and the grid index ran out of bounds (a panic); now one line.
+    let out = scratch("s.svg");
+    let o = out.to_str().unwrap();
+    assert_usage_error(
+        &["plot", "--out", o],
+        "# kx ky power\n4611686018427387904 0 1\n",
+        "every integer frequency",
+    );
+    assert_usage_error(
+        &["plot", "--out", o, "--kind", "spectrum"],
+        "# kx ky power\n1e300 -1e300 1\n",
+        "every integer frequency",
+    );
+    // Nine lines for K = 1 but (0, 0) twice and (1, 1) missing: refused, not drawn with a
+    // hole.
+    let mut t = String::from("# kx ky power\n");
+    for (kx, ky) in [
+        (-1, -1),
+        (0, -1),
+        (1, -1),
+        (-1, 0),
+        (0, 0),
+        (1, 0),
+        (-1, 1),
+        (0, 1),
+    ] {
+        t += &format!("{kx} {ky} 1\n");
+    }
+    let full = format!("{t}1 1 1\n");
+    let r = run(&["plot", "--out", o], &full);
+    assert_eq!(r.status.code(), Some(0), "{r:?}");
+    assert_usage_error(&["plot", "--out", o], &format!("{t}0 0 1\n"), "once each");
+    // The library computes (2K + 1)^2 without overflow.
+    assert!(SpectrumFigure::new("", usize::MAX / 2, vec![]).is_err());
+    assert!(SpectrumFigure::new("", 1 << 31, vec![0.0; 4]).is_err());
+    let mut fig = SpectrumFigure::new("", 1, vec![1.0; 9]).unwrap();
+    fig.k_max = usize::MAX / 2;
+    assert!(render(&fig, Format::Svg, 200, 200).is_err());
+}
+
+#[test]
+fn tables_and_images_are_bounded() {
+    // A row of more than 1024 numbers, more than 2^22 rows, a text image past 2^22 pixels.
+    let wide = format!("{}\n", "1 ".repeat(2000));
+    assert!(parse_blocks(&wide, 2).is_err());
+    let tall = "1 1\n".repeat((1 << 22) + 1);
+    let e = parse_blocks(&tall, 2).unwrap_err();
+    assert!(e.0.contains("rows"), "{e}");
+    let big = format!("{}\n", "1 ".repeat((1 << 22) + 1));
+    assert!(decode_image(big.as_bytes()).is_err());
+    // Still fine just below.
+    assert_eq!(
+        parse_blocks(&"1 1\n".repeat(1000), 2).unwrap()[0]
+            .rows
+            .len(),
+        1000
+    );
 }

@@ -179,6 +179,8 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
         std::str::from_utf8(&bytes).map_err(|_| Failure::usage(format!("{name}: not UTF-8 text")))
     };
     let title = |default: &str| args.title.clone().unwrap_or_else(|| default.to_owned());
+    // What the figure leaves out, told once the file is written.
+    let mut note = None;
     let out = match kind {
         Kind::Points | Kind::Auto => {
             let sets =
@@ -212,32 +214,18 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
                     WarpName::Triangle => Domain::Triangle,
                 });
             }
+            let outside = fig.outside();
+            if outside > 0 {
+                note = Some(format!(
+                    "{outside} points outside the plotted domain, not drawn"
+                ));
+            }
             draw(&fig, format, w, h, &name)?
         }
         Kind::Spectrum => {
             let block = &parse_table(text()?, 3).map_err(input)?[0];
-            let k = block
-                .iter()
-                .map(|r| r[0].abs().max(r[1].abs()))
-                .fold(0.0, f64::max) as usize;
-            let side = 2 * k + 1;
-            if block.len() != side * side
-                || block
-                    .iter()
-                    .any(|r| r[0].fract() != 0.0 || r[1].fract() != 0.0)
-            {
-                return Err(Failure::usage(format!(
-                    "{name}: a spectrum needs 'kx ky power' lines at every integer frequency of \
-                     [-K, K]^2 ({} for K = {k}), found {}",
-                    side * side,
-                    block.len()
-                )));
-            }
-            let mut values = vec![0.0; side * side];
-            for r in block {
-                let (kx, ky) = (r[0] as i64 + k as i64, r[1] as i64 + k as i64);
-                values[ky as usize * side + kx as usize] = r[2];
-            }
+            let (k, values) =
+                spectrum_grid(block).map_err(|e| Failure::usage(format!("{name}: {e}")))?;
             let fig = SpectrumFigure::new(title("power spectrum"), k, values).map_err(input)?;
             draw(&fig, format, w, h, &name)?
         }
@@ -271,6 +259,14 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
                 })
                 .collect();
             let fig = ConvergenceFigure::new(title("integration error"), curves);
+            let left = fig.left_out();
+            if left > 0 {
+                note = Some(format!(
+                    "{left} (n, error) pairs not drawn (a value not positive, not finite, or \
+                     below {:e}: no logarithm)",
+                    f64::MIN_POSITIVE
+                ));
+            }
             draw(&fig, format, w, h, &name)?
         }
         Kind::Image => {
@@ -285,7 +281,11 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
             draw(&fig, format, w, h, &name)?
         }
     };
-    super::atomic::write_bytes(std::path::Path::new(&args.out), &out)
+    super::atomic::write_bytes(std::path::Path::new(&args.out), &out)?;
+    if let Some(n) = note {
+        eprintln!("qmckit: note: {name}: {n}");
+    }
+    Ok(())
 }
 
 fn draw<F: Figure>(
@@ -296,6 +296,52 @@ fn draw<F: Figure>(
     name: &str,
 ) -> Result<Vec<u8>, Failure> {
     render(fig, format, w, h).map_err(|e| Failure::usage(format!("{name}: {e}")))
+}
+
+/// The `(2K + 1)^2` powers of a `kx ky power` table as `(K, values)`, laid out as
+/// [`SpectrumFigure::values`]: every integer frequency of `[-K, K]^2` exactly once, `K`
+/// found without overflow (the row count bounds it: at most 2^22 rows, so `K < 1024`).
+fn spectrum_grid(block: &[Vec<f64>]) -> Result<(usize, Vec<f64>), String> {
+    let kf = block
+        .iter()
+        .map(|r| r[0].abs().max(r[1].abs()))
+        .fold(0.0, f64::max);
+    // (2K + 1)^2 rows: K is at most sqrt(rows) / 2.
+    let bound = (block.len() as f64).sqrt() / 2.0;
+    let bad = |k: &dyn std::fmt::Display, want: &dyn std::fmt::Display| {
+        format!(
+            "a spectrum needs 'kx ky power' lines at every integer frequency of [-K, K]^2, once \
+             each ({want} for K = {k}), found {}",
+            block.len()
+        )
+    };
+    if kf > bound {
+        return Err(bad(&kf, &"(2K + 1)^2"));
+    }
+    let k = kf as usize; // kf <= 2^10: exact
+    let side = 2 * k + 1;
+    let n = side * side;
+    if block.len() != n {
+        return Err(bad(&k, &n));
+    }
+    let mut values: Vec<f64> = qmckit::size::vec_zeroed(n).map_err(|e| e.to_string())?;
+    let mut seen: Vec<bool> = qmckit::size::vec_zeroed(n).map_err(|e| e.to_string())?;
+    for r in block {
+        if r[0].fract() != 0.0 || r[1].fract() != 0.0 {
+            return Err(bad(&k, &n));
+        }
+        // |kx|, |ky| <= K: whole numbers in 0..side after the shift.
+        let (kx, ky) = ((r[0] + k as f64) as usize, (r[1] + k as f64) as usize);
+        let at = ky * side + kx;
+        match seen.get_mut(at) {
+            Some(s) if !*s => *s = true,
+            _ => return Err(bad(&k, &n)),
+        }
+        if let Some(v) = values.get_mut(at) {
+            *v = r[2];
+        }
+    }
+    Ok((k, values))
 }
 
 /// A curve's legend: the block's `# label:` or `set K`.
