@@ -86,11 +86,6 @@ impl Stop {
     pub(crate) fn finish<T>(&self, value: T) -> Result<T> {
         self.result().map(|()| value)
     }
-
-    /// The started budget.
-    pub(crate) fn budget(&self) -> &Budget {
-        &self.budget
-    }
 }
 
 /// `seconds` in whole milliseconds, saturated, as [`Error::OutOfTime`] reports it.
