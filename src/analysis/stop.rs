@@ -53,6 +53,19 @@ impl Stop {
         false
     }
 
+    /// `Ok` while the deadline has not passed (one clock reading): for sequential loops.
+    ///
+    /// # Errors
+    /// [`Error::OutOfTime`] naming the computation.
+    #[inline]
+    pub(crate) fn budget_check(&self) -> Result<()> {
+        if self.check() {
+            Err(self.error())
+        } else {
+            Ok(())
+        }
+    }
+
     /// `true` once some task saw the deadline pass (no clock reading).
     #[inline]
     pub(crate) fn stopped(&self) -> bool {

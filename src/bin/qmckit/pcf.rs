@@ -71,11 +71,11 @@ pub fn run(args: &PcfArgs) -> Result<(), Failure> {
             args.bins
         )));
     }
-    if !(opts.sigma > 0.0 && opts.sigma.is_finite()) {
-        return Err(Failure::usage(format!(
-            "--sigma {}: must be a positive number",
-            opts.sigma
-        )));
+    if let Err(e) = opts.validate() {
+        return Err(Failure::usage(match args.sigma {
+            Some(s) => format!("--sigma {s}: {e}"),
+            None => format!("--r-max {} --bins {}: {e}", args.r_max, args.bins),
+        }));
     }
     let (name, sets) = read_point_sets(&args.input)?;
     let total: f64 = sets
