@@ -5,8 +5,8 @@
 
 use super::Points;
 use super::arith::Acc;
-use crate::dispatch::{Kernel, run_float};
 use crate::analysis::stop::Stop;
+use crate::dispatch::{Kernel, run_float};
 use crate::work::Progress;
 use core::sync::atomic::{AtomicUsize, Ordering};
 use rayon::prelude::*;

@@ -117,9 +117,9 @@ pub use measures::{
 pub use tree::{TREE_MAX_D, l2_star_fast};
 
 use super::Points;
+use super::stop::Stop;
 use crate::Result;
 use crate::work::{Budget, Cost, Progress, Rate, no_progress};
-use super::stop::Stop;
 use kernel::{Build, Ticker};
 
 /// The throughput of the pair sum in the plain `f64` path, in pair steps of

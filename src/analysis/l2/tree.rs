@@ -428,7 +428,10 @@ fn two_colour(rows: &mut [f64], scratch: &mut [f64], m: usize, stop: &Stop) -> A
             || two_colour(y, sy, m - 1, stop),
         )
     } else {
-        (two_colour(x, sx, m - 1, stop), two_colour(y, sy, m - 1, stop))
+        (
+            two_colour(x, sx, m - 1, stop),
+            two_colour(y, sy, m - 1, stop),
+        )
     };
     acc.merge(a);
     acc.merge(b);
@@ -594,7 +597,10 @@ mod tests {
             for (n, seed) in [(1usize, 1u64), (50, 2), (700, 3), (2500, 4)] {
                 let x = uniform(n * d, seed * 100 + d as u64);
                 let p = Points::new(&x, d).unwrap();
-                let (tree, direct) = (l2_star_fast_with(p, false, &never()), l2_star_direct(p).unwrap());
+                let (tree, direct) = (
+                    l2_star_fast_with(p, false, &never()),
+                    l2_star_direct(p).unwrap(),
+                );
                 assert!(
                     rel(tree, direct) <= 1e-13,
                     "d={d} n={n}: {tree:e} vs {direct:e}"

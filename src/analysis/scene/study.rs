@@ -1,13 +1,13 @@
 //! Studies: a reference image at a high sample count, renders per sampler, and the MSE over
 //! seeds, with the low-frequency power of the error images.
 
-use crate::analysis::stop::Stop;
-use crate::work::Budget;
 use super::camera::Camera;
 use super::geometry::Scene;
 use super::integrands::{Integrand, standard_camera, standard_scene};
 use super::samplers::{Prepared, SceneSampler};
 use crate::analysis::screen_error::ScreenError;
+use crate::analysis::stop::Stop;
+use crate::work::Budget;
 use crate::work::{Progress, no_progress};
 use crate::{Error, Jitter, OwenSobol, Result, Stratified};
 use rayon::prelude::*;

@@ -416,10 +416,7 @@ fn search_levels(m: u32) -> u32 {
 pub fn t_value_u32_within(samples: &[u32], dims: usize, m: u32, budget: &Budget) -> Result<u32> {
     check_u32(samples, dims, m)?;
     let steps = count_steps(1u64 << m, dims, m, search_levels(m));
-    budget.check(
-        COUNTING,
-        Cost::steps(steps, COUNT_RATE),
-    )?;
+    budget.check(COUNTING, Cost::steps(steps, COUNT_RATE))?;
     let d = digits_u32(samples, dims, m)?;
     Ok(m - d.strength(&Stop::new(budget, COUNTING))?)
 }
@@ -472,10 +469,7 @@ pub fn t_value_points_within(points: Points, base: u32, m: u32, budget: &Budget)
         m,
         search_levels(m),
     );
-    budget.check(
-        COUNTING,
-        Cost::steps(steps, COUNT_RATE),
-    )?;
+    budget.check(COUNTING, Cost::steps(steps, COUNT_RATE))?;
     Ok(m - d.strength(&Stop::new(budget, COUNTING))?)
 }
 
@@ -528,10 +522,7 @@ pub fn elementary_interval_failures_u32_within(
         return Err(Error::MTooLarge { m: t, max: m });
     }
     let steps = count_steps(1u64 << m, dims, m, 1);
-    budget.check(
-        COUNTING,
-        Cost::steps(steps, COUNT_RATE),
-    )?;
+    budget.check(COUNTING, Cost::steps(steps, COUNT_RATE))?;
     let d = digits_u32(samples, dims, m)?;
     let stop = Stop::new(budget, COUNTING);
     let found = d.failures(m - t, limit, &stop);

@@ -65,9 +65,10 @@ pub struct ConvergenceArgs {
     /// Dimensions [default: 1 for vdc, 2 otherwise].
     #[arg(short = 'd', value_name = "D")]
     d: Option<usize>,
-    /// Largest set: 2^M points (M <= 24).
-    #[arg(long, default_value_t = 12, value_name = "M")]
-    max_m: u32,
+    /// Largest set: 2^M points (M <= 24) [default: 12; 10 for best-candidate and
+    /// gaussian-blue-noise, whose sets cost N^2 to build].
+    #[arg(long, value_name = "M")]
+    max_m: Option<u32>,
     /// Randomization, as for `qmckit points`.
     #[arg(long, value_enum, default_value_t = ScrambleName::None)]
     scramble: ScrambleName,
@@ -136,9 +137,9 @@ fn sampler_of(spec: &Spec, budget: &Budget) -> Result<Box<dyn Sampler>, Failure>
             .seed(seed)
             .generate_within(budget)?,
         SamplerName::BestCandidate => BestCandidate::new(n)?.seed(seed).generate_within(budget)?,
-        SamplerName::GaussianBlueNoise => {
-            GaussianBlueNoise::new(n)?.seed(seed).generate_within(budget)?
-        }
+        SamplerName::GaussianBlueNoise => GaussianBlueNoise::new(n)?
+            .seed(seed)
+            .generate_within(budget)?,
         _ => return build(spec),
     };
     Ok(match spec.scramble {
@@ -205,11 +206,12 @@ fn probe_rate(
 
 /// Runs `qmckit convergence`.
 pub fn run(args: &ConvergenceArgs) -> Result<(), Failure> {
-    if args.max_m > MAX_M {
-        return Err(Failure::usage(format!(
-            "--max-m {}: at most {MAX_M}",
-            args.max_m
-        )));
+    let max_m = args.max_m.unwrap_or(match args.sampler {
+        SamplerName::BestCandidate | SamplerName::GaussianBlueNoise => 10,
+        _ => 12,
+    });
+    if max_m > MAX_M {
+        return Err(Failure::usage(format!("--max-m {max_m}: at most {MAX_M}")));
     }
     if args.seeds == 0 {
         return Err(Failure::usage("--seeds must be at least 1"));
@@ -219,7 +221,7 @@ pub fn run(args: &ConvergenceArgs) -> Result<(), Failure> {
         return Err(Failure::usage("-d must be at least 1"));
     }
     let budget = args.budget.budget()?;
-    let mut sizes = sizes(args.sampler, d, args.max_m);
+    let mut sizes = sizes(args.sampler, d, max_m);
     let f = match args.integrand {
         IntegrandName::Gaussian => Integrand::Gaussian,
         IntegrandName::Oscillatory => Integrand::Oscillatory,

@@ -140,7 +140,12 @@ const MAX_THREADS_PER_CORE: usize = 64;
 /// cannot be retried; a count past [`MAX_THREADS_PER_CORE`] threads a core is not tried at
 /// all (thousands of threads can exhaust memory inside the runtime, beyond any recovery).
 fn threads() {
-    let works = |n: usize| rayon::ThreadPoolBuilder::new().num_threads(n).build().is_ok();
+    let works = |n: usize| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(n)
+            .build()
+            .is_ok()
+    };
     let requested = std::env::var("RAYON_NUM_THREADS").ok();
     let default = std::thread::available_parallelism().map_or(1, |n| n.get());
     let wanted = match requested.as_deref().map(str::trim).map(str::parse::<usize>) {

@@ -73,6 +73,9 @@ pub fn run(args: &PcfArgs) -> Result<(), Failure> {
     }
     if let Err(e) = opts.validate() {
         return Err(Failure::usage(match args.sigma {
+            Some(s) if s != 0.0 && !(1e-4..1e15).contains(&s.abs()) => {
+                format!("--sigma {s:e}: {e}")
+            }
             Some(s) => format!("--sigma {s}: {e}"),
             None => format!("--r-max {} --bins {}: {e}", args.r_max, args.bins),
         }));
