@@ -94,13 +94,13 @@ impl PcfOptions {
     pub fn validate(&self) -> Result<()> {
         let limit = if self.torus { 0.5 } else { 1.0 };
         let bad = |what| Err(Error::InvalidParameter { what });
-        if !(self.r_max >= PCF_MIN_LENGTH && self.r_max <= limit) {
+        if !(PCF_MIN_LENGTH..=limit).contains(&self.r_max) {
             return bad("r_max must lie in [1e-100, 0.5] on the torus, [1e-100, 1] in the square");
         }
         if self.bins == 0 || self.bins > 1_000_000 {
             return bad("the number of bins must lie in 1..=1000000");
         }
-        if !(self.sigma >= PCF_MIN_LENGTH && self.sigma <= PCF_MAX_SIGMA) {
+        if !(PCF_MIN_LENGTH..=PCF_MAX_SIGMA).contains(&self.sigma) {
             return bad("the kernel width sigma must lie in [1e-100, 1]");
         }
         Ok(())

@@ -87,7 +87,7 @@ pub fn run(args: &PcfArgs) -> Result<(), Failure> {
         .sum();
     if total > budget.max_seconds() {
         return Err(Failure::usage(format!(
-            "{name}: the pair correlation of {} set(s): estimated {total:.1} s, more than \
+            "{name}: the pair correlation of {} set(s): estimated {total:.3} s, more than \
              --max-seconds {} (raise it to run it)",
             sets.len(),
             args.budget.max_seconds

@@ -204,7 +204,7 @@ pub fn run(args: &VarianceArgs) -> Result<(), Failure> {
     let total = (one + construct) * spectra as f64 + evals;
     if total > budget.max_seconds() {
         return Err(Failure::usage(format!(
-            "{spectra} sets, their periodograms and {} evaluations: estimated {total:.1} s, more than \
+            "{spectra} sets, their periodograms and {} evaluations: estimated {total:.3} s, more than \
              --max-seconds {} (raise it to run them)",
             args.sets as u64 * n as u64,
             args.budget.max_seconds
