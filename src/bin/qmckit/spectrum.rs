@@ -136,7 +136,7 @@ pub fn run(args: &SpectrumArgs) -> Result<(), Failure> {
             fail(match e {
                 qmckit::Error::TooManyPoints { max, .. } => format!(
                     "{} points are too many for --k-max {} (at most {max} within \
-                     --max-seconds {}; estimated {:.3} s)",
+                     --max-seconds {}); estimated {:.3} s",
                     set.len(),
                     args.k_max,
                     args.budget.max_seconds,
