@@ -28,6 +28,7 @@ pub mod scene;
 pub mod screen_error;
 pub mod spectrum;
 pub mod star;
+pub(crate) mod stop;
 pub mod tvalue;
 pub mod variance;
 

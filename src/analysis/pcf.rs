@@ -26,6 +26,7 @@
 use rayon::prelude::*;
 
 use super::Points;
+use super::stop::Stop;
 use crate::work::{Budget, Cost, Rate};
 use crate::{Error, Result};
 
@@ -39,7 +40,7 @@ pub struct PcfOptions {
     pub r_max: f64,
     /// Number of bins `B`, at least 1, at most 1e6.
     pub bins: usize,
-    /// Kernel width `s` (positive; default the bin width `r_max / B`).
+    /// Kernel width `s` (in `[1e-100, 1]`; default the bin width `r_max / B`).
     pub sigma: f64,
     /// Toroidal (nearest-image) distances.
     pub torus: bool,
@@ -66,6 +67,46 @@ pub struct PcfBin {
     pub g: f64,
 }
 
+/// The smallest `r_max` and kernel width [`pcf_2d`] accepts: with both at least `1e-100`
+/// the kernel's `1 / sigma` and `1 / sigma^2`, the bin radii and the normalization
+/// `N (N - 1) 2 pi r` stay normal numbers, so no bin is NaN or infinite.
+pub const PCF_MIN_LENGTH: f64 = 1e-100;
+
+/// The largest kernel width [`pcf_2d`] accepts: 1, the side of the square (a wider kernel
+/// is flat over every distance there is).
+pub const PCF_MAX_SIGMA: f64 = 1.0;
+
+impl PcfOptions {
+    /// Checks the options' ranges: `r_max` in `[1e-100, 1/2]` on the torus or
+    /// `[1e-100, 1]` in the square, `bins` in `1..=1e6`, `sigma` in `[1e-100, 1]`
+    /// ([`PCF_MIN_LENGTH`], [`PCF_MAX_SIGMA`]). `O(1)`.
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] naming the first option out of range.
+    ///
+    /// ```
+    /// use qmckit::analysis::pcf::PcfOptions;
+    /// assert!(PcfOptions::new(0.15, 200, false).validate().is_ok());
+    /// let mut o = PcfOptions::new(0.15, 200, false);
+    /// o.sigma = 5e-324; // 1 / sigma^2 overflows: refused, not NaN bins
+    /// assert!(o.validate().is_err());
+    /// ```
+    pub fn validate(&self) -> Result<()> {
+        let limit = if self.torus { 0.5 } else { 1.0 };
+        let bad = |what| Err(Error::InvalidParameter { what });
+        if !(PCF_MIN_LENGTH..=limit).contains(&self.r_max) {
+            return bad("r_max must lie in [1e-100, 0.5] on the torus, [1e-100, 1] in the square");
+        }
+        if self.bins == 0 || self.bins > 1_000_000 {
+            return bad("the number of bins must lie in 1..=1000000");
+        }
+        if !(PCF_MIN_LENGTH..=PCF_MAX_SIGMA).contains(&self.sigma) {
+            return bad("the kernel width sigma must lie in [1e-100, 1]");
+        }
+        Ok(())
+    }
+}
+
 /// The estimated cost of [`pcf_2d`] for `n` points.
 pub fn pcf_cost(n: usize, opts: &PcfOptions) -> Cost {
     let pairs = n as f64 * (n as f64 - 1.0) / 2.0;
@@ -81,8 +122,9 @@ pub fn pcf_cost(n: usize, opts: &PcfOptions) -> Cost {
 /// # Errors
 /// [`Error::Unsupported`] unless the points are 2-dimensional; [`Error::InvalidParameter`]
 /// for fewer than two points, `r_max` outside `(0, 1/2]` (torus) or `(0, 1]`, `bins`
-/// outside `1..=1e6`, or a kernel width that is not positive and finite;
-/// [`Error::OverBudget`] past the budget.
+/// outside `1..=1e6`, or `r_max` or the kernel width outside their ranges
+/// ([`PcfOptions::validate`]); [`Error::OverBudget`] past the budget; [`Error::OutOfTime`]
+/// past its deadline (started here if it was not; read once per row of distances).
 ///
 /// ```
 /// use qmckit::{work::Budget, analysis::{Points, pcf::{PcfOptions, pcf_2d}}};
@@ -99,20 +141,12 @@ pub fn pcf_2d(points: Points<'_>, opts: &PcfOptions, budget: &Budget) -> Result<
             what: "a pair correlation function of points that are not 2-dimensional",
         });
     }
-    let limit = if opts.torus { 0.5 } else { 1.0 };
-    let bad = |what| Err(Error::InvalidParameter { what });
     if points.len() < 2 {
-        return bad("a pair correlation function needs at least two points");
+        return Err(Error::InvalidParameter {
+            what: "a pair correlation function needs at least two points",
+        });
     }
-    if !(opts.r_max > 0.0 && opts.r_max <= limit) {
-        return bad("r_max must lie in (0, 0.5] on the torus, (0, 1] in the square");
-    }
-    if opts.bins == 0 || opts.bins > 1_000_000 {
-        return bad("the number of bins must lie in 1..=1000000");
-    }
-    if !(opts.sigma > 0.0 && opts.sigma.is_finite()) {
-        return bad("the kernel width must be positive");
-    }
+    opts.validate()?;
     budget.check(
         "the pair correlation function",
         pcf_cost(points.len(), opts),
@@ -132,11 +166,16 @@ pub fn pcf_2d(points: Points<'_>, opts: &PcfOptions, budget: &Budget) -> Result<
         }
     };
     const CHUNK: usize = 64;
+    let stop = Stop::new(budget, "the pair correlation function");
     let partial: Vec<Vec<f64>> = (0..n.div_ceil(CHUNK))
         .into_par_iter()
         .map(|c| {
             let mut hist = vec![0.0f64; b];
             for i in c * CHUNK..((c + 1) * CHUNK).min(n) {
+                // One clock reading per row of N - i - 1 distances.
+                if stop.check() {
+                    break;
+                }
                 let (xi, yi) = (data.get(2 * i).copied(), data.get(2 * i + 1).copied());
                 let (Some(xi), Some(yi)) = (xi, yi) else {
                     continue;
@@ -159,6 +198,7 @@ pub fn pcf_2d(points: Points<'_>, opts: &PcfOptions, budget: &Budget) -> Result<
             hist
         })
         .collect();
+    stop.result()?;
     let mut hist = vec![0.0f64; b];
     for p in &partial {
         for (h, v) in hist.iter_mut().zip(p) {

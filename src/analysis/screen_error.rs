@@ -9,6 +9,7 @@
 //! `1 <= |k| < min(W, H) / 8` (below a quarter of the Nyquist frequency), `high_band` over
 //! `min(W, H) / 4 <= |k| < min(W, H) / 2`.
 
+use crate::analysis::stop::Stop;
 use crate::error::{Error, Result};
 use crate::pixel::PixelSampler;
 use crate::work::{Budget, Cost, Rate};
@@ -129,7 +130,9 @@ const DFT_RATE: Rate = Rate::per_second(2e8);
 ///
 /// # Errors
 /// [`Error::OverBudget`] past `budget`; [`Error::InvalidParameter`] for an image smaller
-/// than 8 x 8 (no low band) or a constant error image (no spectrum to normalize).
+/// than 8 x 8 (no low band) or a constant error image (no spectrum to normalize);
+/// [`Error::OutOfTime`] past the deadline of `budget` (started here if it was not), read
+/// once per image row and once per row and column of the DFT.
 ///
 /// ```
 /// use qmckit::work::Budget;
@@ -157,8 +160,10 @@ pub fn screen_error<S: PixelSampler + ?Sized>(
     let px = (w as f64) * (h as f64);
     let steps = px * (g.spp as f64) + px * ((w + h) as f64) * 4.0;
     budget.check("screen-space error", Cost::steps(steps, DFT_RATE))?;
-    let mut error = Vec::with_capacity(w * h);
+    let stop = Stop::new(budget, "screen-space error");
+    let mut error: Vec<f64> = crate::size::vec_with_capacity(w.saturating_mul(h))?;
     for y in 0..g.height {
+        stop.budget_check()?;
         let py = (y as f64 + 0.5) / h as f64;
         for x in 0..g.width {
             let px = (x as f64 + 0.5) / w as f64;
@@ -170,7 +175,7 @@ pub fn screen_error<S: PixelSampler + ?Sized>(
             error.push(sum / g.spp as f64 - f.exact_at(px, py));
         }
     }
-    ScreenError::from_error(error, w, h)
+    ScreenError::measure(error, w, h, &stop)
 }
 
 impl ScreenError {
@@ -181,6 +186,12 @@ impl ScreenError {
     /// [`Error::InvalidParameter`] for an image smaller than 8 x 8 or of the wrong length,
     /// or a constant image (no spectrum to normalize).
     pub fn from_error(error: Vec<f64>, w: usize, h: usize) -> Result<ScreenError> {
+        ScreenError::measure(error, w, h, &Stop::never("screen-space error"))
+    }
+
+    /// [`from_error`](Self::from_error) under the deadline of `stop`, read once per row
+    /// and column of the DFT.
+    fn measure(error: Vec<f64>, w: usize, h: usize, stop: &Stop) -> Result<ScreenError> {
         if w < 8 || h < 8 || error.len() != w * h {
             return Err(Error::InvalidParameter {
                 what: "an error image needs at least 8 x 8 pixels and w h values",
@@ -195,7 +206,7 @@ impl ScreenError {
             });
         }
         let rmse = (error.iter().map(|e| e * e).sum::<f64>() / px).sqrt();
-        let power = dft_power(&error, w, h);
+        let power = dft_power(&error, w, h, stop)?;
         let spectrum: Vec<f64> = power.iter().map(|p| p / (px * var)).collect();
         let side = w.min(h) as f64;
         let band = |lo: f64, hi: f64, norm: bool| {
@@ -239,7 +250,7 @@ impl ScreenError {
 
 /// `|DFT(e)|^2` of a real `w x h` image, row-major, by a separable DFT (rows, then columns)
 /// with exact twiddles `exp(-2 pi i j k / n)` taken modulo `n`.
-fn dft_power(e: &[f64], w: usize, h: usize) -> Vec<f64> {
+fn dft_power(e: &[f64], w: usize, h: usize, stop: &Stop) -> Result<Vec<f64>> {
     let twiddles = |n: usize| -> Vec<(f64, f64)> {
         (0..n)
             .map(|j| {
@@ -252,6 +263,7 @@ fn dft_power(e: &[f64], w: usize, h: usize) -> Vec<f64> {
     // Rows.
     let mut rows = vec![(0.0f64, 0.0f64); w * h];
     for y in 0..h {
+        stop.budget_check()?;
         for kx in 0..w {
             let (mut re, mut im) = (0.0, 0.0);
             for x in 0..w {
@@ -266,6 +278,7 @@ fn dft_power(e: &[f64], w: usize, h: usize) -> Vec<f64> {
     // Columns.
     let mut out = vec![0.0; w * h];
     for kx in 0..w {
+        stop.budget_check()?;
         for ky in 0..h {
             let (mut re, mut im) = (0.0, 0.0);
             for y in 0..h {
@@ -277,5 +290,5 @@ fn dft_power(e: &[f64], w: usize, h: usize) -> Vec<f64> {
             out[ky * w + kx] = re * re + im * im;
         }
     }
-    out
+    Ok(out)
 }

@@ -594,3 +594,12 @@ fn tvalue_in_huge_dimensions_and_past_the_budget() {
         "--max-seconds",
     );
 }
+
+#[test]
+fn every_listed_blue_noise_sampler_converges_with_default_options() {
+    for sampler in ["poisson", "gaussian-blue-noise"] {
+        let text = stdout(&["convergence", sampler], "");
+        assert!(text.starts_with("# n rmse\n"), "{sampler}: {text}");
+        assert!(text.lines().count() > 8, "{sampler}: {text}");
+    }
+}

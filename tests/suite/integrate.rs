@@ -266,3 +266,48 @@ fn points_used_against_qmcpy() {
         assert!(ours <= 32 * theirs, "{name}: {ours} vs {theirs}");
     }
 }
+
+/// Overflowing values, huge replication counts and the deadline.
+mod checks {
+    use qmckit::Error;
+    use qmckit::Sobol;
+    use qmckit::analysis::integrate::{Options, integrate, integrate_within};
+    use qmckit::randomize::{CranleyPatterson, Scrambled};
+    use qmckit::work::Budget;
+
+    fn make(seed: u64) -> qmckit::Result<Scrambled<Sobol, CranleyPatterson>> {
+        Ok(Scrambled::new(Sobol::new(2)?, CranleyPatterson::new(seed)))
+    }
+
+    #[test]
+    fn overflowing_sums_are_not_representable() {
+        for v in [1e308, -1e308, f64::MAX] {
+            let r = integrate(|_| v, 2, make, &Options::default());
+            assert!(
+                matches!(r, Err(Error::NotRepresentable { .. })),
+                "{v}: {r:?}"
+            );
+        }
+    }
+
+    #[test]
+    fn too_many_replications_are_refused() {
+        let o = Options {
+            replications: u32::MAX,
+            max_points: u64::MAX,
+            ..Options::default()
+        };
+        assert!(matches!(
+            integrate(|_| 1.0, 2, make, &o),
+            Err(Error::InvalidParameter { .. })
+        ));
+    }
+
+    #[test]
+    fn an_expired_deadline_stops_the_loop() {
+        let b = Budget::seconds(0.01).unwrap().started();
+        std::thread::sleep(std::time::Duration::from_millis(20));
+        let r = integrate_within(|x| x[0], 2, make, &Options::default(), &b);
+        assert!(matches!(r, Err(Error::OutOfTime { .. })), "{r:?}");
+    }
+}

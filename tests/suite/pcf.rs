@@ -188,3 +188,72 @@ fn cli_pcf_prints_bins_and_refuses_in_one_line() {
             .starts_with("# mean of 2 sets\n")
     );
 }
+
+/// Parameters that would underflow or overflow the kernel are refused; the deadline stops
+/// the pair loop.
+mod checks {
+    use qmckit::Error;
+    use qmckit::analysis::Points;
+    use qmckit::analysis::pcf::{PcfOptions, pcf_2d};
+    use qmckit::work::Budget;
+
+    fn grid() -> Vec<f64> {
+        (0..400)
+            .flat_map(|i| [(i % 20) as f64 / 20.0, (i / 20) as f64 / 20.0])
+            .collect()
+    }
+
+    #[test]
+    fn tiny_or_huge_lengths_are_refused_not_nan() {
+        let data = grid();
+        let p = Points::new(&data, 2).unwrap();
+        for sigma in [
+            5e-324,
+            1e-200,
+            1e308,
+            f64::INFINITY,
+            f64::NAN,
+            -1.0,
+            0.0,
+            2.0,
+        ] {
+            let mut o = PcfOptions::new(0.15, 50, false);
+            o.sigma = sigma;
+            let r = pcf_2d(p, &o, &Budget::UNLIMITED);
+            assert!(
+                matches!(r, Err(Error::InvalidParameter { .. })),
+                "{sigma}: {r:?}"
+            );
+        }
+        let mut o = PcfOptions::new(1e-200, 10, true);
+        o.sigma = 0.01;
+        assert!(pcf_2d(p, &o, &Budget::UNLIMITED).is_err());
+        // At the edges of the ranges every bin is a number.
+        let mut o = PcfOptions::new(0.15, 50, false);
+        o.sigma = 1e-100;
+        let g = pcf_2d(p, &o, &Budget::UNLIMITED).unwrap();
+        assert!(g.iter().all(|b| b.g.is_finite()));
+        o.sigma = 1.0;
+        let g = pcf_2d(p, &o, &Budget::UNLIMITED).unwrap();
+        assert!(g.iter().all(|b| b.g.is_finite()));
+    }
+
+    #[test]
+    fn an_expired_deadline_stops_the_pairs() {
+        let data = grid();
+        let p = Points::new(&data, 2).unwrap();
+        let b = Budget::seconds(0.02).unwrap().started();
+        std::thread::sleep(std::time::Duration::from_millis(40));
+        let r = pcf_2d(p, &PcfOptions::new(0.15, 50, false), &b);
+        assert!(matches!(r, Err(Error::OutOfTime { .. })), "{r:?}");
+    }
+
+    #[test]
+    fn the_command_refuses_a_subnormal_sigma() {
+        crate::common::cli::assert_usage_error(
+            &["pcf", "--sigma", "5e-324"],
+            "0.1 0.2\n0.5 0.7\n",
+            "--sigma 5e-324",
+        );
+    }
+}

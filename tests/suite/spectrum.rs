@@ -347,3 +347,47 @@ fn cli_averages_sets_and_switches_methods() {
         "raise --max-seconds",
     );
 }
+
+/// The deadline and the estimate's totality.
+mod deadlines {
+    use qmckit::Error;
+    use qmckit::analysis::Points;
+    use qmckit::analysis::spectrum::{Method, estimated_cost, periodogram_2d, spectrum_2d_within};
+    use qmckit::work::Budget;
+    use std::time::{Duration, Instant};
+
+    fn expired(seconds: f64) -> Budget {
+        let b = Budget::seconds(seconds).unwrap().started();
+        std::thread::sleep(Duration::from_secs_f64(seconds * 1.25 + 0.01));
+        b
+    }
+
+    #[test]
+    fn an_expired_deadline_stops_both_methods() {
+        let data: Vec<f64> = (0..2 * 5000)
+            .map(|i| (i as f64 * 0.618_033_988_749_895).fract())
+            .collect();
+        let p = Points::new(&data, 2).unwrap();
+        let b = expired(0.05);
+        let direct = spectrum_2d_within(Points::new(&data[..400], 2).unwrap(), 16, &b);
+        assert!(matches!(direct, Err(Error::OutOfTime { .. })), "{direct:?}");
+        let fast = periodogram_2d(p, 64, Method::Nufft, 1e-9, &b);
+        assert!(matches!(fast, Err(Error::OutOfTime { .. })), "{fast:?}");
+    }
+
+    #[test]
+    fn the_estimate_is_o1_and_total() {
+        let clock = Instant::now();
+        for k in [usize::MAX, usize::MAX / 2, 1 << 40, 2049] {
+            for tol in [f64::NAN, 0.0, -1.0, 1e-300, 1e308, f64::INFINITY] {
+                for m in [Method::Auto, Method::Direct, Method::Nufft] {
+                    let s = estimated_cost(1, k, m, tol).seconds();
+                    assert!(s > 0.0 && !s.is_nan(), "{k} {tol} {m:?}: {s}");
+                    let s = estimated_cost(usize::MAX, k, m, tol).seconds();
+                    assert!(!s.is_nan(), "{k} {tol} {m:?}: {s}");
+                }
+            }
+        }
+        assert!(clock.elapsed().as_secs_f64() < 1.0);
+    }
+}

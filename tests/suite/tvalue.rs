@@ -525,3 +525,25 @@ fn generated_points_and_counting_are_checked_in_size_and_time() {
         want
     );
 }
+
+/// The deadline stops the counting search.
+mod deadlines {
+    use qmckit::analysis::tvalue::t_value_u32_within;
+    use qmckit::work::Budget;
+    use qmckit::{Error, Sampler, Sobol};
+
+    #[test]
+    fn an_expired_deadline_stops_counting() {
+        let s = Sobol::new(4).unwrap();
+        let mut pts = vec![0u32; 4 << 10];
+        s.fill(0, &mut pts).unwrap();
+        let b = Budget::seconds(0.5).unwrap().started();
+        std::thread::sleep(std::time::Duration::from_millis(700));
+        let r = t_value_u32_within(&pts, 4, 10, &b);
+        assert!(matches!(r, Err(Error::OutOfTime { .. })), "{r:?}");
+        assert_eq!(
+            t_value_u32_within(&pts, 4, 10, &Budget::DEFAULT).ok(),
+            Some(2)
+        );
+    }
+}

@@ -261,3 +261,70 @@ fn cli_variance_prints_predicted_and_measured() {
         "raise it",
     );
 }
+
+/// Parameters where they enter: radii and widths that underflow, `--k-max`, `--sets`.
+mod checks {
+    use crate::common::cli::{assert_usage_error, run};
+    use qmckit::analysis::variance::TorusIntegrand;
+
+    #[test]
+    fn scales_that_underflow_are_refused() {
+        for r in [
+            1e-200,
+            5e-324,
+            1e-51,
+            0.0,
+            -0.1,
+            0.6,
+            f64::NAN,
+            f64::INFINITY,
+        ] {
+            assert!(TorusIntegrand::disk(r).is_err(), "{r}");
+        }
+        for s in [1e-200, 5e-324, 0.2, f64::NAN] {
+            assert!(TorusIntegrand::gaussian(s).is_err(), "{s}");
+        }
+        assert!(TorusIntegrand::disk(1e-50).is_ok() && TorusIntegrand::gaussian(1e-50).is_ok());
+        assert_usage_error(
+            &["variance", "halton", "-n", "64", "--radius", "1e-200"],
+            "",
+            "radius",
+        );
+    }
+
+    #[test]
+    fn k_max_is_honoured_or_refused() {
+        assert_usage_error(
+            &["variance", "halton", "-n", "64", "--k-max", "0"],
+            "",
+            "--k-max 0",
+        );
+        let out = run(
+            &[
+                "variance", "halton", "-n", "64", "--sets", "4", "--k-max", "8",
+            ],
+            "",
+        );
+        assert_eq!(out.status.code(), Some(0));
+        let text = String::from_utf8(out.stdout).unwrap();
+        assert!(text.lines().any(|l| l == "k_max 8"), "{text}");
+    }
+
+    #[test]
+    fn a_huge_set_count_is_an_error_not_an_abort() {
+        assert_usage_error(
+            &[
+                "variance",
+                "halton",
+                "-n",
+                "1",
+                "--sets",
+                "536870912",
+                "--max-seconds",
+                "inf",
+            ],
+            "",
+            "too many bytes",
+        );
+    }
+}

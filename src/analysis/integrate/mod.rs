@@ -44,6 +44,11 @@ pub use student::{t_quantile, two_sided_cdf};
 
 use crate::error::{Error, Result};
 use crate::sampler::Sampler;
+use crate::work::Budget;
+
+/// The most replications [`integrate`] takes (`2^20`: one sampler and one running sum
+/// each are held at once).
+pub const MAX_REPLICATIONS: u32 = 1 << 20;
 
 /// Points evaluated per batch (per replication).
 pub const BATCH: usize = 1024;
@@ -126,6 +131,9 @@ fn check_options(opts: &Options) -> Result<()> {
     if opts.replications < 2 {
         return Err(invalid("integrate needs at least 2 replications"));
     }
+    if opts.replications > MAX_REPLICATIONS {
+        return Err(invalid("integrate takes at most 2^20 replications"));
+    }
     let tolerance_ok = |t: f64| t.is_finite() && t >= 0.0;
     if !tolerance_ok(opts.abs_tol) || !tolerance_ok(opts.rel_tol) {
         return Err(invalid("tolerances must be finite and non-negative"));
@@ -149,15 +157,41 @@ fn check_options(opts: &Options) -> Result<()> {
 /// randomization (its `dims()` must be `dims`).
 ///
 /// # Errors
-/// [`Error::InvalidParameter`] for bad options, a sampler of another dimension, or a
-/// non-finite value of `f`; errors of `make` and of the samplers.
+/// [`Error::InvalidParameter`] for bad options (among them more than
+/// [`MAX_REPLICATIONS`]), a sampler of another dimension, or a non-finite value of `f`;
+/// [`Error::NotRepresentable`] when the running sums, the estimate or its half-width
+/// overflow `f64` (values of `f` near `1e308`: an error, never `inf ± NaN`); errors of
+/// `make` and of the samplers.
 pub fn integrate<S, M, F>(f: F, dims: usize, make: M, opts: &Options) -> Result<Estimate>
 where
     S: Sampler,
     M: Fn(u64) -> Result<S>,
     F: Fn(&[f64]) -> f64,
 {
+    integrate_within(f, dims, make, opts, &Budget::UNLIMITED)
+}
+
+/// [`integrate`] under the deadline of `budget` (started here if it was not; read once
+/// per batch of [`BATCH`] points). Its work is bounded by `opts.max_points` evaluations
+/// of `f` (and the construction's length); the deadline bounds its time whatever `f`
+/// costs.
+///
+/// # Errors
+/// As [`integrate`]; [`Error::OutOfTime`] past the deadline.
+pub fn integrate_within<S, M, F>(
+    f: F,
+    dims: usize,
+    make: M,
+    opts: &Options,
+    budget: &Budget,
+) -> Result<Estimate>
+where
+    S: Sampler,
+    M: Fn(u64) -> Result<S>,
+    F: Fn(&[f64]) -> f64,
+{
     check_options(opts)?;
+    let budget = budget.started();
     if dims == 0 {
         return Err(Error::ZeroDimensions);
     }
@@ -170,7 +204,7 @@ where
     }
     let len = samplers.iter().map(Sampler::len).min().unwrap_or(0);
     let t = t_quantile(opts.level, opts.replications - 1)?;
-    let mut sums = vec![0f64; reps];
+    let mut sums: Vec<f64> = crate::size::vec_zeroed(reps)?;
     let mut raw = crate::size::vec_zeroed(crate::size::coordinates(BATCH as u64, dims)?)?;
     let mut x = vec![0f64; dims];
     let (mut done, mut n) = (0u64, opts.n_start);
@@ -182,6 +216,7 @@ where
         for (s, sum) in samplers.iter().zip(sums.iter_mut()) {
             let mut i = done;
             while i < n {
+                budget.check_deadline("the integral")?;
                 let rows = (n - i).min(BATCH as u64) as usize;
                 let part = raw.get_mut(..rows * dims).unwrap_or(&mut []);
                 // i < n <= len <= 2^32.
@@ -204,6 +239,11 @@ where
         let value = means.iter().sum::<f64>() / reps as f64;
         let var = means.iter().map(|m| (m - value).powi(2)).sum::<f64>() / (reps as f64 - 1.0);
         let half_width = t * (var / reps as f64).sqrt();
+        if !(sums.iter().all(|s| s.is_finite()) && value.is_finite() && half_width.is_finite()) {
+            return Err(Error::NotRepresentable {
+                what: "the integral estimate (or its half-width)",
+            });
+        }
         levels.push(Level {
             n,
             value,

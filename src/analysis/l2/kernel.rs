@@ -5,6 +5,7 @@
 
 use super::Points;
 use super::arith::Acc;
+use crate::analysis::stop::Stop;
 use crate::dispatch::{Kernel, run_float};
 use crate::work::Progress;
 use core::sync::atomic::{AtomicUsize, Ordering};
@@ -504,22 +505,44 @@ pub(super) enum Loop {
 /// Progress of a pair sum, shared by its tasks: reports `(rows done, rows)` to a
 /// [`Progress`] about a hundred times in all (an atomic increment per task, a call per
 /// hundredth), the last report `(n, n)`.
+///
+/// It carries the computation's deadline too: each task reads it before its rows (one
+/// clock reading per `O(n d)` task) and, once it has passed, the remaining tasks return at
+/// once; [`Ticker::result`] then turns the stop into [`crate::Error::OutOfTime`].
 pub(super) struct Ticker<'a> {
     progress: Progress<'a>,
     done: AtomicUsize,
     tasks: usize,
     rows: usize,
+    pub(super) stop: &'a Stop,
 }
 
+/// The stop of a computation without a deadline.
+static NEVER: Stop = Stop::never("an L2 discrepancy");
+
 impl<'a> Ticker<'a> {
-    /// A ticker for the pair sum of `rows` points, not started.
+    /// A ticker for the pair sum of `rows` points, not started, without a deadline.
     pub(super) fn new(progress: Progress<'a>, rows: usize) -> Self {
+        Ticker::with_stop(progress, rows, &NEVER)
+    }
+
+    /// A ticker for the pair sum of `rows` points, not started, stopped by `stop`.
+    pub(super) fn with_stop(progress: Progress<'a>, rows: usize, stop: &'a Stop) -> Self {
         Ticker {
             progress,
             done: AtomicUsize::new(0),
             tasks: 0,
             rows,
+            stop,
         }
+    }
+
+    /// `value` unless the deadline stopped the computation.
+    ///
+    /// # Errors
+    /// [`crate::Error::OutOfTime`].
+    pub(super) fn result<T>(&self, value: T) -> crate::Result<T> {
+        self.stop.finish(value)
     }
 
     fn start(&mut self, tasks: usize) {
@@ -585,6 +608,9 @@ where
         (0..units.div_ceil(2))
             .into_par_iter()
             .map(|i| {
+                if ticker.stop.check() {
+                    return Acc::default();
+                }
                 let acc = row_pair::<F, D, K>(s, i, k1, build);
                 ticker.tick();
                 acc

@@ -6,7 +6,7 @@ use super::Points;
 use super::arith::{Dd, Wide};
 use super::kernel::{Build, Loop, Ticker, min};
 use super::sums::{checked, combine, combine_wide, kernel_sums, pow2, root, wide_kernel_sums};
-use super::tree::l2_star_fast;
+use super::tree::l2_star_fast_with;
 use crate::Result;
 use crate::work::no_progress;
 
@@ -82,7 +82,8 @@ pub fn l2_star(p: Points<'_>) -> Result<f64> {
 /// [`l2_star`] reporting the pair sum's progress to `ticker`.
 pub(super) fn l2_star_with(p: Points<'_>, ticker: &mut Ticker<'_>) -> Result<f64> {
     if super::tree::tree_pays_off(p.dims(), p.len()) {
-        ticker.whole(|| l2_star_fast(p))
+        let stop = ticker.stop;
+        ticker.whole(|| checked(l2_star_fast_with(p, p.dims() <= 2, stop), L2_STAR))
     } else {
         l2_star_direct_with(p, Build::Avx2, ticker)
     }

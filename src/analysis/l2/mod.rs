@@ -117,6 +117,7 @@ pub use measures::{
 pub use tree::{TREE_MAX_D, l2_star_fast};
 
 use super::Points;
+use super::stop::Stop;
 use crate::Result;
 use crate::work::{Budget, Cost, Progress, Rate, no_progress};
 use kernel::{Build, Ticker};
@@ -277,7 +278,9 @@ impl L2Metric {
     /// # Errors
     /// [`Error::OverBudget`](crate::Error::OverBudget) when the estimate exceeds
     /// `budget` (before any work); [`Error::NotRepresentable`](crate::Error::NotRepresentable)
-    /// as [`eval`](Self::eval).
+    /// as [`eval`](Self::eval); [`Error::OutOfTime`](crate::Error::OutOfTime) past the
+    /// deadline of `budget` (started here if it was not), read once per task of the pair
+    /// sum (`O(n d)` work) and once per node of at least 256 rows of the divide and conquer.
     pub fn eval_within(
         self,
         p: Points<'_>,
@@ -285,8 +288,9 @@ impl L2Metric {
         progress: Progress<'_>,
     ) -> Result<f64> {
         budget.check(self.what(), self.cost(p.len(), p.dims()))?;
-        let t = &mut Ticker::new(progress, p.len());
-        match self {
+        let stop = Stop::new(budget, self.what());
+        let t = &mut Ticker::with_stop(progress, p.len(), &stop);
+        let value = match self {
             L2Metric::L2Star => measures::l2_star_with(p, t),
             L2Metric::Centered => measures::centered_with(p, Build::Avx512, t),
             L2Metric::WrapAround => measures::wrap_around_with(p, Build::Avx512, t),
@@ -295,6 +299,9 @@ impl L2Metric {
             L2Metric::Unanchored => measures::unanchored_with(p, Build::Avx512, t),
             L2Metric::Generalized => measures::generalized_with(p, Build::Avx2, t),
             L2Metric::Diaphony => measures::diaphony_with(p, Build::Avx512, t),
-        }
+        };
+        // A stopped sum is meaningless: its error, not the value's.
+        t.result(())?;
+        value
     }
 }

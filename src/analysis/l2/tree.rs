@@ -7,6 +7,7 @@ use super::arith::{Acc, Dd, two_prod};
 use super::l2_star_direct;
 use super::sums::{KernelSums, checked, combine, pow2, root};
 use crate::Result;
+use crate::analysis::stop::Stop;
 use rayon::prelude::*;
 
 /// [`l2_star`](super::l2_star) by exact divide and conquer, in `O(n log^(d-1) n)` time
@@ -67,11 +68,16 @@ pub fn l2_star_fast(p: Points<'_>) -> Result<f64> {
     if p.dims() > TREE_MAX_D {
         return super::l2_star_direct(p);
     }
+    let stop = Stop::new(&crate::work::Budget::UNLIMITED, super::measures::L2_STAR);
     checked(
-        l2_star_fast_with(p, p.dims() <= 2),
+        l2_star_fast_with(p, p.dims() <= 2, &stop),
         super::measures::L2_STAR,
     )
 }
+
+/// Nodes of the recursions with at least this many rows read the deadline (each does
+/// `Ω(rows)` work, so the readings cost well under a percent).
+const CHECK_ROWS: usize = 256;
 
 /// The largest dimension in which [`l2_star_fast`] runs the divide and conquer: the
 /// recursion is `d` levels deep over the coordinates, and from 6 dimensions on it is
@@ -104,7 +110,7 @@ pub(super) fn tree_pays_off(d: usize, n: usize) -> bool {
 
 /// [`l2_star_fast`] by the merge sort of one and two dimensions (`plane`, only for
 /// `d <= 2`) or by the general recursion.
-fn l2_star_fast_with(p: Points<'_>, plane: bool) -> f64 {
+pub(super) fn l2_star_fast_with(p: Points<'_>, plane: bool, stop: &Stop) -> f64 {
     let d = p.dims();
     let mut s1 = Acc::default();
     let mut diag = Acc::default();
@@ -120,10 +126,10 @@ fn l2_star_fast_with(p: Points<'_>, plane: bool) -> f64 {
             .collect();
         uv.par_sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
         let mut scratch = vec![(0.0, 0.0); uv.len()];
-        cross_sum(&mut uv, &mut scratch)
+        cross_sum(&mut uv, &mut scratch, stop)
     } else {
         let u: Vec<f64> = p.as_slice().iter().map(|&t| 1.0 - t).collect();
-        tree_off_diagonal(&u, d)
+        tree_off_diagonal(&u, d, stop)
     };
     let sums = KernelSums {
         s1: s1.dd(),
@@ -139,18 +145,21 @@ const CROSS_LEAF: usize = 32;
 const CROSS_PARALLEL: usize = 1 << 14;
 
 /// For `pts` sorted by `u`: `sum_{j < i} u_j min(v_i, v_j)`. Leaves `pts` sorted by `v`.
-fn cross_sum(pts: &mut [(f64, f64)], scratch: &mut [(f64, f64)]) -> Acc {
+fn cross_sum(pts: &mut [(f64, f64)], scratch: &mut [(f64, f64)], stop: &Stop) -> Acc {
     let n = pts.len();
     if n <= CROSS_LEAF {
         return leaf_cross_sum(pts);
+    }
+    if n >= CHECK_ROWS && stop.check() {
+        return Acc::default();
     }
     let mid = n / 2;
     let (left, right) = pts.split_at_mut(mid);
     let (sl, sr) = scratch.split_at_mut(mid);
     let (mut acc, other) = if n >= CROSS_PARALLEL {
-        rayon::join(|| cross_sum(left, sl), || cross_sum(right, sr))
+        rayon::join(|| cross_sum(left, sl, stop), || cross_sum(right, sr, stop))
     } else {
-        (cross_sum(left, sl), cross_sum(right, sr))
+        (cross_sum(left, sl, stop), cross_sum(right, sr, stop))
     };
     acc.merge(other);
     acc.merge(between_halves(left, right));
@@ -228,7 +237,7 @@ const BI_LEAF: usize = 24;
 const TREE_PARALLEL: usize = 1 << 12;
 
 /// `sum_{i < j} prod_k min(u_ik, u_jk)` over all `n (n - 1) / 2` pairs, for any `d >= 1`.
-fn tree_off_diagonal(u: &[f64], d: usize) -> Acc {
+fn tree_off_diagonal(u: &[f64], d: usize, stop: &Stop) -> Acc {
     let n = u.len() / d;
     let mut order: Vec<usize> = (0..n).collect();
     order.par_sort_unstable_by(|&a, &b| u[a * d].total_cmp(&u[b * d]));
@@ -238,7 +247,7 @@ fn tree_off_diagonal(u: &[f64], d: usize) -> Acc {
     }
     drop(order);
     let mut scratch = vec![0.0; rows.len()];
-    one_colour(&mut rows, &mut scratch, d)
+    one_colour(&mut rows, &mut scratch, d, stop)
 }
 
 /// `prod_k min(a_k, b_k)`.
@@ -288,9 +297,12 @@ fn merge_rows(
 /// `min(u_i0, u_j0) = u_j0`, so the pairs across the split are the two-colour problem on
 /// columns `1..d` with weight `u_j0` on `L` (colour B) and `1` on `R` (colour A), whose
 /// rows come out of the merge of the halves sorted by its first coordinate.
-fn one_colour(rows: &mut [f64], scratch: &mut [f64], d: usize) -> Acc {
+fn one_colour(rows: &mut [f64], scratch: &mut [f64], d: usize, stop: &Stop) -> Acc {
     let n = rows.len() / d;
     let key = d.min(2) - 1;
+    if n >= CHECK_ROWS && stop.check() {
+        return Acc::default();
+    }
     if n <= MONO_LEAF {
         let mut acc = Acc::default();
         for i in 1..n {
@@ -307,9 +319,9 @@ fn one_colour(rows: &mut [f64], scratch: &mut [f64], d: usize) -> Acc {
         let (l, r) = rows.split_at_mut(mid * d);
         let (sl, sr) = scratch.split_at_mut(mid * d);
         let (mut acc, other) = if n >= TREE_PARALLEL {
-            rayon::join(|| one_colour(l, sl, d), || one_colour(r, sr, d))
+            rayon::join(|| one_colour(l, sl, d, stop), || one_colour(r, sr, d, stop))
         } else {
-            (one_colour(l, sl, d), one_colour(r, sr, d))
+            (one_colour(l, sl, d, stop), one_colour(r, sr, d, stop))
         };
         acc.merge(other);
         acc
@@ -328,7 +340,7 @@ fn one_colour(rows: &mut [f64], scratch: &mut [f64], d: usize) -> Acc {
     });
     rows.copy_from_slice(scratch);
     let mut cross_scratch = vec![0.0; cross.len()];
-    acc.merge(two_colour(&mut cross, &mut cross_scratch, d - 1));
+    acc.merge(two_colour(&mut cross, &mut cross_scratch, d - 1, stop));
     acc
 }
 
@@ -349,9 +361,12 @@ fn colour_b(w: f64) -> bool {
 /// sorted by `u_2` by the merge of the halves. With one coordinate left the problem is a
 /// sweep in ascending order; with two, the sweeps of both cross problems run inside the
 /// merge ([`merge_sweep`]); with none, it is a product of two sums.
-fn two_colour(rows: &mut [f64], scratch: &mut [f64], m: usize) -> Acc {
+fn two_colour(rows: &mut [f64], scratch: &mut [f64], m: usize, stop: &Stop) -> Acc {
     let s = m + 1;
     let n = rows.len() / s;
+    if n >= CHECK_ROWS && stop.check() {
+        return Acc::default();
+    }
     match m {
         0 => return product_of_sums(rows),
         1 => return sweep(rows),
@@ -367,9 +382,9 @@ fn two_colour(rows: &mut [f64], scratch: &mut [f64], m: usize) -> Acc {
         let (l, r) = rows.split_at_mut(mid * s);
         let (sl, sr) = scratch.split_at_mut(mid * s);
         let (mut acc, other) = if n >= TREE_PARALLEL {
-            rayon::join(|| two_colour(l, sl, m), || two_colour(r, sr, m))
+            rayon::join(|| two_colour(l, sl, m, stop), || two_colour(r, sr, m, stop))
         } else {
-            (two_colour(l, sl, m), two_colour(r, sr, m))
+            (two_colour(l, sl, m, stop), two_colour(r, sr, m, stop))
         };
         acc.merge(other);
         acc
@@ -408,9 +423,15 @@ fn two_colour(rows: &mut [f64], scratch: &mut [f64], m: usize) -> Acc {
     let (x, y) = cross.split_at_mut(nx * m);
     let (sx, sy) = cross_scratch.split_at_mut(nx * m);
     let (a, b) = if n >= TREE_PARALLEL {
-        rayon::join(|| two_colour(x, sx, m - 1), || two_colour(y, sy, m - 1))
+        rayon::join(
+            || two_colour(x, sx, m - 1, stop),
+            || two_colour(y, sy, m - 1, stop),
+        )
     } else {
-        (two_colour(x, sx, m - 1), two_colour(y, sy, m - 1))
+        (
+            two_colour(x, sx, m - 1, stop),
+            two_colour(y, sy, m - 1, stop),
+        )
     };
     acc.merge(a);
     acc.merge(b);
@@ -508,6 +529,10 @@ fn product_of_sums(rows: &[f64]) -> Acc {
 
 #[cfg(test)]
 mod tests {
+    fn never() -> Stop {
+        Stop::new(&crate::work::Budget::UNLIMITED, "test")
+    }
+
     use super::super::l2_star_direct;
     use super::*;
 
@@ -556,7 +581,7 @@ mod tests {
                             .for_each(|t| *t = (*t * (grid + 1.0)).floor() / grid);
                     }
                     let want = off_diagonal_by_pairs(&u, d);
-                    let got = tree_off_diagonal(&u, d).dd().value();
+                    let got = tree_off_diagonal(&u, d, &never()).dd().value();
                     assert!(
                         (got - want).abs() <= 1e-13 * want.max(1e-300),
                         "d={d} n={n} grid={grid}: {got:e} vs {want:e}"
@@ -572,13 +597,16 @@ mod tests {
             for (n, seed) in [(1usize, 1u64), (50, 2), (700, 3), (2500, 4)] {
                 let x = uniform(n * d, seed * 100 + d as u64);
                 let p = Points::new(&x, d).unwrap();
-                let (tree, direct) = (l2_star_fast_with(p, false), l2_star_direct(p).unwrap());
+                let (tree, direct) = (
+                    l2_star_fast_with(p, false, &never()),
+                    l2_star_direct(p).unwrap(),
+                );
                 assert!(
                     rel(tree, direct) <= 1e-13,
                     "d={d} n={n}: {tree:e} vs {direct:e}"
                 );
                 if d <= 2 {
-                    let plane = l2_star_fast_with(p, true);
+                    let plane = l2_star_fast_with(p, true, &never());
                     assert!(rel(tree, plane) <= 1e-13, "d={d} n={n}");
                 }
             }

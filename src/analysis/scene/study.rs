@@ -6,6 +6,8 @@ use super::geometry::Scene;
 use super::integrands::{Integrand, standard_camera, standard_scene};
 use super::samplers::{Prepared, SceneSampler};
 use crate::analysis::screen_error::ScreenError;
+use crate::analysis::stop::Stop;
+use crate::work::Budget;
 use crate::work::{Progress, no_progress};
 use crate::{Error, Jitter, OwenSobol, Result, Stratified};
 use rayon::prelude::*;
@@ -217,7 +219,22 @@ impl Study {
     /// # Errors
     /// As [`check`].
     pub fn run(self, o: &StudyOptions, progress: Progress) -> Result<SceneStudy> {
+        self.run_within(o, progress, &Budget::UNLIMITED)
+    }
+
+    /// [`run`](Self::run) under the deadline of `budget` (started here if it was not),
+    /// read once per image row of every render.
+    ///
+    /// # Errors
+    /// As [`check`]; [`Error::OutOfTime`] past the deadline.
+    pub fn run_within(
+        self,
+        o: &StudyOptions,
+        progress: Progress,
+        budget: &Budget,
+    ) -> Result<SceneStudy> {
         check(o)?;
+        let stop = Stop::new(budget, "a scene study");
         let samples = self.cost(o);
         if samples > MAX_STUDY_SAMPLES {
             return Err(Error::TooLarge {
@@ -239,6 +256,7 @@ impl Study {
             SceneSampler::OwenSobol,
             o.reference_spp,
             REFERENCE_SEED,
+            &stop,
         )?;
         tick();
         let (mut renders, mut errors, mut mse) = (Vec::new(), Vec::new(), Vec::new());
@@ -246,7 +264,7 @@ impl Study {
             let mut per_seed = Vec::with_capacity(o.seeds as usize);
             let (mut low, mut low_abs) = (0.0, 0.0);
             for s in 0..o.seeds {
-                let img = render_with(&scene, &camera, integrand, kind, o.spp, s as u64)?;
+                let img = render_with(&scene, &camera, integrand, kind, o.spp, s as u64, &stop)?;
                 let err: Vec<f64> = img
                     .pixels
                     .iter()
@@ -371,6 +389,7 @@ fn render_with(
     kind: SceneSampler,
     spp: u32,
     seed: u64,
+    stop: &Stop,
 ) -> Result<SceneImage> {
     let (w, h) = (camera.width(), camera.height());
     let d = integrand.dims();
@@ -378,6 +397,7 @@ fn render_with(
     let rows: Vec<Result<Vec<f64>>> = (0..h)
         .into_par_iter()
         .map(|y| {
+            stop.budget_check()?;
             let mut buf = vec![0.0; spp as usize * d];
             let mut row = Vec::with_capacity(w as usize);
             for x in 0..w {
@@ -430,6 +450,7 @@ pub fn reference_image(study: Study, o: &StudyOptions, spp: u32, seed: u64) -> R
         SceneSampler::OwenSobol,
         spp,
         seed,
+        &Stop::never("a scene reference"),
     )
 }
 

@@ -61,7 +61,7 @@ impl SpectrumMean {
             }
         }
         self.sets += 1;
-        self.points += s.points;
+        self.points = self.points.saturating_add(s.points);
         Ok(())
     }
 

@@ -9,7 +9,9 @@
 use rayon::prelude::*;
 
 use super::Spectrum;
+use crate::Result;
 use crate::analysis::Points;
+use crate::analysis::stop::Stop;
 
 /// Points whose phase tables are computed at once (`2 * BLOCK * (2K + 1)` `f64`s each for
 /// the `x` and `y` factors).
@@ -26,8 +28,12 @@ fn phases(x: f64, ks: core::ops::RangeInclusive<i64>, re: &mut [f64], im: &mut [
 }
 
 /// The direct-sum periodogram on `[-K, K]^2`; the caller has checked the dimension, `K`
-/// and the budget.
-pub(super) fn direct_sum(points: Points<'_>, k_max: usize) -> Spectrum {
+/// and the budget. Each row of a block of points reads the deadline of `stop` first (one
+/// clock reading per `256 (2K + 1)` multiply-adds).
+///
+/// # Errors
+/// [`crate::Error::OutOfTime`] once the deadline passes.
+pub(super) fn direct_sum(points: Points<'_>, k_max: usize, stop: &Stop) -> Result<Spectrum> {
     let n = points.len();
     let side = 2 * k_max + 1;
     // Rows ky = 0 ..= K of the sum S(k) = sum_j exp(-2 pi i k . x_j), as (re, im).
@@ -37,6 +43,7 @@ pub(super) fn direct_sum(points: Points<'_>, k_max: usize) -> Spectrum {
     let (mut xr, mut xi) = (vec![0.0; BLOCK * side], vec![0.0; BLOCK * side]);
     let (mut yr, mut yi) = (vec![0.0; BLOCK * half], vec![0.0; BLOCK * half]);
     for block in points.as_slice().chunks(2 * BLOCK) {
+        stop.result()?;
         let m = block.len() / 2;
         for (j, p) in block.chunks_exact(2).enumerate() {
             let at = j * side..(j + 1) * side;
@@ -45,6 +52,9 @@ pub(super) fn direct_sum(points: Points<'_>, k_max: usize) -> Spectrum {
             phases(p[1], 0..=k, &mut yr[at.clone()], &mut yi[at]);
         }
         sums.par_chunks_mut(side).enumerate().for_each(|(ky, row)| {
+            if stop.check() {
+                return;
+            }
             for j in 0..m {
                 // exp(-2 pi i ky y_j): entry ky of point j's y phases.
                 let (wr, wi) = (yr[j * half + ky], yi[j * half + ky]);
@@ -67,9 +77,9 @@ pub(super) fn direct_sum(points: Points<'_>, k_max: usize) -> Spectrum {
         }
     }
     power[k_max * side + k_max] = n as f64; // exact: every phase is 1
-    Spectrum {
+    stop.finish(Spectrum {
         k_max,
         points: n,
         power,
-    }
+    })
 }

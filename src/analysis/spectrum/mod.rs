@@ -38,6 +38,7 @@ pub use average::SpectrumMean;
 pub use nufft::NUFFT_MIN_TOLERANCE;
 
 use super::Points;
+use super::stop::Stop;
 use crate::work::{Budget, Cost, Rate};
 use crate::{Error, Result};
 
@@ -136,7 +137,8 @@ pub fn spectrum_2d(points: Points<'_>, k_max: usize) -> Result<Spectrum> {
 ///
 /// # Errors
 /// As [`spectrum_2d`]; [`Error::TooManyPoints`] names the most points the budget admits for
-/// this `K`.
+/// this `K`; [`Error::OutOfTime`] past the deadline of `budget` (started here if it was
+/// not), read once per row of each block of 256 points.
 ///
 /// ```
 /// use qmckit::{work::Budget, analysis::{Points, spectrum::spectrum_2d_within}};
@@ -166,7 +168,7 @@ pub fn spectrum_2d_within(points: Points<'_>, k_max: usize, budget: &Budget) -> 
             max: (work / per_point) as u64,
         });
     }
-    Ok(direct::direct_sum(points, k_max))
+    direct::direct_sum(points, k_max, &Stop::new(budget, "the spectrum"))
 }
 
 /// How [`periodogram_2d`] computes the sums.
@@ -192,7 +194,10 @@ pub const NUFFT_SPREAD_RATE: Rate = Rate::per_second(2e8);
 pub const NUFFT_FFT_RATE: Rate = Rate::per_second(5e8);
 
 /// The estimated running time of one periodogram of `n` points on `[-K, K]^2` by `method`
-/// (for [`Method::Auto`]: the faster one), with the NUFFT at `tolerance`.
+/// (for [`Method::Auto`]: the faster one), with the NUFFT at `tolerance` (clamped into
+/// `[1e-14, 0.5]` for the estimate; NaN counts as `1e-14`). `O(1)` and total: every `n`,
+/// `K` (beyond [`SPECTRUM_MAX_K`], where no plan is built, the grid is taken as
+/// `2 (2K + 1)` nodes) and tolerance give a number of seconds, `+inf` at worst.
 ///
 /// ```
 /// use qmckit::analysis::spectrum::{Method, estimated_cost};
@@ -204,8 +209,21 @@ pub const NUFFT_FFT_RATE: Rate = Rate::per_second(5e8);
 pub fn estimated_cost(n: usize, k_max: usize, method: Method, tolerance: f64) -> Cost {
     let side = 2.0 * k_max as f64 + 1.0;
     let direct = Cost::steps(n as f64 * (k_max as f64 + 1.0) * side, SPECTRUM_RATE);
-    let plan = nufft::Plan::new(k_max, tolerance.clamp(NUFFT_MIN_TOLERANCE, 0.5));
-    let (w, g) = (plan.width as f64, plan.grid as f64);
+    // NaN counts as the tightest tolerance (the widest kernel).
+    let tolerance = if tolerance.is_nan() {
+        NUFFT_MIN_TOLERANCE
+    } else {
+        tolerance.clamp(NUFFT_MIN_TOLERANCE, 0.5)
+    };
+    let (w, g) = if k_max <= SPECTRUM_MAX_K {
+        let plan = nufft::Plan::new(k_max, tolerance);
+        (plan.width as f64, plan.grid as f64)
+    } else {
+        // No plan is built past the largest K (refused anyway): the widest kernel and
+        // a grid of 2 (2K + 1) nodes, in O(1).
+        let plan = nufft::Plan::new(SPECTRUM_MAX_K, tolerance);
+        (plan.width as f64, 2.0 * side)
+    };
     let spread = Cost::steps(n as f64 * w * (w + 2.0), NUFFT_SPREAD_RATE);
     let ffts = Cost::steps(
         (g / 2.0 + k_max as f64 + 1.0) * g * g.log2() + g * g,
@@ -217,7 +235,8 @@ pub fn estimated_cost(n: usize, k_max: usize, method: Method, tolerance: f64) ->
         Method::Nufft => fast,
         Method::Auto => {
             if fast.seconds() < direct.seconds()
-                && plan.bytes(k_max) <= crate::size::MAX_ALLOC_BYTES as f64
+                && 8.0 * g * g + 16.0 * g * (k_max as f64 + 1.0)
+                    <= crate::size::MAX_ALLOC_BYTES as f64
             {
                 fast
             } else {
@@ -245,7 +264,8 @@ pub fn choose_method(n: usize, k_max: usize, tolerance: f64) -> Method {
 /// [`Error::Unsupported`] unless `points.dims() == 2`, or for `k_max` above
 /// [`SPECTRUM_MAX_K`]; [`Error::InvalidParameter`] for a tolerance outside
 /// `[1e-14, 0.1]` or NaN; [`Error::OverBudget`] when the estimate of [`estimated_cost`]
-/// exceeds `budget`; [`Error::TooLarge`] when the NUFFT grid does not fit in memory.
+/// exceeds `budget`; [`Error::TooLarge`] when the NUFFT grid does not fit in memory;
+/// [`Error::OutOfTime`] past the deadline of `budget` (started here if it was not).
 ///
 /// ```
 /// use qmckit::{work::Budget, analysis::{Points, spectrum::{Method, periodogram_2d}}};
@@ -285,8 +305,9 @@ pub fn periodogram_2d(
         "the spectrum",
         estimated_cost(points.len(), k_max, method, tolerance),
     )?;
+    let stop = Stop::new(budget, "the spectrum");
     match method {
-        Method::Nufft => nufft::nufft(points, k_max, tolerance),
-        _ => Ok(direct::direct_sum(points, k_max)),
+        Method::Nufft => nufft::nufft(points, k_max, tolerance, &stop),
+        _ => direct::direct_sum(points, k_max, &stop),
     }
 }

@@ -38,6 +38,7 @@ use rustfft::num_complex::Complex;
 use super::Spectrum;
 use crate::Result;
 use crate::analysis::Points;
+use crate::analysis::stop::Stop;
 use crate::size::vec_zeroed;
 
 /// The smallest tolerance the NUFFT path accepts: below it double rounding (about `1e-16 N`
@@ -60,7 +61,9 @@ pub(super) struct Plan {
 
 impl Plan {
     /// The plan for frequencies `[-K, K]` and a tolerance relative to `P(0)` (already
-    /// checked to lie in `[NUFFT_MIN_TOLERANCE, 1)`).
+    /// checked to lie in `[NUFFT_MIN_TOLERANCE, 1)`). Precondition: `k_max <=`
+    /// [`super::SPECTRUM_MAX_K`] (the grid search is then a few hundred steps; callers
+    /// check it, and [`super::estimated_cost`] does not build a plan beyond it).
     pub fn new(k_max: usize, tolerance: f64) -> Self {
         let eps = tolerance / 4.0;
         let modes = 2 * k_max + 1;
@@ -91,12 +94,6 @@ impl Plan {
             beta: 0.97 * core::f64::consts::PI * w as f64 * (1.0 - 0.5 / sigma),
             grid: pow2,
         }
-    }
-
-    /// Bytes of the fine grid and of the half-transformed columns.
-    pub fn bytes(&self, k_max: usize) -> f64 {
-        let n = self.grid as f64;
-        8.0 * n * n + 16.0 * n * (k_max + 1) as f64
     }
 }
 
@@ -185,10 +182,14 @@ fn weights(plan: &Plan, u: f64, out: &mut [f64; MAX_WIDTH]) -> i64 {
 }
 
 /// Adds every point's kernel to the real `n x n` grid (row `y`, column `x`).
-fn spread(points: Points<'_>, plan: &Plan, grid: &mut [f64]) {
+fn spread(points: Points<'_>, plan: &Plan, grid: &mut [f64], stop: &Stop) {
     let (n, w) = (plan.grid, plan.width);
     let (mut wx, mut wy) = ([0.0; MAX_WIDTH], [0.0; MAX_WIDTH]);
-    for p in points.iter() {
+    for (i, p) in points.iter().enumerate() {
+        // One clock reading per 4096 points (w^2 multiply-adds each).
+        if i % 4096 == 4095 && stop.check() {
+            return;
+        }
         let (x, y) = match *p {
             [x, y] => (x, y),
             _ => continue,
@@ -225,13 +226,21 @@ fn spread(points: Points<'_>, plan: &Plan, grid: &mut [f64]) {
 /// the tolerance and the budget.
 ///
 /// # Errors
-/// [`crate::Error::TooLarge`] when the grid does not fit in memory.
-pub(super) fn nufft(points: Points<'_>, k_max: usize, tolerance: f64) -> Result<Spectrum> {
+/// [`crate::Error::TooLarge`] when the grid does not fit in memory;
+/// [`crate::Error::OutOfTime`] past the deadline of `stop` (read every 4096 points of the
+/// spreading and before every FFT).
+pub(super) fn nufft(
+    points: Points<'_>,
+    k_max: usize,
+    tolerance: f64,
+    stop: &Stop,
+) -> Result<Spectrum> {
     let plan = Plan::new(k_max, tolerance);
     let (n, side) = (plan.grid, 2 * k_max + 1);
     let count = points.len();
     let mut grid: Vec<f64> = vec_zeroed(n * n)?;
-    spread(points, &plan, &mut grid);
+    spread(points, &plan, &mut grid, stop);
+    stop.result()?;
 
     let fft = FftPlanner::<f64>::new().plan_fft_forward(n);
     let scratch_len = fft.get_inplace_scratch_len();
@@ -251,6 +260,9 @@ pub(super) fn nufft(points: Points<'_>, k_max: usize, tolerance: f64) -> Result<
                 )
             },
             |(buf, scratch), (out, pair)| {
+                if stop.check() {
+                    return;
+                }
                 let (a, b) = pair.split_at(n);
                 for ((z, &re), &im) in buf.iter_mut().zip(a).zip(b) {
                     *z = Complex::new(re, im);
@@ -267,6 +279,7 @@ pub(super) fn nufft(points: Points<'_>, k_max: usize, tolerance: f64) -> Result<
             },
         );
     drop(grid);
+    stop.result()?;
 
     // Column stage: for each wanted kx, the FFT along y of its column.
     let inverse = deconvolution(&plan, k_max);
@@ -281,6 +294,9 @@ pub(super) fn nufft(points: Points<'_>, k_max: usize, tolerance: f64) -> Result<
                 )
             },
             |(buf, scratch), kx| {
+                if stop.check() {
+                    return Vec::new();
+                }
                 for (row, z) in buf.iter_mut().enumerate() {
                     *z = rows.get(row * half + kx).copied().unwrap_or_default();
                 }
@@ -296,6 +312,7 @@ pub(super) fn nufft(points: Points<'_>, k_max: usize, tolerance: f64) -> Result<
             },
         )
         .collect();
+    stop.result()?;
     let mut power: Vec<f64> = vec_zeroed(side * side)?;
     for (kx, column) in columns.iter().enumerate() {
         for (ky, &p) in column.iter().enumerate() {

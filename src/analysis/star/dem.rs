@@ -83,6 +83,7 @@ use super::cells::{
 use super::cost::within;
 pub use super::cost::{max_points, max_points_within, work_estimate};
 use crate::analysis::Points;
+use crate::analysis::stop::Stop;
 use crate::work::{Budget, Progress, no_progress};
 use crate::{Error, Result};
 use rayon::prelude::*;
@@ -136,7 +137,9 @@ pub fn star_dem(points: Points<'_>) -> Result<f64> {
 /// # Errors
 /// [`Error::TooManyPoints`] when [`work_estimate`] exceeds `budget` (`max`: the largest
 /// `N` within it, [`max_points_within`]); [`Error::TooLarge`] for two or more counted points
-/// in more than [`DEM_MAX_DIMS`] dimensions.
+/// in more than [`DEM_MAX_DIMS`] dimensions; [`Error::OutOfTime`] past the deadline of
+/// `budget` (started here if it was not), checked before every evaluated cell and every
+/// 256 pruned ones.
 ///
 /// ```
 /// use qmckit::work::Budget;
@@ -171,7 +174,9 @@ pub fn star_dem_within(points: Points<'_>, budget: &Budget, progress: Progress<'
         progress(PROGRESS_STEPS, PROGRESS_STEPS);
         return Ok(single_point(first, n as f64));
     }
-    Ok(dem_from(points, progress))
+    let stop = Stop::new(budget, "the exact star discrepancy");
+    let v = dem_from(points, progress, &stop);
+    stop.finish(v)
 }
 
 /// `D*_N` of a set whose only counted point is `x` (or none), `N = n`: see
@@ -188,8 +193,9 @@ fn single_point(x: Option<&[f64]>, n: f64) -> f64 {
 /// The `total` of [`star_dem_within`]'s progress reports.
 pub const PROGRESS_STEPS: usize = 1000;
 
-/// [`star_dem_within`] without the work check.
-fn dem_from(points: Points<'_>, progress: Progress<'_>) -> f64 {
+/// [`star_dem_within`] without the work check; the walk stops early (with a meaningless
+/// value) once `stop` says so.
+fn dem_from(points: Points<'_>, progress: Progress<'_>, stop: &Stop) -> f64 {
     let d = points.dims();
     let n = points.len() as f64;
     let counted: Vec<&[f64]> = points
@@ -220,6 +226,7 @@ fn dem_from(points: Points<'_>, progress: Progress<'_>) -> f64 {
         grids: &grids,
         step: (n.sqrt().ceil() as usize).max(1),
         best: &best,
+        stop,
     };
     ctx.run(counted.len() as u32, progress);
     f64::from_bits(best.load(Ordering::Relaxed)) / n
@@ -237,7 +244,13 @@ struct Ctx<'a> {
     step: usize,
     /// Best value so far, scaled by `N`, as `f64` bits (non-negative, so ordered as `u64`).
     best: &'a AtomicU64,
+    /// The deadline: checked before each evaluated cell and every [`CELLS_PER_CHECK`]
+    /// pruned ones.
+    stop: &'a Stop,
 }
+
+/// Pruned cells (a few partition points each) between two deadline checks.
+const CELLS_PER_CHECK: u32 = 256;
 
 /// Buffers of one cut level, reused across the nodes of a depth-first walk.
 #[derive(Default)]
@@ -432,6 +445,9 @@ impl Ctx<'_> {
         levels: &mut [Level],
         tail: &mut Tail,
     ) {
+        if self.stop.stopped() {
+            return;
+        }
         let s = self.slab(k, idx, me);
         let vh = vol_hi * self.a(k, s.hi);
         let best = self.best();
@@ -544,6 +560,7 @@ impl Ctx<'_> {
         let mut n_active = 0usize;
         let mut fi = 0usize;
         let mut lo_l = 0u32;
+        let mut pruned = 0u32;
         loop {
             // Activate the slab points whose last level is lo_l (the cuts are at them).
             while let Some(&(i, j)) = forced.get(fi) {
@@ -598,8 +615,16 @@ impl Ctx<'_> {
                 }
             }
             if open || closed {
+                if self.stop.check() {
+                    break;
+                }
                 let v = self.cell(tail, below, inside, (open, closed));
                 self.offer(v);
+            } else {
+                pruned += 1;
+                if pruned.is_multiple_of(CELLS_PER_CHECK) && self.stop.check() {
+                    break;
+                }
             }
             if hi_l >= top {
                 break;

@@ -2,6 +2,7 @@
 
 use super::sweep::{counted, grid, rank};
 use crate::analysis::Points;
+use crate::analysis::stop::Stop;
 use crate::work::{Budget, Rate};
 use crate::{Error, Result};
 use rayon::prelude::*;
@@ -59,7 +60,8 @@ pub const EXTREME_RATE: Rate = Rate::per_second(1.7e8);
 ///
 /// # Errors
 /// [`Error::Unsupported`] unless `points.dims() == 2`; [`Error::TooManyPoints`] past the
-/// budget, `max` the largest `N` within it.
+/// budget, `max` the largest `N` within it; [`Error::OutOfTime`] past the deadline of
+/// `budget` (started here if it was not), read once per `O(N)` slab.
 ///
 /// ```
 /// use qmckit::work::Budget;
@@ -98,15 +100,23 @@ pub fn extreme_2d_within(points: Points<'_>, budget: &Budget) -> Result<f64> {
         }
     }
     let nf = n as f64;
+    let stop = Stop::new(budget, "the extreme discrepancy");
     let best = (0..xs.len())
         .into_par_iter()
-        .map(|i| extreme_from(i, &xs, &ys, &groups, nf))
+        .map(|i| extreme_from(i, &xs, &ys, &groups, nf, &stop))
         .reduce(|| 0.0, f64::max);
-    Ok(best / nf)
+    stop.finish(best / nf)
 }
 
 /// [`extreme_2d`] for the slabs with lower `x` bound `xs[i]`; scaled by `N`.
-fn extreme_from(i: usize, xs: &[f64], ys: &[f64], groups: &[Vec<usize>], n: f64) -> f64 {
+fn extreme_from(
+    i: usize,
+    xs: &[f64],
+    ys: &[f64],
+    groups: &[Vec<usize>],
+    n: f64,
+    stop: &Stop,
+) -> f64 {
     let m = ys.len();
     // interior[r]: points with xs[i] < x < xs[j] at y-rank r; edge[r]: those with x = xs[i]
     // or x = xs[j] (the closed slab adds them).
@@ -123,6 +133,9 @@ fn extreme_from(i: usize, xs: &[f64], ys: &[f64], groups: &[Vec<usize>], n: f64)
     let lo = xs.get(i).copied().unwrap_or(0.0);
     let mut best = 0.0f64;
     for (j, &hi) in xs.iter().enumerate().skip(i) {
+        if stop.check() {
+            return best;
+        }
         if j > i {
             add(&mut edge, groups.get(j), 1.0);
         }

@@ -65,8 +65,12 @@ fn splitmix(state: &mut u64) -> u64 {
 /// # Ok::<(), qmckit::Error>(())
 /// ```
 pub fn star_lower_bound(points: Points<'_>, seed: u64, iterations: u64) -> f64 {
-    lower_bound(points, seed, iterations)
+    // No deadline: an unlimited budget never stops the search.
+    lower_bound(points, seed, iterations, &Budget::UNLIMITED).unwrap_or(0.0)
 }
+
+/// The name of threshold accepting in the errors of the budget.
+const WHAT: &str = "threshold accepting (a lower bound on the star discrepancy)";
 
 /// The estimated steps of [`star_lower_bound`]: the boxes it scores (two first, then per
 /// walk `2 ceil(sqrt(per))` for its thresholds and `per + 1` along it, `per` its share of
@@ -85,7 +89,9 @@ pub fn lower_bound_steps(n: usize, d: usize, iterations: u64) -> f64 {
 ///
 /// # Errors
 /// [`crate::Error::OverBudget`] when the estimate exceeds `budget` (fewer iterations, or
-/// fewer points or dimensions, are faster).
+/// fewer points or dimensions, are faster); [`crate::Error::OutOfTime`] when the search
+/// passes the deadline of `budget` (started here if it was not), read every few thousand
+/// point-coordinate steps.
 ///
 /// ```
 /// use qmckit::work::Budget;
@@ -102,17 +108,17 @@ pub fn star_lower_bound_within(
     budget: &Budget,
 ) -> Result<f64> {
     let steps = lower_bound_steps(points.len(), points.dims(), iterations);
-    budget.check(
-        "threshold accepting (a lower bound on the star discrepancy)",
-        Cost::steps(steps, LOWER_BOUND_RATE),
-    )?;
-    Ok(lower_bound(points, seed, iterations))
+    budget.check(WHAT, Cost::steps(steps, LOWER_BOUND_RATE))?;
+    lower_bound(points, seed, iterations, budget)
 }
 
-/// [`star_lower_bound`] itself.
-fn lower_bound(points: Points<'_>, seed: u64, iterations: u64) -> f64 {
+/// [`star_lower_bound`] itself, stopped by the deadline of `budget`.
+fn lower_bound(points: Points<'_>, seed: u64, iterations: u64, budget: &Budget) -> Result<f64> {
     let d = points.dims();
     let n = points.len() as f64;
+    // One score passes over the N d coordinates: the pacer counts them.
+    let per_score = u32::try_from(points.len().saturating_mul(d)).unwrap_or(u32::MAX);
+    let mut pacer = budget.pacer(WHAT);
     let pts: Vec<&[f64]> = counted(points).collect();
     let mut snap = Snapper {
         pts: &pts,
@@ -147,6 +153,7 @@ fn lower_bound(points: Points<'_>, seed: u64, iterations: u64) -> f64 {
             let b = score(&mut snap, &y, &mut rng);
             best = best.max(a).max(b);
             thresholds.push((a - b).abs());
+            pacer.tick_n(per_score)?;
         }
         thresholds.sort_unstable_by(|a, b| b.total_cmp(a));
         thresholds.push(0.0);
@@ -174,6 +181,7 @@ fn lower_bound(points: Points<'_>, seed: u64, iterations: u64) -> f64 {
             neighbour(&cur, &mut y, reach, &mut rng);
             let v = score(&mut snap, &y, &mut rng);
             best = best.max(v);
+            pacer.tick_n(per_score)?;
             let t = thresholds
                 .get((step / per_threshold) as usize)
                 .copied()
@@ -184,7 +192,7 @@ fn lower_bound(points: Points<'_>, seed: u64, iterations: u64) -> f64 {
             }
         }
     }
-    best
+    Ok(best)
 }
 
 /// The snapping of [`star_lower_bound`]: scores a box after rounding it to the critical

@@ -62,6 +62,7 @@ pub use extreme::{EXTREME_2D_MAX_POINTS, EXTREME_RATE, extreme_2d, extreme_2d_wi
 pub use lower_bound::{lower_bound_steps, star_lower_bound, star_lower_bound_within};
 
 use super::Points;
+use super::stop::Stop;
 use crate::work::{Budget, Progress, no_progress};
 use crate::{Error, Result};
 
@@ -204,7 +205,9 @@ pub fn star_exact(points: Points<'_>) -> Result<f64> {
 /// # Errors
 /// [`Error::TooManyPoints`] when the estimated time exceeds `budget` (`max`: the largest
 /// `N` within it, [`max_points_within`]); [`Error::TooLarge`] for two or more counted points
-/// in more than [`dem::DEM_MAX_DIMS`] dimensions.
+/// in more than [`dem::DEM_MAX_DIMS`] dimensions; [`Error::OutOfTime`] when the run passes
+/// the deadline of `budget` (started here if the caller did not: `1.25 x` its seconds), checked
+/// once per column of the 2D sweep and every few cells of the decomposition.
 ///
 /// ```
 /// use qmckit::work::{Budget, no_progress};
@@ -231,7 +234,7 @@ pub fn star_exact_within(
                     max: max_points_within(2, budget),
                 });
             }
-            Ok(sweep::sweep_2d(points))
+            sweep::sweep_2d(points, &Stop::new(budget, "the exact star discrepancy"))
         }
         _ => dem::star_dem_within(points, budget, progress),
     }

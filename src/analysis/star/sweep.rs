@@ -1,13 +1,20 @@
 //! The exact 2D sweep of [`super::star_2d`]: the critical grid column by column.
 
+use crate::Result;
 use crate::analysis::Points;
+use crate::analysis::stop::Stop;
 use rayon::prelude::*;
 
-/// The 2D sweep of [`super::star_2d`] without the size check.
-pub(super) fn sweep_2d(points: Points<'_>) -> f64 {
+/// The 2D sweep of [`super::star_2d`] without the size check; every column checks `stop`
+/// (one clock reading per `O(N)` column).
+///
+/// # Errors
+/// [`crate::Error::OutOfTime`] once `stop`'s deadline passes.
+pub(super) fn sweep_2d(points: Points<'_>, stop: &Stop) -> Result<f64> {
     let pts: Vec<(f64, f64)> = counted(points).map(|p| (p[0], p[1])).collect();
     let n = points.len() as f64;
-    kernel_2d(&pts, &pts, 1.0, n) / n
+    let v = kernel_2d(&pts, &pts, 1.0, n, stop) / n;
+    stop.finish(v)
 }
 
 /// Points counted by some anchored box: those with every coordinate below 1.
@@ -34,7 +41,13 @@ pub(super) fn rank(grid: &[f64], v: f64) -> usize {
 /// points of `open_pts` with `x < a, y < b` and `closed` those of `closed_pts` with
 /// `x <= a, y <= b`. `open_pts` must be a subset of `closed_pts`, all coordinates below 1.
 /// Returns the value scaled by `N` (`n`); 0 at least (the empty box).
-fn kernel_2d(open_pts: &[(f64, f64)], closed_pts: &[(f64, f64)], c: f64, n: f64) -> f64 {
+fn kernel_2d(
+    open_pts: &[(f64, f64)],
+    closed_pts: &[(f64, f64)],
+    c: f64,
+    n: f64,
+    stop: &Stop,
+) -> f64 {
     let xs = grid(closed_pts.iter().map(|p| p.0));
     let ys = grid(closed_pts.iter().map(|p| p.1));
     // (x, y-rank), sorted by x.
@@ -57,7 +70,7 @@ fn kernel_2d(open_pts: &[(f64, f64)], closed_pts: &[(f64, f64)], c: f64, n: f64)
         .into_par_iter()
         .map(|k| {
             let cols = xs.get(k * per..((k + 1) * per).min(columns)).unwrap_or(&[]);
-            sweep_columns(cols, &ys, &open, &closed, c * n)
+            sweep_columns(cols, &ys, &open, &closed, c * n, stop)
         })
         .reduce(|| 0.0, f64::max)
 }
@@ -69,6 +82,7 @@ fn sweep_columns(
     open: &[(f64, usize)],
     closed: &[(f64, usize)],
     cn: f64,
+    stop: &Stop,
 ) -> f64 {
     let Some(&first) = cols.first() else {
         return 0.0;
@@ -89,6 +103,9 @@ fn sweep_columns(
     }
     let mut best = 0.0f64;
     for &a in cols {
+        if stop.check() {
+            return best;
+        }
         // Open points strictly left of a are already in; add closed points with x == a.
         while let Some(p) = open.get(io).filter(|p| p.0 < a) {
             if let Some(c) = counts.get_mut(p.1) {

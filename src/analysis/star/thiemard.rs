@@ -72,6 +72,7 @@ use super::thiemard_cost::{
     chain_step_cost, estimate, region_cost, root_chain_lower_bound, split_factor,
 };
 use crate::analysis::Points;
+use crate::analysis::stop::Stop;
 use crate::work::Budget;
 use crate::{Error, Result};
 use std::sync::Mutex;
@@ -160,6 +161,8 @@ pub fn bounds(points: Points<'_>, delta: f64) -> Result<Bounds> {
 /// allows for this `δ` and `d` (an upper limit of it when the estimating pass stopped
 /// early; 0 when the regions alone are too many: take a larger `δ`). [`Error::TooLarge`]
 /// when the estimating pass would need more than [`crate::size::MAX_ALLOC_BYTES`].
+/// [`Error::OutOfTime`] past the deadline of `budget` (started here if it was not), read
+/// every `2^16` comparisons of work.
 ///
 /// ```
 /// use qmckit::work::Budget;
@@ -208,6 +211,7 @@ pub fn bounds_within(points: Points<'_>, delta: f64, budget: &Budget) -> Result<
         work: AtomicU64::new(0),
         cap: cap(4.0 * limit),
         aborted: AtomicBool::new(false),
+        stop: Stop::new(budget, "Thiémard's bounds"),
         total: Mutex::new(Acc::new(d)),
     };
     rayon::scope(|s| {
@@ -215,6 +219,7 @@ pub fn bounds_within(points: Points<'_>, delta: f64, budget: &Budget) -> Result<
         run.region(s, vec![0.0; d], vec![1.0; d], 0, list, &mut acc);
         run.merge(acc);
     });
+    run.stop.result()?;
     if run.aborted.load(Ordering::Relaxed) {
         return Err(refuse(
             n as f64 * limit / run.work.load(Ordering::Relaxed) as f64,
@@ -342,8 +347,14 @@ struct Run<'x> {
     work: AtomicU64,
     cap: u64,
     aborted: AtomicBool,
+    /// The deadline, read each time the work counter passes a multiple of
+    /// [`WORK_PER_CHECK`].
+    stop: Stop,
     total: Mutex<Acc>,
 }
+
+/// Comparisons between two readings of the clock (a few hundred microseconds).
+const WORK_PER_CHECK: u64 = 1 << 16;
 
 impl Run<'_> {
     fn merge(&self, acc: Acc) {
@@ -367,10 +378,13 @@ impl Run<'_> {
         }
     }
 
-    /// Adds `w` to the work counter; false once the run is over its cap.
+    /// Adds `w` to the work counter; false once the run is over its cap or its deadline.
     fn charge(&self, w: u64) -> bool {
-        let total = self.work.fetch_add(w, Ordering::Relaxed) + w;
-        if total > self.cap {
+        let before = self.work.fetch_add(w, Ordering::Relaxed);
+        let total = before.saturating_add(w);
+        if total > self.cap
+            || (before / WORK_PER_CHECK != total / WORK_PER_CHECK && self.stop.check())
+        {
             self.aborted.store(true, Ordering::Relaxed);
         }
         !self.aborted.load(Ordering::Relaxed)

@@ -2,6 +2,7 @@
 //! that break a given `t`.
 
 use crate::analysis::Points;
+use crate::analysis::stop::Stop;
 use crate::work::{Budget, Cost, Rate};
 use crate::{Error, Result};
 use core::fmt;
@@ -89,7 +90,9 @@ impl Digits {
     }
 
     /// Whether every shape of size `rho` is balanced (short-circuits on the first failure).
-    fn level_balanced(&self, rho: u32) -> bool {
+    /// Each shape reads the deadline of `stop` first (one clock reading per `O(N s)`
+    /// count); a stopped search answers `false`, to be discarded by the caller.
+    fn level_balanced(&self, rho: u32, stop: &Stop) -> bool {
         if rho == 0 {
             return true;
         }
@@ -98,6 +101,10 @@ impl Digits {
             let mut counts = Vec::new();
             let mut ok = true;
             for_each_shape(self.dims, rho, d0, |shape| {
+                if stop.check() {
+                    ok = false;
+                    return false;
+                }
                 self.count(shape, rho, &mut counts);
                 ok = counts.iter().all(|&c| u64::from(c) == expected);
                 ok
@@ -108,7 +115,7 @@ impl Digits {
 
     /// The first `limit` unbalanced cells over the shapes of size `rho`, in shape order then
     /// cell order.
-    fn failures(&self, rho: u32, limit: usize) -> Vec<IntervalFailure> {
+    fn failures(&self, rho: u32, limit: usize, stop: &Stop) -> Vec<IntervalFailure> {
         if limit == 0 {
             return Vec::new();
         }
@@ -119,6 +126,9 @@ impl Digits {
                 let mut counts = Vec::new();
                 let mut found = Vec::new();
                 for_each_shape(self.dims, rho, d0, |shape| {
+                    if stop.check() {
+                        return false;
+                    }
                     self.count(shape, rho, &mut counts);
                     for (idx, &c) in counts.iter().enumerate() {
                         if u64::from(c) != expected {
@@ -155,17 +165,22 @@ impl Digits {
 
     /// The largest `rho` whose shapes are all balanced, by binary search (balance at `rho`
     /// implies balance at every smaller size).
-    fn strength(&self) -> u32 {
+    ///
+    /// # Errors
+    /// [`Error::OutOfTime`] once the deadline of `stop` passes.
+    fn strength(&self, stop: &Stop) -> Result<u32> {
         let (mut lo, mut hi) = (0u32, self.m); // balanced(lo) holds; answer in [lo, hi]
         while lo < hi {
             let mid = lo + (hi - lo).div_ceil(2);
-            if self.level_balanced(mid) {
+            let balanced = self.level_balanced(mid, stop);
+            stop.result()?;
+            if balanced {
                 lo = mid;
             } else {
                 hi = mid - 1;
             }
         }
-        lo
+        Ok(lo)
     }
 }
 
@@ -229,6 +244,9 @@ fn next_composition(c: &mut [u32]) -> bool {
     c[k - 1] = s - 1;
     true
 }
+
+/// The name of the count in the errors of the budget.
+const COUNTING: &str = "counting points in elementary intervals";
 
 /// Validates `samples` as `2^m` points of `dims` 0.32 fractions.
 fn check_u32(samples: &[u32], dims: usize, m: u32) -> Result<()> {
@@ -398,12 +416,9 @@ fn search_levels(m: u32) -> u32 {
 pub fn t_value_u32_within(samples: &[u32], dims: usize, m: u32, budget: &Budget) -> Result<u32> {
     check_u32(samples, dims, m)?;
     let steps = count_steps(1u64 << m, dims, m, search_levels(m));
-    budget.check(
-        "counting points in elementary intervals",
-        Cost::steps(steps, COUNT_RATE),
-    )?;
+    budget.check(COUNTING, Cost::steps(steps, COUNT_RATE))?;
     let d = digits_u32(samples, dims, m)?;
-    Ok(m - d.strength())
+    Ok(m - d.strength(&Stop::new(budget, COUNTING))?)
 }
 
 /// The t-value in base `base` of `base^m` points in `[0, 1)^s`, by counting points in
@@ -441,7 +456,8 @@ pub fn t_value_points(points: Points, base: u32, m: u32) -> Result<u32> {
     t_value_points_within(points, base, m, &Budget::DEFAULT)
 }
 
-/// As [`t_value_points`], [`Error::OverBudget`] past `budget` (checked before counting).
+/// As [`t_value_points`], [`Error::OverBudget`] past `budget` (checked before counting),
+/// [`Error::OutOfTime`] past its deadline (read once per shape counted).
 ///
 /// # Errors
 /// As [`t_value_points`].
@@ -453,11 +469,8 @@ pub fn t_value_points_within(points: Points, base: u32, m: u32, budget: &Budget)
         m,
         search_levels(m),
     );
-    budget.check(
-        "counting points in elementary intervals",
-        Cost::steps(steps, COUNT_RATE),
-    )?;
-    Ok(m - d.strength())
+    budget.check(COUNTING, Cost::steps(steps, COUNT_RATE))?;
+    Ok(m - d.strength(&Stop::new(budget, COUNTING))?)
 }
 
 /// The first `limit` elementary intervals of volume `2^(t - m)` that do not hold exactly
@@ -509,12 +522,11 @@ pub fn elementary_interval_failures_u32_within(
         return Err(Error::MTooLarge { m: t, max: m });
     }
     let steps = count_steps(1u64 << m, dims, m, 1);
-    budget.check(
-        "counting points in elementary intervals",
-        Cost::steps(steps, COUNT_RATE),
-    )?;
+    budget.check(COUNTING, Cost::steps(steps, COUNT_RATE))?;
     let d = digits_u32(samples, dims, m)?;
-    Ok(d.failures(m - t, limit))
+    let stop = Stop::new(budget, COUNTING);
+    let found = d.failures(m - t, limit, &stop);
+    stop.finish(found)
 }
 
 /// [`elementary_interval_failures_u32`] for `b^m` points given as `f64` in base `base`
@@ -534,9 +546,8 @@ pub fn elementary_interval_failures(
         return Err(Error::MTooLarge { m: t, max: m });
     }
     let steps = count_steps(d.pow.last().copied().unwrap_or(1), d.dims, m, 1);
-    Budget::DEFAULT.check(
-        "counting points in elementary intervals",
-        Cost::steps(steps, COUNT_RATE),
-    )?;
-    Ok(d.failures(m - t, limit))
+    Budget::DEFAULT.check(COUNTING, Cost::steps(steps, COUNT_RATE))?;
+    let stop = Stop::new(&Budget::DEFAULT, COUNTING);
+    let found = d.failures(m - t, limit, &stop);
+    stop.finish(found)
 }

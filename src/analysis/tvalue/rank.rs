@@ -3,6 +3,7 @@
 
 use super::DigitalNet2;
 use crate::Result;
+use crate::analysis::stop::Stop;
 use crate::work::{Budget, Cost, Progress, Rate, no_progress};
 
 /// Steps per second of the rank test's search: a step is one row inserted into the
@@ -90,7 +91,8 @@ pub fn t_value(net: &DigitalNet2) -> Result<u32> {
 /// # Errors
 /// [`crate::Error::OverBudget`] when the estimate exceeds `budget`; [`crate::Error::TooLarge`] when the
 /// search's rows (`4 m s` bytes) or stack (`140 s` bytes) would pass
-/// [`crate::size::MAX_ALLOC_BYTES`].
+/// [`crate::size::MAX_ALLOC_BYTES`]; [`crate::Error::OutOfTime`] past the deadline of
+/// `budget` (started here if it was not), read every 4096 steps of the search.
 ///
 /// ```
 /// use qmckit::work::{Budget, no_progress};
@@ -180,6 +182,7 @@ fn dependent_search(net: &DigitalNet2, budget: &Budget, progress: Progress<'_>) 
     let s = net.dims();
     crate::size::bytes(s + 1, core::mem::size_of::<Frame>())?;
     let rows = rows_of(net)?;
+    let stop = Stop::new(budget, "the rank test (t-value)");
     let budget_steps = budget.steps(RANK_TEST_RATE);
     let slice = (budget_steps / 8.0).min(SEED_SECONDS * RANK_TEST_RATE.steps_per_second());
     // Seeds: searches over the first 1, 2, 4, .. dimensions, each bounded by the last.
@@ -190,7 +193,7 @@ fn dependent_search(net: &DigitalNet2, budget: &Budget, progress: Progress<'_>) 
             break;
         }
         let mut seed = Searcher::new(rows.get(..k).unwrap_or(&[]), best);
-        seed.run(u64::MAX, &no_progress, 0.0);
+        seed.run(u64::MAX, &no_progress, 0.0, &stop)?;
         best = seed.found.best;
         k *= 2;
     }
@@ -201,10 +204,10 @@ fn dependent_search(net: &DigitalNet2, budget: &Budget, progress: Progress<'_>) 
     let total = rank_test_steps(m, s, start);
     // A first slice of the search often finds smaller dependent shapes, which tighten the
     // bound on the rest.
-    if !full.run(slice as u64, progress, total) {
+    if !full.run(slice as u64, progress, total, &stop)? {
         let rest = rank_test_steps(m, s, full.found.best);
         budget.check("the rank test (t-value)", Cost::steps(rest, RANK_TEST_RATE))?;
-        full.run(u64::MAX, progress, rest + full.steps as f64);
+        full.run(u64::MAX, progress, rest + full.steps as f64, &stop)?;
     }
     progress(PROGRESS_STEPS, PROGRESS_STEPS);
     Ok(full.found)
@@ -254,15 +257,28 @@ impl<'a> Searcher<'a> {
     }
 
     /// Runs at most `max_steps` more steps; true once the search is complete. `progress`
-    /// gets `steps / total` in [`PROGRESS_STEPS`] now and then.
-    fn run(&mut self, max_steps: u64, progress: Progress<'_>, total: f64) -> bool {
+    /// gets `steps / total` in [`PROGRESS_STEPS`] now and then; the deadline of `stop` is
+    /// read every 4096 steps.
+    ///
+    /// # Errors
+    /// [`crate::Error::OutOfTime`] once the deadline passes.
+    fn run(
+        &mut self,
+        max_steps: u64,
+        progress: Progress<'_>,
+        total: f64,
+        stop: &Stop,
+    ) -> Result<bool> {
         let s = self.rows.len();
-        let stop = self.steps.saturating_add(max_steps);
+        let end = self.steps.saturating_add(max_steps);
         while let Some(f) = self.stack.last_mut() {
-            if self.steps >= stop {
-                return false;
+            if self.steps >= end {
+                return Ok(false);
             }
             self.steps += 1;
+            if self.steps.is_multiple_of(4096) && stop.check() {
+                return Err(stop.error());
+            }
             if self.steps.is_multiple_of(1 << 16) && total > 0.0 {
                 let done = (self.steps as f64 / total * PROGRESS_STEPS as f64) as usize;
                 progress(done.min(PROGRESS_STEPS - 1), PROGRESS_STEPS);
@@ -323,6 +339,6 @@ impl<'a> Searcher<'a> {
             };
             self.stack.push(child);
         }
-        true
+        Ok(true)
     }
 }

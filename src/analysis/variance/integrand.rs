@@ -16,6 +16,10 @@
 use crate::{Error, Result};
 use core::f64::consts::PI;
 
+/// The smallest disk radius and Gaussian width: the fourth powers that the coefficients
+/// and the squared errors hold (`1e-200`) stay normal `f64`s.
+pub const MIN_SCALE: f64 = 1e-50;
+
 /// A test integrand on the unit torus with known Fourier coefficients.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum TorusIntegrand {
@@ -35,13 +39,15 @@ impl TorusIntegrand {
     /// The disk indicator of radius `radius`.
     ///
     /// # Errors
-    /// [`Error::InvalidParameter`] unless `0 < radius <= 0.5`.
+    /// [`Error::InvalidParameter`] unless `1e-50 <= radius <= 0.5` ([`MIN_SCALE`]: below
+    /// it `|c_k|^2 ~ R^4` and the squared errors underflow, and the variance ratio would be
+    /// `0 / 0`).
     pub fn disk(radius: f64) -> Result<Self> {
-        if radius > 0.0 && radius <= 0.5 {
+        if (MIN_SCALE..=0.5).contains(&radius) {
             Ok(TorusIntegrand::Disk { radius })
         } else {
             Err(Error::InvalidParameter {
-                what: "the disk radius must lie in (0, 0.5]",
+                what: "the disk radius must lie in [1e-50, 0.5]",
             })
         }
     }
@@ -49,13 +55,13 @@ impl TorusIntegrand {
     /// The periodized Gaussian of standard deviation `sigma`.
     ///
     /// # Errors
-    /// [`Error::InvalidParameter`] unless `0 < sigma <= 0.15`.
+    /// [`Error::InvalidParameter`] unless `1e-50 <= sigma <= 0.15` ([`MIN_SCALE`]).
     pub fn gaussian(sigma: f64) -> Result<Self> {
-        if sigma > 0.0 && sigma <= 0.15 {
+        if (MIN_SCALE..=0.15).contains(&sigma) {
             Ok(TorusIntegrand::Gaussian { sigma })
         } else {
             Err(Error::InvalidParameter {
-                what: "the Gaussian's sigma must lie in (0, 0.15]",
+                what: "the Gaussian's sigma must lie in [1e-50, 0.15]",
             })
         }
     }

@@ -7,7 +7,10 @@ use clap::{Args, ValueEnum};
 use qmckit::analysis::Points;
 use qmckit::analysis::integration::{Integrand, integration_error};
 
-use qmckit::work::{Cost, Rate};
+use qmckit::blue_noise::{BestCandidate, GaussianBlueNoise, PoissonDisk};
+use qmckit::randomize::{CranleyPatterson, Scrambled};
+use qmckit::sampler::Sampler;
+use qmckit::work::{Budget, Cost, Rate};
 
 use super::Failure;
 use super::budget::BudgetArgs;
@@ -23,7 +26,9 @@ Integrands over [0, 1]^d, each with a closed-form integral I:
   heaviside    1 where sum_k sqrt(k + 2) (x_k - 1/2) >= 0 (I = 1/2)
 
 For N = 1, 2, 4, ..., 2^M (stratified: N = k^d for k = 1, 2, 4, ...), the first N points of
-the sampler (finite sets: a set of N points) estimate I by their average; with --seeds S
+the sampler (finite sets: a set of N points, every point of it: a Poisson-disk set asked
+for N holds about N) estimate I by their average; sizes a construction cannot make at the
+start of the list (Gaussian blue noise needs N >= 2) are left out. With --seeds S
 the sampler is drawn with seeds --seed, --seed + 1, ... and the root mean square of the S
 errors is reported (unrandomized sequences give S equal errors). Output: a '# n rmse'
 header, then 'N RMSE' lines, RMSE with 17 significant digits.
@@ -32,7 +37,9 @@ Cost: S (1 + 2 + ... + 2^M) d coordinates generated and integrated. Before start
 command times a probe of the same sampler, randomization and integrand (a few thousand
 points), extrapolates, and refuses a request whose estimate exceeds --max-seconds; the
 rate differs a hundredfold between, e.g., unscrambled Sobol' and exactly Owen-scrambled
-Halton. Largest set: 2^24 points. Errors: one line, exit code 2.";
+Halton; the blue-noise sets (poisson, best-candidate, gaussian-blue-noise) are estimated by
+their construction cost instead, and built within the same deadline. Largest set: 2^24
+points. Errors: one line, exit code 2.";
 
 /// The integrands by name.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -58,9 +65,10 @@ pub struct ConvergenceArgs {
     /// Dimensions [default: 1 for vdc, 2 otherwise].
     #[arg(short = 'd', value_name = "D")]
     d: Option<usize>,
-    /// Largest set: 2^M points (M <= 24).
-    #[arg(long, default_value_t = 12, value_name = "M")]
-    max_m: u32,
+    /// Largest set: 2^M points (M <= 24) [default: 12; 10 for best-candidate and
+    /// gaussian-blue-noise, whose sets cost N^2 to build].
+    #[arg(long, value_name = "M")]
+    max_m: Option<u32>,
     /// Randomization, as for `qmckit points`.
     #[arg(long, value_enum, default_value_t = ScrambleName::None)]
     scramble: ScrambleName,
@@ -84,6 +92,10 @@ const PROBE_VALUES: f64 = (1 << 18) as f64;
 /// A rate no sampler reaches (coordinates a second, generated and integrated): requests
 /// too large even at this rate are refused without a probe.
 const FASTEST: Rate = Rate::per_second(2e9);
+
+/// Coordinates a second generated and integrated from a blue-noise set already built (a
+/// conservative rate, as no probe is timed for them).
+const BLUE_RATE: Rate = Rate::per_second(5e7);
 
 /// How much slower than its probe a full run is assumed to be (larger sets leave the
 /// caches; the machine may be busier).
@@ -113,16 +125,56 @@ fn sizes(sampler: SamplerName, d: usize, m: u32) -> Vec<u64> {
 /// Coordinates generated at once (bounded memory for any set size).
 const BATCH_VALUES: usize = 1 << 20;
 
-/// The integration error of the first `count` points of the set `spec` names, its points
-/// generated in batches: the batches' errors weighted by their sizes,
-/// `sum_b N_b (mean_b - I) / N = mean - I`.
-fn error_of(spec: &Spec, f: Integrand, count: u64) -> Result<f64, Failure> {
-    let sampler = build(spec)?;
+/// The set `spec` names: the blue-noise sets built by the library within `budget` (the
+/// command's deadline; the same sets, seeds and options as `qmckit points` builds), any
+/// other through [`build`] (its whole-set constructions, pmj02bn, take `spec.budget`).
+fn sampler_of(spec: &Spec, budget: &Budget) -> Result<Box<dyn Sampler>, Failure> {
+    let (n, seed) = (spec.n, spec.seed);
+    let set = match spec.sampler {
+        SamplerName::Poisson => PoissonDisk::with_points(spec.d.unwrap_or(2), n)?
+            .torus(false)
+            .maximal(false)
+            .seed(seed)
+            .generate_within(budget)?,
+        SamplerName::BestCandidate => BestCandidate::new(n)?.seed(seed).generate_within(budget)?,
+        SamplerName::GaussianBlueNoise => GaussianBlueNoise::new(n)?
+            .seed(seed)
+            .generate_within(budget)?,
+        _ => return build(spec),
+    };
+    Ok(match spec.scramble {
+        ScrambleName::Rotate => Box::new(Scrambled::new(set, CranleyPatterson::new(seed))),
+        _ => Box::new(set),
+    })
+}
+
+/// The estimated construction time of the blue-noise set `spec` names (0 for the others,
+/// whose cost the probe measures).
+fn construction(spec: &Spec) -> Result<f64, Failure> {
+    let n = spec.n;
+    Ok(match spec.sampler {
+        SamplerName::Poisson => PoissonDisk::with_points(spec.d.unwrap_or(2), n)?
+            .cost()?
+            .seconds(),
+        SamplerName::BestCandidate => BestCandidate::new(n)?.cost().seconds(),
+        SamplerName::GaussianBlueNoise => GaussianBlueNoise::new(n)?.cost().seconds(),
+        _ => 0.0,
+    })
+}
+
+/// The integration error of the first `count` points of the set `spec` names (all of a
+/// finite set holding fewer, as a Poisson-disk set may), its points generated in batches:
+/// the batches' errors weighted by their sizes, `sum_b N_b (mean_b - I) / N = mean - I`.
+/// The deadline of `budget` is read once per batch.
+fn error_of(spec: &Spec, f: Integrand, count: u64, budget: &Budget) -> Result<f64, Failure> {
+    let sampler = sampler_of(spec, budget)?;
+    let count = count.min(sampler.len());
     let dims = sampler.dims();
     let rows = (BATCH_VALUES / dims).max(1);
     let mut raw: Vec<u32> = qmckit::size::vec_zeroed(rows.saturating_mul(dims))?;
     let (mut weighted, mut start) = (0.0, 0u64);
     while start < count {
+        budget.check_deadline("the convergence curve")?;
         let take = rows.min((count - start) as usize);
         let buf = &mut raw[..take * dims];
         let first = u32::try_from(start).map_err(|_| Failure::usage("index past 2^32"))?;
@@ -142,22 +194,24 @@ fn probe_rate(
     f: Integrand,
     sizes: &[u64],
     d: usize,
+    budget: &Budget,
 ) -> Result<Rate, Failure> {
     let n = sizes.last().copied().unwrap_or(1);
     let count = ((PROBE_VALUES / d as f64) as u64).clamp(1, n);
     let clock = std::time::Instant::now();
-    error_of(&spec(n, 0), f, count)?;
+    error_of(&spec(n, 0), f, count, budget)?;
     let seconds = clock.elapsed().as_secs_f64().max(1e-6);
     Ok(Rate::per_second(count as f64 * d as f64 / seconds))
 }
 
 /// Runs `qmckit convergence`.
 pub fn run(args: &ConvergenceArgs) -> Result<(), Failure> {
-    if args.max_m > MAX_M {
-        return Err(Failure::usage(format!(
-            "--max-m {}: at most {MAX_M}",
-            args.max_m
-        )));
+    let max_m = args.max_m.unwrap_or(match args.sampler {
+        SamplerName::BestCandidate | SamplerName::GaussianBlueNoise => 10,
+        _ => 12,
+    });
+    if max_m > MAX_M {
+        return Err(Failure::usage(format!("--max-m {max_m}: at most {MAX_M}")));
     }
     if args.seeds == 0 {
         return Err(Failure::usage("--seeds must be at least 1"));
@@ -167,17 +221,35 @@ pub fn run(args: &ConvergenceArgs) -> Result<(), Failure> {
         return Err(Failure::usage("-d must be at least 1"));
     }
     let budget = args.budget.budget()?;
-    let sizes = sizes(args.sampler, d, args.max_m);
+    let mut sizes = sizes(args.sampler, d, max_m);
     let f = match args.integrand {
         IntegrandName::Gaussian => Integrand::Gaussian,
         IntegrandName::Oscillatory => Integrand::Oscillatory,
         IntegrandName::Ball => Integrand::Ball,
         IntegrandName::Heaviside => Integrand::Heaviside,
     };
-    let spec =
-        |n: u64, k: u64| Spec::base2(args.sampler, n, d, args.scramble, args.seed.wrapping_add(k));
-    // Validates the request (sampler, d, scramble) before anything is timed.
-    build(&spec(sizes[0], 0))?;
+    let spec = |n: u64, k: u64| Spec {
+        budget,
+        ..Spec::base2(args.sampler, n, d, args.scramble, args.seed.wrapping_add(k))
+    };
+    let blue = args.sampler.blue_noise().is_some();
+    // Validates the request (sampler, d, scramble) before anything is timed; leading sizes
+    // the construction refuses (too few points for it) are left out.
+    let first = loop {
+        let small = Spec {
+            // Blue-noise sets: only the options are checked here (built small).
+            n: sizes[0].min(if blue { 2 } else { u64::MAX }),
+            ..spec(sizes[0], 0)
+        };
+        match build(&small) {
+            Ok(_) => break Ok(()),
+            Err(_) if sizes.len() > 1 => {
+                sizes.remove(0);
+            }
+            Err(e) => break Err(e),
+        }
+    };
+    first?;
     let values: Vec<f64> = sizes
         .iter()
         .map(|&n| args.seeds as f64 * n as f64 * d as f64)
@@ -191,12 +263,20 @@ pub fn run(args: &ConvergenceArgs) -> Result<(), Failure> {
     budget
         .check("the convergence curve", Cost::steps(total, FASTEST))
         .map_err(over)?;
-    let rate = probe_rate(&spec, f, &sizes, d)?;
+    let estimate = if blue {
+        // Construction dominates: the sets' estimates, and the integration at a
+        // conservative rate (no probe: a probe set would itself be costly to build).
+        let mut built = 0.0;
+        for &n in &sizes {
+            built += construction(&spec(n, 0))? * args.seeds as f64;
+        }
+        Cost::steps(built * BLUE_RATE.steps_per_second() + total, BLUE_RATE)
+    } else {
+        let rate = probe_rate(&spec, f, &sizes, d, &budget)?;
+        Cost::steps(total * PROBE_SLACK, rate)
+    };
     budget
-        .check(
-            "the convergence curve",
-            Cost::steps(total * PROBE_SLACK, rate),
-        )
+        .check("the convergence curve", estimate)
         .map_err(over)?;
     let label = format!(
         "{} on {}",
@@ -209,7 +289,7 @@ pub fn run(args: &ConvergenceArgs) -> Result<(), Failure> {
         for (&n, &v) in sizes.iter().zip(&values) {
             let mut squares = 0.0;
             for k in 0..args.seeds {
-                let e = error_of(&spec(n, k), f, n)?;
+                let e = error_of(&spec(n, k), f, n, &budget)?;
                 squares += e * e;
                 done += v / args.seeds as f64;
                 progress((1000.0 * done / total) as usize, 1000);

@@ -167,11 +167,19 @@ fn measure(
     }
     let value = match metric {
         Metric::Star => {
+            let estimate =
+                star::cost::work_estimate(p.len(), p.dims()) / star::STAR_RATE.steps_per_second();
             let limit = format!(" within --max-seconds {}", args.budget.max_seconds);
             with_progress(&name, |progress| {
                 star::star_exact_within(p, budget, progress)
             })
-            .map_err(|e| refusal(e, "star", set, &limit))
+            .map_err(|e| match e {
+                qmckit::Error::TooManyPoints { .. } => format!(
+                    "{}; estimated {estimate:.3} s",
+                    refusal(e, "star", set, &limit)
+                ),
+                e => refusal(e, "star", set, &limit),
+            })
         }
         Metric::StarBounds => {
             let b = with_spinner(&name, || thiemard::bounds_within(p, args.delta, budget))
@@ -242,6 +250,11 @@ pub fn run(args: &DiscrepancyArgs) -> Result<(), Failure> {
                     }
                 }
                 Err(reason) if all && ALL.contains(&metric) => {
+                    // Past the deadline every later measure would stop too: one error.
+                    if let Err(e) = budget.check_deadline("the discrepancy measures") {
+                        out.flush()?;
+                        return Err(Failure::usage(format!("{name}: {}", over_budget(e))));
+                    }
                     writeln!(out, "# {} skipped: {reason}", value_name(&metric))?;
                 }
                 Err(reason) => {

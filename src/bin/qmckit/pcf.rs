@@ -71,11 +71,14 @@ pub fn run(args: &PcfArgs) -> Result<(), Failure> {
             args.bins
         )));
     }
-    if !(opts.sigma > 0.0 && opts.sigma.is_finite()) {
-        return Err(Failure::usage(format!(
-            "--sigma {}: must be a positive number",
-            opts.sigma
-        )));
+    if let Err(e) = opts.validate() {
+        return Err(Failure::usage(match args.sigma {
+            Some(s) if s != 0.0 && !(1e-4..1e15).contains(&s.abs()) => {
+                format!("--sigma {s:e}: {e}")
+            }
+            Some(s) => format!("--sigma {s}: {e}"),
+            None => format!("--r-max {} --bins {}: {e}", args.r_max, args.bins),
+        }));
     }
     let (name, sets) = read_point_sets(&args.input)?;
     let total: f64 = sets
@@ -84,7 +87,7 @@ pub fn run(args: &PcfArgs) -> Result<(), Failure> {
         .sum();
     if total > budget.max_seconds() {
         return Err(Failure::usage(format!(
-            "{name}: the pair correlation of {} set(s): estimated {total:.1} s, more than \
+            "{name}: the pair correlation of {} set(s): estimated {total:.3} s, more than \
              --max-seconds {} (raise it to run it)",
             sets.len(),
             args.budget.max_seconds

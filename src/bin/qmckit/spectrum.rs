@@ -113,7 +113,7 @@ pub fn run(args: &SpectrumArgs) -> Result<(), Failure> {
             .sum::<f64>();
         if total > budget.max_seconds() {
             return Err(Failure::usage(format!(
-                "{name}: the spectra of {} sets: estimated {total:.1} s, more than \
+                "{name}: the spectra of {} sets: estimated {total:.3} s, more than \
                  --max-seconds {} (raise it to run them)",
                 sets.len(),
                 args.budget.max_seconds
@@ -136,10 +136,11 @@ pub fn run(args: &SpectrumArgs) -> Result<(), Failure> {
             fail(match e {
                 qmckit::Error::TooManyPoints { max, .. } => format!(
                     "{} points are too many for --k-max {} (at most {max} within \
-                     --max-seconds {})",
+                     --max-seconds {}); estimated {:.3} s",
                     set.len(),
                     args.k_max,
-                    args.budget.max_seconds
+                    args.budget.max_seconds,
+                    estimated_cost(set.len(), args.k_max, Method::Direct, args.tolerance).seconds()
                 ),
                 other => super::budget::over_budget(other),
             })

@@ -35,7 +35,7 @@ each:
   ratio       measured / predicted
   white       the white-noise variance (||f||^2 - c_0^2) / n_mean
 Deterministic samplers (halton, sobol) have one set, shifted S times. Default K is
-2 ceil(sqrt(N)) (at least 16). Values with 17 significant digits. Refused when the S
+2 ceil(sqrt(N)) (at least 16); a given --k-max (1 to 2048) is used as given. Values with 17 significant digits. Refused when the S
 periodograms are estimated to exceed --max-seconds. Errors: one line, exit code 2.";
 
 /// The samplers `qmckit variance` knows.
@@ -80,16 +80,17 @@ pub struct VarianceArgs {
     /// The integrand.
     #[arg(long, value_enum, default_value_t = IntegrandArg::Disk)]
     integrand: IntegrandArg,
-    /// Disk radius R, in (0, 0.5].
+    /// Disk radius R, in [1e-50, 0.5].
     #[arg(long, default_value_t = 0.25, value_name = "R")]
     radius: f64,
-    /// Gaussian standard deviation, in (0, 0.15].
+    /// Gaussian standard deviation, in [1e-50, 0.15].
     #[arg(long, default_value_t = 0.1, value_name = "SIGMA")]
     sigma: f64,
     /// Number of randomized sets.
     #[arg(long, default_value_t = 1000, value_name = "S")]
     sets: u32,
-    /// Largest frequency of the mean periodogram [default: 2 ceil(sqrt(N)), at least 16].
+    /// Largest frequency of the mean periodogram, 1 to 2048 [default: 2 ceil(sqrt(N)), at
+    /// least 16].
     #[arg(long, value_name = "K")]
     k_max: Option<usize>,
     /// Seed of the randomized samplers and of the shifts.
@@ -99,22 +100,28 @@ pub struct VarianceArgs {
     budget: BudgetArgs,
 }
 
-/// Set `s` of the sampler, as 2D points in `[0, 1)` (the blue-noise sets unbudgeted: the
-/// caller checked the cost of all of them).
-fn points_of(which: VarianceSampler, n: u32, seed: u64, s: u32) -> qmckit::Result<Vec<f64>> {
+/// Set `s` of the sampler, as 2D points in `[0, 1)` (the blue-noise sets within the
+/// command's started `budget`: the caller checked the cost of all of them, the deadline
+/// bounds them).
+fn points_of(
+    which: VarianceSampler,
+    n: u32,
+    seed: u64,
+    s: u32,
+    budget: &qmckit::work::Budget,
+) -> qmckit::Result<Vec<f64>> {
     let key = qmckit::hash::hash3(seed, s as u64, 0x5e7);
-    let unlimited = &qmckit::work::Budget::UNLIMITED;
     let set = match which {
         VarianceSampler::Poisson => Some(
             PoissonDisk::with_points(2, u64::from(n))?
                 .torus(true)
                 .seed(key)
-                .generate_within(unlimited)?,
+                .generate_within(budget)?,
         ),
         VarianceSampler::GaussianBlueNoise => Some(
             GaussianBlueNoise::new(u64::from(n))?
                 .seed(key)
-                .generate_within(unlimited)?,
+                .generate_within(budget)?,
         ),
         _ => None,
     };
@@ -136,7 +143,7 @@ fn points_of(which: VarianceSampler, n: u32, seed: u64, s: u32) -> qmckit::Resul
             });
         }
     };
-    let mut raw = vec![0u32; 2 * n as usize];
+    let mut raw: Vec<u32> = qmckit::size::vec_zeroed(2 * n as usize)?;
     sampler.fill(0, &mut raw)?;
     Ok(Points::from_u32(&raw))
 }
@@ -164,10 +171,12 @@ pub fn run(args: &VarianceArgs) -> Result<(), Failure> {
         IntegrandArg::Gaussian => TorusIntegrand::gaussian(args.sigma),
     }
     .map_err(|e| Failure::usage(e.to_string()))?;
-    let k_max = args
-        .k_max
-        .unwrap_or(2 * (n as f64).sqrt().ceil() as usize)
-        .max(16);
+    // The default is 2 ceil(sqrt N), at least 16; a given --k-max is used as given.
+    let k_max = match args.k_max {
+        Some(0) => return Err(Failure::usage("--k-max 0: must be at least 1")),
+        Some(k) => k,
+        None => (2 * (n as f64).sqrt().ceil() as usize).max(16),
+    };
     if k_max > SPECTRUM_MAX_K {
         return Err(Failure::usage(format!(
             "--k-max {k_max}: at most {SPECTRUM_MAX_K}"
@@ -195,7 +204,7 @@ pub fn run(args: &VarianceArgs) -> Result<(), Failure> {
     let total = (one + construct) * spectra as f64 + evals;
     if total > budget.max_seconds() {
         return Err(Failure::usage(format!(
-            "{spectra} sets, their periodograms and {} evaluations: estimated {total:.1} s, more than \
+            "{spectra} sets, their periodograms and {} evaluations: estimated {total:.3} s, more than \
              --max-seconds {} (raise it to run them)",
             args.sets as u64 * n as u64,
             args.budget.max_seconds
@@ -206,20 +215,16 @@ pub fn run(args: &VarianceArgs) -> Result<(), Failure> {
     // stays exact when the sets differ in size (Poisson disk by count).
     let (predicted, counts, errors) = with_spinner("variance", || -> qmckit::Result<_> {
         let (mut variance, mut tail, mut counts) = (0.0, 0.0, 0usize);
-        let mut errors = Vec::with_capacity(args.sets as usize);
+        let mut errors: Vec<f64> = qmckit::size::vec_with_capacity(args.sets as usize)?;
         let mut pts = Vec::new();
+        let mut pacer = budget.pacer("the integration variance");
         for s in 0..args.sets {
             if random || s == 0 {
-                pts = points_of(args.sampler, n, args.seed, s)?;
+                budget.check_deadline("the integration variance")?;
+                pts = points_of(args.sampler, n, args.seed, s, &budget)?;
                 let p = Points::new(&pts, 2)?;
                 let one = predicted_variance(
-                    &periodogram_2d(
-                        p,
-                        k_max,
-                        method,
-                        DEFAULT_TOLERANCE,
-                        &qmckit::work::Budget::UNLIMITED,
-                    )?,
+                    &periodogram_2d(p, k_max, method, DEFAULT_TOLERANCE, &budget)?,
                     &f,
                 );
                 variance += one.variance;
@@ -229,11 +234,20 @@ pub fn run(args: &VarianceArgs) -> Result<(), Failure> {
             let shift = [0, 1]
                 .map(|d| qmckit::bits::to_f64(qmckit::hash::uniform(args.seed ^ 0x5417, s, d)));
             errors.push(shifted_error(Points::new(&pts, 2)?, &f, shift)?);
+            pacer.tick_n(n)?;
         }
         let inv = 1.0 / f64::from(spectra);
         Ok(((variance * inv, tail * inv), counts as f64 * inv, errors))
-    })?;
+    })
+    .map_err(|e| Failure::usage(super::budget::over_budget(e)))?;
     let measured = Measured::from_errors(&errors)?;
+    let ratio = measured.variance / predicted.0;
+    if !ratio.is_finite() {
+        return Err(Failure::usage(
+            "the predicted variance is zero or not representable: no ratio (take a larger \
+             --radius or --sigma)",
+        ));
+    }
     let mut out = BufWriter::new(std::io::stdout().lock());
     let (name, parameter) = match f {
         TorusIntegrand::Disk { radius } => ("disk", radius),
@@ -254,7 +268,7 @@ pub fn run(args: &VarianceArgs) -> Result<(), Failure> {
     writeln!(out, "tail {:.16e}", predicted.1)?;
     writeln!(out, "measured {:.16e}", measured.variance)?;
     writeln!(out, "std_error {:.16e}", measured.std_error)?;
-    writeln!(out, "ratio {:.16e}", measured.variance / predicted.0)?;
+    writeln!(out, "ratio {ratio:.16e}")?;
     writeln!(out, "white {:.16e}", f.white_noise_variance() / counts)?;
     out.flush()?;
     Ok(())

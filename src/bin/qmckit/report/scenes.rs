@@ -3,12 +3,9 @@
 //! (spheres and a plane, exact intersections), a reference at a high sample count, MSE over
 //! many seeds.
 
-use qmckit::analysis::scene::{
-    self, SceneImage, SceneStudy, StudyOptions, ambient_occlusion_study, motion_defocus_study,
-    pixel_area_study, pixel_light_study, quad_light_uv, soft_shadow_study,
-};
+use qmckit::analysis::scene::{self, SceneImage, SceneStudy, Study, StudyOptions, quad_light_uv};
 use qmckit::plot::{ColourMap, ImageFigure, PointsFigure};
-use qmckit::work::{Cost, Rate};
+use qmckit::work::{Cost, Rate, no_progress};
 
 use super::super::Failure;
 use super::{Ctx, Section, row, sig};
@@ -31,8 +28,8 @@ pub fn sections(ctx: &Ctx) -> Result<Vec<Section>, Failure> {
     let each = scene::cost(&o) as f64 / 5.0;
     ctx.budget
         .check("each rendered study", Cost::steps(each, SCENE_RATE))?;
-    let area = pixel_area_study(&o)?;
-    let shadow = soft_shadow_study(&o)?;
+    let area = Study::PixelArea.run_within(&o, &no_progress, &ctx.budget)?;
+    let shadow = Study::SoftShadow.run_within(&o, &no_progress, &ctx.budget)?;
     let mut mse = Section::new(
         "mse-tables-n16",
         "MSE tables at n = 16: independent, stratified, Sobol'",
@@ -79,7 +76,7 @@ pub fn sections(ctx: &Ctx) -> Result<Vec<Section>, Failure> {
     )?);
     add_renders(ctx, &mut quad, "quad", &shadow)?;
 
-    let motion = motion_defocus_study(&o)?;
+    let motion = Study::MotionDefocus.run_within(&o, &no_progress, &ctx.budget)?;
     let mut md = Section::new(
         "motion-blur-defocus",
         "Sampling motion blur + defocus: independent, Halton, Sobol'",
@@ -95,7 +92,7 @@ pub fn sections(ctx: &Ctx) -> Result<Vec<Section>, Failure> {
     md.note =
         "A different scene and shutter/aperture than the lecture's; the ratios are ours.".into();
 
-    let pl = pixel_light_study(&o)?;
+    let pl = Study::PixelLight.run_within(&o, &no_progress, &ctx.budget)?;
     let mut pls = Section::new(
         "pixel-light",
         "Pixel x light sampling",
@@ -103,7 +100,7 @@ pub fn sections(ctx: &Ctx) -> Result<Vec<Section>, Failure> {
     );
     add_study(ctx, &mut pls, "pixel-light", &pl, &[])?;
 
-    let ao = ambient_occlusion_study(&o)?;
+    let ao = Study::AmbientOcclusion.run_within(&o, &no_progress, &ctx.budget)?;
     let mut aos = Section::new(
         "ambient-occlusion",
         "Ambient occlusion: white vs blue-noise error distribution",
