@@ -9,12 +9,12 @@
 
 use libfuzzer_sys::arbitrary::{Result, Unstructured};
 use libfuzzer_sys::fuzz_target;
+use qmckit::Sampler;
 use qmckit::blue_noise::{BestCandidate, GaussianBlueNoise, PoissonDisk, VoidAndCluster};
 use qmckit::pixel::{
     ImageSobol, IndependentPixels, PaddedSobol, PixelSampler, Pmj02BnTables, Pmj02Pixels,
     Randomization, ZSobol,
 };
-use qmckit::Sampler;
 use qmckit::pmj;
 use qmckit::work::Budget;
 
@@ -37,7 +37,16 @@ fn size(u: &mut Unstructured) -> Result<u32> {
 fn real(u: &mut Unstructured) -> Result<f64> {
     Ok(match u.int_in_range(0u8..=3)? {
         0 => f64::from(u.int_in_range(0u32..=1000)?) / 1000.0,
-        1 => *u.choose(&[0.0, -0.0, 5e-324, 1e-300, 1e300, f64::NAN, f64::INFINITY, -1.0])?,
+        1 => *u.choose(&[
+            0.0,
+            -0.0,
+            5e-324,
+            1e-300,
+            1e300,
+            f64::NAN,
+            f64::INFINITY,
+            -1.0,
+        ])?,
         _ => u.arbitrary()?,
     })
 }
@@ -60,9 +69,21 @@ fn probe(s: &dyn PixelSampler, u: &mut Unstructured) -> Result<()> {
     let grid = s.grid();
     assert!(grid.width >= 1 && grid.height >= 1 && grid.spp >= 1);
     for _ in 0..4 {
-        let x = if u.arbitrary()? { u.arbitrary()? } else { u.int_in_range(0..=grid.width - 1)? };
-        let y = if u.arbitrary()? { u.arbitrary()? } else { u.int_in_range(0..=grid.height - 1)? };
-        let i = if u.arbitrary()? { u.arbitrary()? } else { u.int_in_range(0..=grid.spp - 1)? };
+        let x = if u.arbitrary()? {
+            u.arbitrary()?
+        } else {
+            u.int_in_range(0..=grid.width - 1)?
+        };
+        let y = if u.arbitrary()? {
+            u.arbitrary()?
+        } else {
+            u.int_in_range(0..=grid.height - 1)?
+        };
+        let i = if u.arbitrary()? {
+            u.arbitrary()?
+        } else {
+            u.int_in_range(0..=grid.spp - 1)?
+        };
         let dim: u32 = u.arbitrary()?;
         let inside = x < grid.width && y < grid.height && i < grid.spp;
         let one = s.get_1d_f32(x, y, i, dim);
@@ -70,7 +91,10 @@ fn probe(s: &dyn PixelSampler, u: &mut Unstructured) -> Result<()> {
         let pix = s.get_pixel_2d_f32(x, y, i, dim);
         let _ = s.sample_index(x, y, i, dim);
         if !inside {
-            assert!(one.is_err() && two.is_err() && pix.is_err(), "({x}, {y}) #{i} outside");
+            assert!(
+                one.is_err() && two.is_err() && pix.is_err(),
+                "({x}, {y}) #{i} outside"
+            );
             continue;
         }
         if let Ok(v) = one {
@@ -134,8 +158,15 @@ fn stratified(pts: &[[u32; 2]], what: &str) {
     for axis in 0..2 {
         let mut seen = vec![false; n];
         for p in &pts[..n] {
-            let cell = if m == 0 { 0 } else { (p[axis] >> (32 - m)) as usize };
-            assert!(!seen[cell], "{what}: two of the first {n} points in stratum {cell} of axis {axis}");
+            let cell = if m == 0 {
+                0
+            } else {
+                (p[axis] >> (32 - m)) as usize
+            };
+            assert!(
+                !seen[cell],
+                "{what}: two of the first {n} points in stratum {cell} of axis {axis}"
+            );
             seen[cell] = true;
         }
     }
@@ -156,7 +187,10 @@ fn pmj_sequences(u: &mut Unstructured) -> Result<()> {
             let short = u.int_in_range(0..=work_len.min(4))?;
             let mut work = vec![0u32; work_len - short];
             let r = pmj::bn::fill(seed, &mut pts, &mut work);
-            assert!(short == 0 || n < 2 || r.is_err() || work_len == 0, "short workspace accepted");
+            assert!(
+                short == 0 || n < 2 || r.is_err() || work_len == 0,
+                "short workspace accepted"
+            );
             if r.is_ok() && n > 0 {
                 stratified(&pts, "pmj02bn");
             }
@@ -211,22 +245,36 @@ fn blue_noise(u: &mut Unstructured) -> Result<()> {
             p.generate_within(&budget())
         }
         1 => {
-            let Ok(b) = BestCandidate::new(u64::from(size(u)?)) else { return Ok(()) };
-            let Ok(b) = b.candidates(size(u)?) else { return Ok(()) };
+            let Ok(b) = BestCandidate::new(u64::from(size(u)?)) else {
+                return Ok(());
+            };
+            let Ok(b) = b.candidates(size(u)?) else {
+                return Ok(());
+            };
             let _ = b.cost();
             b.seed(seed).generate_within(&budget())
         }
         2 => {
-            let Ok(g) = GaussianBlueNoise::new(u64::from(size(u)?)) else { return Ok(()) };
-            let Ok(g) = g.iterations(size(u)?) else { return Ok(()) };
-            let Ok(g) = g.sigma(real(u)?) else { return Ok(()) };
+            let Ok(g) = GaussianBlueNoise::new(u64::from(size(u)?)) else {
+                return Ok(());
+            };
+            let Ok(g) = g.iterations(size(u)?) else {
+                return Ok(());
+            };
+            let Ok(g) = g.sigma(real(u)?) else {
+                return Ok(());
+            };
             let _ = g.cost();
             g.seed(seed).generate_within(&budget())
         }
         _ => {
             let (w, h) = (size(u)? as usize, size(u)? as usize);
-            let Ok(v) = VoidAndCluster::new(w, h) else { return Ok(()) };
-            let Ok(v) = v.seed(seed).sigma(real(u)?) else { return Ok(()) };
+            let Ok(v) = VoidAndCluster::new(w, h) else {
+                return Ok(());
+            };
+            let Ok(v) = v.seed(seed).sigma(real(u)?) else {
+                return Ok(());
+            };
             let _ = v.cost();
             if let Ok(mask) = v.generate_within(&budget()) {
                 let n = mask.width() * mask.height();
@@ -243,7 +291,11 @@ fn blue_noise(u: &mut Unstructured) -> Result<()> {
         }
     };
     if let Ok(set) = set {
-        assert_eq!(set.coords().len(), set.count() * set.dims(), "coordinates of a set");
+        assert_eq!(
+            set.coords().len(),
+            set.count() * set.dims(),
+            "coordinates of a set"
+        );
         assert!(set.to_f64().iter().all(|x| (0.0..1.0).contains(x)));
     }
     Ok(())

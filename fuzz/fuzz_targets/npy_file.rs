@@ -38,13 +38,7 @@ fuzz_target!(|data: &[u8]| {
     bytes.extend_from_slice(rest);
     let path = input_path();
     std::fs::write(path, &bytes).expect("write the fuzz input");
-    let args = [
-        "qmckit",
-        command,
-        "--max-seconds",
-        "0.25",
-        path,
-    ];
+    let args = ["qmckit", command, "--max-seconds", "0.25", path];
     let code = qmckit_cli::run_cli(args);
     assert!(code == 0 || code == 2, "exit code {code}");
 });

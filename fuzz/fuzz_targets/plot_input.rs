@@ -13,7 +13,14 @@ use qmckit::plot::{decode_image, parse_blocks};
 #[path = "../../src/bin/qmckit/main.rs"]
 mod qmckit_cli;
 
-const KINDS: [&str; 6] = ["auto", "points", "spectrum", "radial", "convergence", "image"];
+const KINDS: [&str; 6] = [
+    "auto",
+    "points",
+    "spectrum",
+    "radial",
+    "convergence",
+    "image",
+];
 
 fn scratch(name: &str) -> String {
     let dir = if std::path::Path::new("/dev/shm").is_dir() {

@@ -448,6 +448,10 @@ cases! {
         &["plot", "--kind", "spectrum", "--out", "out.png"], Refuse)
         .stdin("-9.3e18 0 1\n0 0 1\n")
         .check(png_written);
+    panic_plot_spectrum_fuzzed_frequencies => Case::new(
+        &["plot", "--kind", "spectrum", "--out", "out.svg"], Refuse)
+        .stdin("5179970051  0517 7\r01 0 000")
+        .check(svg_written);
     panic_plot_spectrum_one_cell => Case::new(&["plot", "--out", "out.svg"], AnswerOrRefuse)
         .stdin("# kx ky power\n0 0 1\n")
         .check(svg_written);
@@ -762,6 +766,10 @@ cases! {
         &["plot", "--out", "out.svg"], Answer)
         .stdin("# n rmse\n# label: x\u{2}y<z&\n1 0.5\n2 0.25\n4 0.125\n")
         .check(svg_written);
+    wrong_npy_header_syntax_error_is_one_line => Case::new(&["discrepancy"], Refuse)
+        .stdin(&b"\x93NUMPY\x01\x00\x04\x00{x}\n"[..]);
+    wrong_npy_header_of_python_code_is_one_line => Case::new(&["spectrum"], Refuse)
+        .stdin(npy("<f8", "__import__('os')", &[0; 16]));
     wrong_spectrum_tolerance_nan => Case::new(&["spectrum", "--tolerance", "nan"], Refuse)
         .stdin(few_points());
     wrong_discrepancy_delta_nan => Case::new(

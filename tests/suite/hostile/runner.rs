@@ -474,7 +474,7 @@ fn finite_npy(bytes: &[u8], truncated: bool) -> Result<(), String> {
     } else {
         return Ok(());
     };
-    if !truncated && data.len() % 8 != 0 && header.contains("<f8") {
+    if !truncated && !data.len().is_multiple_of(8) && header.contains("<f8") {
         return Err(format!("a .npy with {} data bytes", data.len()));
     }
     match values.iter().position(|x| !x.is_finite()) {
@@ -555,7 +555,8 @@ pub fn well_formed_xml(text: &str) -> Result<(), String> {
     Ok(())
 }
 
-/// Every `&` in `text` starts an entity (`&name;` or `&#N;`).
+/// Every `&` in `text` starts an entity (`&name;`, or `&#N;` / `&#xH;` of a character XML
+/// allows).
 fn entities(text: &str) -> Result<(), String> {
     let mut rest = text;
     while let Some(k) = rest.find('&') {
@@ -563,14 +564,18 @@ fn entities(text: &str) -> Result<(), String> {
         let end = rest.find(';').ok_or("a bare '&'")?;
         let name = &rest[..end];
         let ok = match name.strip_prefix('#') {
-            Some(n) => n.strip_prefix('x').map_or_else(
-                || n.parse::<u32>().is_ok(),
-                |h| u32::from_str_radix(h, 16).is_ok(),
-            ),
+            Some(n) => n
+                .strip_prefix('x')
+                .map_or_else(|| n.parse::<u32>().ok(), |h| u32::from_str_radix(h, 16).ok())
+                .is_some_and(|c| {
+                    matches!(c, 0x9 | 0xa | 0xd | 0x20..=0xd7ff | 0xe000..=0xfffd | 0x10000..=0x10ffff)
+                }),
             None => !name.is_empty() && name.chars().all(|c| c.is_ascii_alphanumeric()),
         };
         if !ok {
-            return Err(format!("a bare '&' before {:?}", &rest[..end.min(12)]));
+            return Err(format!(
+                "a bare '&' or a reference to a character XML forbids: &{name};"
+            ));
         }
     }
     Ok(())
