@@ -31,8 +31,11 @@ fn limited(kib: u64, args: &[&str], stderr_to: Option<&str>) -> Command {
     command
 }
 
+/// Longest any run here may take before it is killed and the test fails.
+const RUN_TIME: Duration = Duration::from_secs(60);
+
 /// Runs qmckit under the address-space limit with `input` on stdin; `stderr_to` replaces
-/// stderr by a file (e.g. `/dev/full`).
+/// stderr by a file (e.g. `/dev/full`). A run past [`RUN_TIME`] is killed and fails.
 fn run_limited(args: &[&str], input: &[u8], stderr_to: Option<&str>) -> (Output, Duration) {
     let clock = Instant::now();
     let mut child = limited(ADDRESS_SPACE_KIB, args, stderr_to)
@@ -44,7 +47,31 @@ fn run_limited(args: &[&str], input: &[u8], stderr_to: Option<&str>) -> (Output,
         // A command that refuses before reading closes the pipe: not the test's concern.
         let _ = stdin.write_all(&input);
     });
-    let out = child.wait_with_output().unwrap();
+    let drain = |mut pipe: Box<dyn Read + Send>| {
+        std::thread::spawn(move || {
+            let mut bytes = Vec::new();
+            let _ = pipe.read_to_end(&mut bytes);
+            bytes
+        })
+    };
+    let stdout = drain(Box::new(child.stdout.take().unwrap()));
+    let stderr = drain(Box::new(child.stderr.take().unwrap()));
+    let status = loop {
+        if let Some(status) = child.try_wait().unwrap() {
+            break status;
+        }
+        if clock.elapsed() > RUN_TIME {
+            let _ = child.kill();
+            let _ = child.wait();
+            panic!("{args:?}: still running after {RUN_TIME:?} (killed)");
+        }
+        std::thread::sleep(Duration::from_millis(5));
+    };
+    let out = Output {
+        status,
+        stdout: stdout.join().unwrap(),
+        stderr: stderr.join().unwrap(),
+    };
     writer.join().unwrap();
     (out, clock.elapsed())
 }

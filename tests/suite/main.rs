@@ -14,6 +14,7 @@ mod fixed_warps;
 mod golden_discrepancy;
 mod golden_scipy;
 mod golden_sobol;
+mod hostile;
 mod integrands;
 mod integrate;
 mod lattice;
