@@ -195,7 +195,11 @@ fn millis(seconds: f64) -> u64 {
     }
     // Rounded up without `f64::ceil`, which `core` lacks.
     let whole = ms as u64;
-    if (whole as f64) < ms { whole + 1 } else { whole }
+    if (whole as f64) < ms {
+        whole + 1
+    } else {
+        whole
+    }
 }
 
 /// A cheap deadline check for an inner loop: [`Pacer::tick`] counts steps and reads the

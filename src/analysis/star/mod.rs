@@ -246,7 +246,7 @@ pub fn star_exact_within(
 /// `d <= 2`, a binary search of 40 estimates otherwise.
 ///
 /// ```
-/// use qmckit::{work::Budget, star::max_points_within};
+/// use qmckit::{work::Budget, analysis::star::max_points_within};
 /// assert_eq!(max_points_within(2, &Budget::DEFAULT), 54_772);
 /// assert_eq!(max_points_within(6, &Budget::DEFAULT), 478);
 /// ```

@@ -184,6 +184,28 @@ fn check_npy_header(bytes: &[u8]) -> Result<(), String> {
             bytes.len()
         ));
     }
+    // The shape's product is checked here, before the npy parser multiplies it unchecked.
+    let header = bytes
+        .get(start as usize..(start + len) as usize)
+        .and_then(|h| std::str::from_utf8(h).ok())
+        .ok_or("a .npy header that is not text")?;
+    let shape = header
+        .split_once("'shape'")
+        .and_then(|(_, rest)| rest.split_once('('))
+        .and_then(|(_, rest)| rest.split_once(')'))
+        .map(|(inside, _)| inside)
+        .ok_or("a .npy header without a 'shape' tuple")?;
+    let mut count: u64 = 1;
+    for dim in shape.split(',').map(str::trim).filter(|t| !t.is_empty()) {
+        let dim: u64 = dim
+            .trim_end_matches('L')
+            .parse()
+            .map_err(|_| format!("a .npy shape ({shape}) that is not whole numbers"))?;
+        count = count
+            .checked_mul(dim)
+            .filter(|&c| c <= bytes.len() as u64)
+            .ok_or_else(|| format!("a .npy shape ({shape}) larger than the file's data"))?;
+    }
     Ok(())
 }
 
@@ -334,8 +356,16 @@ mod tests {
         assert!(read_npy(&evil).is_err());
         assert!(check_npy_header(b"\x93NUMPY\x01").is_err());
         assert!(check_npy_header(b"\x93NUMPY\x07\x00\x00\x00").is_err());
-        let mut ok = b"\x93NUMPY\x01\x00\x04\x00".to_vec();
-        ok.extend_from_slice(b"{}  ");
-        assert!(check_npy_header(&ok).is_ok());
+        let npy = |dict: &str| {
+            let mut v = b"\x93NUMPY\x01\x00".to_vec();
+            v.extend_from_slice(&(dict.len() as u16).to_le_bytes());
+            v.extend_from_slice(dict.as_bytes());
+            v.extend_from_slice(&[0u8; 64]);
+            v
+        };
+        assert!(check_npy_header(&npy("{'descr': '<f8', 'shape': (2, 3), }")).is_ok());
+        let huge = "{'descr': '<f8', 'shape': (4294967296, 4294967296), }";
+        assert!(check_npy_header(&npy(huge)).unwrap_err().contains("larger"));
+        assert!(check_npy_header(&npy("{'descr': '<f8', }")).is_err());
     }
 }

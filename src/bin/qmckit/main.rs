@@ -122,7 +122,23 @@ fn one_line(err: &clap::Error) -> String {
 /// Writes `qmckit: error: MESSAGE` on stderr, ignoring a stderr that cannot be written (a
 /// full disk, a closed descriptor): the exit code still tells.
 fn report(message: &str) {
-    let _ = writeln!(std::io::stderr().lock(), "qmckit: error: {message}");
+    let _ = writeln!(
+        std::io::stderr().lock(),
+        "qmckit: error: {}",
+        one_line_text(message)
+    );
+}
+
+/// `message` on one line: the one-line rule is kept here, where every error leaves, so a
+/// multi-line text from a dependency (a parser's report) cannot break it. Line breaks and
+/// other control characters become single spaces.
+fn one_line_text(message: &str) -> String {
+    message
+        .split(|c: char| c.is_control())
+        .map(str::trim)
+        .filter(|part| !part.is_empty())
+        .collect::<Vec<_>>()
+        .join(" ")
 }
 
 fn main() -> ExitCode {
