@@ -38,6 +38,100 @@ const NPY_MAGIC: &[u8] = b"\x93NUMPY";
 /// The first bytes of every PNG file.
 const PNG_MAGIC: &[u8] = b"\x89PNG";
 
+/// The binary formats read (by their first bytes): NumPy, PNG and binary PGM. Everything
+/// else is text: UTF-8, in lines.
+const BINARY: [&[u8]; 3] = [NPY_MAGIC, PNG_MAGIC, b"P5"];
+
+/// The running checks of a text input, fed each chunk as it arrives: UTF-8 (so random bytes
+/// are refused within the first chunk, not after a gigabyte), the length of each line, and
+/// the number of lines that hold something before a `#` (a lower bound on the records).
+#[derive(Default)]
+struct TextScan {
+    /// Bytes of the input already checked.
+    scanned: usize,
+    /// Bytes of the input known to be valid UTF-8.
+    valid: usize,
+    line_len: usize,
+    line_no: u64,
+    records: u64,
+    has_content: bool,
+    in_comment: bool,
+}
+
+impl TextScan {
+    /// Checks the bytes of `all` past those already seen.
+    fn feed(&mut self, all: &[u8], limits: Limits) -> Result<(), String> {
+        let fresh = all.get(self.scanned..).unwrap_or(&[]);
+        for &b in fresh {
+            match b {
+                b'\n' | b'\r' => {
+                    self.line_no += u64::from(b == b'\n');
+                    self.end_line(limits)?;
+                }
+                _ => {
+                    self.line_len += 1;
+                    if self.line_len > limits.line {
+                        return Err(format!(
+                            "line {} is longer than {} bytes (not a text of points?)",
+                            self.line_no + 1,
+                            limits.line
+                        ));
+                    }
+                    if b == b'#' {
+                        self.in_comment = true;
+                    } else if !self.in_comment && !matches!(b, b' ' | b'\t' | b',') {
+                        self.has_content = true;
+                    }
+                }
+            }
+        }
+        self.scanned = all.len();
+        match std::str::from_utf8(&all[self.valid..]) {
+            Ok(_) => self.valid = all.len(),
+            Err(e) => match e.error_len() {
+                // A character cut by the chunk's end: checked with the next chunk.
+                None => self.valid += e.valid_up_to(),
+                Some(_) => {
+                    return Err(format!(
+                        "not UTF-8 text (byte {}) nor a file format read here",
+                        self.valid + e.valid_up_to()
+                    ));
+                }
+            },
+        }
+        Ok(())
+    }
+
+    /// Counts the line that ends here.
+    fn end_line(&mut self, limits: Limits) -> Result<(), String> {
+        self.records += u64::from(self.has_content);
+        if self.records > limits.records {
+            return Err(format!(
+                "more than {} records (lines of data); split the input",
+                limits.records
+            ));
+        }
+        self.line_len = 0;
+        self.has_content = false;
+        self.in_comment = false;
+        Ok(())
+    }
+
+    /// The checks at the end of the input (its last line, a cut character).
+    fn finish(&mut self, all: &[u8], limits: Limits) -> Result<(), String> {
+        if self.has_content {
+            self.end_line(limits)?;
+        }
+        if self.valid < all.len() {
+            return Err(format!(
+                "not UTF-8 text (byte {}) nor a file format read here",
+                self.valid
+            ));
+        }
+        Ok(())
+    }
+}
+
 /// The bounds of one input: the bytes read and the longest line of a text.
 #[derive(Clone, Copy, Debug)]
 pub struct Limits {
@@ -48,6 +142,10 @@ pub struct Limits {
     pub line: usize,
     /// The option that names the input (`--vector`), or empty for the main input.
     pub option: &'static str,
+    /// The most lines holding data (anything before a `#`) a text may have: a lower bound
+    /// on what its parser would build, so an input too large to parse is refused as it is
+    /// read.
+    pub records: u64,
 }
 
 /// The limits of a point file, table or image: the crate's allocation limit (1 GiB), and
@@ -56,6 +154,14 @@ pub const DATA: Limits = Limits {
     bytes: qmckit::size::MAX_ALLOC_BYTES,
     line: 64 << 20,
     option: "",
+    records: u64::MAX,
+};
+
+/// The limits of a point file: those of [`DATA`], and at most as many lines of data as the
+/// parser admits coordinates in all (each point has at least one).
+pub const POINTS: Limits = Limits {
+    records: qmckit::analysis::pointfile::MAX_VALUES as u64,
+    ..DATA
 };
 
 /// How much is read at a time.
@@ -111,9 +217,7 @@ pub fn read_bounded(file: Option<&str>, limits: Limits) -> Result<(String, Vec<u
     };
     let mut bytes: Vec<u8> = Vec::new();
     let mut binary = None;
-    let mut line_len = 0usize;
-    let mut line_no = 1u64;
-    let mut scanned = 0usize;
+    let mut scan = TextScan::default();
     let mut chunk = vec![0u8; CHUNK];
     loop {
         let got = match source.read(&mut chunk) {
@@ -131,29 +235,17 @@ pub fn read_bounded(file: Option<&str>, limits: Limits) -> Result<(String, Vec<u
         qmckit::size::reserve(&mut bytes, got).map_err(|e| fail(e.to_string()))?;
         bytes.extend_from_slice(&chunk[..got]);
         if bytes.len() < 8 && binary.is_none() {
-            // Too short to tell yet; lines are checked once it is known.
+            // Too short to tell yet; the text is checked once it is known.
             continue;
         }
-        let is_binary = *binary
-            .get_or_insert_with(|| bytes.starts_with(NPY_MAGIC) || bytes.starts_with(PNG_MAGIC));
-        if is_binary {
-            continue;
+        let is_binary = *binary.get_or_insert_with(|| BINARY.iter().any(|m| bytes.starts_with(m)));
+        if !is_binary {
+            scan.feed(&bytes, limits).map_err(fail)?;
         }
-        for &b in &bytes[scanned..] {
-            if b == b'\n' || b == b'\r' {
-                line_len = 0;
-                line_no += u64::from(b == b'\n');
-            } else {
-                line_len += 1;
-                if line_len > limits.line {
-                    return Err(fail(format!(
-                        "line {line_no} is longer than {} bytes (not a text of points?)",
-                        limits.line
-                    )));
-                }
-            }
-        }
-        scanned = bytes.len();
+    }
+    if binary != Some(true) {
+        scan.feed(&bytes, limits).map_err(fail)?;
+        scan.finish(&bytes, limits).map_err(fail)?;
     }
     Ok((name, bytes))
 }
@@ -278,7 +370,7 @@ fn read_npy(bytes: &[u8]) -> Result<PointSet, String> {
 
 /// The point sets of the input (`-` or none: standard input) and the name errors give it.
 pub fn read_point_sets(input: &InputArgs) -> Result<(String, Vec<PointSet>), Failure> {
-    let (name, bytes) = read_bounded(input.file.as_deref(), DATA)?;
+    let (name, bytes) = read_bounded(input.file.as_deref(), POINTS)?;
     if bytes.starts_with(NPY_MAGIC) {
         let set = read_npy(&bytes).map_err(|e| Failure::usage(format!("{name}: {e}")))?;
         return Ok((name, vec![set]));
@@ -324,6 +416,7 @@ mod tests {
             bytes: 16,
             line: 4,
             option: "--vector",
+            records: 3,
         };
         let ok = scratch("ok", b"0.5\n0.25\r\n1\n");
         assert_eq!(read_bounded(Some(&ok), small).unwrap().1.len(), 12);
@@ -342,7 +435,16 @@ mod tests {
         // A device: its size says nothing; the bytes read are counted.
         let e = read_bounded(Some("/dev/zero"), DATA).unwrap_err();
         assert!(e.message.contains("line 1 is longer than"), "{}", e.message);
-        for f in [ok, big, long] {
+        // Bytes that are not UTF-8: refused as read.
+        let e = read_bounded(Some("/dev/urandom"), DATA).unwrap_err();
+        assert!(e.message.contains("not UTF-8"), "{}", e.message);
+        // More lines of data than the records allowed (comments and blanks do not count).
+        let many = scratch("many", b"1\n# c\n\n2\n3\n4\n");
+        let e = read_bounded(Some(&many), Limits { bytes: 64, ..small }).unwrap_err();
+        assert!(e.message.contains("more than 3 records"), "{}", e.message);
+        let three = scratch("three", b"1\n# c\n\n2\n3");
+        assert!(read_bounded(Some(&three), Limits { bytes: 64, ..small }).is_ok());
+        for f in [ok, big, long, many, three] {
             std::fs::remove_file(f).unwrap();
         }
     }

@@ -80,6 +80,7 @@ fn read_vector(path: &Path, d: usize) -> Result<(Vec<u32>, Option<u64>), Failure
         bytes: MAX_VECTOR_FILE,
         line: 1 << 16,
         option: "--vector",
+        records: u64::MAX,
     };
     let file = path.to_string_lossy();
     let (_, bytes) = super::input::read_bounded(Some(&file), limits)?;
