@@ -35,6 +35,10 @@ pub const GBN_MAX_POINTS: u64 = 1 << 24;
 /// Pair terms a second (release; a conservative figure).
 const TERMS: Rate = Rate::per_second(5e7);
 
+/// Points between two readings of the clock inside one iteration (a few hundred
+/// microseconds of work).
+const DEADLINE_POINTS: usize = 4096;
+
 /// The cut-off in units of `sigma / sqrt(N)`.
 const CUTOFF: f64 = 6.0;
 
@@ -130,18 +134,21 @@ impl GaussianBlueNoise {
         self.generate_within(&Budget::DEFAULT)
     }
 
-    /// The set, refused before it starts when [`cost`](Self::cost) exceeds `budget`.
+    /// The set, refused before it starts when [`cost`](Self::cost) exceeds `budget`, and
+    /// stopped at the budget's deadline (started here if the caller has not): the clock is
+    /// read once an iteration and, within one, once every [`DEADLINE_POINTS`] points of
+    /// each worker.
     ///
     /// # Errors
-    /// [`Error::OverBudget`], [`Error::TooLarge`].
+    /// [`Error::OverBudget`], [`Error::TooLarge`], [`Error::OutOfTime`].
     pub fn generate_within(&self, budget: &Budget) -> Result<PointSet> {
+        let budget = budget.started();
         budget.check("Gaussian blue noise", self.cost())?;
         let n = self.n as usize;
         crate::size::bytes(n, 64)?;
         let mut rng = Rng::new(self.seed, 0x4742_4E32_4430_3232);
-        let mut pts: Vec<[f64; 2]> = (0..n)
-            .map(|_| [rng.fraction(), rng.fraction()].map(|c| f64::from(c) / SCALE))
-            .collect();
+        let mut pts: Vec<[f64; 2]> = crate::size::vec_with_capacity(n)?;
+        pts.extend((0..n).map(|_| [rng.fraction(), rng.fraction()].map(|c| f64::from(c) / SCALE)));
         let nf = n as f64;
         let inv = nf / (2.0 * self.sigma * self.sigma);
         let step = 0.25 / (self.sigma * self.sigma).max(1.0);
@@ -149,9 +156,11 @@ impl GaussianBlueNoise {
         let cut2 = cut * cut;
         let g = ((1.0 / cut).floor() as usize).max(1);
         let use_grid = g >= 3;
-        let mut head = vec![u32::MAX; g * g];
-        let mut next = vec![u32::MAX; n];
+        let mut head = crate::size::vec_zeroed::<u32>(g * g)?;
+        let mut next = crate::size::vec_zeroed::<u32>(n)?;
+        next.fill(u32::MAX);
         for _ in 0..self.iterations {
+            budget.check_deadline("Gaussian blue noise")?;
             if use_grid {
                 head.fill(u32::MAX);
                 for (i, p) in pts.iter().enumerate() {
@@ -167,7 +176,12 @@ impl GaussianBlueNoise {
             let moved: Vec<[f64; 2]> = (0..n)
                 .into_par_iter()
                 .map(|i| {
-                    let Some(p) = old.get(i) else { return [0.0; 2] };
+                    if i % DEADLINE_POINTS == 0 {
+                        budget.check_deadline("Gaussian blue noise")?;
+                    }
+                    let Some(p) = old.get(i) else {
+                        return Ok([0.0; 2]);
+                    };
                     let mut grad = [0.0f64; 2];
                     let mut term = |q: &[f64; 2]| {
                         let dx = wrap(p[0] - q[0]);
@@ -202,9 +216,9 @@ impl GaussianBlueNoise {
                             }
                         }
                     }
-                    [p[0] + step * grad[0], p[1] + step * grad[1]].map(|x| x - x.floor())
+                    Ok([p[0] + step * grad[0], p[1] + step * grad[1]].map(|x| x - x.floor()))
                 })
-                .collect();
+                .collect::<Result<Vec<_>>>()?;
             pts = moved;
         }
         let mut coords = crate::size::vec_zeroed::<u32>(crate::size::coordinates(n as u64, 2)?)?;

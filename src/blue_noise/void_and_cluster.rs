@@ -35,6 +35,7 @@
 use super::rng::Rng;
 use super::tournament::{Best, Tournament};
 use crate::work::{Budget, Cost, Rate};
+
 use crate::{Error, Result};
 
 /// The largest side of a mask.
@@ -154,28 +155,41 @@ impl VoidAndCluster {
         self.generate_within(&Budget::DEFAULT)
     }
 
-    /// The mask, refused before it starts when [`cost`](Self::cost) exceeds `budget`.
+    /// The mask, refused before it starts when [`cost`](Self::cost) exceeds `budget`, and
+    /// stopped at the budget's deadline (started here if the caller has not; the clock is
+    /// read about once every [`crate::work::PACER_INTERVAL`] flips of the 13 x 13 kernel).
     ///
     /// # Errors
-    /// [`Error::OverBudget`], [`Error::TooLarge`].
+    /// [`Error::OverBudget`], [`Error::TooLarge`], [`Error::OutOfTime`].
     pub fn generate_within(&self, budget: &Budget) -> Result<RankMask> {
+        let budget = budget.started();
         budget.check("void-and-cluster mask", self.cost())?;
+        let mut pacer = budget.pacer("void-and-cluster mask");
         let n = self.width * self.height;
         let kernel = Kernel::new(self.width, self.height, self.sigma, self.reach());
-        let mut state = State::new(self.width, self.height, kernel);
+        // One flip's weight for the pacer: its kernel weights over the default 13 x 13.
+        let weight = u32::try_from(kernel.w.len() / 169)
+            .unwrap_or(u32::MAX)
+            .max(1);
+        let mut state = State::new(self.width, self.height, kernel)?;
         let n1 = (n / 10).min((n - 1) / 2).max(1).min(n);
         // Distinct random pixels: a partial Fisher–Yates shuffle.
-        let mut order: Vec<u32> = (0..n as u32).collect();
+        let mut order: Vec<u32> = crate::size::vec_zeroed(n)?;
+        for (i, o) in order.iter_mut().enumerate() {
+            *o = i as u32;
+        }
         let mut rng = Rng::new(self.seed, 0x564F_4944_434C_5553);
         for i in 0..n1 {
             let j = i + rng.below(n - i);
             order.swap(i, j);
         }
         for &p in order.get(..n1).unwrap_or(&[]) {
+            pacer.tick_n(weight)?;
             state.flip(p as usize, true);
         }
         // Relax (bounded, so no input can loop forever; it settles in far fewer steps).
         for _ in 0..4 * n {
+            pacer.tick_n(2 * weight)?;
             let Some(c) = state.cluster() else { break };
             state.flip(c, false);
             match state.void() {
@@ -186,16 +200,19 @@ impl VoidAndCluster {
                 }
             }
         }
-        let mut ranks = vec![0u32; n];
+        let mut ranks = crate::size::vec_zeroed::<u32>(n)?;
         let mut removing = state.clone();
         for rank in (0..n1).rev() {
+            pacer.tick_n(weight)?;
             let Some(c) = removing.cluster() else { break };
             removing.flip(c, false);
             if let Some(slot) = ranks.get_mut(c) {
                 *slot = rank as u32;
             }
         }
+        drop(removing);
         for rank in n1..n {
+            pacer.tick_n(weight)?;
             let Some(v) = state.void() else { break };
             state.flip(v, true);
             if let Some(slot) = ranks.get_mut(v) {
@@ -274,19 +291,21 @@ struct State {
 }
 
 impl State {
-    fn new(width: usize, height: usize, kernel: Kernel) -> Self {
+    fn new(width: usize, height: usize, kernel: Kernel) -> Result<Self> {
         let n = width * height;
-        let energy = vec![0i64; n];
-        let ones = Tournament::new(Best::Max, &vec![Tournament::sentinel(Best::Max); n]);
-        let zeros = Tournament::new(Best::Min, &energy);
-        State {
+        let mut energy = crate::size::vec_zeroed::<i64>(n)?;
+        energy.fill(Tournament::sentinel(Best::Max));
+        let ones = Tournament::new(Best::Max, &energy)?;
+        energy.fill(0);
+        let zeros = Tournament::new(Best::Min, &energy)?;
+        Ok(State {
             width,
             height,
             kernel,
             energy,
             ones,
             zeros,
-        }
+        })
     }
 
     fn cluster(&self) -> Option<usize> {

@@ -74,13 +74,16 @@ impl BlueNoiseArgs {
     }
 }
 
-/// Builds the set `kind` names: `n` points (or the radius), `d` dimensions, `seed`.
+/// Builds the set `kind` names: `n` points (or the radius), `d` dimensions, `seed`, within
+/// `budget` (its estimate checked first, its deadline bounding the construction; the
+/// caller starts it, so one deadline covers the command).
 pub fn build(
     kind: Kind,
     args: &BlueNoiseArgs,
     n: Option<u64>,
     d: Option<usize>,
     seed: u64,
+    budget: Budget,
 ) -> Result<PointSet, Failure> {
     let name = match kind {
         Kind::Poisson => "poisson",
@@ -88,7 +91,7 @@ pub fn build(
         Kind::Gaussian => "gaussian-blue-noise",
     };
     let refuse = |option: &str| Err(Failure::usage(format!("{option} does not apply to {name}")));
-    let budget = args.budget()?;
+    let budget = budget.started();
     if kind != Kind::Poisson {
         for (option, given) in [
             ("--radius", args.radius.is_some()),
