@@ -277,11 +277,6 @@ impl<const D: usize> Grid<D> {
             .max(1)
     }
 
-    /// The neighbour offsets a free test visits.
-    pub(crate) fn neighbour_count(&self) -> usize {
-        self.offsets.len()
-    }
-
     /// The largest offset along an axis.
     pub(crate) fn reach(&self) -> usize {
         self.reach

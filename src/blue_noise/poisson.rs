@@ -23,9 +23,13 @@
 //! loop.
 //!
 //! Every pair of the result is at least `r` apart, computed from the written 0.32
-//! coordinates (`x = c / 2^32`) in `f64`. Cost: `O(N k c)` for `c` neighbour cells (21 in
-//! 2D), estimated from the packing bound `N <= (1 + r)^d / V_d(r/2)` before anything runs
-//! and checked against a [`Budget`]; the maximal fill costs a few times more.
+//! coordinates (`x = c / 2^32`) in `f64`. Cost: `O(N (k c_d + v))` for the `v` neighbour
+//! cells of a full test (25 in 2D, 6095 in 5D, about 10^6 in 8D) and a rejected
+//! candidate's test `c_d`, estimated before anything runs ([`PoissonDisk::cost`], the model
+//! and its measured constants in `poisson_cost`) and checked against a [`Budget`]; the
+//! budget's deadline then bounds the run whatever the estimate said. The maximal fill in 3
+//! or more dimensions has no useful estimate (its cubes multiply at each split): there the
+//! deadline is the bound.
 //!
 //! ```
 //! use qmckit::blue_noise::PoissonDisk;
@@ -37,6 +41,7 @@
 use super::PointSet;
 use super::bridson::{bridson, fill_maximal};
 use super::grid::{Grid, cells_per_axis};
+use super::poisson_cost;
 use super::rng::Rng;
 use super::tiles::bridson_tiled;
 use crate::work::{Budget, Cost, Rate};
@@ -47,10 +52,6 @@ pub const POISSON_MAX_DIMS: usize = 8;
 
 /// The most points a set may be asked to hold (by its packing bound): 2^28.
 pub const POISSON_MAX_POINTS: u64 = 1 << 28;
-
-/// Neighbour-cell visits a second of Bridson's loop (2D, one core, release; a conservative
-/// figure, so estimates err on the long side).
-const VISITS: Rate = Rate::per_second(5e8);
 
 /// What the size of the set is given by.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -71,7 +72,7 @@ pub struct PoissonDisk {
 }
 
 /// The volume of the `d`-ball of radius `rho`: `pi^(d/2) rho^d / Gamma(d/2 + 1)`.
-fn ball_volume(d: usize, rho: f64) -> f64 {
+pub(crate) fn ball_volume(d: usize, rho: f64) -> f64 {
     // V_0 = 1, V_1 = 2 rho, V_d = V_{d-2} 2 pi rho^2 / d.
     let mut v = [1.0, 2.0 * rho];
     let mut out = if d == 0 { 1.0 } else { 2.0 * rho };
@@ -216,29 +217,40 @@ impl PoissonDisk {
         Ok(b)
     }
 
-    /// The estimated running time: the packing bound times the candidates times the
-    /// neighbour cells (times 6 for the maximal fill, twice for a count target).
+    /// The estimated running time ([`super::poisson_cost`]): the expected points of each
+    /// construction (the pilot and the final set for a count target) times their measured
+    /// cost a point, plus the grid. Calibrated within a factor 2 of measured runs for
+    /// Bridson's loop in 1 to 8 dimensions and the 2D maximal fill
+    /// (docs/budgets-generation.md); the maximal fill in 3 or more dimensions has no useful
+    /// estimate, and the deadline of [`generate_within`](Self::generate_within) bounds it.
     ///
     /// # Errors
     /// As [`new`](Self::new).
     pub fn cost(&self) -> Result<Cost> {
-        let b = self.max_points()?;
-        let d = self.dims as i32;
-        // Neighbour cells: the ball of radius ~ sqrt(d) + 1 cells, at most (2 reach + 1)^d.
-        let reach = (d as f64).sqrt().ceil() + 1.0;
-        let cells = ball_volume(self.dims, reach).min((2.0 * reach + 1.0).powi(d));
-        let per_point = f64::from(self.candidates) * cells
-            + if self.maximal {
-                6.0 * cells * f64::from(1u32 << self.dims)
+        self.max_points()?;
+        let (d, k) = (self.dims, self.candidates);
+        let points = |r: f64| {
+            let n = poisson_cost::expected_points(d, r, k, self.bound(r));
+            if self.maximal {
+                (1.15 * n).min(self.bound(r))
             } else {
-                0.0
-            };
-        let runs = if matches!(self.target, Target::Points(_)) {
-            2.0
-        } else {
-            1.0
+                n
+            }
         };
-        Ok(Cost::steps(runs * b * per_point, VISITS))
+        let one = |r: f64| {
+            let tiled = d == 2 && r < 1.0 / 6.0 && cells_per_axis(r, 2) >= 32.0;
+            poisson_cost::seconds(d, r, self.torus, k, self.maximal, points(r), tiled)
+        };
+        let seconds = match self.target {
+            Target::Radius(r) => one(r),
+            Target::Points(n) => {
+                let r0 = self.radius_for(n);
+                let ratio = points(r0) / n as f64;
+                let r1 = (r0 * ratio.powf(1.0 / d as f64)).min(1.0);
+                one(r0) + one(r1)
+            }
+        };
+        Ok(Cost::steps(seconds, Rate::per_second(1.0)))
     }
 
     /// The set, within the default budget.

@@ -21,7 +21,10 @@
 //! The result is a permutation of `0..W H`; thresholding at `t` (pixels of rank `< t W H`)
 //! gives the pattern of `round(t W H)` ones. Cost: each flip adds the kernel (`(2R+1)^2 =
 //! 169` weights) and updates two tournament trees (`O(R (R + log N))`); about `1.3 N`
-//! flips, so `O(N R (R + log N))` in all — 256×256 in under two seconds on one core.
+//! flips, so `O(N R (R + log N))` in all — 256×256 in half a second on one core, but
+//! past `2^16` pixels the trees leave the caches and a pixel costs up to five times more
+//! (2048×2048: about two minutes; see [`VoidAndCluster::cost`]). The estimate is checked
+//! against a [`Budget`] before anything runs, and the budget's deadline stops the loops.
 //!
 //! ```
 //! use qmckit::blue_noise::VoidAndCluster;
@@ -44,8 +47,8 @@ pub const MASK_MAX_SIDE: usize = 4096;
 /// The most pixels of a mask: 2^22.
 pub const MASK_MAX_PIXELS: usize = 1 << 22;
 
-/// Kernel-weight and tree-node updates a second (one core, release; a conservative figure).
-const UPDATES: Rate = Rate::per_second(4e8);
+/// The unit of [`VoidAndCluster::cost`]: pixel-microseconds.
+const PIXEL_MICROS: Rate = Rate::per_second(1e6);
 
 /// A void-and-cluster construction (builder).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -138,13 +141,26 @@ impl VoidAndCluster {
         (4.0 * self.sigma).ceil() as usize
     }
 
-    /// The estimated running time (see the module text).
+    /// The estimated running time, calibrated on measured masks (docs/budgets-generation.md):
+    /// `N` pixels cost `t(L) W(sigma) / W(1.5)` each, `L = log2 N`, with
+    /// `t(L) = 4.9 + 0.3 (L - 12)+ + 0.55 (L - 16)+^2` microseconds (the trees and energies
+    /// outgrow the caches past `2^16` pixels, and every flip's reads miss) and `W` a flip's
+    /// work, `kw kh + kh (kw + 2 L)` for the `kw x kh` kernel window.
     pub fn cost(&self) -> Cost {
         let n = (self.width * self.height) as f64;
-        let win = (2 * self.reach() + 1) as f64;
-        let (kw, kh) = (win.min(self.width as f64), win.min(self.height as f64));
-        let per_flip = kw * kh + kh * (kw + 2.0 * n.log2().max(1.0));
-        Cost::steps(1.5 * n * per_flip, UPDATES)
+        let l = n.log2().max(1.0);
+        let work = |reach: usize| {
+            let win = (2 * reach + 1) as f64;
+            let (kw, kh) = (win.min(self.width as f64), win.min(self.height as f64));
+            kw * kh + kh * (kw + 2.0 * l)
+        };
+        let default = VoidAndCluster {
+            sigma: 1.5,
+            ..*self
+        };
+        let scale = work(self.reach()) / work(default.reach());
+        let micros = 4.9 + 0.3 * (l - 12.0).max(0.0) + 0.55 * (l - 16.0).max(0.0).powi(2);
+        Cost::steps(n * micros * scale, PIXEL_MICROS)
     }
 
     /// The mask within the default budget.

@@ -134,3 +134,60 @@ impl<W: Write> PointWriter<W> {
         Ok(())
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::{Format, PointWriter, TEXT_CHUNK};
+
+    /// A sink that keeps the largest single write and the bytes in all.
+    #[derive(Default)]
+    struct Sink {
+        largest: usize,
+        bytes: Vec<u8>,
+    }
+
+    impl std::io::Write for Sink {
+        fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+            self.largest = self.largest.max(buf.len());
+            self.bytes.extend_from_slice(buf);
+            Ok(buf.len())
+        }
+
+        fn flush(&mut self) -> std::io::Result<()> {
+            Ok(())
+        }
+    }
+
+    #[test]
+    fn a_wide_point_is_written_in_pieces() {
+        // One point of 2^18 coordinates: about 5 MB of csv, never held whole.
+        let dims = 1 << 18;
+        let coords: Vec<u32> = (0..dims as u32)
+            .map(|i| i.wrapping_mul(2_654_435_761))
+            .collect();
+        for format in [Format::Csv, Format::U32] {
+            let mut w = PointWriter::new(Sink::default(), format, 1, dims).unwrap();
+            w.write(&coords, dims).unwrap();
+            w.write(&coords[..3], 3).unwrap();
+            let PointWriter::Text { out, .. } = w else {
+                panic!("a text writer")
+            };
+            assert!(out.largest <= TEXT_CHUNK + 32, "{}", out.largest);
+            let text = String::from_utf8(out.bytes).unwrap();
+            let lines: Vec<&str> = text.lines().collect();
+            assert_eq!(lines.len(), 2);
+            let sep = if format == Format::Csv { ',' } else { ' ' };
+            let values: Vec<&str> = lines[0].split(sep).collect();
+            assert_eq!(values.len(), dims);
+            for (v, &x) in values.iter().zip(&coords) {
+                match format {
+                    Format::Csv => {
+                        assert_eq!(v.parse::<f64>().unwrap(), f64::from(x) / 4294967296.0)
+                    }
+                    _ => assert_eq!(v.parse::<u32>().unwrap(), x),
+                }
+            }
+            assert_eq!(lines[1].split(sep).count(), 3);
+        }
+    }
+}
