@@ -119,12 +119,19 @@ impl GaussianBlueNoise {
         CUTOFF * self.sigma / (self.n as f64).sqrt()
     }
 
-    /// The estimated running time: iterations times `N` times the pairs within the cells.
+    /// The estimated running time: iterations times `N` times the pairs within the cells,
+    /// times `1 + 0.4 (log2 N - 16)+^2` for the cache misses of large sets.
     pub fn cost(&self) -> Cost {
         let n = self.n as f64;
         let g = (1.0 / self.cutoff()).floor();
         let per_point = if g >= 3.0 { 9.0 * n / (g * g) } else { n };
-        Cost::steps(f64::from(self.iterations) * n * (per_point + 4.0), TERMS)
+        // Past 2^16 points the neighbours' coordinates leave the caches: each term's read
+        // misses (measured: 10^6 points, 5 iterations, 137 s of CPU against 10 s in cache).
+        let memory = 1.0 + 0.4 * (n.log2() - 16.0).max(0.0).powi(2);
+        Cost::steps(
+            f64::from(self.iterations) * n * (per_point + 4.0) * memory,
+            TERMS,
+        )
     }
 
     /// The set within the default budget.
