@@ -90,15 +90,19 @@ impl BestCandidate {
         self.generate_within(&Budget::DEFAULT)
     }
 
-    /// The set, refused before it starts when [`cost`](Self::cost) exceeds `budget`.
+    /// The set, refused before it starts when [`cost`](Self::cost) exceeds `budget`, and
+    /// stopped at the budget's deadline (started here if the caller has not; the clock is
+    /// read once every [`crate::work::PACER_INTERVAL`] candidates).
     ///
     /// # Errors
-    /// [`Error::OverBudget`], [`Error::TooLarge`].
+    /// [`Error::OverBudget`], [`Error::TooLarge`], [`Error::OutOfTime`].
     pub fn generate_within(&self, budget: &Budget) -> Result<PointSet> {
+        let budget = budget.started();
         budget.check("best-candidate sampling", self.cost())?;
+        let mut pacer = budget.pacer("best-candidate sampling");
         let n = self.n as usize;
         let mut rng = Rng::new(self.seed, 0x4245_5354_4341_4E44);
-        let mut pts: Vec<[f64; 2]> = Vec::with_capacity(n);
+        let mut pts: Vec<[f64; 2]> = crate::size::vec_with_capacity(n)?;
         let mut grid = RingGrid::new(1);
         let first = [rng.fraction(), rng.fraction()].map(|c| f64::from(c) / SCALE);
         pts.push(first);
@@ -112,6 +116,7 @@ impl BestCandidate {
             let mut best = first;
             let mut best_d2 = -1.0;
             for _ in 0..tries {
+                pacer.tick()?;
                 let c = [rng.fraction(), rng.fraction()].map(|v| f64::from(v) / SCALE);
                 if let Some(d2) = grid.nearest_beyond(&pts, &c, best_d2) {
                     best_d2 = d2;

@@ -17,13 +17,27 @@
 use super::grid::{Grid, SCALE, axis_gap, quantize_units, to_unit};
 use super::rng::Rng;
 use super::shell::Shell;
+use crate::Result;
+use crate::work::Budget;
 
 /// The side, relative to `r`, below which a cube is no longer split: its points lie within
 /// `r (1 + sqrt(d) 2^-21)` of a sample at the end.
 pub(crate) const FINEST: f64 = 1.0 / (1u64 << 20) as f64;
 
-/// Runs Bridson's algorithm with `k` candidates a step into `grid` (empty).
-pub(crate) fn bridson<const D: usize>(grid: &mut Grid<D>, k: u32, rng: &mut Rng) {
+/// Runs Bridson's algorithm with `k` candidates a step into `grid` (empty), checking the
+/// deadline of the (started) `budget` about once every [`crate::work::PACER_INTERVAL`]
+/// neighbour-cell visits' worth of candidates.
+///
+/// # Errors
+/// [`crate::Error::OutOfTime`] past the deadline.
+pub(crate) fn bridson<const D: usize>(
+    grid: &mut Grid<D>,
+    k: u32,
+    rng: &mut Rng,
+    budget: &Budget,
+) -> Result<()> {
+    let mut pacer = budget.pacer("Poisson-disk sampling");
+    let step_weight = k.saturating_mul(grid.test_weight());
     let torus = grid.torus;
     let shell = Shell::<D>::new(grid.r * SCALE);
     let mut first = [0u32; D];
@@ -31,10 +45,11 @@ pub(crate) fn bridson<const D: usize>(grid: &mut Grid<D>, k: u32, rng: &mut Rng)
         *v = rng.fraction();
     }
     let Some(i0) = grid.insert(first) else {
-        return;
+        return Ok(());
     };
     let mut active: Vec<u32> = vec![i0 as u32];
     while !active.is_empty() {
+        pacer.tick_n(step_weight)?;
         let slot = rng.below(active.len());
         let Some(&centre_idx) = active.get(slot) else {
             break;
@@ -58,13 +73,14 @@ pub(crate) fn bridson<const D: usize>(grid: &mut Grid<D>, k: u32, rng: &mut Rng)
                     placed = true;
                     break;
                 }
-                return; // the point limit: stop with what we have
+                return Ok(()); // the point limit: stop with what we have
             }
         }
         if !placed {
             active.swap_remove(slot);
         }
     }
+    Ok(())
 }
 
 /// An axis-aligned cube of the maximal fill.
@@ -93,6 +109,17 @@ fn covered<const D: usize>(grid: &Grid<D>, cube: &Cube<D>) -> bool {
     })
 }
 
+/// Pushes `v`, growing `list` through [`crate::size::reserve`]: the cubes of a maximal fill
+/// in high dimension can multiply past any memory, and are refused at 1 GiB.
+fn push_checked<T>(list: &mut Vec<T>, v: T) -> Result<()> {
+    if list.len() == list.capacity() {
+        let more = list.len().max(64);
+        crate::size::reserve(list, more)?;
+    }
+    list.push(v);
+    Ok(())
+}
+
 /// A dart at the point `x` (quantized): inserted when free.
 fn dart<const D: usize>(grid: &mut Grid<D>, x: &[f64; D]) {
     let mut p = [0u32; D];
@@ -107,13 +134,27 @@ fn dart<const D: usize>(grid: &mut Grid<D>, x: &[f64; D]) {
     }
 }
 
-/// Fills `grid` up to a maximal set (see the module text).
-pub(crate) fn fill_maximal<const D: usize>(grid: &mut Grid<D>, rng: &mut Rng) {
+/// Fills `grid` up to a maximal set (see the module text), checking the deadline of the
+/// (started) `budget` as it goes. In 3 or more dimensions the cubes along the
+/// `(d - 2)`-dimensional intersections of sphere boundaries multiply at each split
+/// (`2^(d - 2)` a level, down to [`FINEST`]), so the running time cannot be bounded
+/// usefully in advance: the deadline is the bound.
+///
+/// # Errors
+/// [`crate::Error::OutOfTime`] past the deadline.
+pub(crate) fn fill_maximal<const D: usize>(
+    grid: &mut Grid<D>,
+    rng: &mut Rng,
+    budget: &Budget,
+) -> Result<()> {
+    let mut pacer = budget.pacer("maximal Poisson-disk fill");
+    let weight = grid.test_weight();
     let g = grid.g;
     let side = 1.0 / g as f64;
     let mut active: Vec<Cube<D>> = Vec::new();
     let cells = g.pow(D as u32);
     for code in 0..cells {
+        pacer.tick_n(weight)?;
         let mut c = [0usize; D];
         let mut rest = code;
         for ck in c.iter_mut() {
@@ -129,12 +170,13 @@ pub(crate) fn fill_maximal<const D: usize>(grid: &mut Grid<D>, rng: &mut Rng) {
         }
         let cube = Cube { lo, side };
         if !covered(grid, &cube) {
-            active.push(cube);
+            push_checked(&mut active, cube)?;
         }
     }
     let finest = grid.r * FINEST;
     while !active.is_empty() {
         for _ in 0..active.len() {
+            pacer.tick_n(weight)?;
             let Some(cube) = active.get(rng.below(active.len())).copied() else {
                 break;
             };
@@ -146,6 +188,7 @@ pub(crate) fn fill_maximal<const D: usize>(grid: &mut Grid<D>, rng: &mut Rng) {
         }
         let mut next = Vec::new();
         for cube in &active {
+            pacer.tick_n(weight.saturating_mul(1 << D))?;
             if covered(grid, cube) {
                 continue;
             }
@@ -167,10 +210,11 @@ pub(crate) fn fill_maximal<const D: usize>(grid: &mut Grid<D>, rng: &mut Rng) {
                 }
                 let c = Cube { lo, side: half };
                 if !covered(grid, &c) {
-                    next.push(c);
+                    push_checked(&mut next, c)?;
                 }
             }
         }
         active = next;
     }
+    Ok(())
 }

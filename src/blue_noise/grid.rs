@@ -12,6 +12,7 @@
 //! the neighbour test reads a cell's point only when there is one.
 
 use crate::size;
+use crate::work::Budget;
 use crate::{Error, Result};
 
 /// `2^32`, the 0.32 fixed-point scale.
@@ -94,6 +95,20 @@ pub(crate) fn cells_per_axis(r: f64, d: usize) -> f64 {
     ((d as f64).sqrt() / r).ceil().max(1.0)
 }
 
+/// The offsets along one axis that can reach a neighbour cell: `-reach ..= reach`, cut to
+/// the `g` cells there are. In the box an offset past `g - 1` leaves the grid; on the torus,
+/// when `2 reach + 1 > g`, offsets that differ by `g` name the same cell, so one offset of
+/// each residue is kept, the one of least magnitude (whose gap is the least, so the kept
+/// set of cells is the same). Visiting each cell once changes no answer of the free test.
+fn axis_offsets(reach: i64, g: i64, torus: bool) -> Vec<i64> {
+    if torus && 2 * reach + 1 > g {
+        (-((g - 1) / 2)..=g / 2).collect()
+    } else {
+        let m = if torus { reach } else { reach.min(g - 1) };
+        (-m..=m).collect()
+    }
+}
+
 /// A vector of `count` copies of `fill`, or [`Error::TooLarge`] past the allocation limit.
 fn try_vec<T: Copy>(count: usize, fill: T) -> Result<Vec<T>> {
     let bytes = size::bytes(count, core::mem::size_of::<T>())?;
@@ -108,11 +123,14 @@ fn try_vec<T: Copy>(count: usize, fill: T) -> Result<Vec<T>> {
 }
 
 impl<const D: usize> Grid<D> {
-    /// An empty grid for radius `r`, with room reserved for `capacity` points.
+    /// An empty grid for radius `r`, with room reserved for `capacity` points; the
+    /// enumeration of the neighbour offsets (up to `9^D` candidates) checks the deadline of
+    /// the (started) `budget`.
     ///
     /// # Errors
-    /// [`Error::TooLarge`] when the cells or the points pass the allocation limit.
-    pub(crate) fn new(r: f64, torus: bool, capacity: usize) -> Result<Self> {
+    /// [`Error::TooLarge`] when the cells or the points pass the allocation limit;
+    /// [`Error::OutOfTime`] past the deadline.
+    pub(crate) fn new(r: f64, torus: bool, capacity: usize, budget: &Budget) -> Result<Self> {
         let gf = cells_per_axis(r, D);
         let cells_f = gf.powi(D as i32);
         if cells_f > (size::MAX_ALLOC_BYTES / 4) as f64 {
@@ -130,20 +148,27 @@ impl<const D: usize> Grid<D> {
         pts.clear();
         let reach = (r * gf).ceil() as i64;
         let side = 1.0 / gf;
-        let mut offsets = Vec::new();
-        let span = 2 * reach + 1;
+        let axis = axis_offsets(reach, g as i64, torus);
+        let span = axis.len();
         let total = span.pow(D as u32);
+        let mut pacer = budget.pacer("Poisson-disk grid");
+        let mut offsets = Vec::new();
         for code in 0..total {
+            pacer.tick()?;
             let mut o = [0i64; D];
             let mut c = code;
             let mut gap2 = 0.0;
             for slot in o.iter_mut() {
-                *slot = c % span - reach;
+                *slot = axis.get(c % span).copied().unwrap_or(0);
                 c /= span;
                 let gap = (slot.abs() - 1).max(0) as f64 * side;
                 gap2 += gap * gap;
             }
             if gap2 < r * r {
+                if offsets.len() == offsets.capacity() {
+                    let more = offsets.len().max(64);
+                    size::reserve(&mut offsets, more)?;
+                }
                 offsets.push(o);
             }
         }
@@ -241,6 +266,15 @@ impl<const D: usize> Grid<D> {
     /// The neighbour-cell offsets (see [`Grid::new`]), nearest first.
     pub(crate) fn neighbour_offsets(&self) -> &[[i64; D]] {
         &self.offsets
+    }
+
+    /// The neighbour cells a free test may visit, in units of 64 (at least 1): the weight
+    /// of one test for a [`crate::work::Pacer`], so that the clock is read about once every
+    /// `2^18` cell visits however many cells a test reads.
+    pub(crate) fn test_weight(&self) -> u32 {
+        u32::try_from(self.offsets.len() / 64)
+            .unwrap_or(u32::MAX)
+            .max(1)
     }
 
     /// The largest offset along an axis.

@@ -27,6 +27,8 @@ mod point_set;
 #[cfg(feature = "analysis")]
 pub mod poisson;
 #[cfg(feature = "analysis")]
+mod poisson_cost;
+#[cfg(feature = "analysis")]
 mod rng;
 #[cfg(feature = "analysis")]
 mod shell;

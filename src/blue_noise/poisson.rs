@@ -23,9 +23,13 @@
 //! loop.
 //!
 //! Every pair of the result is at least `r` apart, computed from the written 0.32
-//! coordinates (`x = c / 2^32`) in `f64`. Cost: `O(N k c)` for `c` neighbour cells (21 in
-//! 2D), estimated from the packing bound `N <= (1 + r)^d / V_d(r/2)` before anything runs
-//! and checked against a [`Budget`]; the maximal fill costs a few times more.
+//! coordinates (`x = c / 2^32`) in `f64`. Cost: `O(N (k c_d + v))` for the `v` neighbour
+//! cells of a full test (25 in 2D, 6095 in 5D, about 10^6 in 8D) and a rejected
+//! candidate's test `c_d`, estimated before anything runs ([`PoissonDisk::cost`], the model
+//! and its measured constants in `poisson_cost`) and checked against a [`Budget`]; the
+//! budget's deadline then bounds the run whatever the estimate said. The maximal fill in 3
+//! or more dimensions has no useful estimate (its cubes multiply at each split): there the
+//! deadline is the bound.
 //!
 //! ```
 //! use qmckit::blue_noise::PoissonDisk;
@@ -37,6 +41,7 @@
 use super::PointSet;
 use super::bridson::{bridson, fill_maximal};
 use super::grid::{Grid, cells_per_axis};
+use super::poisson_cost;
 use super::rng::Rng;
 use super::tiles::bridson_tiled;
 use crate::work::{Budget, Cost, Rate};
@@ -47,10 +52,6 @@ pub const POISSON_MAX_DIMS: usize = 8;
 
 /// The most points a set may be asked to hold (by its packing bound): 2^28.
 pub const POISSON_MAX_POINTS: u64 = 1 << 28;
-
-/// Neighbour-cell visits a second of Bridson's loop (2D, one core, release; a conservative
-/// figure, so estimates err on the long side).
-const VISITS: Rate = Rate::per_second(5e8);
 
 /// What the size of the set is given by.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -71,7 +72,7 @@ pub struct PoissonDisk {
 }
 
 /// The volume of the `d`-ball of radius `rho`: `pi^(d/2) rho^d / Gamma(d/2 + 1)`.
-fn ball_volume(d: usize, rho: f64) -> f64 {
+pub(crate) fn ball_volume(d: usize, rho: f64) -> f64 {
     // V_0 = 1, V_1 = 2 rho, V_d = V_{d-2} 2 pi rho^2 / d.
     let mut v = [1.0, 2.0 * rho];
     let mut out = if d == 0 { 1.0 } else { 2.0 * rho };
@@ -216,29 +217,40 @@ impl PoissonDisk {
         Ok(b)
     }
 
-    /// The estimated running time: the packing bound times the candidates times the
-    /// neighbour cells (times 6 for the maximal fill, twice for a count target).
+    /// The estimated running time ([`super::poisson_cost`]): the expected points of each
+    /// construction (the pilot and the final set for a count target) times their measured
+    /// cost a point, plus the grid. Calibrated within a factor 2 of measured runs for
+    /// Bridson's loop in 1 to 8 dimensions and the 2D maximal fill
+    /// (docs/budgets-generation.md); the maximal fill in 3 or more dimensions has no useful
+    /// estimate, and the deadline of [`generate_within`](Self::generate_within) bounds it.
     ///
     /// # Errors
     /// As [`new`](Self::new).
     pub fn cost(&self) -> Result<Cost> {
-        let b = self.max_points()?;
-        let d = self.dims as i32;
-        // Neighbour cells: the ball of radius ~ sqrt(d) + 1 cells, at most (2 reach + 1)^d.
-        let reach = (d as f64).sqrt().ceil() + 1.0;
-        let cells = ball_volume(self.dims, reach).min((2.0 * reach + 1.0).powi(d));
-        let per_point = f64::from(self.candidates) * cells
-            + if self.maximal {
-                6.0 * cells * f64::from(1u32 << self.dims)
+        self.max_points()?;
+        let (d, k) = (self.dims, self.candidates);
+        let points = |r: f64| {
+            let n = poisson_cost::expected_points(d, r, k, self.bound(r));
+            if self.maximal {
+                (1.15 * n).min(self.bound(r))
             } else {
-                0.0
-            };
-        let runs = if matches!(self.target, Target::Points(_)) {
-            2.0
-        } else {
-            1.0
+                n
+            }
         };
-        Ok(Cost::steps(runs * b * per_point, VISITS))
+        let one = |r: f64| {
+            let tiled = d == 2 && r < 1.0 / 6.0 && cells_per_axis(r, 2) >= 32.0;
+            poisson_cost::seconds(d, r, self.torus, k, self.maximal, points(r), tiled)
+        };
+        let seconds = match self.target {
+            Target::Radius(r) => one(r),
+            Target::Points(n) => {
+                let r0 = self.radius_for(n);
+                let ratio = points(r0) / n as f64;
+                let r1 = (r0 * ratio.powf(1.0 / d as f64)).min(1.0);
+                one(r0) + one(r1)
+            }
+        };
+        Ok(Cost::steps(seconds, Rate::per_second(1.0)))
     }
 
     /// The set, within the default budget.
@@ -249,20 +261,20 @@ impl PoissonDisk {
         self.generate_within(&Budget::DEFAULT)
     }
 
-    /// The set, refused before it starts when [`cost`](Self::cost) exceeds `budget`.
+    /// The set, refused before it starts when [`cost`](Self::cost) exceeds `budget`, and
+    /// stopped at the budget's deadline (started here if the caller has not): a run admitted
+    /// under a budget of `B` seconds ends within about `1.25 B` whatever the estimate said.
     ///
     /// # Errors
-    /// [`Error::OverBudget`], [`Error::TooLarge`].
+    /// [`Error::OverBudget`], [`Error::TooLarge`], [`Error::OutOfTime`].
     pub fn generate_within(&self, budget: &Budget) -> Result<PointSet> {
+        let budget = budget.started();
         budget.check("Poisson-disk sampling", self.cost()?)?;
         let (set, _) = match self.target {
-            Target::Radius(r) => self.run(r)?,
+            Target::Radius(r) => self.run(r, &budget)?,
             Target::Points(n) => {
-                let r0 = self.radius_for(n);
-                let (pilot, _) = self.run(r0)?;
-                let ratio = pilot.count() as f64 / n as f64;
-                let r1 = r0 * ratio.powf(1.0 / self.dims as f64);
-                self.run(r1.min(1.0))?
+                let r1 = self.corrected_radius(n, &budget)?;
+                self.run(r1, &budget)?
             }
         };
         Ok(set)
@@ -277,40 +289,49 @@ impl PoissonDisk {
         match self.target {
             Target::Radius(r) => Ok(r),
             Target::Points(n) => {
+                let budget = budget.started();
                 budget.check("Poisson-disk sampling", self.cost()?)?;
-                let r0 = self.radius_for(n);
-                let (pilot, _) = self.run(r0)?;
-                let ratio = pilot.count() as f64 / n as f64;
-                Ok((r0 * ratio.powf(1.0 / self.dims as f64)).min(1.0))
+                self.corrected_radius(n, &budget)
             }
         }
     }
 
+    /// The radius of a count target after its pilot set: `r0 (N_pilot / n)^(1/d)`, at most 1.
+    fn corrected_radius(&self, n: u64, budget: &Budget) -> Result<f64> {
+        let r0 = self.radius_for(n);
+        let (pilot, _) = self.run(r0, budget)?;
+        let ratio = pilot.count() as f64 / n as f64;
+        Ok((r0 * ratio.powf(1.0 / self.dims as f64)).min(1.0))
+    }
+
     /// One construction at radius `r`: the set and `r`.
     /// In 2D the tiled, parallel loop grows the set ([`super::tiles`]) where the grid is
-    /// large enough; elsewhere the sequential loop.
-    fn run(&self, r: f64) -> Result<(PointSet, f64)> {
+    /// large enough; elsewhere the sequential loop. Every loop checks `budget`'s deadline.
+    fn run(&self, r: f64, budget: &Budget) -> Result<(PointSet, f64)> {
         let k = self.candidates;
         match self.dims {
-            1 => self.run_d::<1>(r, |g, rng| bridson(g, k, rng)),
-            2 => self.run_d::<2>(r, |g, rng| {
-                if !bridson_tiled(g, k, self.seed) {
-                    bridson(g, k, rng);
+            1 => self.run_d::<1>(r, budget, |g, rng| bridson(g, k, rng, budget)),
+            2 => self.run_d::<2>(r, budget, |g, rng| {
+                if bridson_tiled(g, k, self.seed, budget)? {
+                    Ok(())
+                } else {
+                    bridson(g, k, rng, budget)
                 }
             }),
-            3 => self.run_d::<3>(r, |g, rng| bridson(g, k, rng)),
-            4 => self.run_d::<4>(r, |g, rng| bridson(g, k, rng)),
-            5 => self.run_d::<5>(r, |g, rng| bridson(g, k, rng)),
-            6 => self.run_d::<6>(r, |g, rng| bridson(g, k, rng)),
-            7 => self.run_d::<7>(r, |g, rng| bridson(g, k, rng)),
-            _ => self.run_d::<8>(r, |g, rng| bridson(g, k, rng)),
+            3 => self.run_d::<3>(r, budget, |g, rng| bridson(g, k, rng, budget)),
+            4 => self.run_d::<4>(r, budget, |g, rng| bridson(g, k, rng, budget)),
+            5 => self.run_d::<5>(r, budget, |g, rng| bridson(g, k, rng, budget)),
+            6 => self.run_d::<6>(r, budget, |g, rng| bridson(g, k, rng, budget)),
+            7 => self.run_d::<7>(r, budget, |g, rng| bridson(g, k, rng, budget)),
+            _ => self.run_d::<8>(r, budget, |g, rng| bridson(g, k, rng, budget)),
         }
     }
 
     fn run_d<const D: usize>(
         &self,
         r: f64,
-        grow: impl FnOnce(&mut Grid<D>, &mut Rng),
+        budget: &Budget,
+        grow: impl FnOnce(&mut Grid<D>, &mut Rng) -> Result<()>,
     ) -> Result<(PointSet, f64)> {
         let bound = self.bound(r);
         if bound.is_nan() || bound > POISSON_MAX_POINTS as f64 {
@@ -323,11 +344,11 @@ impl PoissonDisk {
         let _ = cells_per_axis(r, D);
         // Reserve the expected count; the vector grows if a set is denser.
         let expect = (1.2 * self.packing() / ball_volume(D, 0.5 * r)).min(bound) as usize + 16;
-        let mut grid = Grid::<D>::new(r, self.torus, expect)?;
+        let mut grid = Grid::<D>::new(r, self.torus, expect, budget)?;
         let mut rng = Rng::new(self.seed, 0x5045_4953_534F_4E31 ^ D as u64);
-        grow(&mut grid, &mut rng);
+        grow(&mut grid, &mut rng)?;
         if self.maximal {
-            fill_maximal(&mut grid, &mut rng);
+            fill_maximal(&mut grid, &mut rng, budget)?;
         }
         let mut coords =
             crate::size::vec_zeroed::<u32>(crate::size::coordinates(grid.pts.len() as u64, D)?)?;

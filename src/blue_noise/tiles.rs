@@ -39,6 +39,8 @@ use rayon::prelude::*;
 use super::grid::{Grid, SCALE, quantize_units};
 use super::rng::Rng;
 use super::shell::Shell;
+use crate::Result;
+use crate::work::Budget;
 
 /// Cells a tile side (at most).
 pub(crate) const TILE: usize = 128;
@@ -141,16 +143,27 @@ struct Context<'a> {
     /// The margin around a tile where its loop places points, in cells.
     margin: usize,
     phase: usize,
+    /// The (started) budget whose deadline every tile checks.
+    budget: Budget,
 }
 
 /// Grows a Bridson set with `k` candidates into the empty 2D `grid` by tiles; `false`
 /// (and nothing done) when the grid is too small or the radius too large for tiles.
-pub(crate) fn bridson_tiled(grid: &mut Grid<2>, k: u32, seed: u64) -> bool {
+/// Every tile checks the deadline of the (started) `budget` as it grows.
+///
+/// # Errors
+/// [`crate::Error::OutOfTime`] past the deadline (from the first tile that sees it).
+pub(crate) fn bridson_tiled(
+    grid: &mut Grid<2>,
+    k: u32,
+    seed: u64,
+    budget: &Budget,
+) -> Result<bool> {
     if grid.r >= 1.0 / 6.0 {
-        return false;
+        return Ok(false);
     }
     let Some(layout) = Layout::new(grid.g, grid.torus) else {
-        return false;
+        return Ok(false);
     };
     let n = layout.n;
     let margin = (2.0 * grid.r * grid.g as f64).ceil() as usize;
@@ -218,22 +231,25 @@ pub(crate) fn bridson_tiled(grid: &mut Grid<2>, k: u32, seed: u64) -> bool {
                 shell: Shell::<2>::new(grid.r * SCALE),
                 margin,
                 phase,
+                budget: *budget,
             };
-            jobs.par_iter().map(|job| grow(&ctx, job)).collect()
+            jobs.par_iter()
+                .map(|job| grow(&ctx, job))
+                .collect::<Result<Vec<_>>>()?
         };
         spilled = later_spills;
         deferred = later_steps;
         for out in grown {
             for p in out.new {
                 if grid.insert(p).is_none() {
-                    return true; // the point limit: stop with what we have
+                    return Ok(true); // the point limit: stop with what we have
                 }
             }
             spilled.extend(out.spilled);
             deferred.extend(out.deferred);
         }
     }
-    true
+    Ok(true)
 }
 
 /// The private copy of a tile's cells (with halo) and its free test.
@@ -385,7 +401,11 @@ impl Frame {
 }
 
 /// Grows one tile (see the module text).
-fn grow(ctx: &Context, job: &Job) -> Grown {
+///
+/// # Errors
+/// [`crate::Error::OutOfTime`] past the deadline of `ctx.budget`.
+fn grow(ctx: &Context, job: &Job) -> Result<Grown> {
+    let mut pacer = ctx.budget.pacer("Poisson-disk sampling");
     let layout = ctx.layout;
     let g = layout.g;
     let halo = ctx.margin + ctx.grid.reach() + 1;
@@ -505,6 +525,7 @@ fn grow(ctx: &Context, job: &Job) -> Grown {
     }
     let mut pending = Vec::new();
     while !active.is_empty() {
+        pacer.tick_n(ctx.k)?;
         let slot = rng.below(active.len());
         let Some(&centre) = active.get(slot) else {
             break;
@@ -546,7 +567,7 @@ fn grow(ctx: &Context, job: &Job) -> Grown {
             active.swap_remove(slot);
         }
     }
-    out
+    Ok(out)
 }
 
 /// The coordinate `x` of a point in the (unwrapped) cell `c` of a `g`-cell axis, in the

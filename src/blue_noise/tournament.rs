@@ -28,10 +28,15 @@ impl Tournament {
         }
     }
 
-    /// A tree over `vals` (at most 2^31 of them).
-    pub(crate) fn new(best: Best, vals: &[i64]) -> Self {
+    /// A tree over `vals` (at most 2^31 of them), its `12 p` bytes (`p` the next power of
+    /// two) checked by [`crate::size`].
+    ///
+    /// # Errors
+    /// [`crate::Error::TooLarge`] past the allocation limit.
+    pub(crate) fn new(best: Best, vals: &[i64]) -> crate::Result<Self> {
         let p = vals.len().next_power_of_two().max(2);
-        let mut v = vec![Self::sentinel(best); p];
+        let mut v = crate::size::vec_zeroed::<i64>(p)?;
+        v.fill(Self::sentinel(best));
         if let Some(head) = v.get_mut(..vals.len()) {
             head.copy_from_slice(vals);
         }
@@ -39,12 +44,12 @@ impl Tournament {
             best,
             p,
             vals: v,
-            win: vec![0; p],
+            win: crate::size::vec_zeroed::<u32>(p)?,
         };
         for i in (1..p).rev() {
             t.recompute(i);
         }
-        t
+        Ok(t)
     }
 
     #[inline]

@@ -21,7 +21,10 @@
 //! The result is a permutation of `0..W H`; thresholding at `t` (pixels of rank `< t W H`)
 //! gives the pattern of `round(t W H)` ones. Cost: each flip adds the kernel (`(2R+1)^2 =
 //! 169` weights) and updates two tournament trees (`O(R (R + log N))`); about `1.3 N`
-//! flips, so `O(N R (R + log N))` in all — 256×256 in under two seconds on one core.
+//! flips, so `O(N R (R + log N))` in all — 256×256 in half a second on one core, but
+//! past `2^16` pixels the trees leave the caches and a pixel costs up to five times more
+//! (2048×2048: about two minutes; see [`VoidAndCluster::cost`]). The estimate is checked
+//! against a [`Budget`] before anything runs, and the budget's deadline stops the loops.
 //!
 //! ```
 //! use qmckit::blue_noise::VoidAndCluster;
@@ -35,6 +38,7 @@
 use super::rng::Rng;
 use super::tournament::{Best, Tournament};
 use crate::work::{Budget, Cost, Rate};
+
 use crate::{Error, Result};
 
 /// The largest side of a mask.
@@ -43,8 +47,8 @@ pub const MASK_MAX_SIDE: usize = 4096;
 /// The most pixels of a mask: 2^22.
 pub const MASK_MAX_PIXELS: usize = 1 << 22;
 
-/// Kernel-weight and tree-node updates a second (one core, release; a conservative figure).
-const UPDATES: Rate = Rate::per_second(4e8);
+/// The unit of [`VoidAndCluster::cost`]: pixel-microseconds.
+const PIXEL_MICROS: Rate = Rate::per_second(1e6);
 
 /// A void-and-cluster construction (builder).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -137,13 +141,26 @@ impl VoidAndCluster {
         (4.0 * self.sigma).ceil() as usize
     }
 
-    /// The estimated running time (see the module text).
+    /// The estimated running time, calibrated on measured masks (docs/budgets-generation.md):
+    /// `N` pixels cost `t(L) W(sigma) / W(1.5)` each, `L = log2 N`, with
+    /// `t(L) = 4.9 + 0.3 (L - 12)+ + 0.55 (L - 16)+^2` microseconds (the trees and energies
+    /// outgrow the caches past `2^16` pixels, and every flip's reads miss) and `W` a flip's
+    /// work, `kw kh + kh (kw + 2 L)` for the `kw x kh` kernel window.
     pub fn cost(&self) -> Cost {
         let n = (self.width * self.height) as f64;
-        let win = (2 * self.reach() + 1) as f64;
-        let (kw, kh) = (win.min(self.width as f64), win.min(self.height as f64));
-        let per_flip = kw * kh + kh * (kw + 2.0 * n.log2().max(1.0));
-        Cost::steps(1.5 * n * per_flip, UPDATES)
+        let l = n.log2().max(1.0);
+        let work = |reach: usize| {
+            let win = (2 * reach + 1) as f64;
+            let (kw, kh) = (win.min(self.width as f64), win.min(self.height as f64));
+            kw * kh + kh * (kw + 2.0 * l)
+        };
+        let default = VoidAndCluster {
+            sigma: 1.5,
+            ..*self
+        };
+        let scale = work(self.reach()) / work(default.reach());
+        let micros = 4.9 + 0.3 * (l - 12.0).max(0.0) + 0.55 * (l - 16.0).max(0.0).powi(2);
+        Cost::steps(n * micros * scale, PIXEL_MICROS)
     }
 
     /// The mask within the default budget.
@@ -154,28 +171,41 @@ impl VoidAndCluster {
         self.generate_within(&Budget::DEFAULT)
     }
 
-    /// The mask, refused before it starts when [`cost`](Self::cost) exceeds `budget`.
+    /// The mask, refused before it starts when [`cost`](Self::cost) exceeds `budget`, and
+    /// stopped at the budget's deadline (started here if the caller has not; the clock is
+    /// read about once every [`crate::work::PACER_INTERVAL`] flips of the 13 x 13 kernel).
     ///
     /// # Errors
-    /// [`Error::OverBudget`], [`Error::TooLarge`].
+    /// [`Error::OverBudget`], [`Error::TooLarge`], [`Error::OutOfTime`].
     pub fn generate_within(&self, budget: &Budget) -> Result<RankMask> {
+        let budget = budget.started();
         budget.check("void-and-cluster mask", self.cost())?;
+        let mut pacer = budget.pacer("void-and-cluster mask");
         let n = self.width * self.height;
         let kernel = Kernel::new(self.width, self.height, self.sigma, self.reach());
-        let mut state = State::new(self.width, self.height, kernel);
+        // One flip's weight for the pacer: its kernel weights over the default 13 x 13.
+        let weight = u32::try_from(kernel.w.len() / 169)
+            .unwrap_or(u32::MAX)
+            .max(1);
+        let mut state = State::new(self.width, self.height, kernel)?;
         let n1 = (n / 10).min((n - 1) / 2).max(1).min(n);
         // Distinct random pixels: a partial Fisher–Yates shuffle.
-        let mut order: Vec<u32> = (0..n as u32).collect();
+        let mut order: Vec<u32> = crate::size::vec_zeroed(n)?;
+        for (i, o) in order.iter_mut().enumerate() {
+            *o = i as u32;
+        }
         let mut rng = Rng::new(self.seed, 0x564F_4944_434C_5553);
         for i in 0..n1 {
             let j = i + rng.below(n - i);
             order.swap(i, j);
         }
         for &p in order.get(..n1).unwrap_or(&[]) {
+            pacer.tick_n(weight)?;
             state.flip(p as usize, true);
         }
         // Relax (bounded, so no input can loop forever; it settles in far fewer steps).
         for _ in 0..4 * n {
+            pacer.tick_n(2 * weight)?;
             let Some(c) = state.cluster() else { break };
             state.flip(c, false);
             match state.void() {
@@ -186,16 +216,19 @@ impl VoidAndCluster {
                 }
             }
         }
-        let mut ranks = vec![0u32; n];
+        let mut ranks = crate::size::vec_zeroed::<u32>(n)?;
         let mut removing = state.clone();
         for rank in (0..n1).rev() {
+            pacer.tick_n(weight)?;
             let Some(c) = removing.cluster() else { break };
             removing.flip(c, false);
             if let Some(slot) = ranks.get_mut(c) {
                 *slot = rank as u32;
             }
         }
+        drop(removing);
         for rank in n1..n {
+            pacer.tick_n(weight)?;
             let Some(v) = state.void() else { break };
             state.flip(v, true);
             if let Some(slot) = ranks.get_mut(v) {
@@ -274,19 +307,21 @@ struct State {
 }
 
 impl State {
-    fn new(width: usize, height: usize, kernel: Kernel) -> Self {
+    fn new(width: usize, height: usize, kernel: Kernel) -> Result<Self> {
         let n = width * height;
-        let energy = vec![0i64; n];
-        let ones = Tournament::new(Best::Max, &vec![Tournament::sentinel(Best::Max); n]);
-        let zeros = Tournament::new(Best::Min, &energy);
-        State {
+        let mut energy = crate::size::vec_zeroed::<i64>(n)?;
+        energy.fill(Tournament::sentinel(Best::Max));
+        let ones = Tournament::new(Best::Max, &energy)?;
+        energy.fill(0);
+        let zeros = Tournament::new(Best::Min, &energy)?;
+        Ok(State {
             width,
             height,
             kernel,
             energy,
             ones,
             zeros,
-        }
+        })
     }
 
     fn cluster(&self) -> Option<usize> {

@@ -36,6 +36,7 @@
 
 use super::spread;
 use crate::error::Result;
+use crate::work::Budget;
 
 /// The longest sequence [`fill`] generates, `2^30` points.
 pub const MAX_POINTS: usize = spread::MAX_POINTS;
@@ -57,8 +58,25 @@ pub const fn workspace_len(n: usize) -> Result<usize> {
 /// [`crate::Error::TooManyPoints`] past [`MAX_POINTS`]; [`crate::Error::BufferLength`] for
 /// a short `work`.
 pub fn fill(seed: u64, out: &mut [[u32; 2]], work: &mut [u32]) -> Result<()> {
+    fill_within(seed, out, work, &Budget::UNLIMITED)
+}
+
+/// [`fill`] under the deadline of `budget` (started on entry if it was not; the same
+/// points bit for bit when it finishes). The spread, `O(n log n)`, checks the deadline
+/// ([`spread::spread_within`]); the `O(n)` PMJ02 fill before it does not.
+///
+/// # Errors
+/// As [`fill`]; [`crate::Error::OutOfTime`] past the deadline (`out` is then not the
+/// sequence: discard it).
+pub fn fill_within(
+    seed: u64,
+    out: &mut [[u32; 2]],
+    work: &mut [u32],
+    budget: &Budget,
+) -> Result<()> {
     spread::workspace_len(out.len())?;
     spread::check_work(out.len(), work.len())?;
+    let budget = budget.started();
     super::fill(seed, out)?;
-    spread::spread(out, work)
+    spread::spread_within(out, work, &budget)
 }

@@ -71,6 +71,7 @@
 use super::{ceil_log2, check_len, top};
 use crate::error::{Error, Result};
 use crate::hash::uniform;
+use crate::work::{Budget, Pacer};
 
 /// The default number of best-candidate trials a point: 100, as pmj-cpp's
 /// `kBestCandidateSamples` (UTK's `SamplerPMJ` uses 10; more candidates give slightly
@@ -276,9 +277,10 @@ impl Pass<'_> {
         candidates: u32,
         pts: &mut [[u32; 2]],
         k: usize,
-        xp: u32,
-        yp: u32,
+        (xp, yp): (u32, u32),
+        pacer: &mut Pacer,
     ) -> Result<()> {
+        pacer.tick_n(candidates)?;
         let m = self.m;
         let h = m.div_ceil(2);
         let (gx, gy) = (m - h, h);
@@ -326,6 +328,23 @@ impl Pass<'_> {
 /// [`Error::TooManyPoints`] past [`MAX_POINTS`]; [`Error::InvalidParameter`] for
 /// `candidates` outside `1..=`[`MAX_CANDIDATES`]; [`Error::BufferLength`] for a short `work`.
 pub fn fill(seed: u64, candidates: u32, out: &mut [[u32; 2]], work: &mut [u32]) -> Result<()> {
+    fill_within(seed, candidates, out, work, &Budget::UNLIMITED)
+}
+
+/// [`fill`] under the deadline of `budget` (started on entry if it was not; the same
+/// points bit for bit when it finishes): the clock is read (with `std`) about once every
+/// [`crate::work::PACER_INTERVAL`] candidates.
+///
+/// # Errors
+/// As [`fill`]; [`Error::OutOfTime`] past the deadline (`out` then holds only a prefix of
+/// the sequence: discard it).
+pub fn fill_within(
+    seed: u64,
+    candidates: u32,
+    out: &mut [[u32; 2]],
+    work: &mut [u32],
+    budget: &Budget,
+) -> Result<()> {
     let n = out.len();
     let need = workspace_len(n)?;
     if candidates == 0 || candidates > MAX_CANDIDATES {
@@ -358,6 +377,7 @@ pub fn fill(seed: u64, candidates: u32, out: &mut [[u32; 2]], work: &mut [u32]) 
         side: 0,
         slots: 1,
     };
+    let mut pacer = budget.started().pacer("PMJ02 best candidate");
     out[0] = [uniform(seed, 0, 0), uniform(seed, 0, 1)];
     let mut q = 1usize; // 4^h points placed at the start of a round
     let mut m = 0u32; // log2(q)
@@ -367,14 +387,8 @@ pub fn fill(seed: u64, candidates: u32, out: &mut [[u32; 2]], work: &mut [u32]) 
         let h = (m + 2) / 2;
         for i in 0..q.min(n - q) {
             let p = out[i];
-            pass.place(
-                seed,
-                candidates,
-                out,
-                q + i,
-                top(p[0], h) ^ 1,
-                top(p[1], h) ^ 1,
-            )?;
+            let sub = (top(p[0], h) ^ 1, top(p[1], h) ^ 1);
+            pass.place(seed, candidates, out, q + i, sub, &mut pacer)?;
         }
         if 2 * q >= n {
             break;
@@ -397,7 +411,7 @@ pub fn fill(seed: u64, candidates: u32, out: &mut [[u32; 2]], work: &mut [u32]) 
                     xp ^= 1;
                     yp ^= 1;
                 }
-                pass.place(seed, candidates, out, start + i, xp, yp)?;
+                pass.place(seed, candidates, out, start + i, (xp, yp), &mut pacer)?;
             }
         }
         q *= 4;

@@ -55,6 +55,7 @@
 
 use super::{ceil_log2, check_len, top};
 use crate::error::{Error, Result};
+use crate::work::Budget;
 
 /// The longest sequence [`spread`] accepts, `2^30` points.
 pub const MAX_POINTS: usize = 1 << 30;
@@ -453,8 +454,22 @@ pub const fn check_work(n: usize, work: usize) -> Result<()> {
 /// width `2^-k` or a cell of the `2^floor(k/2) x 2^ceil(k/2)` grid (then `pts` is not a
 /// (0, 2)-sequence), with `pts` unchanged.
 pub fn spread(pts: &mut [[u32; 2]], work: &mut [u32]) -> Result<()> {
+    spread_within(pts, work, &Budget::UNLIMITED)
+}
+
+/// [`spread`] under the deadline of `budget` (started on entry if it was not): the sweep
+/// reads the clock (with `std`) about once every [`crate::work::PACER_INTERVAL`] points
+/// its flips visit, so it stops within a few milliseconds of the deadline. No estimate is
+/// checked here: the caller estimates (`O(n log n)`, see the module text).
+///
+/// # Errors
+/// As [`spread`]; [`Error::OutOfTime`] past the deadline, with `pts` a nested scramble of
+/// the input (still a (0, 2)-sequence, every net intact) whose flips are only partly
+/// chosen: not the result, to be discarded.
+pub fn spread_within(pts: &mut [[u32; 2]], work: &mut [u32], budget: &Budget) -> Result<()> {
     let n = pts.len();
     check_work(n, work.len())?;
+    let mut pacer = budget.started().pacer("PMJ02BN spread");
     let top_k = ceil_log2(n);
     if top_k < 2 {
         return Ok(());
@@ -465,7 +480,10 @@ pub fn spread(pts: &mut [[u32; 2]], work: &mut [u32]) -> Result<()> {
     let deepest = top_k - 1;
     for depth in 1..=deepest {
         for axis in 0..2 {
+            // A flip visits the points of its column in every prefix: about `n 2^-depth`.
+            let weight = u32::try_from((n >> depth).max(1)).unwrap_or(u32::MAX);
             for q in 0..1u32 << depth {
+                pacer.tick_n(weight)?;
                 let flip = Flip { axis, depth, q };
                 // Prefixes whose cells the flip keeps: both energies in one pass. The
                 // others (the flip swaps their half-columns): before, apply, after.

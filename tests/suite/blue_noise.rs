@@ -604,6 +604,8 @@ fn gaussian_blue_noise_has_near_zero_low_frequency_power() {
     );
 }
 
+pub(crate) mod budget;
+
 #[cfg(feature = "cli")]
 mod cli {
     use super::{dist2, min_distance};

@@ -445,3 +445,67 @@ mod bn {
         assert!(make(4, 64).iter().zip(&make(3, 64)).all(|(a, b)| a != b));
     }
 }
+
+/// The deadline of a started budget stops the PMJ constructions inside their loops.
+mod deadline {
+    use qmckit::Error;
+    use qmckit::pmj::{bn, christensen};
+    use qmckit::work::Budget;
+    use std::time::{Duration, Instant};
+
+    /// Times `job(n)` without a limit, doubling `n` until it takes 0.1 s; then runs it
+    /// under a budget of that time started `1.15` of it earlier, so the deadline falls a
+    /// tenth of the way in: it must stop with [`Error::OutOfTime`] near the deadline (a
+    /// loop that never reads the clock would finish instead).
+    fn stops_at_the_deadline(what: &str, job: impl Fn(usize, &Budget) -> qmckit::Result<()>) {
+        let mut n = 1 << 12;
+        let seconds = loop {
+            let t = Instant::now();
+            job(n, &Budget::UNLIMITED).unwrap();
+            let s = t.elapsed().as_secs_f64();
+            if s >= 0.1 || n >= 1 << 22 {
+                break s;
+            }
+            n *= 2;
+        };
+        let budget = Budget::seconds(seconds).unwrap().started();
+        let start = Instant::now();
+        std::thread::sleep(Duration::from_secs_f64(1.15 * seconds));
+        let got = job(n, &budget);
+        let took = start.elapsed().as_secs_f64();
+        assert!(
+            matches!(got, Err(Error::OutOfTime { .. })),
+            "{what}: {got:?} for {n} points after {took:.3} s of {seconds:.3} s"
+        );
+        assert!(
+            took < 1.25 * seconds + 0.25,
+            "{what}: stopped {took:.3} s after the start of a {seconds:.3} s budget"
+        );
+    }
+
+    #[test]
+    fn pmj02bn_and_best_candidate_pmj_stop_at_the_deadline() {
+        stops_at_the_deadline("PMJ02BN", |n, budget| {
+            let mut pts = vec![[0u32; 2]; n];
+            let mut work = vec![0u32; bn::workspace_len(n)?];
+            bn::fill_within(3, &mut pts, &mut work, budget)
+        });
+        stops_at_the_deadline("Christensen PMJ02", |n, budget| {
+            let mut pts = vec![[0u32; 2]; n];
+            let mut work = vec![0u32; christensen::workspace_len(n)?];
+            christensen::fill_within(3, 100, &mut pts, &mut work, budget)
+        });
+    }
+
+    #[test]
+    fn an_unlimited_budget_changes_no_bit() {
+        let n = 3000;
+        let mut a = vec![[0u32; 2]; n];
+        let mut b = vec![[0u32; 2]; n];
+        let mut work = vec![0u32; bn::workspace_len(n).unwrap()];
+        bn::fill(5, &mut a, &mut work).unwrap();
+        let far = Budget::seconds(1e6).unwrap().started();
+        bn::fill_within(5, &mut b, &mut work, &far).unwrap();
+        assert_eq!(a, b);
+    }
+}

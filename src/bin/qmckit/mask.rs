@@ -116,12 +116,14 @@ fn write_mask(out: &mut impl Write, mask: &RankMask, format: MaskFormat) -> Resu
         }
         MaskFormat::Pgm => {
             write!(out, "P5\n{w} {h}\n65535\n")?;
-            let bytes: Vec<u8> = mask
-                .ranks()
-                .iter()
-                .flat_map(|&r| image_level(r, n).to_be_bytes())
-                .collect();
-            out.write_all(&bytes)?;
+            // Row by row: 2 W bytes at a time, whatever the size.
+            let mut bytes = Vec::new();
+            qmckit::size::reserve(&mut bytes, qmckit::size::product("bytes", w as u64, 2)?)?;
+            for row in mask.ranks().chunks(w.max(1)) {
+                bytes.clear();
+                bytes.extend(row.iter().flat_map(|&r| image_level(r, n).to_be_bytes()));
+                out.write_all(&bytes)?;
+            }
         }
         MaskFormat::Png => {
             let (pw, ph) = (u32::try_from(w), u32::try_from(h));
@@ -131,11 +133,14 @@ fn write_mask(out: &mut impl Write, mask: &RankMask, format: MaskFormat) -> Resu
             let mut enc = png::Encoder::new(&mut *out, pw, ph);
             enc.set_color(png::ColorType::Grayscale);
             enc.set_depth(png::BitDepth::Sixteen);
-            let bytes: Vec<u8> = mask
-                .ranks()
-                .iter()
-                .flat_map(|&r| image_level(r, n).to_be_bytes())
-                .collect();
+            // The encoder takes the image whole: 2 W H bytes (at most 8 MiB), checked.
+            let mut bytes =
+                qmckit::size::vec_with_capacity(qmckit::size::product("bytes", n as u64, 2)?)?;
+            bytes.extend(
+                mask.ranks()
+                    .iter()
+                    .flat_map(|&r| image_level(r, n).to_be_bytes()),
+            );
             let mut writer = enc.write_header().map_err(|e| Failure {
                 code: 1,
                 message: format!("write failed: {e}"),

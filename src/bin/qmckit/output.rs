@@ -18,13 +18,18 @@ pub enum Format {
     Npy,
 }
 
+/// Bytes of text gathered before they are handed to the writer: a point of any width is
+/// written in pieces of about this size, never built whole (a point of 2^27 coordinates
+/// would be a 3 GB line).
+const TEXT_CHUNK: usize = 1 << 16;
+
 /// Writes rows of `dims` coordinates in one format; `finish` completes the stream.
 pub enum PointWriter<W: Write> {
-    /// Text formats.
+    /// Text formats: `text` gathers at most about [`TEXT_CHUNK`] bytes before they go out.
     Text {
         out: W,
         format: Format,
-        line: String,
+        text: String,
     },
     /// NumPy.
     Npy(npyz::NpyWriter<f64, W>),
@@ -37,7 +42,7 @@ impl<W: Write> PointWriter<W> {
             Format::U32 | Format::Csv => PointWriter::Text {
                 out,
                 format,
-                line: String::new(),
+                text: String::new(),
             },
             Format::Npy => {
                 use npyz::WriterBuilder;
@@ -82,27 +87,34 @@ impl<W: Write> PointWriter<W> {
         )
     }
 
-    /// The shared row writer: `text` formats one value, `number` gives the npy value.
+    /// The shared row writer: `value` formats one value, `number` gives the npy value.
+    /// Text is streamed: it goes out whenever [`TEXT_CHUNK`] bytes have gathered, within a
+    /// row as between rows, so memory stays bounded for any row width.
     fn write_rows<T: Copy>(
         &mut self,
         coords: &[T],
         dims: usize,
-        text: impl Fn(&mut String, Format, T),
+        value: impl Fn(&mut String, Format, T),
         number: impl Fn(T) -> f64,
     ) -> Result<(), Failure> {
         match self {
-            PointWriter::Text { out, format, line } => {
+            PointWriter::Text { out, format, text } => {
+                let separator = if *format == Format::Csv { ',' } else { ' ' };
                 for row in coords.chunks_exact(dims.max(1)) {
-                    line.clear();
                     for (k, &x) in row.iter().enumerate() {
                         if k > 0 {
-                            line.push(if *format == Format::Csv { ',' } else { ' ' });
+                            text.push(separator);
                         }
-                        text(line, *format, x);
+                        value(text, *format, x);
+                        if text.len() >= TEXT_CHUNK {
+                            out.write_all(text.as_bytes())?;
+                            text.clear();
+                        }
                     }
-                    line.push('\n');
-                    out.write_all(line.as_bytes())?;
+                    text.push('\n');
                 }
+                out.write_all(text.as_bytes())?;
+                text.clear();
             }
             PointWriter::Npy(w) => {
                 for &x in coords {
@@ -120,5 +132,62 @@ impl<W: Write> PointWriter<W> {
             PointWriter::Npy(w) => w.finish()?,
         }
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{Format, PointWriter, TEXT_CHUNK};
+
+    /// A sink that keeps the largest single write and the bytes in all.
+    #[derive(Default)]
+    struct Sink {
+        largest: usize,
+        bytes: Vec<u8>,
+    }
+
+    impl std::io::Write for Sink {
+        fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+            self.largest = self.largest.max(buf.len());
+            self.bytes.extend_from_slice(buf);
+            Ok(buf.len())
+        }
+
+        fn flush(&mut self) -> std::io::Result<()> {
+            Ok(())
+        }
+    }
+
+    #[test]
+    fn a_wide_point_is_written_in_pieces() {
+        // One point of 2^18 coordinates: about 5 MB of csv, never held whole.
+        let dims = 1 << 18;
+        let coords: Vec<u32> = (0..dims as u32)
+            .map(|i| i.wrapping_mul(2_654_435_761))
+            .collect();
+        for format in [Format::Csv, Format::U32] {
+            let mut w = PointWriter::new(Sink::default(), format, 1, dims).unwrap();
+            w.write(&coords, dims).unwrap();
+            w.write(&coords[..3], 3).unwrap();
+            let PointWriter::Text { out, .. } = w else {
+                panic!("a text writer")
+            };
+            assert!(out.largest <= TEXT_CHUNK + 32, "{}", out.largest);
+            let text = String::from_utf8(out.bytes).unwrap();
+            let lines: Vec<&str> = text.lines().collect();
+            assert_eq!(lines.len(), 2);
+            let sep = if format == Format::Csv { ',' } else { ' ' };
+            let values: Vec<&str> = lines[0].split(sep).collect();
+            assert_eq!(values.len(), dims);
+            for (v, &x) in values.iter().zip(&coords) {
+                match format {
+                    Format::Csv => {
+                        assert_eq!(v.parse::<f64>().unwrap(), f64::from(x) / 4294967296.0)
+                    }
+                    _ => assert_eq!(v.parse::<u32>().unwrap(), x),
+                }
+            }
+            assert_eq!(lines[1].split(sep).count(), 3);
+        }
     }
 }

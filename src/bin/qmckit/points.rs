@@ -456,6 +456,7 @@ fn construct(args: &Spec, digits: DigitScramble) -> Result<Built, Failure> {
             Some(total),
             args.d,
             args.seed,
+            args.budget.started(),
         )?;
         return Ok(Built::Other(Box::new(set)));
     }
@@ -487,7 +488,7 @@ fn construct(args: &Spec, digits: DigitScramble) -> Result<Built, Failure> {
                     "pmj02bn is two-dimensional: -d must be 2, got {d}"
                 )));
             }
-            Box::new(pmj02bn_set(total, args.seed, args.budget)?)
+            Box::new(blue_noise::pmj02bn_set(total, args.seed, args.budget)?)
         }
         SamplerName::Halton => Box::new(Halton::with_scramble(d, digits)?),
         SamplerName::Vdc => {
@@ -516,7 +517,12 @@ fn construct(args: &Spec, digits: DigitScramble) -> Result<Built, Failure> {
         SamplerName::Stratified => {
             let strata = match &args.strata {
                 Some(text) => parse_strata(text)?,
-                None => vec![root(total, d)?; d],
+                None => {
+                    let k = root(total, d)?;
+                    let mut strata = qmckit::size::vec_zeroed::<u32>(d)?;
+                    strata.fill(k);
+                    strata
+                }
             };
             if args.d.is_some() && strata.len() != d {
                 return Err(Failure::usage(format!(
@@ -597,6 +603,14 @@ pub fn run(args: &PointsArgs) -> Result<(), Failure> {
     if n == 0 {
         return Err(Failure::usage("-n must be at least 1"));
     }
+    // One row of coordinates must fit the allocation limit: refused here, before any
+    // construction sizes a table by -d.
+    let max_dims = qmckit::size::MAX_ALLOC_BYTES / 8;
+    if let Some(d) = args.d.filter(|&d| d as u64 > max_dims) {
+        return Err(Failure::usage(format!(
+            "-d {d}: a point of {d} coordinates is too large: at most {max_dims}"
+        )));
+    }
     let spec = args.spec(n)?;
     args.warp.check_options()?;
     let sampler = build(&spec)?;
@@ -631,7 +645,6 @@ pub fn run(args: &PointsArgs) -> Result<(), Failure> {
     };
     let width = warp.as_ref().map_or(dims, |w| w.width(dims));
     // One row of the widest form must fit the allocation limit.
-    let max_dims = qmckit::size::MAX_ALLOC_BYTES / 8;
     if dims.max(width) as u64 > max_dims {
         return Err(Failure::usage(format!(
             "a point of {} coordinates is too large: at most {max_dims}",
@@ -644,8 +657,8 @@ pub fn run(args: &PointsArgs) -> Result<(), Failure> {
         qmckit::size::vec_zeroed(qmckit::size::coordinates(rows_first as u64, dims)?)?;
     let stdout = std::io::stdout().lock();
     let mut writer = PointWriter::new(BufWriter::new(stdout), args.format, n, width)?;
-    let mut warped = Vec::new();
-    let mut u = vec![0f32; dims];
+    let mut warped: Vec<f32> = Vec::new();
+    let mut u: Vec<f32> = qmckit::size::vec_zeroed(dims)?;
     let mut index = start;
     while index < end {
         let rows = usize::try_from(end - index).map_or(batch, |left| left.min(batch));
@@ -656,6 +669,7 @@ pub fn run(args: &PointsArgs) -> Result<(), Failure> {
             None => writer.write(chunk, dims)?,
             Some(w) => {
                 warped.clear();
+                qmckit::size::reserve(&mut warped, qmckit::size::coordinates(rows as u64, width)?)?;
                 for row in chunk.chunks_exact(dims) {
                     for (uk, &x) in u.iter_mut().zip(row) {
                         *uk = qmckit::bits::to_f32(x);
@@ -695,7 +709,15 @@ impl PointsArgs {
         if self.n == Some(0) {
             return Err(Failure::usage("-n must be at least 1"));
         }
-        let set = blue_noise::build(kind, &self.blue, self.n, self.d, self.seed.unwrap_or(0))?;
+        let budget = self.blue.budget()?;
+        let set = blue_noise::build(
+            kind,
+            &self.blue,
+            self.n,
+            self.d,
+            self.seed.unwrap_or(0),
+            budget,
+        )?;
         blue_noise::write(&set, self.format)
     }
 }
@@ -708,32 +730,4 @@ pub fn samples_u32(spec: &Spec) -> Result<(Vec<u32>, usize), Failure> {
     let mut buf = qmckit::size::vec_zeroed(qmckit::size::coordinates(spec.n, dims)?)?;
     sampler.fill(0, &mut buf)?;
     Ok((buf, dims))
-}
-
-/// The first `n` points of the PMJ02BN sequence of `seed` (PMJ02 spread by nested flips),
-/// as a point set: `O(n log n)`, estimated and refused past `budget` (`--max-seconds`),
-/// memory checked by `size::vec_zeroed`.
-fn pmj02bn_set(
-    n: u64,
-    seed: u64,
-    budget: qmckit::work::Budget,
-) -> Result<qmckit::blue_noise::PointSet, Failure> {
-    use qmckit::pmj::bn;
-    use qmckit::work::{Cost, Rate};
-    let len = usize::try_from(n).unwrap_or(usize::MAX);
-    let work_len = bn::workspace_len(len)?;
-    // The spread evaluates about 60 K kernels a point (K = log2 n), 1e8 a second on one
-    // loaded core.
-    let k = (n.max(2) as f64).log2().ceil();
-    let steps = n as f64 * 60.0 * k;
-    budget
-        .check("pmj02bn points", Cost::steps(steps, Rate::per_second(1e8)))
-        .map_err(|e| Failure::usage(super::budget::over_budget(e)))?;
-    let mut pts = qmckit::size::vec_zeroed::<[u32; 2]>(len)?;
-    let mut work = qmckit::size::vec_zeroed::<u32>(work_len)?;
-    bn::fill(seed, &mut pts, &mut work)?;
-    Ok(qmckit::blue_noise::PointSet::new(
-        pts.into_iter().flatten().collect(),
-        2,
-    )?)
 }
