@@ -182,9 +182,11 @@ fn void_and_cluster_stops_at_its_deadline() {
         .find(|&s| VoidAndCluster::new(s, s).unwrap().cost().seconds() >= 0.3)
         .unwrap_or(2048);
     let vc = VoidAndCluster::new(side, side).unwrap();
-    crate::blue_noise::budget::stops_at_the_deadline("void and cluster", vc.cost().seconds(), |b| {
-        vc.generate_within(b)
-    });
+    crate::blue_noise::budget::stops_at_the_deadline(
+        "void and cluster",
+        vc.cost().seconds(),
+        |b| vc.generate_within(b),
+    );
     // The estimate grows with the pixels faster than linearly (cache misses of the trees).
     let s = |w: usize| VoidAndCluster::new(w, w).unwrap().cost().seconds();
     assert!(s(1024) > 4.0 * s(512) && s(512) > 4.0 * s(256));
