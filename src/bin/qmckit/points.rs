@@ -83,7 +83,7 @@ pub enum SamplerName {
     GaussianBlueNoise,
     /// PMJ02: progressive multi-jittered (0,2)-sequence, 2D, seeded (stochastic generation).
     Pmj02,
-    /// PMJ02BN: PMJ02 with best-candidate spacing (100 candidates), 2D, seeded; built whole.
+    /// PMJ02BN: PMJ02 spread by nested flips to blue noise, every prefix a (0,2)-net; 2D, seeded.
     Pmj02bn,
 }
 
