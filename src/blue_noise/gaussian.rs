@@ -33,7 +33,7 @@ use crate::{Error, Result};
 pub const GBN_MAX_POINTS: u64 = 1 << 24;
 
 /// Pair terms a second on two cores (release; measured 1.7e8 to 1.9e8 for 10^3 to 10^5
-/// points, docs/budgets-generation.md).
+/// points, docs/budgets.md).
 const TERMS: Rate = Rate::per_second(1.6e8);
 
 /// Points between two readings of the clock inside one iteration (a few hundred

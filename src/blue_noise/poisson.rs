@@ -221,7 +221,7 @@ impl PoissonDisk {
     /// construction (the pilot and the final set for a count target) times their measured
     /// cost a point, plus the grid. Calibrated within a factor 2 of measured runs for
     /// Bridson's loop in 1 to 8 dimensions and the 2D maximal fill
-    /// (docs/budgets-generation.md); the maximal fill in 3 or more dimensions has no useful
+    /// (docs/budgets.md); the maximal fill in 3 or more dimensions has no useful
     /// estimate, and the deadline of [`generate_within`](Self::generate_within) bounds it.
     ///
     /// # Errors

@@ -1,6 +1,6 @@
 //! The running-time model of [`super::PoissonDisk`], calibrated on measured runs (release
 //! build, two cores; the table and the script that makes it are in
-//! docs/budgets-generation.md).
+//! docs/budgets.md).
 //!
 //! One construction at radius `r` in `d` dimensions with `k` candidates costs
 //!

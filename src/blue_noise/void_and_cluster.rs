@@ -141,7 +141,7 @@ impl VoidAndCluster {
         (4.0 * self.sigma).ceil() as usize
     }
 
-    /// The estimated running time, calibrated on measured masks (docs/budgets-generation.md):
+    /// The estimated running time, calibrated on measured masks (docs/budgets.md):
     /// `N` pixels cost `t(L) W(sigma) / W(1.5)` each, `L = log2 N`, with
     /// `t(L) = 4.9 + 0.3 (L - 12)+ + 0.55 (L - 16)+^2` microseconds (the trees and energies
     /// outgrow the caches past `2^16` pixels, and every flip's reads miss) and `W` a flip's
