@@ -359,7 +359,7 @@ mod tests {
                 let mixed: Vec<_> = (0..width)
                     .map(|d| {
                         let hash = [OwenHash::Vegdahl, OwenHash::LaineKarras][d % 2];
-                        FastOwenScrambler::from_key(d as u32 * 0x9E37_79B9, hash)
+                        FastOwenScrambler::from_key((d as u32).wrapping_mul(0x9E37_79B9), hash)
                     })
                     .collect();
                 run(&levels, "fast-owen-mixed", &mixed, &xs);

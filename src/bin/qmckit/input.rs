@@ -281,6 +281,21 @@ fn check_npy_header(bytes: &[u8]) -> Result<(), String> {
         .get(start as usize..(start + len) as usize)
         .and_then(|h| std::str::from_utf8(h).ok())
         .ok_or("a .npy header that is not text")?;
+    // Only the plain dictionary of a float array is read: one '{', one '(' and no '['
+    // (a structured dtype). Anything else is refused here, before the npy parser, whose
+    // literal parser takes exponential time on deeply nested brackets.
+    let occurrences = |c: char| header.matches(c).count();
+    if header.contains('[')
+        || occurrences('{') != 1
+        || occurrences('(') != 1
+        || occurrences(')') != 1
+    {
+        return Err(
+            "a .npy header that is not a plain float array's (needs float64 or \
+                    float32, shape (N, D) or (N,))"
+                .to_owned(),
+        );
+    }
     let shape = header
         .split_once("'shape'")
         .and_then(|(_, rest)| rest.split_once('('))
@@ -469,5 +484,7 @@ mod tests {
         let huge = "{'descr': '<f8', 'shape': (4294967296, 4294967296), }";
         assert!(check_npy_header(&npy(huge)).unwrap_err().contains("larger"));
         assert!(check_npy_header(&npy("{'descr': '<f8', }")).is_err());
+        let nested = format!("{{'descr': '<f8', {}'shape': (4, 2), }}", "[".repeat(60));
+        assert!(check_npy_header(&npy(&nested)).is_err());
     }
 }
