@@ -6,7 +6,6 @@
 //!
 //! | module | measures |
 //! |---|---|
-//! | [`budget`] | cost estimates, time budgets and progress reports shared by the super-linear measures |
 //! | [`l2`] | L2-star (Warnock), centered, wrap-around, mixture, symmetric, unanchored, generalized L2 discrepancies, diaphony |
 //! | [`star`] | star discrepancy: exact (1D closed form, 2D sweep, d-D by the Dobkin–Eppstein–Mitchell decomposition in [`star::dem`]), guaranteed bounds ([`star::thiemard`], threshold accepting), extreme discrepancy in 2D |
 //! | [`tvalue`] | t-values of base-2 digital nets (generator matrices) and of point sets (elementary intervals) |

@@ -144,7 +144,7 @@ impl GaussianBlueNoise {
 
     /// The set, refused before it starts when [`cost`](Self::cost) exceeds `budget`, and
     /// stopped at the budget's deadline (started here if the caller has not): the clock is
-    /// read once an iteration and, within one, once every [`DEADLINE_POINTS`] points of
+    /// read once an iteration and, within one, once every `DEADLINE_POINTS` points of
     /// each worker.
     ///
     /// # Errors

@@ -217,7 +217,7 @@ impl PoissonDisk {
         Ok(b)
     }
 
-    /// The estimated running time ([`super::poisson_cost`]): the expected points of each
+    /// The estimated running time (the `poisson_cost` model): the expected points of each
     /// construction (the pilot and the final set for a count target) times their measured
     /// cost a point, plus the grid. Calibrated within a factor 2 of measured runs for
     /// Bridson's loop in 1 to 8 dimensions and the 2D maximal fill

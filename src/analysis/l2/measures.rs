@@ -59,7 +59,7 @@ pub(super) const DIAPHONY: &str = "the diaphony";
 /// Cost: `O(n^2 d)` by the pair sum, split over threads; from the point count where it
 /// measured faster (256 points in one and two dimensions, more in three to five, never
 /// above five) it switches to the exact `O(n log^(d-1) n)` divide and conquer
-/// [`l2_star_fast`] (the values agree to about 1e-14 relative).
+/// [`l2_star_fast`](super::l2_star_fast) (the values agree to about 1e-14 relative).
 /// [`l2_star_direct`] always uses the pair sum.
 ///
 /// One point at `x` in one dimension: `D^2 = 1/3 - (1 - x^2) + (1 - x) = x^2 - x + 1/3`,
