@@ -120,13 +120,7 @@ pub const fn rows_within(max_bytes: usize, row_len: usize, elem: usize) -> usize
 /// ```
 #[cfg(feature = "std")]
 pub fn vec_zeroed<T: Default + Clone>(len: usize) -> Result<std::vec::Vec<T>> {
-    let bytes = bytes(len, core::mem::size_of::<T>())?;
-    let mut v = std::vec::Vec::new();
-    v.try_reserve_exact(len).map_err(|_| Error::TooLarge {
-        what: "bytes",
-        requested: bytes as u64,
-        max: MAX_ALLOC_BYTES,
-    })?;
+    let mut v = vec_with_capacity(len)?;
     v.resize(len, T::default());
     Ok(v)
 }
