@@ -1,0 +1,222 @@
+"""The native layer: in-place fills (zero copy), threads, the GIL, 32-bit index limits,
+errors, and integration through ``scipy.integrate.qmc_quad``."""
+
+import threading
+import time
+
+import numpy as np
+import pytest
+from numpy.testing import assert_array_equal
+from scipy.integrate import qmc_quad
+from scipy.stats import qmc
+
+import qmckit
+from qmckit import _qmckit
+from conftest import ALL_ENGINES
+
+# -- zero copy ---------------------------------------------------------------------------
+#
+# Checked by ownership: the caller's array is filled in place and returned. The array is
+# first poisoned with NaN (uint32: a sentinel); after the fill it holds the points, the
+# returned object *is* the caller's array, and the native layer refuses (rather than
+# copies) an array it could not fill in place: Fortran order, a strided view, a
+# read-only array, another dtype.
+
+
+@pytest.mark.parametrize("engine", ALL_ENGINES, ids=lambda e: e.__name__)
+def test_random_out_is_filled_in_place(engine):
+    d = 2
+    ref = engine(d=d, rng=3).random(256)
+    buf = np.full((256, d), np.nan)
+    eng = engine(d=d, rng=3)
+    got = eng.random(256, out=buf)
+    assert got is buf
+    assert np.shares_memory(got, buf)
+    assert_array_equal(buf, ref)
+    assert eng.num_generated == 256
+
+
+def test_fill_uint32_is_exact_and_in_place():
+    eng = qmckit.Sobol(3, scramble=False, bits=32)
+    buf = np.full((1024, 3), 0xDEADBEEF, dtype=np.uint32)
+    assert eng.fill(buf) is buf
+    x = qmckit.Sobol(3, scramble=False, bits=32).random(1024)
+    assert_array_equal(buf / 2.0**32, x)
+    assert eng.num_generated == 1024
+
+
+def test_native_fill_writes_caller_memory():
+    s = _qmckit.sobol(4, 32)
+    base = np.zeros((10, 4))
+    s.fill(6, base)
+    assert_array_equal(base, qmc.Sobol(4, scramble=False, bits=32).random(16)[6:])
+
+
+@pytest.mark.parametrize(
+    "make",
+    [
+        lambda: np.zeros((8, 4), order="F"),
+        lambda: np.zeros((8, 8))[:, ::2],
+        lambda: np.zeros((8, 4), dtype=np.float32),
+        lambda: np.zeros((8, 5)),
+        lambda: np.zeros(32),
+    ],
+    ids=["fortran", "strided", "float32", "wrong-dims", "1-d"],
+)
+def test_native_fill_refuses_what_it_cannot_fill_in_place(make):
+    s = _qmckit.sobol(4, 32)
+    with pytest.raises((ValueError, TypeError)):
+        s.fill(0, make())
+
+
+def test_native_fill_refuses_read_only():
+    s = _qmckit.sobol(4, 32)
+    a = np.zeros((8, 4))
+    a.flags.writeable = False
+    with pytest.raises((ValueError, TypeError)):
+        s.fill(0, a)
+
+
+# -- threads -----------------------------------------------------------------------------
+
+
+@pytest.mark.filterwarnings("ignore:The balance properties")
+@pytest.mark.parametrize("engine", ALL_ENGINES, ids=lambda e: e.__name__)
+def test_workers_do_not_change_the_points(engine):
+    n = 5000 if "PMJ02BN" not in engine.__name__ else 4096
+    one = engine(d=2, rng=9).random(n)
+    assert_array_equal(engine(d=2, rng=9).random(n, workers=2), one)
+    assert_array_equal(engine(d=2, rng=9).random(n, workers=-1), one)
+    assert_array_equal(engine(d=2, rng=9).random(n, workers=7), one)
+
+
+def test_large_parallel_fill_equals_serial():
+    a = qmckit.Halton(8, rng=2).random(100_000, workers=1)
+    b = qmckit.Halton(8, rng=2).random(100_000, workers=3)
+    assert_array_equal(a, b)
+    a = qmckit.Sobol(8, rng=2).random(2**17, workers=1)
+    b = qmckit.Sobol(8, rng=2).random(2**17, workers=2)
+    assert_array_equal(a, b)
+
+
+def test_gil_is_released_during_long_fills():
+    """Another Python thread runs while a long fill is in progress."""
+    eng = qmckit.Sobol(8, rng=1)
+    buf = np.empty((2**21, 8))
+    done = threading.Event()
+    ticks = 0
+
+    def work():
+        eng.random(2**21, out=buf)
+        done.set()
+
+    t = threading.Thread(target=work)
+    t.start()
+    while not done.is_set():
+        ticks += 1
+        time.sleep(0)
+    t.join()
+    assert ticks > 10
+
+
+# -- 32-bit indices ----------------------------------------------------------------------
+
+
+def test_sobol_refuses_past_two_to_the_32():
+    eng = qmckit.Sobol(2, scramble=False, bits=32)
+    eng.fast_forward(2**32 - 4)
+    last = eng.random(4)
+    ref = np.empty((4, 2), dtype=np.uint32)
+    _qmckit.sobol(2, 32).fill(2**32 - 4, ref)
+    assert_array_equal(last, ref / 2.0**32)
+    with pytest.raises(ValueError, match=r"At most 2\*\*32=4294967296 distinct points"):
+        eng.random(1)
+
+
+@pytest.mark.parametrize("engine", [qmckit.Halton, qmckit.Kronecker, qmckit.PMJ02,
+                                    qmckit.Faure], ids=lambda e: e.__name__)
+def test_sequences_refuse_past_two_to_the_32(engine):
+    eng = engine(d=2, rng=1)
+    eng.fast_forward(2**32 - 2)
+    assert eng.random(2).shape == (2, 2)
+    with pytest.raises(ValueError, match="32-bit"):
+        eng.random(1)
+
+
+def test_native_refuses_start_past_two_to_the_32():
+    s = _qmckit.halton(2)
+    with pytest.raises(ValueError, match="32-bit"):
+        s.fill(2**32, np.zeros((1, 2)))
+    with pytest.raises(ValueError, match="32-bit"):
+        s.fill(2**32 - 1, np.zeros((2, 2)))
+
+
+def test_finite_sets_refuse_past_their_end():
+    eng = qmckit.Lattice(3, rng=1)
+    assert eng.maxn == 2**20
+    eng.fast_forward(2**20 - 1)
+    eng.random(1)
+    with pytest.raises(ValueError, match="1048576"):
+        eng.random(1)
+    bn = qmckit.PMJ02BN(rng=1, max_points=64)
+    bn.random(64)
+    with pytest.raises(ValueError, match="64"):
+        bn.random(1)
+
+
+# -- errors ------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "make, match",
+    [
+        (lambda: qmckit.Halton(2000, randomizer="owen"), "dimension"),
+        (lambda: qmckit.Lattice(10_000), "dimension"),
+        (lambda: qmckit.Sobol(2, randomizer="nope"), "not a valid randomizer"),
+        (lambda: qmckit.Halton(2, randomizer="nope"), "not a valid randomizer"),
+        (lambda: qmckit.PMJ02(3), "two-dimensional"),
+        (lambda: qmckit.LatinHypercube(2, strength=2), "not a valid strength"),
+        (lambda: qmckit.Sobol(2, optimization="toto"), "not a valid optimization"),
+        (lambda: _qmckit.sobol(0), "dimension"),
+        (lambda: _qmckit.latin_hypercube(0, 2, 1), "point"),
+        (lambda: _qmckit.pmj02bn(2**31, 1), "point"),
+        (lambda: _qmckit.halton_scipy([1]), "base"),
+    ],
+)
+def test_errors_are_value_errors_with_qmckits_message(make, match):
+    with pytest.raises(ValueError, match=match) as info:
+        make()
+    assert "panic" not in str(info.value).lower()
+
+
+# -- integration -------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("engine", ALL_ENGINES, ids=lambda e: e.__name__)
+def test_qmc_quad(engine):
+    """scipy.integrate.qmc_quad builds fresh engines from ``_init_quad``."""
+    d = 2 if "PMJ" in engine.__name__ else 3
+
+    def f(x):  # x has shape (d, n)
+        return np.prod(x, axis=0) * 2**d
+
+    res = qmc_quad(f, np.zeros(d), np.ones(d), n_points=1024, n_estimates=8,
+                   qrng=engine(d=d, rng=11))
+    assert abs(res.integral - 1.0) < max(5 * res.standard_error, 1e-6)
+    assert res.standard_error < 0.01
+
+
+def test_qmc_quad_keeps_the_randomizer(monkeypatch):
+    """The engines qmc_quad builds from ``_init_quad`` have the same randomizer."""
+    seen = []
+    orig = qmckit.Sobol._build
+
+    def spy(self):
+        seen.append(self.randomizer)
+        return orig(self)
+
+    monkeypatch.setattr(qmckit.Sobol, "_build", spy)
+    eng = qmckit.Sobol(2, randomizer="lms", rng=1)
+    res = qmc_quad(lambda x: np.sum(x, axis=0), [0, 0], [1, 1], qrng=eng, n_estimates=4)
+    assert abs(res.integral - 1.0) < 1e-6
+    assert seen == ["lms"] * 5
