@@ -513,11 +513,14 @@ class PMJ02(_NativeEngine):
 class PMJ02BN(_NativeEngine):
     """PMJ02 with blue-noise spacing (qmckit's nested-flip spreading) in 2D, seeded from
     ``rng``. The flips are chosen for every power-of-two prefix of ``max_points``
-    points (default ``2**16``; at most ``2**30``), generated at construction; the
-    engine then serves that table's prefixes. Always random (no ``scramble``)."""
+    points (default ``2**12``; at most ``2**30``), generated at construction; the
+    engine then serves that table's prefixes. Always random (no ``scramble``).
+
+    The table's cost grows faster than linearly (measured here: ``2**12`` points in
+    0.03 s, ``2**14`` in 0.2 s, ``2**16`` in 1 s, ``2**18`` in 10 s)."""
 
     @_transition_to_rng("seed", replace_doc=False)
-    def __init__(self, d=2, *, max_points=2**16, optimization=None, rng=None):
+    def __init__(self, d=2, *, max_points=2**12, optimization=None, rng=None):
         self._init_quad = {"d": d, "max_points": max_points, "optimization": optimization}
         super()._initialize(d=d, optimization=optimization, rng=rng)
         _check_2d(d)

@@ -83,7 +83,7 @@ def test_native_fill_refuses_read_only():
 @pytest.mark.filterwarnings("ignore:The balance properties")
 @pytest.mark.parametrize("engine", ALL_ENGINES, ids=lambda e: e.__name__)
 def test_workers_do_not_change_the_points(engine):
-    n = 5000 if "PMJ02BN" not in engine.__name__ else 4096
+    n = 5000 if "PMJ02BN" not in engine.__name__ else 2**12
     one = engine(d=2, rng=9).random(n)
     assert_array_equal(engine(d=2, rng=9).random(n, workers=2), one)
     assert_array_equal(engine(d=2, rng=9).random(n, workers=-1), one)
