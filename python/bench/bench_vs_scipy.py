@@ -1,0 +1,91 @@
+"""qmckit against SciPy in one run: time of each, and SciPy's time over qmckit's.
+
+    python bench/bench_vs_scipy.py [--repeat 5] [--quick]
+
+Cases (as in the issue): scrambled Sobol' 2^20 x 8, scrambled Halton 2^20 x 8, the
+centered discrepancy of 4096 x 8 points, the L2-star discrepancy of 16384 x 8 points,
+each with one worker and with all CPUs (``workers=-1``, where SciPy takes ``workers``).
+An engine's time includes its construction (drawing the scramble). Each case runs SciPy
+and qmckit alternately ``--repeat`` times and keeps each side's best time, so a machine
+shared with other work penalizes both alike. A ratio above 1 means qmckit is faster.
+"""
+
+import argparse
+import os
+import time
+import warnings
+
+import numpy as np
+from scipy.stats import qmc
+
+import qmckit
+
+
+def best_time(fn, repeat):
+    best = float("inf")
+    for _ in range(repeat):
+        t = time.perf_counter()
+        fn()
+        best = min(best, time.perf_counter() - t)
+    return best
+
+
+def alternate(scipy_fn, qmckit_fn, repeat):
+    """Best time of each, the two run alternately."""
+    s = q = float("inf")
+    for _ in range(repeat):
+        s = min(s, best_time(scipy_fn, 1))
+        q = min(q, best_time(qmckit_fn, 1))
+    return s, q
+
+
+def cases(quick):
+    m = 16 if quick else 20
+    n = 2**m
+    d = 8
+    yield (f"Sobol' 2^{m} x {d}, scrambled (SciPy LMS+shift)", "owen (default)",
+           lambda: qmc.Sobol(d, rng=1).random(n),
+           lambda: qmckit.Sobol(d, rng=1).random(n))
+    for r in ("fast-owen", "lms", "xor"):
+        yield (f"Sobol' 2^{m} x {d}, scrambled (SciPy LMS+shift)", r,
+               lambda: qmc.Sobol(d, rng=1).random(n),
+               lambda r=r: qmckit.Sobol(d, rng=1, randomizer=r).random(n))
+    yield (f"Sobol' 2^{m} x {d}, scrambled, workers=-1 (SciPy ignores workers)", "lms",
+           lambda: qmc.Sobol(d, rng=1).random(n),
+           lambda: qmckit.Sobol(d, rng=1, randomizer="lms").random(n, workers=-1))
+    for w in (1, -1):
+        yield (f"Halton 2^{m} x {d}, scrambled, workers={w}", "perm (default, SciPy's)",
+               lambda w=w: qmc.Halton(d, rng=1).random(n, workers=w),
+               lambda w=w: qmckit.Halton(d, rng=1).random(n, workers=w))
+    yield (f"Halton 2^{m} x {d}, scrambled, workers=1", "owen",
+           lambda: qmc.Halton(d, rng=1).random(n),
+           lambda: qmckit.Halton(d, rng=1, randomizer="owen").random(n))
+    rng = np.random.default_rng(0)
+    x_cd = qmc.Sobol(d, rng=rng).random(1024 if quick else 4096)
+    x_l2 = qmc.Sobol(d, rng=rng).random(4096 if quick else 16384)
+    for w in (1, -1):
+        yield (f"CD discrepancy {len(x_cd)} x {d}, workers={w}", "",
+               lambda w=w: qmc.discrepancy(x_cd, method="CD", workers=w),
+               lambda w=w: qmckit.discrepancy(x_cd, method="CD", workers=w))
+    for w in (1, -1):
+        yield (f"L2-star discrepancy {len(x_l2)} x {d}, workers={w}", "",
+               lambda w=w: qmc.discrepancy(x_l2, method="L2-star", workers=w),
+               lambda w=w: qmckit.discrepancy(x_l2, method="L2-star", workers=w))
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--repeat", type=int, default=5)
+    ap.add_argument("--quick", action="store_true", help="smaller sizes (a smoke run)")
+    args = ap.parse_args()
+    warnings.simplefilter("ignore", UserWarning)
+    print(f"CPUs: {os.cpu_count()}; numpy {np.__version__}; "
+          f"scipy {__import__('scipy').__version__}; qmckit {qmckit.__version__}")
+    print(f"{'case':<62} {'qmckit variant':<24} {'SciPy s':>9} {'qmckit s':>9} {'ratio':>7}")
+    for name, variant, s_fn, q_fn in cases(args.quick):
+        s, q = alternate(s_fn, q_fn, args.repeat)
+        print(f"{name:<62} {variant:<24} {s:9.4f} {q:9.4f} {s / q:7.2f}", flush=True)
+
+
+if __name__ == "__main__":
+    main()
