@@ -67,7 +67,11 @@ fn single_sum(p: Points<'_>, g: fn(f64) -> f64) -> f64 {
     for row in p.iter() {
         let v: f64 = row.iter().map(|&x| g(x)).product();
         let t = s + v;
-        c += if s.abs() >= v.abs() { (s - t) + v } else { (v - t) + s };
+        c += if s.abs() >= v.abs() {
+            (s - t) + v
+        } else {
+            (v - t) + s
+        };
         s = t;
     }
     s + c

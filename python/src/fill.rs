@@ -19,6 +19,9 @@ pub fn to_f64(x: u32) -> f64 {
     f64::from(x) * (1.0 / 4_294_967_296.0)
 }
 
+/// The work on one part of a split fill: `(first_row, rows)`.
+pub type Part<'a, T, E> = dyn Fn(usize, &mut [T]) -> Result<(), E> + Sync + 'a;
+
 /// Splits `out` (rows of `dims` values) into at most `workers` contiguous parts of whole
 /// rows and runs `part(first_row, slice)` on each, one thread a part. Returns the first
 /// error.
@@ -26,7 +29,7 @@ pub fn split_rows<T: Send, E: Send>(
     out: &mut [T],
     dims: usize,
     workers: usize,
-    part: &(dyn Fn(usize, &mut [T]) -> Result<(), E> + Sync),
+    part: &Part<'_, T, E>,
 ) -> Result<(), E> {
     let dims = dims.max(1);
     let rows = out.len() / dims;

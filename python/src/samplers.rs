@@ -13,8 +13,8 @@ use qmckit::digital::DigitalNetB;
 use qmckit::lattice::Rank1Lattice;
 use qmckit::randomize::digits::DigitScramble;
 use qmckit::randomize::{
-    Affine, CranleyPatterson, DigitalShift, ExactOwen, FastOwen, Randomizer, Randomizes,
-    Scrambled, Scrambler,
+    Affine, CranleyPatterson, DigitalShift, ExactOwen, FastOwen, Randomizer, Randomizes, Scrambled,
+    Scrambler,
 };
 use qmckit::sobol::Order;
 use qmckit::{Base2Digital, Halton, LatinHypercube, Sampler, Sobol};
@@ -68,7 +68,7 @@ impl NativeSampler {
     /// Validates a fill of `rows` rows from `start`; returns `start` as a qmckit index.
     fn check_range(&self, start: u64, rows: usize) -> PyResult<u32> {
         let len = self.len_();
-        let end = start.checked_add(rows as u64).unwrap_or(u64::MAX);
+        let end = start.saturating_add(rows as u64);
         if end > len {
             let why = if len == qmckit::sampler::FULL_RANGE {
                 "qmckit indices are 32-bit: at most 2^32 points".to_string()
@@ -112,7 +112,13 @@ impl NativeSampler {
     /// `uint32` array, in place (no copy). `workers` threads share the rows; the values do
     /// not depend on it. The GIL is released during long fills.
     #[pyo3(signature = (start, out, workers = 1))]
-    fn fill(&self, py: Python<'_>, start: u64, out: &Bound<'_, PyAny>, workers: usize) -> PyResult<()> {
+    fn fill(
+        &self,
+        py: Python<'_>,
+        start: u64,
+        out: &Bound<'_, PyAny>,
+        workers: usize,
+    ) -> PyResult<()> {
         let workers = workers.max(1);
         if let Ok(mut a) = out.extract::<PyReadwriteArray2<'_, f64>>() {
             let rows = self.check_shape(a.shape(), a.is_c_contiguous())?;
@@ -228,7 +234,11 @@ impl Randomizer for AffineTable {
 
 impl<S: Base2Digital + ?Sized> Randomizes<S> for AffineTable {}
 
-fn affine_table(images: &PyReadonlyArray2<'_, u32>, shifts: &PyReadonlyArray1<'_, u32>, d: usize) -> PyResult<AffineTable> {
+fn affine_table(
+    images: &PyReadonlyArray2<'_, u32>,
+    shifts: &PyReadonlyArray1<'_, u32>,
+    d: usize,
+) -> PyResult<AffineTable> {
     let im = images.as_array();
     let sh = shifts.as_array();
     if im.shape() != [d, 32] || sh.len() != d {
@@ -278,9 +288,18 @@ pub fn sobol(
     let s = Sobol::with_order(d, Order::Gray).map_err(to_py)?;
     let (b, name): (Box<SharedSampler>, &str) = match randomizer {
         None => (boxed(s), "Sobol'"),
-        Some("owen") => (boxed(Scrambled::new(s, ExactOwen::new(seed))), "Sobol' + Owen"),
-        Some("fast-owen") => (boxed(Scrambled::new(s, FastOwen::new(seed))), "Sobol' + fast Owen"),
-        Some("xor") => (boxed(Scrambled::new(s, DigitalShift::new(seed))), "Sobol' + digital shift"),
+        Some("owen") => (
+            boxed(Scrambled::new(s, ExactOwen::new(seed))),
+            "Sobol' + Owen",
+        ),
+        Some("fast-owen") => (
+            boxed(Scrambled::new(s, FastOwen::new(seed))),
+            "Sobol' + fast Owen",
+        ),
+        Some("xor") => (
+            boxed(Scrambled::new(s, DigitalShift::new(seed))),
+            "Sobol' + digital shift",
+        ),
         Some("affine") => match (images, shifts) {
             (Some(im), Some(sh)) => (
                 boxed(Scrambled::new(s, affine_table(&im, &sh, d)?)),
@@ -345,7 +364,12 @@ pub fn halton_scipy(
     Ok(NativeSampler {
         inner: Inner::ScipyHalton(ScipyHalton::new(dims)),
         mask: u32::MAX,
-        name: if scrambled { "Halton (SciPy, scrambled)" } else { "Halton (SciPy)" }.into(),
+        name: if scrambled {
+            "Halton (SciPy, scrambled)"
+        } else {
+            "Halton (SciPy)"
+        }
+        .into(),
     })
 }
 
@@ -356,7 +380,11 @@ pub fn halton_scipy(
 pub fn lattice(d: usize, shift: bool, seed: u64) -> PyResult<NativeSampler> {
     let l = Rank1Lattice::kuo(d).map_err(to_py)?;
     Ok(if shift {
-        NativeSampler::points(boxed(Scrambled::new(l, CranleyPatterson::new(seed))), u32::MAX, "lattice")
+        NativeSampler::points(
+            boxed(Scrambled::new(l, CranleyPatterson::new(seed))),
+            u32::MAX,
+            "lattice",
+        )
     } else {
         NativeSampler::points(boxed(l), u32::MAX, "lattice")
     })
@@ -368,7 +396,11 @@ pub fn lattice(d: usize, shift: bool, seed: u64) -> PyResult<NativeSampler> {
 pub fn kronecker(d: usize, shift: bool, seed: u64) -> PyResult<NativeSampler> {
     let k = qmckit::kronecker::Kronecker::r_d(d).map_err(to_py)?;
     Ok(if shift {
-        NativeSampler::points(boxed(Scrambled::new(k, CranleyPatterson::new(seed))), u32::MAX, "Kronecker")
+        NativeSampler::points(
+            boxed(Scrambled::new(k, CranleyPatterson::new(seed))),
+            u32::MAX,
+            "Kronecker",
+        )
     } else {
         NativeSampler::points(boxed(k), u32::MAX, "Kronecker")
     })
@@ -386,7 +418,11 @@ pub fn faure(d: usize, randomizer: Option<&str>, seed: u64) -> PyResult<NativeSa
     let net = DigitalNetB::faure(base, d)
         .map_err(to_py)?
         .with_scramble(digit_scramble(randomizer, seed)?);
-    Ok(NativeSampler::points(boxed(net), u32::MAX, format!("Faure (base {base})")))
+    Ok(NativeSampler::points(
+        boxed(net),
+        u32::MAX,
+        format!("Faure (base {base})"),
+    ))
 }
 
 /// `n` Latin hypercube points (one in every `1/n` slab of every axis).
@@ -399,7 +435,11 @@ pub fn latin_hypercube(n: u64, d: usize, seed: u64) -> PyResult<NativeSampler> {
 /// The stochastic PMJ02 sequence in 2D.
 #[pyfunction]
 pub fn pmj02(seed: u64) -> PyResult<NativeSampler> {
-    Ok(NativeSampler::points(boxed(qmckit::pmj::Pmj02::new(seed)), u32::MAX, "PMJ02"))
+    Ok(NativeSampler::points(
+        boxed(qmckit::pmj::Pmj02::new(seed)),
+        u32::MAX,
+        "PMJ02",
+    ))
 }
 
 /// The first `n` points of the PMJ02BN sequence of `seed` for that length (a shorter
