@@ -22,6 +22,7 @@ from ._engines import (
     Lattice,
     PMJ02,
     PMJ02BN,
+    PoissonDisk,
     Sobol,
 )
 from ._discrepancy import discrepancy
@@ -35,6 +36,7 @@ __all__ = [
     "Faure",
     "PMJ02",
     "PMJ02BN",
+    "PoissonDisk",
     "discrepancy",
     "__version__",
 ]

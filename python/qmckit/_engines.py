@@ -18,6 +18,7 @@ from __future__ import annotations
 import numpy as np
 from scipy.stats import qmc
 from scipy.stats._qmc import (
+    _validate_bounds,
     _validate_workers,
     _van_der_corput_permutations,
     n_primes,
@@ -36,6 +37,7 @@ __all__ = [
     "Faure",
     "PMJ02",
     "PMJ02BN",
+    "PoissonDisk",
 ]
 
 _INDEX_LIMIT = 2**32
@@ -527,3 +529,99 @@ class PMJ02BN(_NativeEngine):
         self.max_points = int(max_points)
         self._native = _qmckit.pmj02bn(self.max_points, _draw_seed(self.rng))
         self.maxn = self.max_points
+
+
+class PoissonDisk(_NativeEngine):
+    """Poisson-disk sampling in the box ``[l_bounds, u_bounds]``, as
+    :class:`scipy.stats.qmc.PoissonDisk`: points at least ``radius`` apart (Euclidean
+    distance, in the units of the box), from qmckit's Bridson sampler (1 to 8
+    dimensions).
+
+    The whole set is drawn once, at the first draw (Bridson's algorithm with
+    ``ncandidates`` candidates a point, run until no point can grow: SciPy's
+    ``fill_space``), from a seed drawn from ``rng`` at construction; ``random(n)`` then
+    returns its next ``n`` points, or fewer once the set is used up, and ``reset`` starts
+    it again. A box whose sides differ is cut from the set of a cube of the longest side,
+    so the spacing is the same everywhere. qmckit draws Bridson's candidates its own way:
+    ``hypersphere`` is checked as SciPy checks it, but both values give the same set.
+    """
+
+    @_transition_to_rng("seed", replace_doc=False)
+    def __init__(
+        self,
+        d,
+        *,
+        radius=0.05,
+        hypersphere="volume",
+        ncandidates=30,
+        optimization=None,
+        rng=None,
+        l_bounds=None,
+        u_bounds=None,
+    ):
+        self._init_quad = {
+            "d": d,
+            "radius": radius,
+            "hypersphere": hypersphere,
+            "ncandidates": ncandidates,
+            "optimization": optimization,
+        }
+        super()._initialize(d=d, optimization=optimization, rng=rng)
+        if hypersphere not in ("volume", "surface"):
+            raise ValueError(
+                f"{hypersphere!r} is not a valid hypersphere sampling method. "
+                f"It must be one of {set(('volume', 'surface'))!r}"
+            )
+        self.hypersphere = hypersphere
+        self.radius = radius
+        self.ncandidates = int(ncandidates)
+        if u_bounds is None:
+            u_bounds = np.ones(d)
+        if l_bounds is None:
+            l_bounds = np.zeros(d)
+        self.l_bounds, self.u_bounds = _validate_bounds(
+            l_bounds=l_bounds, u_bounds=u_bounds, d=int(d)
+        )
+        self._seed = _draw_seed(self.rng)
+        self._set = None
+
+    def _points(self):
+        if self._set is None:
+            if self.d == 0:
+                self._set = np.empty((0, 0))
+            else:
+                sides = np.asarray(self.u_bounds - self.l_bounds, dtype=np.float64)
+                side = float(sides.max())
+                unit = _qmckit.poisson_disk(
+                    self.d, min(self.radius / side, 1.0), self.ncandidates, self._seed
+                )
+                x = unit * side
+                keep = np.all(x < sides, axis=1)
+                self._set = np.ascontiguousarray(x[keep] + self.l_bounds)
+        return self._set
+
+    def random(self, n=1, *, workers=1, out=None):
+        """The next ``n`` points of the set (fewer once it is used up)."""
+        if n == 0 or self.d == 0:
+            return np.empty((n, self.d))
+        pts = self._points()
+        sample = pts[self.num_generated : self.num_generated + int(n)].copy()
+        if out is not None:
+            _check_out(out, len(sample), self.d, (np.float64,))
+            out[...] = sample
+            sample = out
+        if self.optimization_method is not None and len(sample):
+            sample = self.optimization_method(sample)
+        self.num_generated += len(sample)
+        return sample
+
+    def _random(self, n=1, *, workers=1, out=None):
+        return self.random(n, workers=workers, out=out)
+
+    def fill(self, out, *, workers=1):
+        raise TypeError("PoissonDisk has no in-place fill: use random()")
+
+    def fill_space(self):
+        """All the remaining points of the set."""
+        pts = self._points()
+        return self.random(max(len(pts) - self.num_generated, 0))

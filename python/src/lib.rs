@@ -8,6 +8,7 @@ use pyo3::prelude::*;
 mod discrepancy;
 mod error;
 mod fill;
+mod poisson;
 mod samplers;
 mod scipy_halton;
 
@@ -26,6 +27,7 @@ fn _qmckit(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(samplers::latin_hypercube, m)?)?;
     m.add_function(wrap_pyfunction!(samplers::pmj02, m)?)?;
     m.add_function(wrap_pyfunction!(samplers::pmj02bn, m)?)?;
+    m.add_function(wrap_pyfunction!(poisson::poisson_disk, m)?)?;
     m.add_function(wrap_pyfunction!(discrepancy::discrepancy, m)?)?;
     Ok(())
 }

@@ -220,3 +220,41 @@ def test_qmc_quad_keeps_the_randomizer(monkeypatch):
     res = qmc_quad(lambda x: np.sum(x, axis=0), [0, 0], [1, 1], qrng=eng, n_estimates=4)
     assert abs(res.integral - 1.0) < 1e-6
     assert seen == ["lms"] * 5
+
+
+# -- Poisson disk ------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("d, radius", [(1, 0.01), (2, 0.02), (3, 0.1), (5, 0.3)])
+def test_poisson_disk_spacing_and_coverage(d, radius):
+    from scipy.spatial.distance import pdist
+
+    eng = qmckit.PoissonDisk(d, radius=radius, rng=5)
+    x = eng.fill_space()
+    assert pdist(x).min() >= radius
+    assert np.all((x >= 0) & (x < 1))
+    # Saturated: no point of a fine random probe set is farther than 2 r from the set.
+    from scipy.spatial import cKDTree
+
+    probe = np.random.default_rng(0).random((2000, d))
+    dist, _ = cKDTree(x).query(probe)
+    assert dist.max() < 2 * radius
+
+
+def test_poisson_disk_rectangle_and_continuation():
+    from scipy.spatial.distance import pdist
+
+    eng = qmckit.PoissonDisk(2, radius=0.1, l_bounds=[0, -1], u_bounds=[4, 1], rng=2)
+    a = eng.random(50)
+    b = eng.fill_space()
+    x = np.concatenate([a, b])
+    assert pdist(x).min() >= 0.1
+    assert np.all((x >= [0, -1]) & (x < [4, 1]))
+    assert len(eng.random(5)) == 0
+    eng.reset()
+    assert_array_equal(eng.random(50), a)
+
+
+def test_poisson_disk_refuses_above_eight_dimensions():
+    with pytest.raises(ValueError, match="dimension"):
+        qmckit.PoissonDisk(9, radius=0.5).random(1)

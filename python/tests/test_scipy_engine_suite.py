@@ -17,7 +17,11 @@ Deviations, each with its reason:
   distance. It does not for the 64-point rank-1 lattice and Kronecker sets, already
   better spread than what the iteration converges to, nor for this seed's Latin
   hypercube design (for SciPy's and qmckit's LHS alike, 4 of 40 seeds do not improve):
-  ``xfail(strict=True)``.
+  ``xfail(strict=True)``. Nor, for about 40% of seeds with SciPy's sampler and
+  qmckit's alike, for the first 64 points of a Poisson-disk set; this seed's qmckit set
+  is one.
+* ``PoissonDisk`` runs SciPy's whole ``TestPoisson``, which skips what does not apply
+  to a Poisson-disk process.
 * PMJ02 and PMJ02BN are two-dimensional and always random: the tests in other
   dimensions (``d=0``, ``d=100``) and against a reference sample are skipped.
 """
@@ -258,3 +262,15 @@ class TestPMJ02(_TwoDimensional):
 
 class TestPMJ02BN(_TwoDimensional):
     qmce = qmckit.PMJ02BN
+
+
+class TestPoissonDisk(scipy_tests.TestPoisson):
+    """SciPy's whole ``TestPoisson`` (its generic tests and its Poisson-disk tests:
+    minimum distance, bounds, shift and scale, errors), on ``qmckit.PoissonDisk``."""
+
+    qmce = qmckit.PoissonDisk
+    test_optimizers = _xfail_lloyd(
+        "Lloyd's iteration widens the minimum L1 distance of the first 64 Poisson-disk "
+        "points for 18 of seeds 0..29 with SciPy's sampler and 19 with qmckit's; the "
+        "test's seed draws a qmckit set that it does not"
+    )
