@@ -176,6 +176,24 @@ class _NativeEngine(qmc.QMCEngine):
         self.num_generated += n
         return self
 
+    # -- pickling: the native sampler is rebuilt from the arguments it was made with --
+
+    def _make(self, fn: str, *args, **kwargs):
+        """``_qmckit.fn(*args, **kwargs)``, remembered so that a pickled engine (sent to
+        another process, e.g. by Dask) rebuilds the same sampler."""
+        self._native_args = (fn, args, kwargs)
+        return getattr(_qmckit, fn)(*args, **kwargs)
+
+    def __getstate__(self):
+        state = self.__dict__.copy()
+        state.pop("_native", None)
+        return state
+
+    def __setstate__(self, state):
+        self.__dict__.update(state)
+        args = state.get("_native_args")
+        self._native = None if args is None else getattr(_qmckit, args[0])(*args[1], **args[2])
+
     # -- helpers -------------------------------------------------------------------
 
     def _check_n(self, n: int) -> None:
@@ -293,13 +311,13 @@ class Sobol(_NativeEngine):
         if self.d == 0:
             return None
         if not self.scramble:
-            return _qmckit.sobol(self.d, self.bits)
+            return self._make("sobol", self.d, self.bits)
         if self.randomizer == "lms":
             images, shifts = _scipy_lms_maps(self.rng, self.d, self.bits)
-            return _qmckit.sobol(
-                self.d, self.bits, "affine", images=images, shifts=shifts
+            return self._make(
+                "sobol", self.d, self.bits, "affine", images=images, shifts=shifts
             )
-        return _qmckit.sobol(self.d, self.bits, self.randomizer, _draw_seed(self.rng))
+        return self._make("sobol", self.d, self.bits, self.randomizer, _draw_seed(self.rng))
 
     def _check_n(self, n):
         total = self.num_generated + n
@@ -370,7 +388,7 @@ class Halton(_NativeEngine):
         if self.d == 0:
             return None
         if not self.scramble:
-            return _qmckit.halton_scipy(self.base)
+            return self._make("halton_scipy", self.base)
         if self.randomizer == "perm":
             perms = [
                 np.ascontiguousarray(
@@ -378,8 +396,8 @@ class Halton(_NativeEngine):
                 )
                 for b in self.base
             ]
-            return _qmckit.halton_scipy(self.base, perms)
-        return _qmckit.halton(self.d, "owen", _draw_seed(self.rng))
+            return self._make("halton_scipy", self.base, perms)
+        return self._make("halton", self.d, "owen", _draw_seed(self.rng))
 
 
 class LatinHypercube(_NativeEngine):
@@ -433,7 +451,7 @@ class LatinHypercube(_NativeEngine):
 class _ShiftedEngine(_NativeEngine):
     """Engines randomized by a random shift modulo 1 (Cranley-Patterson)."""
 
-    _factory = None
+    _factory = None  # the name of the native builder
 
     @_transition_to_rng("seed", replace_doc=False)
     def __init__(self, d, *, scramble=True, optimization=None, rng=None):
@@ -443,9 +461,9 @@ class _ShiftedEngine(_NativeEngine):
         if d == 0:
             self._native = None
         elif scramble:
-            self._native = type(self)._factory(d, True, _draw_seed(self.rng))
+            self._native = self._make(self._factory, d, True, _draw_seed(self.rng))
         else:
-            self._native = type(self)._factory(d)
+            self._native = self._make(self._factory, d)
         self.maxn = self._native.len if self._native is not None else _INDEX_LIMIT
 
 
@@ -454,14 +472,14 @@ class Lattice(_ShiftedEngine):
     radical-inverse order: every prefix of ``2**m`` points is a lattice), randomly
     shifted when ``scramble``."""
 
-    _factory = staticmethod(_qmckit.lattice)
+    _factory = "lattice"
 
 
 class Kronecker(_ShiftedEngine):
     """The R_d Kronecker sequence ``frac(i alpha)`` (Roberts' generalized golden ratio),
     randomly shifted when ``scramble``."""
 
-    _factory = staticmethod(_qmckit.kronecker)
+    _factory = "kronecker"
 
 
 class Faure(_NativeEngine):
@@ -488,9 +506,9 @@ class Faure(_NativeEngine):
             self._native = None
         elif scramble:
             kind = "owen" if randomizer == "owen" else "perm-hash"
-            self._native = _qmckit.faure(d, kind, _draw_seed(self.rng))
+            self._native = self._make("faure", d, kind, _draw_seed(self.rng))
         else:
-            self._native = _qmckit.faure(d)
+            self._native = self._make("faure", d)
         self.maxn = self._native.len if self._native is not None else _INDEX_LIMIT
 
 
@@ -509,7 +527,7 @@ class PMJ02(_NativeEngine):
         self._init_quad = {"d": d, "optimization": optimization}
         super()._initialize(d=d, optimization=optimization, rng=rng)
         _check_2d(d)
-        self._native = _qmckit.pmj02(_draw_seed(self.rng))
+        self._native = self._make("pmj02", _draw_seed(self.rng))
 
 
 class PMJ02BN(_NativeEngine):
@@ -527,7 +545,7 @@ class PMJ02BN(_NativeEngine):
         super()._initialize(d=d, optimization=optimization, rng=rng)
         _check_2d(d)
         self.max_points = int(max_points)
-        self._native = _qmckit.pmj02bn(self.max_points, _draw_seed(self.rng))
+        self._native = self._make("pmj02bn", self.max_points, _draw_seed(self.rng))
         self.maxn = self.max_points
 
 
