@@ -135,7 +135,9 @@ class _NativeEngine(qmc.QMCEngine):
                 "fill() writes the raw points; optimization is applied by random()"
             )
         workers = _validate_workers(workers)
-        n = out.shape[0] if isinstance(out, np.ndarray) and out.ndim == 2 else -1
+        if not isinstance(out, np.ndarray) or out.ndim != 2:
+            raise ValueError("out must be a 2-D numpy array of shape (n, d)")
+        n = out.shape[0]
         _check_out(out, n, self.d, (np.float64, np.uint32))
         self._check_n(n)
         self._fill(out, workers)

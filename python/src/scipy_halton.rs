@@ -7,19 +7,23 @@
 //! `b2r_0 = 1 / b`, `b2r_(j+1) = b2r_j / b` (each division rounded), and `p_j` is the
 //! identity (unscrambled; the sum stops at the last nonzero digit) or SciPy's random
 //! permutation of position `j` (scrambled, `count = ceil(54 / log2 b) - 1` positions). Here
-//! the terms `p_j(r) * b2r_j` are tabulated once (the same products), the digits of
+//! the weights `b2r_j` are computed once, the scrambled terms `p_j(r) * b2r_j` tabulated
+//! once (the same products; unscrambled ones are `r * b2r_j` as they are used), the digits of
 //! consecutive indices are counted like an odometer, and each coordinate's sum is taken in
 //! the same order, so the bits are SciPy's. Adding the zero terms past the last nonzero
 //! digit of an unscrambled index changes nothing (`s + 0.0 == s`).
 
-/// One dimension: its base and the table `terms[j * base + r] = p_j(r) * b2r_j`.
+/// One dimension: its base, the weights `b2r_j`, and for a scrambled sequence the table
+/// `terms[j * base + r] = p_j(r) * b2r_j` (the size of SciPy's permutation array). The
+/// unscrambled terms `r * b2r_j` are computed as they are used (the same product), so a
+/// high base costs no table.
 #[derive(Clone, Debug)]
 pub struct Dimension {
     base: u64,
     positions: usize,
+    weights: Vec<f64>,
+    /// Empty for the unscrambled sequence.
     terms: Vec<f64>,
-    /// Unscrambled: the table's images are the digits themselves.
-    identity: bool,
 }
 
 /// Digit positions of an index below 2^64 in base `base >= 2` (an upper bound).
@@ -52,26 +56,28 @@ impl Dimension {
             }
             None => index_digits(base),
         };
-        let mut terms = Vec::new();
-        terms
-            .try_reserve_exact(positions * b)
-            .map_err(|_| format!("no memory for the digit tables of base {base}"))?;
+        let mut weights = Vec::with_capacity(positions);
         let mut b2r = 1.0 / base as f64;
-        for j in 0..positions {
-            for r in 0..b {
-                let image = match perms {
-                    Some((p, _)) => p.get(j * b + r).copied().unwrap_or(0) as f64,
-                    None => r as f64,
-                };
-                terms.push(image * b2r);
-            }
+        for _ in 0..positions {
+            weights.push(b2r);
             b2r /= base as f64;
+        }
+        let mut terms = Vec::new();
+        if let Some((p, _)) = perms {
+            terms
+                .try_reserve_exact(positions * b)
+                .map_err(|_| format!("no memory for the digit tables of base {base}"))?;
+            for (j, w) in weights.iter().enumerate() {
+                for r in 0..b {
+                    terms.push(p.get(j * b + r).copied().unwrap_or(0) as f64 * w);
+                }
+            }
         }
         Ok(Dimension {
             base,
             positions,
+            weights,
             terms,
-            identity: perms.is_none(),
         })
     }
 
@@ -122,12 +128,20 @@ impl Dimension {
             sums[..n].fill(0.0);
             // Positions with digits beyond the range are zero: an unscrambled table adds
             // 0.0 there, so they are skipped; a permuted one adds p_j(0).
-            let upto = if self.identity { used } else { positions };
-            for j in 0..upto {
-                let row_terms = self.terms.get(j * bu..(j + 1) * bu).unwrap_or(&[]);
-                let ds = block_digits.get(j * BLOCK..j * BLOCK + n).unwrap_or(&[]);
-                for (s, &d) in sums.iter_mut().zip(ds) {
-                    *s += row_terms.get(d as usize).copied().unwrap_or(0.0);
+            if self.terms.is_empty() {
+                for (j, &w) in self.weights.iter().enumerate().take(used) {
+                    let ds = block_digits.get(j * BLOCK..j * BLOCK + n).unwrap_or(&[]);
+                    for (s, &d) in sums.iter_mut().zip(ds) {
+                        *s += d as f64 * w;
+                    }
+                }
+            } else {
+                for j in 0..positions {
+                    let row_terms = self.terms.get(j * bu..(j + 1) * bu).unwrap_or(&[]);
+                    let ds = block_digits.get(j * BLOCK..j * BLOCK + n).unwrap_or(&[]);
+                    for (s, &d) in sums.iter_mut().zip(ds) {
+                        *s += row_terms.get(d as usize).copied().unwrap_or(0.0);
+                    }
                 }
             }
             for (k, s) in sums.iter().take(n).enumerate() {

@@ -49,6 +49,12 @@ def test_halton_unscrambled_equals_scipy(d):
     assert_array_equal(a, b)
 
 
+def test_halton_ten_thousand_dims_equal_scipy():
+    a, b = _pair(qmckit.Halton(10_000, scramble=False), qmc.Halton(10_000, scramble=False), 16,
+                 skip=1000)
+    assert_array_equal(a, b)
+
+
 def test_halton_high_indices_equal_scipy():
     """The last 64 indices below 2^32 (SciPy's fast_forward would draw 2^32 points, so
     its reference is its van der Corput function at that start index)."""
