@@ -65,6 +65,7 @@ pub mod bits;
 pub mod blue_noise;
 #[cfg(feature = "heapless")]
 pub mod buffer;
+pub mod catalog;
 #[cfg(feature = "std")]
 pub mod collect;
 pub mod digital;

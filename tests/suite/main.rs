@@ -5,6 +5,7 @@
 mod common;
 
 mod blue_noise;
+mod catalog;
 mod cli;
 mod cli_analysis;
 mod cli_hostile;

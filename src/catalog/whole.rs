@@ -1,0 +1,170 @@
+//! The sets built whole (`std`; the constructions themselves need `analysis`): the
+//! blue-noise sets and PMJ02BN, each estimated against its time budget before it starts
+//! and stopped at the budget's deadline.
+
+use super::{CatalogError, SamplerKind};
+
+/// Options of the blue-noise sets (each applies to the sets its field names).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct BlueNoiseOptions {
+    /// poisson: the disk radius, instead of `points`.
+    pub radius: Option<f64>,
+    /// poisson: toroidal distance.
+    pub torus: bool,
+    /// poisson: fill until no further disk fits.
+    pub maximal: bool,
+    /// poisson: candidates per step (default 30); best-candidate: the multiplier `m`
+    /// (default 10).
+    pub candidates: Option<u32>,
+    /// gaussian-blue-noise: gradient-descent iterations (default 500).
+    pub iterations: Option<u32>,
+}
+
+impl BlueNoiseOptions {
+    /// The first option given that `kind` does not take, with why.
+    pub(super) fn unused(&self, kind: SamplerKind) -> Option<(&'static str, &'static str)> {
+        let poisson = kind == SamplerKind::Poisson;
+        let only_poisson = "only poisson takes it";
+        [
+            ("radius", self.radius.is_some() && !poisson, only_poisson),
+            ("torus", self.torus && !poisson, only_poisson),
+            ("maximal", self.maximal && !poisson, only_poisson),
+            (
+                "candidates",
+                self.candidates.is_some()
+                    && !matches!(kind, SamplerKind::Poisson | SamplerKind::BestCandidate),
+                "only poisson and best-candidate take it",
+            ),
+            (
+                "iterations",
+                self.iterations.is_some() && kind != SamplerKind::GaussianBlueNoise,
+                "only gaussian-blue-noise takes it",
+            ),
+        ]
+        .into_iter()
+        .find(|(_, given, _)| *given)
+        .map(|(name, _, why)| (name, why))
+    }
+}
+
+#[cfg(feature = "analysis")]
+pub(super) use built::{blue_noise, pmj02bn};
+
+#[cfg(feature = "analysis")]
+mod built {
+    use super::{BlueNoiseOptions, CatalogError, SamplerKind};
+    use crate::blue_noise::{BestCandidate, GaussianBlueNoise, PointSet, PoissonDisk};
+    use crate::work::{Budget, Cost, Rate};
+
+    /// The set `kind` names: `n` points (poisson: about `n`, or `opts.radius`), `dims`
+    /// (poisson: 1 to 8, default 2; the others 2), `seed`, within `budget` (started here
+    /// if it was not). The same sets, bit for bit, as `qmckit points`.
+    pub(in crate::catalog) fn blue_noise(
+        kind: SamplerKind,
+        name: &'static str,
+        opts: &BlueNoiseOptions,
+        n: Option<u64>,
+        dims: Option<usize>,
+        seed: u64,
+        budget: &Budget,
+    ) -> Result<PointSet, CatalogError> {
+        let budget = budget.started();
+        let need_n = || {
+            n.ok_or(CatalogError::Parameter {
+                entry: name,
+                param: "points",
+                got: None,
+                expected: "needed: the number of points",
+            })
+        };
+        Ok(match kind {
+            SamplerKind::Poisson => {
+                let d = dims.unwrap_or(2);
+                let pd = match (opts.radius, n) {
+                    (Some(_), Some(_)) => {
+                        return Err(CatalogError::Parameter {
+                            entry: name,
+                            param: "radius",
+                            got: None,
+                            expected: "takes a radius or points (about N), not both",
+                        });
+                    }
+                    (Some(r), None) => PoissonDisk::new(d, r)?,
+                    (None, Some(n)) => PoissonDisk::with_points(d, n)?,
+                    (None, None) => {
+                        return Err(CatalogError::Parameter {
+                            entry: name,
+                            param: "points",
+                            got: None,
+                            expected: "needed, or a radius",
+                        });
+                    }
+                };
+                let mut pd = pd.torus(opts.torus).maximal(opts.maximal).seed(seed);
+                if let Some(k) = opts.candidates {
+                    pd = pd.candidates(k)?;
+                }
+                pd.generate_within(&budget)?
+            }
+            SamplerKind::BestCandidate => {
+                let mut bc = BestCandidate::new(need_n()?)?.seed(seed);
+                if let Some(m) = opts.candidates {
+                    bc = bc.candidates(m)?;
+                }
+                bc.generate_within(&budget)?
+            }
+            _ => {
+                let mut g = GaussianBlueNoise::new(need_n()?)?.seed(seed);
+                if let Some(i) = opts.iterations {
+                    g = g.iterations(i)?;
+                }
+                g.generate_within(&budget)?
+            }
+        })
+    }
+
+    /// PMJ02BN's throughput in cache: spread steps (a point at one of the `ceil(log2 n)`
+    /// levels) a second, one core, release (measured 2.5e6 to 2.8e6 for 10^4 to 10^5
+    /// points).
+    const PMJ02BN_STEPS: Rate = Rate::per_second(2.8e6);
+
+    /// The growth of a step's cost per doubling of `n` past `2^16` points, when the
+    /// workspace (`8n` to `16n` words) leaves the caches (measured: 10^6 points, 20
+    /// levels, 15 s).
+    const PMJ02BN_MEMORY: f64 = 0.3;
+
+    /// The first `n` points of the PMJ02BN sequence of `seed`, as a point set:
+    /// `O(n log n)`, estimated and refused past `budget`, stopped at its deadline, memory
+    /// checked by [`crate::size::vec_zeroed`]. The same points as `qmckit points pmj02bn`.
+    pub(in crate::catalog) fn pmj02bn(
+        n: u64,
+        seed: u64,
+        budget: &Budget,
+    ) -> Result<PointSet, CatalogError> {
+        use crate::pmj::bn;
+        let budget = budget.started();
+        let len = usize::try_from(n).unwrap_or(usize::MAX);
+        let work_len = bn::workspace_len(len)?;
+        let log = (n.max(2) as f64).log2();
+        let memory = 1.0 + PMJ02BN_MEMORY * (log - 16.0).max(0.0);
+        let steps = n as f64 * log.ceil() * memory;
+        budget.check("pmj02bn points", Cost::steps(steps, PMJ02BN_STEPS))?;
+        let mut pts = crate::size::vec_zeroed::<[u32; 2]>(len)?;
+        let mut work = crate::size::vec_zeroed::<u32>(work_len)?;
+        bn::fill_within(seed, &mut pts, &mut work, &budget)?;
+        drop(work);
+        let mut coords = crate::size::vec_with_capacity(crate::size::coordinates(n, 2)?)?;
+        coords.extend(pts.into_iter().flatten());
+        Ok(PointSet::new(coords, 2)?)
+    }
+}
+
+/// Without `analysis` the sets built whole are not compiled in.
+#[cfg(not(feature = "analysis"))]
+pub(super) const fn unavailable(name: &'static str) -> CatalogError {
+    CatalogError::Unused {
+        entry: name,
+        param: "the construction",
+        why: "the sets built whole need the analysis feature",
+    }
+}
