@@ -8,6 +8,7 @@ mod blue_noise;
 mod cli;
 mod cli_analysis;
 mod cli_hostile;
+mod cli_reference;
 mod conversions;
 mod digital;
 mod fixed_warps;
