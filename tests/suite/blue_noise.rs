@@ -624,7 +624,8 @@ mod cli {
     fn points_poisson_writes_the_library_set() {
         let out = run(
             &[
-                "points", "poisson", "--radius", "0.05", "--torus", "--seed", "4",
+                "points", "poisson", "--radius", "0.05", "--torus", "--seed", "4", "--format",
+                "u32",
             ],
             "",
         );
@@ -659,6 +660,8 @@ mod cli {
                 "3",
                 "--seed",
                 "2",
+                "--format",
+                "u32",
             ],
             "",
         );
@@ -678,6 +681,8 @@ mod cli {
                 "40",
                 "--iterations",
                 "5",
+                "--format",
+                "u32",
             ],
             "",
         );

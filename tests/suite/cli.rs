@@ -48,7 +48,9 @@ fn halton_u32_matches_the_library() {
 
 #[test]
 fn csv_round_trips_the_exact_values() {
-    let ints = stdout(&["points", "halton", "-n", "300", "-d", "5", "--start", "77"]);
+    let ints = stdout(&[
+        "points", "halton", "-n", "300", "-d", "5", "--start", "77", "--format", "u32",
+    ]);
     let csv = stdout(&[
         "points", "halton", "-n", "300", "-d", "5", "--start", "77", "--format", "csv",
     ]);
@@ -109,9 +111,13 @@ fn every_sampler_runs() {
         "--strata",
         "8x4",
         "--centered",
+        "--format",
+        "u32",
     ]);
     assert_eq!(text.lines().next(), Some("268435456 536870912")); // (1/16, 1/8)
-    let text = stdout(&["points", "vdc", "-n", "4", "--base", "3", "--start", "1"]);
+    let text = stdout(&[
+        "points", "vdc", "-n", "4", "--base", "3", "--start", "1", "--format", "u32",
+    ]);
     // phi_3(1..5) = 1/3, 2/3, 1/9, 4/9 rounded down to 0.32
     let want: Vec<String> = [1u64, 2, 1, 4]
         .iter()
@@ -124,12 +130,14 @@ fn every_sampler_runs() {
 #[test]
 fn sobol_gray_order_is_scipys() {
     // scipy: qmc.Sobol(3, scramble=False, bits=32).random(4) * 2^32
-    let text = stdout(&["points", "sobol", "-n", "4", "-d", "3", "--order", "gray"]);
+    let text = stdout(&[
+        "points", "sobol", "-n", "4", "-d", "3", "--order", "gray", "--format", "u32",
+    ]);
     let want = "0 0 0\n2147483648 2147483648 2147483648\n\
                 3221225472 1073741824 1073741824\n1073741824 3221225472 3221225472\n";
     assert_eq!(text, want);
     // Natural order swaps points 2 and 3.
-    let text = stdout(&["points", "sobol", "-n", "4", "-d", "3"]);
+    let text = stdout(&["points", "sobol", "-n", "4", "-d", "3", "--format", "u32"]);
     assert_eq!(
         text.lines().nth(3),
         Some("3221225472 1073741824 1073741824")
@@ -159,6 +167,8 @@ fn every_scramble_runs_and_base2_kinds_keep_the_net() {
             kind,
             "--seed",
             "5",
+            "--format",
+            "u32",
         ]);
         let pts: Vec<Vec<u32>> = text
             .lines()
@@ -186,6 +196,8 @@ fn every_scramble_runs_and_base2_kinds_keep_the_net() {
             kind,
             "--seed",
             "6",
+            "--format",
+            "u32",
         ]);
         assert_ne!(
             text.lines().take(4).collect::<Vec<_>>(),
@@ -206,6 +218,8 @@ fn every_scramble_runs_and_base2_kinds_keep_the_net() {
             "3",
             "--scramble",
             kind,
+            "--format",
+            "u32",
         ]);
         // Nine base-3 points: one in each ninth.
         let mut ninths: Vec<u64> = text
@@ -280,7 +294,9 @@ fn warps_write_real_coordinates_in_their_domains() {
     ]);
     assert_eq!(normal[1], vec![0.0, 0.0, 0.0]); // point 1 is (1/2, 1/2, 1/2)
     assert_usage_error(
-        &["points", "sobol", "-n", "2", "--warp", "disk"],
+        &[
+            "points", "sobol", "-n", "2", "--warp", "disk", "--format", "u32",
+        ],
         "csv or npy",
     );
     assert_usage_error(
@@ -515,6 +531,8 @@ fn scramble_rules_follow_the_library_types() {
         "rotate",
         "--seed",
         "3",
+        "--format",
+        "u32",
     ]);
     let h = Scrambled::new(Halton::new(2).unwrap(), CranleyPatterson::new(3));
     for (i, line) in text.lines().enumerate() {
@@ -535,6 +553,8 @@ fn scramble_rules_follow_the_library_types() {
         "fast-owen",
         "--seed",
         "9",
+        "--format",
+        "u32",
     ]);
     let sobol = lines(&[
         "points",
@@ -547,11 +567,16 @@ fn scramble_rules_follow_the_library_types() {
         "fast-owen",
         "--seed",
         "9",
+        "--format",
+        "u32",
     ]);
     assert_eq!(vdc, sobol);
     let s = Scrambled::new(Sobol::new(1).unwrap(), FastOwen::new(9));
     assert_eq!(vdc[17], s.sample(17, 0).unwrap());
-    assert_ne!(vdc, lines(&["points", "vdc", "-n", "64"]));
+    assert_ne!(
+        vdc,
+        lines(&["points", "vdc", "-n", "64", "--format", "u32"])
+    );
     // The base-2 kinds still refuse radical inverses in other bases.
     assert_usage_error(
         &[

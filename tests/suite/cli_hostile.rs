@@ -227,7 +227,16 @@ fn counts_that_overflow_or_truncate_are_refused() {
 fn streaming_output_has_bounded_memory() {
     // Aborted allocating 6.5 GB, then 1.4 GB for the second: now written in small batches.
     for args in [
-        &["points", "independent", "-n", "16384", "-d", "100000"][..],
+        &[
+            "points",
+            "independent",
+            "-n",
+            "16384",
+            "-d",
+            "100000",
+            "--format",
+            "u32",
+        ][..],
         &[
             "points",
             "sobol",
@@ -237,6 +246,8 @@ fn streaming_output_has_bounded_memory() {
             "21201",
             "--scramble",
             "lms",
+            "--format",
+            "u32",
         ][..],
     ] {
         let mut child = limited(1 << 20, args, None).spawn().unwrap(); // 1 GiB
@@ -429,7 +440,7 @@ fn input_is_read_as_written() {
 
 #[test]
 fn the_tool_reads_its_own_output() {
-    let u32s = points(&["sobol", "-n", "64"]);
+    let u32s = points(&["sobol", "-n", "64", "--format", "u32"]);
     let csv = points(&["sobol", "-n", "64", "--format", "csv"]);
     let a = answers(&["discrepancy"], &u32s);
     let b = answers(&["discrepancy"], &csv);
@@ -437,6 +448,18 @@ fn the_tool_reads_its_own_output() {
     assert_eq!(finite_values(&["u32"], &a).len(), 9);
     let spectrum_u32 = answers(&["spectrum", "--k-max", "4"], &u32s);
     assert_eq!(spectrum_u32, answers(&["spectrum", "--k-max", "4"], &csv));
+    // The default output (decimals, space-separated) reads back the same, with default
+    // options, in every measuring command.
+    let decimals = points(&["sobol", "-n", "64"]);
+    assert_eq!(decimals.lines().nth(1), Some("0.5 0.5"));
+    assert_eq!(answers(&["discrepancy"], &decimals), a);
+    assert_eq!(
+        answers(&["spectrum", "--k-max", "4"], &decimals),
+        spectrum_u32
+    );
+    for cmd in [&["pcf"][..], &["pcf", "--torus"], &["spectrum", "--radial"]] {
+        assert_eq!(answers(cmd, &decimals), answers(cmd, &u32s), "{cmd:?}");
+    }
     // npy files read back, from a file and from stdin.
     let dir = std::env::temp_dir().join(format!("qmckit-npy-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();

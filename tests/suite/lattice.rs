@@ -236,7 +236,9 @@ mod cli {
 
     #[test]
     fn points_lattice_is_qmcpys() {
-        let text = stdout(&["points", "lattice", "-n", "1024", "-d", "8"]);
+        let text = stdout(&[
+            "points", "lattice", "-n", "1024", "-d", "8", "--format", "u32",
+        ]);
         let golden = super::rows("qmcpy_lattice_natural_d8_n1024.txt");
         let got: Vec<Vec<u64>> = text
             .lines()
@@ -244,7 +246,7 @@ mod cli {
             .collect();
         assert_eq!(got, golden);
         let lin = stdout(&[
-            "points", "lattice", "-n", "256", "-d", "8", "--total", "256",
+            "points", "lattice", "-n", "256", "-d", "8", "--total", "256", "--format", "u32",
         ]);
         assert_eq!(
             lin.lines().nth(5).unwrap(),
@@ -261,7 +263,9 @@ mod cli {
         let path = std::env::temp_dir().join(format!("qmckit-lattice-{}.txt", std::process::id()));
         std::fs::write(&path, "# lattice\n2\n8 # n\n1\n3\n").unwrap();
         let p = path.to_str().unwrap();
-        let text = stdout(&["points", "lattice", "-n", "8", "-d", "2", "--vector", p]);
+        let text = stdout(&[
+            "points", "lattice", "-n", "8", "-d", "2", "--vector", p, "--format", "u32",
+        ]);
         // Extensible with n = 8, radical-inverse order: point 1 is (1/2, 3/2 mod 1).
         assert_eq!(text.lines().nth(1), Some("2147483648 2147483648"));
         assert_usage_error(
@@ -296,13 +300,24 @@ mod cli {
             "13",
             "--korobov",
             "5",
+            "--format",
+            "u32",
         ]);
         // z = (1, 5): point 2 is (2/13, 10/13).
         let want = format!("{} {}", (2u64 << 32) / 13, (10u64 << 32) / 13);
         assert_eq!(k.lines().nth(2), Some(want.as_str()));
-        let r2 = stdout(&["points", "kronecker", "-n", "2", "-d", "2"]);
+        let r2 = stdout(&[
+            "points",
+            "kronecker",
+            "-n",
+            "2",
+            "-d",
+            "2",
+            "--format",
+            "u32",
+        ]);
         assert_eq!(r2.lines().nth(1), Some("3242174889 2447445413"));
-        let f = stdout(&["points", "faure", "-n", "4", "-d", "3"]);
+        let f = stdout(&["points", "faure", "-n", "4", "-d", "3", "--format", "u32"]);
         let want = format!(
             "{} {} {}",
             (1u64 << 32) / 9,

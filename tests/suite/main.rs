@@ -9,6 +9,7 @@ mod catalog;
 mod cli;
 mod cli_analysis;
 mod cli_hostile;
+mod cli_reference;
 mod conversions;
 mod digital;
 mod fixed_warps;

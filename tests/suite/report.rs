@@ -69,6 +69,22 @@ fn quick_report_has_every_section_and_figure() {
     assert!(
         html.contains("<td>t-value of the first 32 points (t_value_u32, m = 5)</td><td>0</td>")
     );
+    // Sentences about measured numbers are computed from them: the variance note counts
+    // the rows that agree, with each row's distance in standard errors.
+    assert!(
+        html.contains("Prediction and measurement agree within 2 standard errors in "),
+        "the variance note"
+    );
+    assert!(html.contains("(|predicted - measured| / standard error: jittered "));
+    assert!(html.contains("In all 6 grids, every box holds exactly one point"));
+    // Error images carry their colour scale, one for the images compared side by side.
+    let scales: Vec<&str> = html
+        .split("error, independent: colour scale ±")
+        .skip(1)
+        .map(|rest| &rest[..rest.find(',').unwrap()])
+        .collect();
+    assert!(scales.len() >= 6, "{scales:?}");
+    assert!(html.contains("the 99th percentile of |error| over the 3 images compared"));
     let _ = std::fs::remove_dir_all(&dir);
 }
 

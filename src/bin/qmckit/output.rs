@@ -1,4 +1,4 @@
-//! Point output formats: `u32`, `csv`, `npy`.
+//! Point output formats: `decimal` (the default), `u32`, `csv`, `npy`.
 
 use std::io::Write;
 
@@ -9,6 +9,9 @@ use super::Failure;
 /// How points are written.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub enum Format {
+    /// One point a line: D space-separated decimals, the shortest text that parses back to
+    /// the exact value x / 2^32 (every 0.32 fraction is an f64).
+    Decimal,
     /// One point a line: D decimal integers (the 0.32 numerators x * 2^32), space-separated.
     U32,
     /// One point a line: D comma-separated decimals (shortest text that parses back to the
@@ -39,7 +42,7 @@ impl<W: Write> PointWriter<W> {
     /// A writer for `n` points of `dims` coordinates.
     pub fn new(out: W, format: Format, n: u64, dims: usize) -> Result<Self, Failure> {
         Ok(match format {
-            Format::U32 | Format::Csv => PointWriter::Text {
+            Format::Decimal | Format::U32 | Format::Csv => PointWriter::Text {
                 out,
                 format,
                 text: String::new(),
@@ -64,8 +67,8 @@ impl<W: Write> PointWriter<W> {
             |line, format, x| {
                 use std::fmt::Write as _;
                 match format {
-                    Format::Csv => write!(line, "{}", qmckit::bits::to_f64(x)),
-                    _ => write!(line, "{x}"),
+                    Format::U32 => write!(line, "{x}"),
+                    _ => write!(line, "{}", qmckit::bits::to_f64(x)),
                 }
                 .expect("writing to a String cannot fail")
             },
@@ -165,7 +168,7 @@ mod tests {
         let coords: Vec<u32> = (0..dims as u32)
             .map(|i| i.wrapping_mul(2_654_435_761))
             .collect();
-        for format in [Format::Csv, Format::U32] {
+        for format in [Format::Csv, Format::Decimal, Format::U32] {
             let mut w = PointWriter::new(Sink::default(), format, 1, dims).unwrap();
             w.write(&coords, dims).unwrap();
             w.write(&coords[..3], 3).unwrap();
@@ -181,10 +184,8 @@ mod tests {
             assert_eq!(values.len(), dims);
             for (v, &x) in values.iter().zip(&coords) {
                 match format {
-                    Format::Csv => {
-                        assert_eq!(v.parse::<f64>().unwrap(), f64::from(x) / 4294967296.0)
-                    }
-                    _ => assert_eq!(v.parse::<u32>().unwrap(), x),
+                    Format::U32 => assert_eq!(v.parse::<u32>().unwrap(), x),
+                    _ => assert_eq!(v.parse::<f64>().unwrap(), f64::from(x) / 4294967296.0),
                 }
             }
             assert_eq!(lines[1].split(sep).count(), 3);

@@ -1,6 +1,6 @@
 //! `qmckit pixel SAMPLER --resolution WxH --spp S [--seed K] --pixel X,Y [--dim D]
-//! [--randomize KIND] [--format u32|csv]`: the samples of one pixel, as pbrt-v4's samplers
-//! return them.
+//! [--randomize KIND] [--format decimal|u32|csv]`: the samples of one pixel, as pbrt-v4's
+//! samplers return them.
 
 use std::io::{BufWriter, Write};
 
@@ -27,8 +27,10 @@ max(D, 2), and the pixel position (GetPixel2D, a tile of the table) is not print
 --randomize (zsobol, sobol, padded-sobol): none, xor (pbrt's PermuteDigits), fast-owen (the
 default), owen. --spp must be a power of two for zsobol. --seed is pbrt's int seed (32 bits).
 
-Formats: u32 (default): 'index v1 x y', the values as integers v * 2^32; csv: 'index,v1,x,y'
-with the floats pbrt returns (min(float(v) 2^-32, 1 - 2^-24)), shortest round-trip text.";
+Formats: decimal (default): 'index v1 x y', the values v / 2^32 exactly, as the shortest
+decimals that parse back to them (every one is an f64); u32: 'index v1 x y', the values as
+integers v * 2^32; csv: 'index,v1,x,y' with the floats pbrt returns (min(float(v) 2^-32,
+1 - 2^-24)), shortest round-trip text.";
 
 /// The pixel samplers.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -63,6 +65,8 @@ pub enum RandomizeName {
 /// `--format`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub enum PixelFormat {
+    /// The exact values v / 2^32 as shortest round-trip decimals, space-separated.
+    Decimal,
     /// Integers v * 2^32.
     U32,
     /// pbrt's floats, comma-separated.
@@ -94,7 +98,7 @@ pub struct PixelArgs {
     #[arg(long, value_enum, default_value_t = RandomizeName::FastOwen)]
     pub randomize: RandomizeName,
     /// Output format.
-    #[arg(long, value_enum, default_value_t = PixelFormat::U32)]
+    #[arg(long, value_enum, default_value_t = PixelFormat::Decimal)]
     pub format: PixelFormat,
 }
 
@@ -167,6 +171,10 @@ pub fn run(args: &PixelArgs) -> Result<(), Failure> {
         let v = sampler.get_1d(x, y, i, args.dim)?;
         let [a, b] = sampler.get_2d(x, y, i, args.dim)?;
         match args.format {
+            PixelFormat::Decimal => {
+                use qmckit::bits::to_f64;
+                writeln!(out, "{index} {} {} {}", to_f64(v), to_f64(a), to_f64(b))?
+            }
             PixelFormat::U32 => writeln!(out, "{index} {v} {a} {b}")?,
             PixelFormat::Csv => writeln!(
                 out,

@@ -37,9 +37,11 @@ Limits: indices start..start+n-1 must lie in the construction (2^32 for the sequ
 halton at most 1024 dimensions, sobol as many as compiled in (21201 in the command).
 Output is written in batches of about 1 MiB, so memory stays bounded for any N.
 
-Formats: u32 (default), one point a line, the integers x * 2^32 separated by spaces;
-csv, decimals that parse back to the exact value; npy, float64 of shape (N, D).
-'qmckit discrepancy' and 'qmckit spectrum' read all three back with default options.
+Formats: decimal (default), one point a line, the coordinates x / 2^32 as the shortest
+decimals that parse back to the exact value (every one is an f64), separated by spaces;
+u32, the integers x * 2^32 (the numerators) separated by spaces; csv, the decimals
+separated by commas; npy, float64 of shape (N, D). 'qmckit discrepancy' and 'qmckit
+spectrum' read all four back with default options.
 
 Blue-noise sets (built whole; -n is the set size; --start, --total, --scramble, --warp do
 not apply):
@@ -161,7 +163,7 @@ pub struct PointsArgs {
     #[arg(long, value_enum)]
     order: Option<OrderName>,
     /// Output format.
-    #[arg(long, value_enum, default_value_t = Format::U32)]
+    #[arg(long, value_enum, default_value_t = Format::Decimal)]
     format: Format,
     /// Base of the van der Corput sequence (vdc only) [default: 2].
     #[arg(long)]
@@ -636,7 +638,7 @@ pub fn run(args: &PointsArgs) -> Result<(), Failure> {
         Some(name) => {
             if args.format == Format::U32 {
                 return Err(Failure::usage(
-                    "warped points are real numbers: use --format csv or npy",
+                    "warped points are real numbers: use --format decimal, csv or npy",
                 ));
             }
             Some(Warp::new(&args.warp, name, dims)?)

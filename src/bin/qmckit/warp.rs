@@ -40,7 +40,7 @@ pub enum WarpName {
 /// Parameters of the warps.
 #[derive(Args, Debug, Clone)]
 pub struct WarpArgs {
-    /// Map the points through a warp; output is real-valued (--format csv or npy).
+    /// Map the points through a warp; output is real-valued (--format decimal, csv or npy).
     #[arg(long, value_enum)]
     pub warp: Option<WarpName>,
     /// Cone half-angle in degrees (0 < angle <= 180; at least about 0.014, where its cosine

@@ -8,7 +8,7 @@ use qmckit::{Halton, Hammersley, Independent, LarcherPillichshammer, OwenSobol, 
 
 use super::super::Failure;
 use super::constructions::rmse_curve;
-use super::{Ctx, PLOT, Section, WIDE, pts2, row, sig};
+use super::{Ctx, PLOT, Section, WIDE, claims, pts2, row, sig};
 
 /// The slides of this group.
 pub fn sections(ctx: &Ctx) -> Result<Vec<Section>, Failure> {
@@ -29,13 +29,17 @@ fn three_sets(ctx: &Ctx) -> Result<Section, Failure> {
     let (di, ds, dl) = (ctx.star(&ind)?, ctx.star(&strat)?, ctx.star(&lp)?);
     let mut mi = 0.0;
     let mut ms = 0.0;
+    // The smallest and largest D* of the random sets over the seeds.
+    let (mut ri, mut rs) = ((f64::INFINITY, 0.0f64), (f64::INFINITY, 0.0f64));
     for seed in 0..seeds {
-        mi += ctx.star(&pts2(&Independent::new(2, seed + 100)?, n, (0, 1))?)?;
-        ms += ctx.star(&pts2(
+        let i = ctx.star(&pts2(&Independent::new(2, seed + 100)?, n, (0, 1))?)?;
+        let t = ctx.star(&pts2(
             &Stratified::new(&[8, 8], Jitter::Random(seed + 100))?,
             n,
             (0, 1),
         )?)?;
+        (mi, ms) = (mi + i, ms + t);
+        (ri, rs) = ((ri.0.min(i), ri.1.max(i)), (rs.0.min(t), rs.1.max(t)));
     }
     let mut s = Section::new(
         "three-point-sets",
@@ -80,9 +84,24 @@ fn three_sets(ctx: &Ctx) -> Result<Section, Failure> {
     ));
     s.rows
         .push(row("D* Larcher-Pillichshammer", sig(dl, 3), "0.041"));
-    s.note = "The lecture does not state N or its random sets; at N = 64 ours keep its order \
-              (independent > stratified > LP) and the random sets' D* varies from seed to seed."
-        .into();
+    let (mi, ms) = (mi / seeds as f64, ms / seeds as f64);
+    s.note = format!(
+        "The lecture does not state N or its random sets; its order is independent > \
+         stratified > LP. At N = {n}, {}; {}. Over the {seeds} seeds D* ranges from {} to {} \
+         (independent) and from {} to {} (stratified).",
+        claims::order(
+            "the drawn sets",
+            &[("independent", di), ("stratified", ds), ("LP", dl)]
+        ),
+        claims::order(
+            &format!("the means over {seeds} seeds"),
+            &[("independent", mi), ("stratified", ms), ("LP", dl)]
+        ),
+        sig(ri.0, 3),
+        sig(ri.1, 3),
+        sig(rs.0, 3),
+        sig(rs.1, 3),
+    );
     Ok(s)
 }
 
@@ -135,12 +154,31 @@ fn definition(ctx: &Ctx) -> Result<Section, Failure> {
     s.figures
         .push(ctx.figure("ld-rates.svg", &fig, WIDE, "D* against N")?);
     let names = ["Halton", "Hammersley", "log N / N"];
-    for (name, sl) in names.iter().zip(slopes) {
+    for (name, sl) in names.iter().zip(&slopes) {
         s.rows.push(row(
             format!("fitted slope of log D*, {name}"),
             sl.map_or("-".into(), |v| sig(v, 3)),
             "near -1 (up to log factors)",
         ));
+    }
+    if let [Some(seq), Some(set), Some(reference)] = slopes[..] {
+        s.note = format!(
+            "Over these N, log N / N itself fits a slope of {}. The Hammersley set's fitted \
+             slope ({}) is {} the Halton sequence's ({}){}.",
+            sig(reference, 3),
+            sig(set, 3),
+            if set < seq {
+                "steeper than"
+            } else {
+                "not steeper than"
+            },
+            sig(seq, 3),
+            if set < seq {
+                ", as one power of log N less predicts"
+            } else {
+                ", although one power of log N less predicts a steeper one"
+            }
+        );
     }
     Ok(s)
 }
@@ -151,12 +189,14 @@ fn koksma_hlawka(ctx: &Ctx) -> Result<Section, Failure> {
     let sobol = Sobol::new(2)?;
     let (mut err, mut bound) = (Vec::new(), Vec::new());
     let mut worst_ratio = 0.0f64;
+    let mut below = 0;
     for &n in &ns {
         let p = pts2(&sobol, n, (0, 1))?;
         // f(x, y) = x y: integral 1/4, Hardy-Krause variation (anchored at 1) 1 + 1 + 1 = 3.
         let e = (p.iter().map(|q| q[0] * q[1]).sum::<f64>() / n as f64 - 0.25).abs();
         let b = 3.0 * ctx.star(&p)?;
         worst_ratio = worst_ratio.max(e / b);
+        below += usize::from(e <= b);
         err.push((n as f64, e));
         bound.push((n as f64, b));
     }
@@ -200,6 +240,21 @@ fn koksma_hlawka(ctx: &Ctx) -> Result<Section, Failure> {
         sig(worst_ratio, 3),
         "not a tight bound (< 1)",
     ));
+    s.note = format!(
+        "{}; at its closest it is {} of the bound{}.",
+        claims::count(
+            below,
+            ns.len(),
+            "sizes N",
+            "the actual error is at most the bound"
+        ),
+        sig(worst_ratio, 3),
+        if worst_ratio < 0.5 {
+            ", so here the bound is loose by more than a factor of 2 at every N"
+        } else {
+            ", within a factor of 2 at some N"
+        }
+    );
     Ok(s)
 }
 
@@ -266,6 +321,7 @@ fn measured(ctx: &Ctx) -> Result<Section, Failure> {
         "~ -1 ((log N)^d / N)",
         "-1.5 (smooth f)",
     ];
+    let rates = [-0.5, -1.0, -1.0, -1.0, -1.5];
     let names = [
         "MC",
         "jittered",
@@ -273,16 +329,32 @@ fn measured(ctx: &Ctx) -> Result<Section, Failure> {
         "Sobol'",
         "Owen-scrambled Sobol'",
     ];
-    for ((name, sl), e) in names.iter().zip(slopes).zip(expected) {
+    for ((name, sl), e) in names.iter().zip(&slopes).zip(expected) {
         s.rows.push(row(
             format!("fitted slope, {name}"),
             sl.map_or("-".into(), |v| sig(v, 3)),
             e,
         ));
     }
-    s.note = "The lecture's plot has no printed slopes; the column gives the rates the lecture \
-              states. Unscrambled Sobol' beats them here because the Gaussian peak is symmetric \
-              about the centre, as are its 2^m-point nets; scrambling removes that luck."
-        .into();
+    let against: Vec<(&str, Option<f64>, f64)> = names
+        .iter()
+        .zip(&slopes)
+        .zip(rates)
+        .map(|((name, sl), rate)| (*name, *sl, rate))
+        .collect();
+    const TOLERANCE: f64 = 0.25;
+    // Unscrambled Sobol' (index 3) steeper than its stated rate: the symmetry explains it.
+    let lucky = slopes[3].is_some_and(|v| v < rates[3] - TOLERANCE);
+    s.note = format!(
+        "The lecture's plot has no printed slopes; the column gives the rates the lecture \
+         states. {}{}",
+        claims::slopes_against_rates(&against, TOLERANCE),
+        if lucky {
+            " Unscrambled Sobol' is steeper than its stated rate because the Gaussian peak is \
+             symmetric about the centre, as are its 2^m-point nets; scrambling removes that luck."
+        } else {
+            ""
+        }
+    );
     Ok(s)
 }

@@ -7,6 +7,7 @@
 //! [`nets`] (elementary intervals, (0,2)-sequences, blue-noise Sobol'), [`spectra`]
 //! (dithering, spectra, variance) and `scenes` (the rendered studies).
 
+mod claims;
 mod constructions;
 mod discrepancy;
 mod html;
@@ -204,6 +205,41 @@ pub fn sig(x: f64, digits: usize) -> String {
     }
 }
 
+/// The quantile of `|error|` that [`error_scale`] maps to full colour.
+pub const ERROR_QUANTILE: f64 = 0.99;
+
+/// The colour scale of error images shown side by side: the [`ERROR_QUANTILE`] quantile of
+/// `|error|` over all their finite pixels, so the bulk of the error shows in colour and only
+/// the largest 1% saturate (the largest value alone leaves almost every pixel white when a
+/// few pixels, e.g. on edges, err by much more). Falls back to the largest `|error|` when
+/// the quantile is zero, and is at least `1e-12`.
+pub fn error_scale<'a>(images: impl IntoIterator<Item = &'a [f64]>) -> f64 {
+    let mut all: Vec<f64> = images
+        .into_iter()
+        .flatten()
+        .map(|v| v.abs())
+        .filter(|v| v.is_finite())
+        .collect();
+    if all.is_empty() {
+        return 1e-12;
+    }
+    let largest = all.iter().copied().fold(0.0, f64::max);
+    let k = ((all.len() - 1) as f64 * ERROR_QUANTILE).round() as usize;
+    let (_, q, _) = all.select_nth_unstable_by(k, f64::total_cmp);
+    let q = if *q > 0.0 { *q } else { largest };
+    q.max(1e-12)
+}
+
+/// The caption of error image `name` drawn at `±scale` among `count` compared images.
+pub fn error_caption(name: &str, scale: f64, count: usize) -> String {
+    format!(
+        "error, {name}: colour scale ±{}, the {}th percentile of |error| over the {count} \
+         images compared (larger errors saturate)",
+        sig(scale, 2),
+        (ERROR_QUANTILE * 100.0).round()
+    )
+}
+
 /// A slide group's builder.
 type Builder = fn(&Ctx) -> Result<Vec<Section>, Failure>;
 
@@ -281,3 +317,28 @@ pub fn flat(p: &[[f64; 2]]) -> Vec<f64> {
 pub const PLOT: (u32, u32) = (420, 420);
 /// Size of a wide curve figure.
 pub const WIDE: (u32, u32) = (560, 420);
+
+#[cfg(test)]
+mod tests {
+    use super::{error_caption, error_scale};
+
+    #[test]
+    fn error_scale_is_a_robust_top_shared_by_the_images() {
+        // 990 pixels err by 0.01 or less, 10 edge pixels by 1: the scale is the bulk's, not
+        // the edges' (which would leave the bulk at 1% of full colour).
+        let bulk: Vec<f64> = (0..990).map(|i| 0.01 * (i % 2) as f64 - 0.005).collect();
+        let edges = [1.0; 10];
+        let m = error_scale([&bulk[..], &edges[..]]);
+        assert_eq!(m, 0.005);
+        // The same scale whichever image holds the edges.
+        assert_eq!(error_scale([&edges[..], &bulk[..]]), m);
+        // All zero but a few: the largest; all zero or nothing: a tiny positive scale.
+        let mut sparse = vec![0.0; 1000];
+        sparse[3] = -0.25;
+        assert_eq!(error_scale([&sparse[..]]), 0.25);
+        assert_eq!(error_scale([&[0.0, f64::NAN][..]]), 1e-12);
+        assert_eq!(error_scale(std::iter::empty::<&[f64]>()), 1e-12);
+        let c = error_caption("ZSobol", 0.0123, 3);
+        assert!(c.contains("±0.012") && c.contains("99th percentile") && c.contains("3 images"));
+    }
+}

@@ -9,7 +9,7 @@ use qmckit::work::Budget;
 use qmckit::{Sampler, Sobol};
 
 use super::super::Failure;
-use super::{Ctx, Section, pts2, row, sig};
+use super::{Ctx, Section, claims, error_caption, error_scale, pts2, row, sig};
 
 /// The slides of this group.
 pub fn sections(ctx: &Ctx) -> Result<Vec<Section>, Failure> {
@@ -33,9 +33,11 @@ fn intervals(ctx: &Ctx) -> Result<Section, Failure> {
     let mut s = Section::new(
         "elementary-intervals",
         "32 2D Sobol' points and their elementary intervals (1x32 ... 32x1)",
-        "Every elementary interval of volume 1/32 (2^a columns by 2^(5-a) rows) holds exactly one \
-         of the 32 points: the first 32 Sobol' points form a (0,5,2)-net in base 2.",
+        "The first 32 Sobol' points on each grid of elementary intervals of volume 1/32 (2^a \
+         columns by 2^(5-a) rows), with the boxes holding exactly one point counted: a \
+         (0,5,2)-net in base 2 has one point in every box of every grid.",
     );
+    let mut full = 0;
     s.figures.push(ctx.figure(
         "sobol32.svg",
         &PointsFigure::new("32 Sobol' points", p.clone()),
@@ -46,6 +48,7 @@ fn intervals(ctx: &Ctx) -> Result<Section, Failure> {
         let (c, r) = (1u32 << a, 1u32 << (5 - a));
         let fig = PointsFigure::new(format!("{c}x{r}"), p.clone()).intervals(c, r);
         let (good, cells) = fig.balanced_boxes().unwrap_or((0, 0));
+        full += usize::from(cells > 0 && good == cells);
         s.figures.push(ctx.figure(
             &format!("sobol32-{c}x{r}.svg"),
             &fig,
@@ -63,6 +66,15 @@ fn intervals(ctx: &Ctx) -> Result<Section, Failure> {
         t.to_string(),
         "0 (a (0,m,2)-net)",
     ));
+    s.note = format!(
+        "{}, and the t-value is {t}: the first 32 Sobol' points {} a (0,5,2)-net in base 2.",
+        claims::count(full, 6, "grids", "every box holds exactly one point"),
+        if full == 6 && t == 0 {
+            "form"
+        } else {
+            "do not form"
+        }
+    );
     Ok(s)
 }
 
@@ -75,10 +87,12 @@ fn zero_two(ctx: &Ctx) -> Result<Section, Failure> {
         "(0,2)-sequences: power-of-two runs are nets too",
         format!(
             "The first {} 2D Sobol' points in {runs} colours, one per run of {len} consecutive \
-         points: each run is a (0,4,2)-net by itself, and consecutive runs fill each other's gaps.",
+         points, with the t-value of each run and of all {} together (t = 0: a (0,m,2)-net).",
+            runs * len,
             runs * len
         ),
     );
+    let mut nets = 0;
     s.figures.push(
         ctx.figure(
             "zero-two.svg",
@@ -92,6 +106,7 @@ fn zero_two(ctx: &Ctx) -> Result<Section, Failure> {
     );
     for k in 0..runs {
         let t = t_value_u32(&raw(&sobol, k * len, len)?, 2, 4)?;
+        nets += usize::from(t == 0);
         s.rows.push(row(
             format!("t-value of points {}..{}", k * len, (k + 1) * len - 1),
             t.to_string(),
@@ -101,6 +116,21 @@ fn zero_two(ctx: &Ctx) -> Result<Section, Failure> {
     let t64 = t_value_u32(&raw(&sobol, 0, 64)?, 2, 6)?;
     s.rows
         .push(row("t-value of the first 64 points", t64.to_string(), "0"));
+    s.note = format!(
+        "{}; the first {} points have t = {t64}{}.",
+        claims::count(
+            nets,
+            runs as usize,
+            &format!("runs of {len}"),
+            "the points form a (0,4,2)-net by themselves (t = 0)"
+        ),
+        runs * len,
+        if t64 == 0 {
+            ", a (0,6,2)-net: consecutive runs fill each other's gaps"
+        } else {
+            ", not a (0,6,2)-net"
+        }
+    );
     Ok(s)
 }
 
@@ -115,11 +145,7 @@ fn blue_sobol(ctx: &Ctx) -> Result<Section, Failure> {
         f,
         &budget,
     )?;
-    let m = white
-        .error
-        .iter()
-        .chain(&blue.error)
-        .fold(0.0f64, |a, e| a.max(e.abs()));
+    let m = error_scale([&white.error[..], &blue.error[..]]);
     let mut s = Section::new(
         "blue-noise-sobol",
         "Blue-noise Sobol' (Ahmed & Wonka 2020)",
@@ -133,12 +159,17 @@ fn blue_sobol(ctx: &Ctx) -> Result<Section, Failure> {
         ("independent", &white, "bns-white.png"),
         ("ZSobol", &blue, "bns-zsobol.png"),
     ] {
-        let fig = ImageFigure::new(format!("error, {name}"), e.width, e.height, e.error.clone())
+        let title = format!("error, {name} (±{})", sig(m, 2));
+        let fig = ImageFigure::new(title, e.width, e.height, e.error.clone())
             .map_err(|x| Failure::usage(x.0))?
             .map(ColourMap::Diverging)
             .range(-m, m);
-        s.figures
-            .push(ctx.figure(file, &fig, (420, 360), format!("pixel error, {name}"))?);
+        s.figures.push(ctx.figure(
+            file,
+            &fig,
+            (420, 360),
+            format!("pixel {}", error_caption(name, m, 2)),
+        )?);
         s.rows
             .push(row(format!("{name}: RMSE"), sig(e.rmse, 3), ""));
         s.rows.push(row(
@@ -147,5 +178,15 @@ fn blue_sobol(ctx: &Ctx) -> Result<Section, Failure> {
             "",
         ));
     }
+    s.note = format!(
+        "ZSobol's per-pixel RMSE is {} than independent sampling's ({} against {}), and its \
+         error's low-band power is {} ({} against {}; white noise: 1).",
+        claims::factor(blue.rmse, white.rmse),
+        sig(blue.rmse, 3),
+        sig(white.rmse, 3),
+        claims::factor(blue.low_band, white.low_band),
+        sig(blue.low_band, 3),
+        sig(white.low_band, 3),
+    );
     Ok(s)
 }

@@ -8,7 +8,7 @@ use qmckit::plot::{ColourMap, ImageFigure, PointsFigure};
 use qmckit::work::{Cost, Rate, no_progress};
 
 use super::super::Failure;
-use super::{Ctx, Section, row, sig};
+use super::{Ctx, Section, claims, error_caption, error_scale, row, sig};
 
 /// The rate of [`scene::cost`]'s unit, integrand samples (a camera ray and at most one
 /// secondary ray): a few million a second on two cores.
@@ -50,9 +50,15 @@ pub fn sections(ctx: &Ctx) -> Result<Vec<Section>, Failure> {
         &shadow,
         &[("1x", 0), ("1/2.12x", 1), ("1/3.95x", 2)],
     )?;
-    mse.note = "Our scene (spheres on a plane) and integrands differ from the lecture's, so the \
-                ratios differ; their order (independent > stratified > Sobol') is the claim."
-        .into();
+    mse.note = format!(
+        "Our scene (spheres on a plane) and integrands differ from the lecture's, so the ratios \
+         differ; the lecture's order of the MSE is independent > stratified > Sobol'. {}.",
+        [&area, &shadow]
+            .iter()
+            .map(|st| mse_order(st))
+            .collect::<Vec<_>>()
+            .join("; ")
+    );
 
     let mut quad = Section::new(
         "quad-light",
@@ -89,8 +95,10 @@ pub fn sections(ctx: &Ctx) -> Result<Vec<Section>, Failure> {
         &motion,
         &[("1x", 0), ("1/1.13x", 1), ("1/1.80x", 2)],
     )?;
-    md.note =
-        "A different scene and shutter/aperture than the lecture's; the ratios are ours.".into();
+    md.note = format!(
+        "A different scene and shutter/aperture than the lecture's; the ratios are ours. {}.",
+        mse_order(&motion)
+    );
 
     let pl = Study::PixelLight.run_within(&o, &no_progress, &ctx.budget)?;
     let mut pls = Section::new(
@@ -104,10 +112,12 @@ pub fn sections(ctx: &Ctx) -> Result<Vec<Section>, Failure> {
     let mut aos = Section::new(
         "ambient-occlusion",
         "Ambient occlusion: white vs blue-noise error distribution",
-        "AO = integral of V(w) cos(theta) dw over the hemisphere; the same MSE, but the blue-noise \
-         sampler's error is spread at high frequencies (compare the error images).",
+        "AO = integral of V(w) cos(theta) dw over the hemisphere, rendered with independent, \
+         Owen-scrambled Sobol' and ZSobol (blue-noise) samples: the MSE, and where the error's \
+         power lies (compare the error images).",
     );
     add_study(ctx, &mut aos, "ao", &ao, &[])?;
+    aos.note = blue_against_white(&ao, "Owen-Sobol'", "ZSobol");
     Ok(vec![mse, quad, md, pls, aos])
 }
 
@@ -145,21 +155,50 @@ fn add_renders(ctx: &Ctx, s: &mut Section, stem: &str, st: &SceneStudy) -> Resul
             format!("{name}, {} spp", st.spp),
         )?);
     }
-    let m = st
-        .errors
-        .iter()
-        .flat_map(|e| e.1.pixels.iter())
-        .fold(0.0f64, |a, v| a.max(v.abs()))
-        .max(1e-12);
+    // One scale for the error images compared side by side.
+    let m = error_scale(st.errors.iter().map(|e| &e.1.pixels[..]));
     for (k, (name, im)) in st.errors.iter().enumerate() {
+        let title = format!("error, {name} (±{})", sig(m, 2));
         s.figures.push(ctx.figure(
             &format!("{stem}-error-{k}.png"),
-            &image(&format!("error, {name}"), im, ColourMap::Diverging)?.range(-m, m),
+            &image(&title, im, ColourMap::Diverging)?.range(-m, m),
             RENDER,
-            format!("error, {name}"),
+            error_caption(name, m, st.errors.len()),
         )?);
     }
     Ok(())
+}
+
+/// The study's measured MSE order, samplers as listed (the expected order, largest first).
+fn mse_order(st: &SceneStudy) -> String {
+    let values: Vec<(&str, f64)> = st.mse.iter().map(|e| (e.sampler.as_str(), e.mse)).collect();
+    claims::order(&format!("MSE in {}", st.name), &values)
+}
+
+/// Sampler `blue` against `white` in one study: whether their MSEs differ by more than two
+/// standard errors, and their error power at low frequencies.
+fn blue_against_white(st: &SceneStudy, white: &str, blue: &str) -> String {
+    let find = |name: &str| st.mse.iter().find(|e| e.sampler == name);
+    let (Some(w), Some(b)) = (find(white), find(blue)) else {
+        return String::new();
+    };
+    let se = w.mse_stderr.hypot(b.mse_stderr);
+    let z = claims::z_score(b.mse, w.mse, se);
+    format!(
+        "MSE: {blue} {}, {white} {}, {} standard errors of their difference apart ({}). Error \
+         power below a quarter of Nyquist (white noise: 1): {blue} {}, {white} {}, {} for {blue}.",
+        sig(b.mse, 3),
+        sig(w.mse, 3),
+        sig(z, 3),
+        if z <= 2.0 {
+            "equal within 2 standard errors"
+        } else {
+            "a difference beyond 2 standard errors"
+        },
+        sig(b.low_band, 3),
+        sig(w.low_band, 3),
+        claims::factor(b.low_band, w.low_band),
+    )
 }
 
 /// The renders and the MSE rows; `lecture[k]` is the lecture's ratio for entry `k`.

@@ -10,7 +10,7 @@ use qmckit::stratified::{Jitter, Stratified};
 use qmckit::{Halton, Independent, OwenSobol, Sampler, Sobol, bits};
 
 use super::super::Failure;
-use super::{Ctx, PLOT, Section, WIDE, flat, pts2, row, sig};
+use super::{Ctx, PLOT, Section, WIDE, claims, flat, pts2, row, sig};
 
 /// Size of a spectrum image (PNG).
 const SPEC: (u32, u32) = (440, 360);
@@ -231,17 +231,19 @@ fn colours(ctx: &Ctx) -> Result<Section, Failure> {
             "Mean periodograms of {sets} sets of {n} independent (white) and Poisson-disk-like (blue: Mitchell's best candidate) points."
         ),
     );
+    let r = (n as f64).sqrt() / 2.0;
+    let (lw, lb) = (low_band(&sw, r), low_band(&sb, r));
     s.figures.push(ctx.figure(
         "noise-white.png",
         &SpectrumFigure::from_spectrum("white noise", &sw).ceiling(4.0),
         SPEC,
-        "white: flat",
+        format!("white: mean power {} for |k| < sqrt(N)/2", sig(lw, 3)),
     )?);
     s.figures.push(ctx.figure(
         "noise-blue.png",
         &SpectrumFigure::from_spectrum("blue noise", &sb).ceiling(4.0),
         SPEC,
-        "blue: empty low frequencies",
+        format!("blue: mean power {} for |k| < sqrt(N)/2", sig(lb, 3)),
     )?);
     let radial = RadialFigure {
         title: "radial power".into(),
@@ -253,17 +255,22 @@ fn colours(ctx: &Ctx) -> Result<Section, Failure> {
     };
     s.figures
         .push(ctx.figure("noise-radial.svg", &radial, WIDE, "radial averages")?);
-    let r = (n as f64).sqrt() / 2.0;
     s.rows.push(row(
         "white: mean power |k| < sqrt(N)/2",
-        sig(low_band(&sw, r), 3),
+        sig(lw, 3),
         "flat (1)",
     ));
     s.rows.push(row(
         "blue: mean power |k| < sqrt(N)/2",
-        sig(low_band(&sb, r), 3),
+        sig(lb, 3),
         "near 0",
     ));
+    s.note = format!(
+        "Below sqrt(N)/2 the blue sets' mean power is {} than the white sets' ({} against {}).",
+        claims::factor(lb, lw),
+        sig(lb, 3),
+        sig(lw, 3)
+    );
     Ok(s)
 }
 
@@ -304,11 +311,12 @@ fn ld_spectra(ctx: &Ctx) -> Result<Section, Failure> {
         "ld-spectra",
         "Spectra of jittered, Halton, Sobol' and Owen-scrambled Sobol'",
         format!(
-            "Periodograms of {n} points (jittered and Owen-scrambled: mean of {sets} sets): the \
-         unscrambled sequences show sharp peaks (aliasing structure), scrambling spreads them."
+            "Periodograms of {n} points (jittered and Owen-scrambled: mean of {sets} sets); the \
+         largest value away from k = 0 shows how sharp the peaks of a structured set are."
         ),
     );
     let r = (n as f64).sqrt() / 2.0;
+    let mut peaks = Vec::new();
     for (name, file, spec) in &all {
         s.figures.push(ctx.figure(
             file,
@@ -331,7 +339,18 @@ fn ld_spectra(ctx: &Ctx) -> Result<Section, Failure> {
             sig(peak, 3),
             "",
         ));
+        peaks.push(peak);
     }
+    // all: jittered, Halton, Sobol', Owen-scrambled Sobol'.
+    let (halton, sobol, owen) = (peaks[1], peaks[2], peaks[3]);
+    s.note = format!(
+        "Largest P(k) away from k = 0 (white noise: about 1 on average): Halton {}, Sobol' {}, \
+         Owen-scrambled Sobol' {}: with scrambling the largest peak of Sobol' is {}.",
+        sig(halton, 3),
+        sig(sobol, 3),
+        sig(owen, 3),
+        claims::factor(owen, sobol)
+    );
     Ok(s)
 }
 
@@ -352,6 +371,7 @@ fn variance(ctx: &Ctx) -> Result<Section, Failure> {
         ),
     );
     let mut curves = Vec::new();
+    let mut compared = Vec::new();
     let kinds: [(&str, &str); 3] = [
         ("jittered", "var-jittered.png"),
         ("Poisson disk", "var-poisson.png"),
@@ -398,6 +418,7 @@ fn variance(ctx: &Ctx) -> Result<Section, Failure> {
             *name,
         )?);
         curves.push((name.to_string(), radial_curve(&mean)));
+        compared.push((*name, pred, measured.variance, measured.std_error));
         s.rows
             .push(row(format!("{name}: predicted variance"), sig(pred, 3), ""));
         s.rows.push(row(
@@ -425,8 +446,9 @@ fn variance(ctx: &Ctx) -> Result<Section, Failure> {
         WIDE,
         "radial averages",
     )?);
-    s.note = "The lecture shows these spectra without numbers; prediction and measurement agree within the \
-              measurement's standard error (a few dozen sets)."
-        .into();
+    s.note = format!(
+        "The lecture shows these spectra without numbers. {}",
+        claims::agreement(&compared, 2.0)
+    );
     Ok(s)
 }
