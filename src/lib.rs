@@ -45,9 +45,7 @@
 //! | feature | brings |
 //! |---|---|
 //! | `std` (default) | [`collect`] (`Vec`-returning helpers), run-time CPU dispatch, `std::error::Error` for [`Error`] |
-//! | `analysis` (default) | [`analysis`] (discrepancies, t-values, distances, spectra; rayon); implies `std` |
-//! | `cli` | the `qmckit` command (clap, npyz); implies `plot` and `sobol-dims-21201` |
-//! | `plot` | [`plot`]: figures of point sets, spectra, convergence and images as SVG or PNG (plotters, an embedded font); implies `analysis` |
+//! | `analysis` | `analysis` (discrepancies, t-values, distances, spectra; rayon, rustfft); implies `std` |
 //! | `sobol-dims-1024`, `sobol-dims-21201` | more Sobol' dimensions than the default 64 |
 //! | `fixed` | [`bits::to_fixed`] to `fixed::types::U0F32`, fixed-point warps ([`warp::fixed`]) |
 //! | `rand_core` | seeding from any `rand_core::Rng`, [`independent::fill_from_rng`] |
@@ -85,8 +83,6 @@ pub mod larcher_pillichshammer;
 pub mod latin_hypercube;
 pub mod lattice;
 pub mod pixel;
-#[cfg(feature = "plot")]
-pub mod plot;
 pub mod pmj;
 /// The former home of the Owen-scrambled Sobol' fast paths, now [`sobol::OwenSobol`].
 #[deprecated(note = "use qmckit::sobol::OwenSobol (one type, cheap reseed)")]

@@ -15,7 +15,8 @@
 //! | [`variance`] | integration variance predicted from a mean spectrum (torus-shifted samplers, disk and Gaussian integrands) and measured beside it |
 //! | [`pcf`] | pair correlation function of 2D point sets (UTK's definition, optionally toroidal) and the structure factor from it |
 //! | [`pointfile`] | reading point sets from text (the `qmckit discrepancy` input format) |
-//! | [`scene`] | analytic render scenes (spheres, plane, quad light, thin lens, motion blur, ambient occlusion) and the MSE of samplers against a reference |
+//! | [`screen_error`] | screen-space error of a pixel sampler: the error image of a per-pixel integrand and its low-frequency power |
+//! | [`stop`] | the shared deadline of a computation's parallel tasks |
 
 pub mod distance;
 pub mod integrate;
@@ -23,11 +24,10 @@ pub mod integration;
 pub mod l2;
 pub mod pcf;
 pub mod pointfile;
-pub mod scene;
 pub mod screen_error;
 pub mod spectrum;
 pub mod star;
-pub(crate) mod stop;
+pub mod stop;
 pub mod tvalue;
 pub mod variance;
 

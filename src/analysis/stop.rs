@@ -14,7 +14,7 @@ use core::sync::atomic::{AtomicBool, Ordering};
 
 /// The deadline of one computation, shared by its tasks.
 #[derive(Debug)]
-pub(crate) struct Stop {
+pub struct Stop {
     budget: Budget,
     what: &'static str,
     flag: AtomicBool,
@@ -22,7 +22,7 @@ pub(crate) struct Stop {
 
 impl Stop {
     /// The stop signal of the computation `what` under `budget` (started here if it was not).
-    pub(crate) fn new(budget: &Budget, what: &'static str) -> Self {
+    pub fn new(budget: &Budget, what: &'static str) -> Self {
         Stop {
             budget: budget.started(),
             what,
@@ -31,7 +31,7 @@ impl Stop {
     }
 
     /// The stop of a computation without a deadline (never raised).
-    pub(crate) const fn never(what: &'static str) -> Self {
+    pub const fn never(what: &'static str) -> Self {
         Stop {
             budget: Budget::UNLIMITED,
             what,
@@ -42,7 +42,7 @@ impl Stop {
     /// `true` when the computation must stop: already stopped, or the deadline has passed
     /// (one clock reading).
     #[inline]
-    pub(crate) fn check(&self) -> bool {
+    pub fn check(&self) -> bool {
         if self.flag.load(Ordering::Relaxed) {
             return true;
         }
@@ -58,7 +58,7 @@ impl Stop {
     /// # Errors
     /// [`Error::OutOfTime`] naming the computation.
     #[inline]
-    pub(crate) fn budget_check(&self) -> Result<()> {
+    pub fn budget_check(&self) -> Result<()> {
         if self.check() {
             Err(self.error())
         } else {
@@ -68,7 +68,7 @@ impl Stop {
 
     /// `true` once some task saw the deadline pass (no clock reading).
     #[inline]
-    pub(crate) fn stopped(&self) -> bool {
+    pub fn stopped(&self) -> bool {
         self.flag.load(Ordering::Relaxed)
     }
 
@@ -76,7 +76,7 @@ impl Stop {
     ///
     /// # Errors
     /// [`Error::OutOfTime`] naming the computation.
-    pub(crate) fn result(&self) -> Result<()> {
+    pub fn result(&self) -> Result<()> {
         if self.stopped() {
             Err(self.error())
         } else {
@@ -85,7 +85,7 @@ impl Stop {
     }
 
     /// The error of a stopped computation.
-    pub(crate) fn error(&self) -> Error {
+    pub fn error(&self) -> Error {
         Error::OutOfTime {
             what: self.what,
             budget_ms: millis(self.budget.max_seconds()),
@@ -96,7 +96,7 @@ impl Stop {
     ///
     /// # Errors
     /// [`Error::OutOfTime`] naming the computation.
-    pub(crate) fn finish<T>(&self, value: T) -> Result<T> {
+    pub fn finish<T>(&self, value: T) -> Result<T> {
         self.result().map(|()| value)
     }
 }
