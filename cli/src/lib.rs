@@ -149,7 +149,7 @@ fn one_line_text(message: &str) -> String {
 }
 
 /// The most worker threads a core that `RAYON_NUM_THREADS` may ask for (at least 256 in all).
-const MAX_THREADS_PER_CORE: usize = 64;
+pub const MAX_THREADS_PER_CORE: usize = 64;
 
 /// Builds the global worker pool before any command starts, so that a `RAYON_NUM_THREADS`
 /// the system cannot honour (more threads than its memory or limits allow) is a one-line
