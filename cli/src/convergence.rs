@@ -5,7 +5,7 @@ use std::io::{BufWriter, Write};
 
 use clap::{Args, ValueEnum};
 use qmckit::analysis::Points;
-use qmckit::analysis::integration::{Integrand, integration_error};
+use qmckit::analysis::integrate::{Integrand, integration_error};
 
 use qmckit::blue_noise::{BestCandidate, GaussianBlueNoise, PoissonDisk};
 use qmckit::randomize::{CranleyPatterson, Scrambled};

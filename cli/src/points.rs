@@ -3,12 +3,12 @@
 use std::io::BufWriter;
 
 use clap::{Args, ValueEnum};
+use qmckit::digital::sobol::{Order, Sobol};
 use qmckit::randomize::digits::DigitScramble;
 use qmckit::randomize::shuffle::Shuffled;
 use qmckit::randomize::{
     CranleyPatterson, DigitalShift, ExactOwen, FastOwen, Lms, OwenHash, Scrambled,
 };
-use qmckit::sobol::{Order, Sobol};
 use qmckit::{
     Base2Digital, Halton, Hammersley, Independent, Jitter, LarcherPillichshammer, LatinHypercube,
     Sampler, Stratified, VanDerCorput,

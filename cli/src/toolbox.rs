@@ -4,11 +4,12 @@
 use std::path::Path;
 
 use qmckit::Sampler;
-use qmckit::digital::{DigitalNetB, MAX_BASE, is_prime, quality};
-use qmckit::kronecker::Kronecker;
-use qmckit::lattice::{KUO_33002, Rank1Lattice, Tent, korobov, parse_lattice};
+use qmckit::analysis::tvalue::t_value_block;
+use qmckit::digital::{DigitalNetB, MAX_BASE, is_prime};
+use qmckit::lattice::kronecker::Kronecker;
+use qmckit::lattice::{KUO_33002, Rank1Lattice, korobov, parse_lattice};
 use qmckit::randomize::digits::DigitScramble;
-use qmckit::randomize::{CranleyPatterson, Scrambled};
+use qmckit::randomize::{CranleyPatterson, Scrambled, Tent};
 use qmckit::work::Budget;
 
 use super::Failure;
@@ -185,7 +186,7 @@ pub fn tvalue_faure(
         }
     }
     let t = super::progress::with_spinner("t-value (counting in base b)", || {
-        quality::t_value(&net, 0, m, budget)
+        t_value_block(&net, 0, m, budget)
     })?;
     Ok((t, b))
 }

@@ -5,9 +5,11 @@ use std::io::Write;
 
 use clap::{Args, ValueEnum};
 use qmckit::analysis::tvalue::{
-    COUNT_RATE, DigitalNet2, IntervalFailure, count_steps, elementary_interval_failures_u32_within,
-    t_value_u32_within, t_value_within,
+    COUNT_RATE, IntervalFailure, count_steps, elementary_interval_failures_u32_within,
+    t_value_u32_within,
 };
+use qmckit::digital::DigitalNet2;
+use qmckit::digital::rank::t_value_within;
 use qmckit::work::{Budget, Cost};
 
 use super::Failure;

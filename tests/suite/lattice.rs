@@ -2,9 +2,9 @@
 //! tests/golden/gen_qmcpy_lattice.py), exact integer arithmetic and high-precision R_d.
 
 use qmckit::Sampler;
-use qmckit::kronecker::Kronecker;
-use qmckit::lattice::{KUO_33002, Rank1Lattice, Shift, Tent, korobov, parse_lattice};
-use qmckit::randomize::{CranleyPatterson, Scrambled};
+use qmckit::lattice::kronecker::Kronecker;
+use qmckit::lattice::{KUO_33002, Rank1Lattice, korobov, parse_lattice};
+use qmckit::randomize::{CranleyPatterson, Scrambled, Shift, Tent};
 
 fn golden(name: &str) -> String {
     let path = format!("{}/tests/golden/{name}", env!("CARGO_MANIFEST_DIR"));

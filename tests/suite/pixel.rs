@@ -8,7 +8,7 @@
 
 use crate::common::first_net_failure;
 use qmckit::Error;
-use qmckit::pixel::pbrt_hash::{hash2, hash4, mix_bits, permutation_element};
+use qmckit::hash::pbrt::{hash2, hash4, mix_bits, permutation_element};
 use qmckit::pixel::{
     ImageSobol, IndependentPixels, PaddedSobol, PixelSampler, PixelStream, Pmj02Pixels,
     Randomization, ZSobol, pbrt_f32,
@@ -402,7 +402,7 @@ fn zsobol_error_is_blue_noise() {
 /// The fixed-size hashes equal MurmurHash64A of their packed bytes.
 #[test]
 fn word_hashes_equal_the_byte_hash() {
-    use qmckit::pixel::pbrt_hash::murmur_hash64a;
+    use qmckit::hash::pbrt::murmur_hash64a;
     for (a, b, c, d) in [
         (0u32, 0u32, 0u32, 0u32),
         (3, 5, 7, 11),
@@ -640,7 +640,7 @@ fn screen_error_study() {
 fn image_sobol_pads_past_its_table_as_pbrt_does() {
     use qmckit::pixel::{IMAGE_SOBOL_DIMS, PBRT_SOBOL_DIMS};
     // pbrt's rule on the compiled table: min(table, 1024) (1024 with the CLI's features).
-    let table = qmckit::sobol::SOBOL_MAX_DIMS.min(PBRT_SOBOL_DIMS as usize) as u32;
+    let table = qmckit::digital::sobol::SOBOL_MAX_DIMS.min(PBRT_SOBOL_DIMS as usize) as u32;
     assert_eq!(IMAGE_SOBOL_DIMS, table);
     let last = IMAGE_SOBOL_DIMS - 1;
     for r in ALL {

@@ -3,7 +3,7 @@
 
 use crate::plot::{ConvergenceFigure, Curve, Domain, PointsFigure};
 use qmckit::analysis::Points;
-use qmckit::analysis::integration::{Integrand, integration_error};
+use qmckit::analysis::integrate::{Integrand, integration_error};
 use qmckit::randomize::digits::DigitScramble;
 use qmckit::{Halton, Hammersley, RadicalInverse, Sobol, VanDerCorput, bits};
 

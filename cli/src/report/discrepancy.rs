@@ -2,8 +2,8 @@
 //! Koksma–Hlawka bound against the actual error, and measured QMC error against N.
 
 use crate::plot::{ConvergenceFigure, Curve, PointsFigure};
-use qmckit::analysis::integration::Integrand;
-use qmckit::stratified::{Jitter, Stratified};
+use qmckit::analysis::integrate::Integrand;
+use qmckit::random::stratified::{Jitter, Stratified};
 use qmckit::{Halton, Hammersley, Independent, LarcherPillichshammer, OwenSobol, Sobol};
 
 use super::super::Failure;

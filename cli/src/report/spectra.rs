@@ -6,7 +6,7 @@ use qmckit::analysis::Points;
 use qmckit::analysis::spectrum::{Spectrum, SpectrumMean, spectrum_2d_within};
 use qmckit::analysis::variance::{Measured, TorusIntegrand, predicted_variance, shifted_error};
 use qmckit::blue_noise::{BestCandidate, GaussianBlueNoise, PoissonDisk, VoidAndCluster};
-use qmckit::stratified::{Jitter, Stratified};
+use qmckit::random::stratified::{Jitter, Stratified};
 use qmckit::{Halton, Independent, OwenSobol, Sampler, Sobol, bits};
 
 use super::super::Failure;

@@ -7,7 +7,7 @@
 //! discrepancy `N D* = m/3 + 13/9 - (-1)^m 4/(9 2^m)` (De Clerck 1986).
 
 use crate::error::{Error, Result};
-use crate::halton::{HALTON_BASES, HALTON_MAX_DIMS};
+use crate::radical_inverse::halton::{HALTON_BASES, HALTON_MAX_DIMS};
 use crate::randomize::digits::DigitScramble;
 use crate::sampler::{Sampler, check, check_set};
 

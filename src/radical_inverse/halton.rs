@@ -39,7 +39,7 @@ pub static HALTON_BASES: [RadicalInverse; HALTON_MAX_DIMS] = {
 /// The `dim`-th prime (0-based: `prime(0) == Some(2)`), or `None` past the table.
 ///
 /// ```
-/// assert_eq!(qmckit::halton::prime(1023), Some(8161));
+/// assert_eq!(qmckit::radical_inverse::halton::prime(1023), Some(8161));
 /// ```
 pub const fn prime(dim: usize) -> Option<u32> {
     if dim < HALTON_MAX_DIMS {

@@ -1,9 +1,9 @@
 //! The t-value of a block of a base-`b` digital sequence, by counting points in elementary
 //! intervals with the exact coordinates.
 
-use super::DigitalNetB;
 use crate::analysis::Points;
 use crate::analysis::tvalue::{COUNT_RATE, count_steps, t_value_points_within};
+use crate::digital::DigitalNetB;
 use crate::error::{Error, Result};
 use crate::work::{Budget, Cost};
 
@@ -18,16 +18,17 @@ use crate::work::{Budget, Cost};
 ///
 /// ```
 /// use qmckit::work::Budget;
-/// use qmckit::digital::{DigitalNetB, quality::t_value};
+/// use qmckit::analysis::tvalue::t_value_block;
+/// use qmckit::digital::DigitalNetB;
 /// let f = DigitalNetB::faure(5, 4)?;
-/// assert_eq!(t_value(&f, 0, 3, &Budget::DEFAULT)?, 0); // a (0, 3, 4)-net in base 5
+/// assert_eq!(t_value_block(&f, 0, 3, &Budget::DEFAULT)?, 0); // a (0, 3, 4)-net in base 5
 /// # Ok::<(), qmckit::Error>(())
 /// ```
 ///
 /// # Errors
 /// [`Error::MTooLarge`] when `b^m` points do not fit from `start` or `b^m > 2^53`;
 /// [`Error::OverBudget`]; errors of the counting.
-pub fn t_value<M: AsRef<[u16]>>(
+pub fn t_value_block<M: AsRef<[u16]>>(
     net: &DigitalNetB<M>,
     start: u32,
     m: u32,
@@ -48,7 +49,7 @@ pub fn t_value<M: AsRef<[u16]>>(
             COUNT_RATE,
         ),
     )?;
-    let (k, _) = super::output_digits(net.base())?;
+    let (k, _) = crate::digital::output_digits(net.base())?;
     let drop = b.pow((k as u32).saturating_sub(m));
     let cells = n as f64;
     let mut x = crate::size::vec_zeroed(crate::size::coordinates(n, s)?)?;

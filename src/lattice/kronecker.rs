@@ -17,11 +17,11 @@
 //! `phi_d^-1` is found by bisection on `a^d (1 + a) = 1` in 0.64 fixed point
 //! (`u128` products, 64 steps of `O(log d)`), and `alpha_j = (phi_d^-1)^j` by squaring:
 //! integer-only, the same bits on every target. A random shift is
-//! [`crate::randomize::CranleyPatterson`] (or [`crate::lattice::Shift`]).
+//! [`crate::randomize::CranleyPatterson`] (or [`crate::randomize::Shift`]).
 //!
 //! ```
 //! use qmckit::Sampler;
-//! use qmckit::kronecker::Kronecker;
+//! use qmckit::lattice::kronecker::Kronecker;
 //! let r2 = Kronecker::r_d(2)?;
 //! assert_eq!([r2.sample(1, 0)?, r2.sample(1, 1)?], [0xC13F_A9A9, 0x91E1_0DA5]);
 //! assert_eq!(r2.sample(2, 0)?, 0xC13F_A9A9u32.wrapping_mul(2));

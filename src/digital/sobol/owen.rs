@@ -74,7 +74,7 @@ const fn reversed4(index: u32) -> [u32; 4] {
 /// The value is 32 bytes; the tables are shared by every seed.
 ///
 /// ```
-/// use qmckit::sobol::OwenSobol;
+/// use qmckit::digital::sobol::OwenSobol;
 /// let s = OwenSobol::new(4, 7)?;
 /// let mut px = [[0f32; 4]; 16];
 /// for pixel in 0..4u64 {
@@ -255,12 +255,12 @@ pub(crate) fn fill_blocks(s: &OwenSobol, indices: &[u32], out: &mut [[f32; 4]]) 
         match s.owen.hash() {
             OwenHash::Vegdahl => {
                 for (o, i) in out4.iter_mut().zip(idx4) {
-                    *o = block_f32(s, i, crate::randomize::vegdahl);
+                    *o = block_f32(s, i, crate::hash::vegdahl);
                 }
             }
             OwenHash::LaineKarras => {
                 for (o, i) in out4.iter_mut().zip(idx4) {
-                    *o = block_f32(s, i, crate::randomize::laine_karras);
+                    *o = block_f32(s, i, crate::hash::laine_karras);
                 }
             }
         }
@@ -324,7 +324,7 @@ impl Sampler for OwenSobol {
 /// [`Error::DimensionOutOfRange`] past [`SOBOL_MAX_DIMS`].
 ///
 /// ```
-/// use qmckit::sobol::{OwenSobol, owen_sobol};
+/// use qmckit::digital::sobol::{OwenSobol, owen_sobol};
 /// assert_eq!(owen_sobol(9, 2, 42)?, OwenSobol::new(3, 42)?.sample(9, 2)?);
 /// # Ok::<(), qmckit::Error>(())
 /// ```

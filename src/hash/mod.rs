@@ -1,5 +1,21 @@
 //! Integer hashing and keyed permutations: the randomness of the randomized samplers,
 //! as pure functions of `(seed, index, dimension)`, so every sampler stays random-access.
+//!
+//! All the crate's hashes live here:
+//!
+//! * [`mix64`], [`hash3`], [`uniform`], [`permute`]: qmckit's own (splitmix64's finalizer,
+//!   its nesting over arguments, and a keyed bijection of `[0, n)` by cycle walking); the
+//!   blue-noise generator steps [`mix64`] too.
+//! * [`laine_karras`], [`vegdahl`]: the nested hashes of hash-based Owen scrambling
+//!   ([`crate::randomize::FastOwen`]) and of index shuffling ([`crate::randomize::shuffle`]).
+//! * [`pbrt`]: pbrt-v4's hashes, bit for bit (`MixBits`, MurmurHash64A, `Hash(...)`,
+//!   `PermutationElement`), which key the pixel samplers ([`crate::pixel`]) and pbrt's exact
+//!   Owen scrambler ([`crate::randomize::PbrtOwenScrambler`]).
+
+mod nested;
+pub mod pbrt;
+
+pub use nested::{laine_karras, vegdahl};
 
 /// A bijective 64-bit mixer: the `splitmix64` finalizer (Steele, Lea & Flood 2014, with
 /// Stafford's "Mix13" constants). Every output bit depends on every input bit.

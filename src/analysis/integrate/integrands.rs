@@ -16,7 +16,7 @@
 //!
 //! Cost `O(N d)`; no allocation.
 
-use super::Points;
+use crate::analysis::Points;
 
 /// A test integrand on `[0, 1]^d` with a closed-form integral (see the module table).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -51,7 +51,7 @@ impl Integrand {
     /// `f(x)` for a point `x` in `[0, 1]^d`.
     ///
     /// ```
-    /// use qmckit::analysis::integration::Integrand;
+    /// use qmckit::analysis::integrate::Integrand;
     /// assert_eq!(Integrand::Gaussian.eval(&[0.5, 0.5]), 1.0);
     /// assert_eq!(Integrand::Ball.eval(&[0.5, 0.96]), 0.0);
     /// // sqrt(2) 0.1 - sqrt(3) 0.1 < 0 <= sqrt(2) 0.1:
@@ -86,7 +86,7 @@ impl Integrand {
     /// `I(f)`, the integral over `[0, 1]^d` (closed forms of the module table).
     ///
     /// ```
-    /// use qmckit::analysis::integration::Integrand;
+    /// use qmckit::analysis::integrate::Integrand;
     /// let disk = core::f64::consts::PI * 0.45 * 0.45;
     /// assert!((Integrand::Ball.exact(2) - disk).abs() < 1e-15);
     /// assert_eq!(Integrand::Heaviside.exact(7), 0.5);
@@ -137,7 +137,7 @@ impl Integrand {
 /// The signed integration error `(1/N) sum_i f(x_i) - I(f)` of the set (0 points: `-I(f)`).
 ///
 /// ```
-/// use qmckit::analysis::{Points, integration::{Integrand, integration_error}};
+/// use qmckit::analysis::{Points, integrate::{Integrand, integration_error}};
 /// // The centre alone: the Gaussian peak's value 1 against its integral
 /// // (sqrt(pi) erf(2) / 4)^2 = 0.4410...^2 = 0.1945...
 /// let e = integration_error(Points::new(&[0.5, 0.5], 2)?, Integrand::Gaussian);

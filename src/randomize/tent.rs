@@ -12,7 +12,7 @@ use crate::sampler::Sampler;
 /// reached only at `x = 1/2`, is returned as `0` (the same point of the torus).
 ///
 /// ```
-/// use qmckit::lattice::Tent;
+/// use qmckit::randomize::Tent;
 /// use qmckit::randomize::Randomizer;
 /// let t = Tent.scrambler(0);
 /// use qmckit::randomize::Scrambler;
@@ -66,8 +66,8 @@ impl<S: Sampler + ?Sized> Randomizes<S> for Tent {}
 /// this one reproduces a known shift (e.g. QMCPy's `Lattice.shift` times `2^32`).
 ///
 /// ```
-/// use qmckit::lattice::{Rank1Lattice, Shift};
-/// use qmckit::randomize::Scrambled;
+/// use qmckit::lattice::Rank1Lattice;
+/// use qmckit::randomize::{Scrambled, Shift};
 /// use qmckit::Sampler;
 /// let l = Scrambled::new(Rank1Lattice::linear([1u32, 3], 4)?, Shift::new([0x1000_0000u32, 0]));
 /// assert_eq!(l.sample(1, 0)?, 0x5000_0000); // 1/4 + 1/16

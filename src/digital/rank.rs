@@ -1,10 +1,15 @@
 //! The rank test: the exact t-value of a base-2 digital net from its generator matrices, as
 //! a depth-first search over shapes on an explicit stack, with its cost estimated first.
+//!
+//! A base-2 digital net ([`DigitalNet2`]) with `2^m` points is a (t, m, s)-net if and only
+//! if, for every shape `(d_1, .., d_s)` with `d_1 + .. + d_s = m - t`, the first `d_j` rows
+//! of each generator matrix `C_j` (restricted to the first `m` columns) are linearly
+//! independent over GF(2) (Niederreiter 1992, Lemma 4.52; Pirsic & Schmid 2001). The search
+//! looks for the smallest *dependent* shape; its size is `m - t + 1`.
 
 use super::DigitalNet2;
 use crate::Result;
-use crate::analysis::stop::Stop;
-use crate::work::{Budget, Cost, Progress, Rate, no_progress};
+use crate::work::{Budget, Cost, Progress, Rate, Stop, no_progress};
 
 /// Steps per second of the rank test's search: a step is one row inserted into the
 /// elimination (at most `m` XORs) or one search node entered (a 128-byte copy). Measured
@@ -42,7 +47,7 @@ impl Basis {
     }
 }
 
-/// The exact t-value of a base-2 digital net by the rank test (see the [module docs](super)),
+/// The exact t-value of a base-2 digital net by the rank test (see the [module docs](self)),
 /// within [`Budget::DEFAULT`].
 ///
 /// Searches the shapes `(d_1, .., d_s)` depth-first, dimension by dimension, adding the
@@ -59,7 +64,7 @@ impl Basis {
 /// As [`t_value_within`].
 ///
 /// ```
-/// use qmckit::analysis::tvalue::{DigitalNet2, t_value};
+/// use qmckit::digital::{DigitalNet2, rank::t_value};
 /// // Larcher–Pillichshammer and Hammersley are (0, m, 2)-nets; 2D Sobol' too.
 /// assert_eq!(t_value(&DigitalNet2::larcher_pillichshammer(4)?)?, 0);
 /// assert_eq!(t_value(&DigitalNet2::from_sobol(2, 10)?)?, 0);
@@ -96,7 +101,7 @@ pub fn t_value(net: &DigitalNet2) -> Result<u32> {
 ///
 /// ```
 /// use qmckit::work::{Budget, no_progress};
-/// use qmckit::analysis::tvalue::{DigitalNet2, t_value_within};
+/// use qmckit::digital::{DigitalNet2, rank::t_value_within};
 /// let net = DigitalNet2::from_sobol(3, 10)?;
 /// assert_eq!(t_value_within(&net, &Budget::DEFAULT, &no_progress)?, 1);
 /// let big = DigitalNet2::from_sobol(50, 32)?;
@@ -117,7 +122,7 @@ pub fn t_value_within(net: &DigitalNet2, budget: &Budget, progress: Progress<'_>
 /// As [`t_value`].
 ///
 /// ```
-/// use qmckit::analysis::tvalue::{DigitalNet2, dependent_shape};
+/// use qmckit::digital::{DigitalNet2, rank::dependent_shape};
 /// assert_eq!(dependent_shape(&DigitalNet2::hammersley(6)?)?, None);
 /// let s = dependent_shape(&DigitalNet2::from_sobol(3, 6)?)?.unwrap();
 /// assert_eq!(s.iter().sum::<u32>(), 6); // t = 1: a shape of size m - t + 1 = 6

@@ -37,7 +37,7 @@ pub(crate) const fn byte_product(t: &[[u32; 256]; 4], index: u32) -> u32 {
 /// needs no table.
 ///
 /// ```
-/// use qmckit::sobol::{SobolDimension, SobolTable};
+/// use qmckit::digital::sobol::{SobolDimension, SobolTable};
 /// let d = SobolDimension::new(3)?;
 /// let t = SobolTable::new(d);
 /// assert_eq!(t.sample(0xDEAD_BEEF), d.sample(0xDEAD_BEEF));

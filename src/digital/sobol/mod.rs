@@ -42,7 +42,7 @@ include!(concat!(env!("OUT_DIR"), "/sobol.rs"));
 ///
 /// ```
 /// // Joe & Kuo's dimension 3 (0-based 2): s = 2, a = 1, m = (1, 3).
-/// let v = qmckit::sobol::directions(2)?;
+/// let v = qmckit::digital::sobol::directions(2)?;
 /// assert_eq!(v[..2], [1 << 31, 3 << 30]);
 /// # Ok::<(), qmckit::Error>(())
 /// ```
@@ -78,7 +78,7 @@ const FILL_BLOCK: usize = 32;
 /// infallible and `const`.
 ///
 /// ```
-/// use qmckit::sobol::SobolDimension;
+/// use qmckit::digital::sobol::SobolDimension;
 /// const Y: SobolDimension = match SobolDimension::new(1) { Ok(d) => d, Err(_) => panic!() };
 /// // The second dimension's first points: 0, 1/2, 3/4, 1/4 (natural order).
 /// let ys: Vec<u32> = (0..4).map(|i| Y.sample(i) >> 30).collect();
@@ -171,7 +171,7 @@ fn checked_count(start: u32, len: usize, stride: usize) -> Result<usize> {
 /// ...` up to `u32::MAX`, each step one XOR (Antonov & Saleev 1979).
 ///
 /// ```
-/// use qmckit::sobol::SobolDimension;
+/// use qmckit::digital::sobol::SobolDimension;
 /// let d = SobolDimension::new(5)?;
 /// assert!(d.gray_from(100).take(50).zip(100u32..).all(|(x, i)| x == d.sample(i ^ (i >> 1))));
 /// # Ok::<(), qmckit::Error>(())
@@ -221,7 +221,7 @@ pub enum Order {
 /// The Sobol' sequence in `dims` dimensions (Joe & Kuo direction numbers), unscrambled.
 ///
 /// ```
-/// use qmckit::{Sampler, sobol::{Order, Sobol}};
+/// use qmckit::{Sampler, digital::sobol::{Order, Sobol}};
 /// let s = Sobol::new(3)?;
 /// assert_eq!(s.sample(1, 2)?, 1 << 31); // every dimension starts 0, 1/2
 /// let g = Sobol::with_order(3, Order::Gray)?;

@@ -1,5 +1,6 @@
-//! A shared stop signal for the parallel loops of the analysis: the deadline of a started
-//! [`Budget`] seen by every task of a computation.
+//! A shared stop signal for the loops of a budgeted computation (the measurements of
+//! `analysis`, the rank test of [`crate::digital::rank`]): the deadline of a started
+//! [`Budget`] seen by every task of the computation.
 //!
 //! A task calls [`Stop::check`] once per chunk of work (a row, a slab, a shape): it reads the
 //! clock (about 20 ns) and, past the deadline, raises a flag that every other task sees at

@@ -25,7 +25,7 @@
 //!
 //! ```
 //! use qmckit::Sampler;
-//! use qmckit::sobol::interlaced::Interlaced;
+//! use qmckit::digital::sobol::interlaced::Interlaced;
 //! let h = Interlaced::new(1, 2)?; // Sobol' dimensions 0 and 1 interleaved
 //! // Point 1 of 2D Sobol' is (1/2, 1/2): bits 1 and 1, so x = 0.11b = 3/4.
 //! assert_eq!(h.sample(1, 0)?, 0xC000_0000);

@@ -6,7 +6,7 @@
 /// v *= 0x81dadef4bc2dd44d; v ^= v >> 33`. A bijection of `u64`. `const`; 5 operations.
 ///
 /// ```
-/// assert_eq!(qmckit::pixel::pbrt_hash::mix_bits(1), 0xccde_22c1_faa4_d20f);
+/// assert_eq!(qmckit::hash::pbrt::mix_bits(1), 0xccde_22c1_faa4_d20f);
 /// ```
 #[inline]
 pub const fn mix_bits(mut v: u64) -> u64 {
@@ -21,7 +21,7 @@ pub const fn mix_bits(mut v: u64) -> u64 {
 /// `MurmurHash64A`. `const`; one multiply-xor round per 8 bytes.
 ///
 /// ```
-/// use qmckit::pixel::pbrt_hash::murmur_hash64a;
+/// use qmckit::hash::pbrt::murmur_hash64a;
 /// assert_eq!(murmur_hash64a(&[0; 8], 0), 0x7208_f7fa_198a_2d81);
 /// ```
 pub const fn murmur_hash64a(key: &[u8], seed: u64) -> u64 {
@@ -63,7 +63,7 @@ pub const fn murmur_hash64a(key: &[u8], seed: u64) -> u64 {
 /// 0, of their 8 little-endian bytes. `u32` arguments carry the same bits as pbrt's `int`s.
 ///
 /// ```
-/// use qmckit::pixel::pbrt_hash::hash2;
+/// use qmckit::hash::pbrt::hash2;
 /// assert_eq!(hash2(0, 0), 0x7208_f7fa_198a_2d81);
 /// assert_eq!(hash2(3, 7), 0x7ddd_e854_6997_7f6a);
 /// ```
@@ -76,7 +76,7 @@ pub const fn hash2(a: u32, b: u32) -> u64 {
 /// `(p.x, p.y, dim, seed)`.
 ///
 /// ```
-/// use qmckit::pixel::pbrt_hash::hash4;
+/// use qmckit::hash::pbrt::hash4;
 /// assert_eq!(hash4(3, 5, 0, 0), 0xd539_d46e_d315_9a89);
 /// ```
 #[inline]
@@ -116,7 +116,7 @@ const fn murmur_words(words: &[u64], len: u64) -> u64 {
 /// For `i < l`, `l >= 1`; returns 0 for `l = 0`. `O(1)` expected (fewer than 2 rounds).
 ///
 /// ```
-/// use qmckit::pixel::pbrt_hash::permutation_element;
+/// use qmckit::hash::pbrt::permutation_element;
 /// assert_eq!(permutation_element(3, 16, 0x1234_5678), 12);
 /// assert_eq!(permutation_element(5, 7, 42), 3);
 /// ```
