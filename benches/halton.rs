@@ -40,7 +40,7 @@ fn index_sets() -> [(&'static str, Vec<u32>); 2] {
 fn primes_u8(d: usize) -> Vec<u8> {
     (0..d)
         .map(|k| {
-            let p = qmckit::halton::prime(k).expect("prime in table");
+            let p = qmckit::radical_inverse::halton::prime(k).expect("prime in table");
             u8::try_from(p).expect("halton crate bases are u8")
         })
         .collect()

@@ -7,7 +7,7 @@ into an array, the same work as the peers' calls) and as the command
 stream; process start included, so N is large). The peers are the Python calls that
 return the float64 array. Best of 5 runs each, all in one run of this script.
 
-  cargo build --release --features cli
+  cargo build --release -p qmckit-cli
   pip install qmcpy scipy
   python3 benches/peers_python.py [path/to/qmckit]
 """

@@ -23,9 +23,9 @@
 use std::hint::black_box;
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
+use qmckit::digital::sobol::OwenSobol;
 use qmckit::hash::mix64;
 use qmckit::pixel::{PaddedSobol, PixelSampler, Randomization, ZSobol, ZSobolPixel, pbrt_f32};
-use qmckit::sobol::OwenSobol;
 
 const SIDE: u32 = 256;
 const SPP: usize = 16;

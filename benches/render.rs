@@ -18,9 +18,9 @@ use std::hint::black_box;
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use qmckit::Sampler;
+use qmckit::digital::sobol::{OwenSobol, Sobol};
 use qmckit::hash::mix64;
 use qmckit::randomize::{FastOwen, Scrambled};
-use qmckit::sobol::{OwenSobol, Sobol};
 
 /// Image side, samples a pixel, dimensions a sample.
 const SIDE: u32 = 256;

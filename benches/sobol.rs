@@ -34,10 +34,9 @@ use criterion::{BatchSize, BenchmarkGroup, BenchmarkId, Criterion, Throughput};
 use criterion::{criterion_group, criterion_main, measurement::WallTime};
 use qmckit::Sampler;
 use qmckit::bits::{gray, reverse_bits, to_f32};
-use qmckit::randomize::{
-    FastOwen, FastOwenScrambler, Scrambled, dimension_seed, shuffle::shuffle, vegdahl,
-};
-use qmckit::sobol::{Order, OwenSobol, Sobol, SobolDimension, SobolTable};
+use qmckit::digital::sobol::{Order, OwenSobol, Sobol, SobolDimension, SobolTable};
+use qmckit::hash::vegdahl;
+use qmckit::randomize::{FastOwen, FastOwenScrambler, Scrambled, dimension_seed, shuffle::shuffle};
 
 /// Points (indices) per iteration.
 const N: usize = 4096;

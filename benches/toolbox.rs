@@ -6,10 +6,10 @@ use std::hint::black_box;
 use std::time::Instant;
 
 use qmckit::digital::DigitalNetB;
-use qmckit::kronecker::Kronecker;
+use qmckit::digital::sobol::interlaced::Interlaced;
 use qmckit::lattice::Rank1Lattice;
+use qmckit::lattice::kronecker::Kronecker;
 use qmckit::randomize::{CranleyPatterson, DigitalShift, Lms, Scrambled};
-use qmckit::sobol::interlaced::Interlaced;
 use qmckit::{Sampler, Sobol};
 
 const N: usize = 1 << 20;

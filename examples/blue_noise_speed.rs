@@ -5,7 +5,7 @@
 //! run: `impl task points density seconds ns_per_point` (density: N r^2). Used by
 //! `scripts/blue_noise_speed.py`, which adds SciPy's `qmc.PoissonDisk`.
 //!
-//! `cargo run --release --example blue_noise_speed -- [R] [MASK_SIDE]`
+//! `cargo run --release --features analysis --example blue_noise_speed -- [R] [MASK_SIDE]`
 
 use std::time::Instant;
 

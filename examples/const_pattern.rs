@@ -5,8 +5,8 @@
 //!
 //! Run: `cargo run --example const_pattern`.
 
+use qmckit::digital::sobol::{OwenSobol, SobolDimension};
 use qmckit::randomize::FastOwen;
-use qmckit::sobol::{OwenSobol, SobolDimension};
 
 /// The scramble, fixed at build time.
 const OWEN: FastOwen = FastOwen::new(0x5EED);

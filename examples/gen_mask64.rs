@@ -1,5 +1,5 @@
 //! Writes `src/blue_noise/mask64.rs`, the 64×64 void-and-cluster mask as a static table
-//! (`cargo run --release --example gen_mask64 > src/blue_noise/mask64.rs`). The test
+//! (`cargo run --release --features analysis --example gen_mask64 > src/blue_noise/mask64.rs`). The test
 //! `mask::the_static_table_is_the_generated_mask` regenerates it and compares.
 
 use qmckit::blue_noise::VoidAndCluster;

@@ -43,7 +43,7 @@ fn main() {
         for d in [2usize, 8, 32] {
             let h = Halton::new(d).expect("dims");
             let primes: Vec<u8> = (0..d)
-                .map(|k| qmckit::halton::prime(k).expect("prime") as u8)
+                .map(|k| qmckit::radical_inverse::halton::prime(k).expect("prime") as u8)
                 .collect();
             let (mut a, mut b, mut c) = (vec![0u32; N * d], vec![0u32; N * d], vec![0f64; N * d]);
             let t = race(
@@ -124,7 +124,7 @@ fn sequential(rounds: usize) {
     for d in [2usize, 8, 32] {
         let h = Halton::new(d).expect("dims");
         let primes: Vec<u8> = (0..d)
-            .map(|k| qmckit::halton::prime(k).expect("prime") as u8)
+            .map(|k| qmckit::radical_inverse::halton::prime(k).expect("prime") as u8)
             .collect();
         let mut a = vec![0u32; N * d];
         let (mut b, mut c) = (vec![0f64; N * d], vec![0f64; N * d]);

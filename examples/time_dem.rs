@@ -1,7 +1,7 @@
 //! Times the exact star discrepancy (`star::dem::star_dem_within`) on the first `N` Sobol' points
 //! in `d` dimensions, with no work limit, for the measured rows of `qmckit::analysis::star::dem`.
 //!
-//! Usage: `cargo run --release --example time_dem -- DIMS N...`
+//! Usage: `cargo run --release --features analysis --example time_dem -- DIMS N...`
 //!
 //! For each `N` prints `d N D* seconds`.
 

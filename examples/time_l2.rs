@@ -1,7 +1,7 @@
 //! Times the L2-type discrepancies of `qmckit::analysis::l2` on one thread, for
 //! `scripts/time_discrepancy.py` (which times SciPy on the same points).
 //!
-//! Usage: `cargo run --release --example time_l2 -- FILE DIMS REPS [METRIC...]`
+//! Usage: `cargo run --release --features analysis --example time_l2 -- FILE DIMS REPS [METRIC...]`
 //!
 //! `FILE` holds the points as whitespace-separated decimal numbers, row-major, `DIMS` to a
 //! point. Each metric (command-line names `l2-star`, `cd`, `wd`, `md`, ...; default the

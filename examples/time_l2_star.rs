@@ -2,7 +2,7 @@
 //! thread, on uniform random points (SplitMix64, fixed seed), for the crossover table of
 //! `qmckit::analysis::l2::l2_star`.
 //!
-//! Usage: `cargo run --release --example time_l2_star -- DIMS DIRECT_MAX_LOG2 LOG2_N...`
+//! Usage: `cargo run --release --features analysis --example time_l2_star -- DIMS DIRECT_MAX_LOG2 LOG2_N...`
 //!
 //! For each `n = 2^LOG2_N` prints `d n fast_seconds direct_seconds relative_difference`;
 //! the pair sum is only run for `LOG2_N <= DIRECT_MAX_LOG2` (else `-`). Each timing is

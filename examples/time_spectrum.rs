@@ -1,7 +1,7 @@
 //! Times the periodogram of `qmckit::analysis::spectrum` (direct sums and NUFFT), for
 //! `scripts/time_spectrum.py` (which times finufft and numpy on the same points).
 //!
-//! Usage: `cargo run --release --example time_spectrum -- FILE K REPS TOLERANCE METHOD...`
+//! Usage: `cargo run --release --features analysis --example time_spectrum -- FILE K REPS TOLERANCE METHOD...`
 //!
 //! `FILE` holds the 2D points as whitespace-separated decimal numbers, row-major. Each
 //! method (`direct`, `nufft`) runs `REPS` times in the current rayon pool (set

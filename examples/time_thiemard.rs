@@ -2,7 +2,7 @@
 //! Sobol' points or `N` uniform random points in `d` dimensions, and whether the default
 //! budget accepts them, for calibrating `star::THIEMARD_RATE`.
 //!
-//! Usage: `cargo run --release --example time_thiemard -- sobol|random DIMS DELTA N...`
+//! Usage: `cargo run --release --features analysis --example time_thiemard -- sobol|random DIMS DELTA N...`
 //!
 //! For each `N` prints `d N delta lower upper seconds accepted-by-default`.
 

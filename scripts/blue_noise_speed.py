@@ -29,7 +29,8 @@ def main():
         rows.append(("scipy", f"poisson_r{a.scipy_radius}", n, n * a.scipy_radius**2, s, s / n * 1e9))
     for radius, side in ((a.scipy_radius, 64), (a.radius, a.side)):
         out = subprocess.run(
-            ["cargo", "run", "-q", "--release", "--example", "blue_noise_speed", "--",
+            ["cargo", "run", "-q", "--release", "--features", "analysis", "--example",
+             "blue_noise_speed", "--",
              str(radius), str(side)],
             check=True, capture_output=True, text=True).stdout
         for line in out.splitlines():

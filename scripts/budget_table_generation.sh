@@ -15,7 +15,7 @@
 # About four minutes on an idle two-core machine. Prints a Markdown table.
 set -u
 BIN=${1:-target/release/qmckit}
-[ -x "$BIN" ] || { echo "no binary at $BIN (cargo build --release --all-features)" >&2; exit 1; }
+[ -x "$BIN" ] || { echo "no binary at $BIN (cargo build --release -p qmckit-cli)" >&2; exit 1; }
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
 

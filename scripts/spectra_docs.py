@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The tables of docs/spectra.md, from the `qmckit` command alone.
 
-Run: `cargo build --release --features cli && python3 scripts/spectra_docs.py [SAMPLER..]`
+Run: `cargo build --release -p qmckit-cli && python3 scripts/spectra_docs.py [SAMPLER..]`
 from the repository root (numpy for the slope fits; the optional names restrict the rows).
 Prints markdown.
 

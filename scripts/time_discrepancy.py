@@ -8,7 +8,7 @@ Usage (from the repository root):
 For d in (2, 8) it draws N (default 4096) seeded uniform points and times, on the same
 points, `scipy.stats.qmc.discrepancy(x, method=..., workers=1)` for SciPy's four methods
 (L2-star, CD, WD, MD; in this process) and qmckit single-threaded (the example
-`examples/time_l2.rs`, built here with `cargo build --release --example time_l2`; each
+`examples/time_l2.rs`, built here with `cargo build --release --features analysis --example time_l2`; each
 metric 3 times in a one-thread rayon pool). The two alternate for R rounds (default 5) so
 that load on a shared machine hits both alike; each reports its best time. It prints a
 markdown table of milliseconds, the ratio SciPy / qmckit, the relative difference of the
@@ -85,7 +85,8 @@ def main():
     args = ap.parse_args()
     exe = args.exe
     if exe is None:
-        subprocess.run(["cargo", "build", "--release", "--quiet", "--example", "time_l2"],
+        subprocess.run(["cargo", "build", "--release", "--quiet", "--features", "analysis",
+                        "--example", "time_l2"],
                        cwd=ROOT, check=True)
         exe = EXE
     rng = np.random.default_rng(args.seed)

@@ -55,7 +55,8 @@ def numpy_direct(x, k):
     return time.perf_counter() - t0
 
 
-subprocess.run(["cargo", "build", "--release", "--example", "time_spectrum"], cwd=ROOT, check=True)
+subprocess.run(["cargo", "build", "--release", "--features", "analysis", "--example", "time_spectrum"],
+               cwd=ROOT, check=True)
 rng = np.random.default_rng(1)
 with tempfile.TemporaryDirectory() as tmp:
     for n, k in [(4096, 256), (65536, 512)]:

@@ -120,6 +120,7 @@ pub const fn to_fixed(x: u32) -> fixed::types::U0F32 {
 /// assert_eq!(f32::from_fraction(u32::MAX), 1.0 - f32::EPSILON / 2.0);
 /// assert_eq!(u32::from_fraction(7), 7);
 /// ```
+#[cfg_attr(not(feature = "fixed"), allow(rustdoc::broken_intra_doc_links))]
 pub trait FromFraction: Copy {
     /// The fraction `x / 2^32` in this type.
     fn from_fraction(x: u32) -> Self;

@@ -20,12 +20,12 @@
 use std::vec::Vec;
 
 use crate::bits::FromFraction;
+use crate::digital::sobol::Sobol;
 use crate::error::{Error, Result};
-use crate::halton::Halton;
+use crate::radical_inverse::halton::Halton;
 use crate::randomize::digits::DigitScramble;
 use crate::randomize::{FastOwen, Scrambled};
 use crate::sampler::Sampler;
-use crate::sobol::Sobol;
 
 /// Points `0 .. n` of `sampler`, row-major (`sampler.dims()` values a point), converted to
 /// `T` (`f64`, `f32`, `u32`, ...) as [`Sampler::fill_as`] converts.

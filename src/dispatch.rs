@@ -15,8 +15,8 @@
 #![allow(unsafe_code)]
 
 use crate::bits::FromFraction;
+use crate::digital::sobol::{OwenSobol, owen_fill_blocks};
 use crate::randomize::Scrambler;
-use crate::sobol::{OwenSobol, owen_fill_blocks};
 
 /// The widest build this CPU runs.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

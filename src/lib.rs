@@ -1,11 +1,32 @@
 //! # qmckit — quasi-Monte Carlo sampling from microcontrollers to servers
 //!
 //! Low-discrepancy sequences and nets (radical inverse, van der Corput, Halton, Hammersley,
-//! Larcher–Pillichshammer, [`Sobol`] with Joe–Kuo's 21201 dimensions), their
-//! randomizations ([`randomize`]: digital shift, Cranley–Patterson, Owen exact and
-//! hash-based, linear matrix scrambling, index shuffling, base-`b` digit permutations), and
-//! the classic random samplers they are measured against (independent, stratified/jittered,
-//! Latin hypercube), all as pure random-access functions of `(index, dimension)`.
+//! Larcher–Pillichshammer, [`Sobol`] with Joe–Kuo's 21201 dimensions, Faure, rank-1
+//! lattices, Kronecker sequences), their randomizations ([`randomize`]: digital shift,
+//! Cranley–Patterson, Owen exact and hash-based, linear matrix scrambling, index shuffling,
+//! base-`b` digit permutations), and the classic random samplers they are measured against
+//! (independent, stratified/jittered, Latin hypercube), all as pure random-access functions
+//! of `(index, dimension)`. [`prelude`] brings the [`Sampler`] trait, the main samplers and
+//! [`Error`]/[`Result`] into scope.
+//!
+//! ## The tree, by layer
+//!
+//! Each layer builds on the ones above it. The exceptions reach into [`randomize`], which
+//! itself needs only the core: constructions apply some randomizations inside them (the
+//! base-`b` digit scrambles of [`RadicalInverse`], [`OwenSobol`]'s hash-based Owen
+//! scrambling), and [`Sampler::fill_affine`] takes its affine maps ([`randomize::Affine`]).
+//! No module outside `analysis` imports `analysis`.
+//!
+//! | layer | modules |
+//! |---|---|
+//! | core | [`bits`] (0.32 fractions, conversions), [`hash`] (integer hashes and keyed permutations), [`error`], [`size`] (checked sizes and allocations), [`work`] (cost estimates, budgets, deadlines), run-time CPU dispatch; [`sampler`] (the [`Sampler`] trait) |
+//! | constructions | [`radical_inverse`] (with van der Corput, Halton, Hammersley), [`digital`] (Sobol', Larcher–Pillichshammer, Faure, base-`b` nets, base-2 nets and their t-values by the rank test), [`lattice`] (rank-1 lattices, Kronecker), [`random`] (independent, stratified, Latin hypercube), [`pmj`] (progressive multi-jittered) |
+//! | randomizations | [`randomize`] (shifts, Owen scrambling, matrix scrambling, shuffles, the tent map) |
+//! | uses | [`pixel`] (renderers' pixel samplers), [`blue_noise`] (blue-noise sets and dither masks), [`warp`] (to disks, spheres, triangles, Gaussians), [`collect`] (`Vec`s of points), `buffer` (fixed-capacity points, feature `heapless`) |
+//! | measurements | `analysis` (feature `analysis`: discrepancies, t-values by counting, spectra, integration error) |
+//!
+//! The `qmckit` command (generation, measurement, figures, the lecture's report) is not
+//! part of this library: it is the package `qmckit-cli` in the repository's `cli/`.
 //!
 //! ## The integer is the sample
 //!
@@ -45,13 +66,11 @@
 //! | feature | brings |
 //! |---|---|
 //! | `std` (default) | [`collect`] (`Vec`-returning helpers), run-time CPU dispatch, `std::error::Error` for [`Error`] |
-//! | `analysis` (default) | [`analysis`] (discrepancies, t-values, distances, spectra; rayon); implies `std` |
-//! | `cli` | the `qmckit` command (clap, npyz); implies `plot` and `sobol-dims-21201` |
-//! | `plot` | [`plot`]: figures of point sets, spectra, convergence and images as SVG or PNG (plotters, an embedded font); implies `analysis` |
+//! | `analysis` | `analysis` (discrepancies, t-values, distances, spectra, integration; rayon, rustfft) and the blue-noise point sets; implies `std` |
 //! | `sobol-dims-1024`, `sobol-dims-21201` | more Sobol' dimensions than the default 64 |
-//! | `fixed` | [`bits::to_fixed`] to `fixed::types::U0F32`, fixed-point warps ([`warp::fixed`]) |
-//! | `rand_core` | seeding from any `rand_core::Rng`, [`independent::fill_from_rng`] |
-//! | `heapless` | [`buffer::points`]: fixed-capacity point buffers |
+//! | `fixed` | `bits::to_fixed` to `fixed::types::U0F32`, fixed-point warps (`warp::fixed`) |
+//! | `rand_core` | seeding from any `rand_core::Rng`, `random::independent::fill_from_rng` |
+//! | `heapless` | `buffer::points`: fixed-capacity point buffers |
 //! | `libm` | the float warps ([`warp`]: disk, sphere, triangle, spherical, gaussian), also in `no_std`; implied by `std` |
 //! | `defmt` | `defmt::Format` on the public types |
 #![cfg_attr(not(feature = "std"), no_std)]
@@ -71,54 +90,34 @@ pub mod collect;
 pub mod digital;
 pub(crate) mod dispatch;
 pub mod error;
-/// Deprecated path of the fixed-point warps: use [`warp::fixed`].
-#[cfg(feature = "fixed")]
-#[deprecated(note = "the fixed-point warps moved to `qmckit::warp::fixed`")]
-pub mod fixed_warp {
-    pub use crate::warp::fixed::*;
-}
-pub mod halton;
-pub mod hammersley;
 pub mod hash;
-pub mod independent;
-pub mod kronecker;
-pub mod larcher_pillichshammer;
-pub mod latin_hypercube;
 pub mod lattice;
 pub mod pixel;
-#[cfg(feature = "plot")]
-pub mod plot;
 pub mod pmj;
-/// The former home of the Owen-scrambled Sobol' fast paths, now [`sobol::OwenSobol`].
-#[deprecated(note = "use qmckit::sobol::OwenSobol (one type, cheap reseed)")]
-pub mod owen_sobol {
-    pub use crate::sobol::{OwenSobol, owen_sobol, owen_sobol_f32};
-}
+pub mod prelude;
 pub mod radical_inverse;
+pub mod random;
 pub mod randomize;
 pub mod sampler;
 pub mod size;
-pub mod sobol;
-pub mod stratified;
-pub mod van_der_corput;
 #[cfg(any(feature = "libm", feature = "fixed"))]
 pub mod warp;
 pub mod work;
 
+pub use digital::lp::LarcherPillichshammer;
+pub use digital::sobol::{OwenSobol, SOBOL_MAX_DIMS, Sobol};
 pub use error::{Error, Result};
-pub use halton::{HALTON_MAX_DIMS, Halton};
-pub use hammersley::Hammersley;
-pub use independent::Independent;
-pub use larcher_pillichshammer::LarcherPillichshammer;
-pub use latin_hypercube::LatinHypercube;
+pub use radical_inverse::halton::{HALTON_MAX_DIMS, Halton};
+pub use radical_inverse::hammersley::Hammersley;
+pub use radical_inverse::van_der_corput::VanDerCorput;
 pub use radical_inverse::{RadicalInverse, RadicalInverseIter};
+pub use random::independent::Independent;
+pub use random::latin_hypercube::LatinHypercube;
+pub use random::stratified::{Jitter, Stratified};
 pub use sampler::{Base2Digital, Sampler};
-pub use sobol::{OwenSobol, SOBOL_MAX_DIMS, Sobol};
-pub use stratified::{Jitter, Stratified};
-pub use van_der_corput::VanDerCorput;
 
 /// The README's examples, compiled and run as doctests.
-#[cfg(doctest)]
+#[cfg(all(doctest, feature = "analysis"))]
 #[doc = include_str!("../README.md")]
 pub struct ReadmeDoctests;
 
@@ -128,7 +127,7 @@ pub struct ReadmeDoctests;
 pub struct ToolboxDoctests;
 
 /// The analysis guide's examples, compiled and run as doctests.
-#[cfg(doctest)]
+#[cfg(all(doctest, feature = "analysis"))]
 #[doc = include_str!("../docs/analysis.md")]
 pub struct AnalysisDoctests;
 

@@ -36,6 +36,11 @@
 
 use crate::{Error, Result};
 
+#[cfg(feature = "std")]
+mod stop;
+#[cfg(feature = "std")]
+pub use stop::Stop;
+
 /// How far past its budget a started computation may run before its deadline stops it:
 /// the deadline is `start + GRACE * seconds`.
 pub const GRACE: f64 = 1.25;

@@ -1,6 +1,6 @@
 //! Fuzzes the `qmckit` command line: any argument vector must end in exit code 0, 1 or 2
-//! without a panic (a panic aborts the fuzzer and fails the run). The command's own code is
-//! compiled in, so coverage guides the search through its parsers and checks.
+//! without a panic (a panic aborts the fuzzer and fails the run). The command runs in-process
+//! (`qmckit_cli::run_cli`), so coverage guides the search through its parsers and checks.
 //!
 //! The input is split at NUL bytes into arguments after a command chosen by its first byte.
 //! Standard input should be empty (`< /dev/null`) and standard output discarded. Arguments
@@ -11,10 +11,6 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-
-#[allow(dead_code)]
-#[path = "../../src/bin/qmckit/main.rs"]
-mod qmckit_cli;
 
 /// The commands, chosen by the first byte.
 const COMMANDS: [&str; 6] = [

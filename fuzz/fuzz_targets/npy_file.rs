@@ -1,15 +1,11 @@
 //! Fuzzes the `.npy` reader of the measuring commands (`discrepancy`, `spectrum`, `pcf`):
 //! the input, after the NumPy magic bytes, is written to a private file that the command
-//! reads in-process (its own reader, compiled in from src/bin/qmckit). Any byte string must
+//! reads in-process (its own reader, through `qmckit_cli::run_cli`). Any byte string must
 //! end in exit code 0 or 2 (a refusal), never a panic or an allocation failure. The first
 //! byte picks the command (and, for text, whether the magic is prefixed at all).
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-
-#[allow(dead_code)]
-#[path = "../../src/bin/qmckit/main.rs"]
-mod qmckit_cli;
 
 const COMMANDS: [&str; 3] = ["discrepancy", "spectrum", "pcf"];
 

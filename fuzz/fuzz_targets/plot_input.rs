@@ -7,11 +7,7 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use qmckit::plot::{decode_image, parse_blocks};
-
-#[allow(dead_code)]
-#[path = "../../src/bin/qmckit/main.rs"]
-mod qmckit_cli;
+use qmckit_cli::plot::{decode_image, parse_blocks};
 
 const KINDS: [&str; 6] = [
     "auto",

@@ -16,7 +16,7 @@ use qmckit::randomize::{
     Affine, CranleyPatterson, DigitalShift, ExactOwen, FastOwen, Randomizer, Randomizes, Scrambled,
     Scrambler,
 };
-use qmckit::sobol::Order;
+use qmckit::digital::sobol::Order;
 use qmckit::{Base2Digital, Halton, LatinHypercube, Sampler, Sobol};
 
 use crate::error::{to_py, value_error};
@@ -394,7 +394,7 @@ pub fn lattice(d: usize, shift: bool, seed: u64) -> PyResult<NativeSampler> {
 #[pyfunction]
 #[pyo3(signature = (d, shift = false, seed = 0))]
 pub fn kronecker(d: usize, shift: bool, seed: u64) -> PyResult<NativeSampler> {
-    let k = qmckit::kronecker::Kronecker::r_d(d).map_err(to_py)?;
+    let k = qmckit::lattice::kronecker::Kronecker::r_d(d).map_err(to_py)?;
     Ok(if shift {
         NativeSampler::points(
             boxed(Scrambled::new(k, CranleyPatterson::new(seed))),

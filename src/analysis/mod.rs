@@ -8,40 +8,25 @@
 //! |---|---|
 //! | [`l2`] | L2-star (Warnock), centered, wrap-around, mixture, symmetric, unanchored, generalized L2 discrepancies, diaphony |
 //! | [`star`] | star discrepancy: exact (1D closed form, 2D sweep, d-D by the Dobkin–Eppstein–Mitchell decomposition in [`star::dem`]), guaranteed bounds ([`star::thiemard`], threshold accepting), extreme discrepancy in 2D |
-//! | [`tvalue`] | t-values of base-2 digital nets (generator matrices) and of point sets (elementary intervals) |
+//! | [`tvalue`] | t-values of point sets and of blocks of base-`b` digital sequences, by counting points in elementary intervals (the rank test on generator matrices is [`crate::digital::rank`]) |
 //! | [`distance`] | minimum distance, optionally on the torus |
-//! | [`integration`] | integration error on test integrands with closed-form integrals (Genz's Gaussian peak and oscillatory, ball and half-space indicators) |
+//! | [`integrate`] | integration error on test integrands with closed-form integrals (Genz's Gaussian peak and oscillatory, ball and half-space indicators), and integration with an error estimate (replicated randomized QMC, Student-t intervals) on a suite of test problems |
 //! | [`spectrum`] | Fourier power spectrum of 2D point sets (periodogram by direct sums or a type-1 NUFFT), mean over sets, radial average and anisotropy |
 //! | [`variance`] | integration variance predicted from a mean spectrum (torus-shifted samplers, disk and Gaussian integrands) and measured beside it |
 //! | [`pcf`] | pair correlation function of 2D point sets (UTK's definition, optionally toroidal) and the structure factor from it |
 //! | [`pointfile`] | reading point sets from text (the `qmckit discrepancy` input format) |
-//! | [`scene`] | analytic render scenes (spheres, plane, quad light, thin lens, motion blur, ambient occlusion) and the MSE of samplers against a reference |
+//! | [`screen_error`] | screen-space error of a pixel sampler: the error image of a per-pixel integrand and its low-frequency power |
 
 pub mod distance;
 pub mod integrate;
-pub mod integration;
 pub mod l2;
 pub mod pcf;
 pub mod pointfile;
-pub mod scene;
 pub mod screen_error;
 pub mod spectrum;
 pub mod star;
-pub(crate) mod stop;
 pub mod tvalue;
 pub mod variance;
-
-/// The Dobkin–Eppstein–Mitchell exact star discrepancy, now [`star::dem`].
-#[deprecated(note = "moved to `qmckit::analysis::star::dem`")]
-pub mod dem {
-    pub use super::star::dem::*;
-}
-
-/// Thiémard's bounds on the star discrepancy, now [`star::thiemard`].
-#[deprecated(note = "moved to `qmckit::analysis::star::thiemard`")]
-pub mod thiemard {
-    pub use super::star::thiemard::*;
-}
 
 use crate::{Error, Result};
 

@@ -26,7 +26,7 @@
 use rayon::prelude::*;
 
 use super::Points;
-use super::stop::Stop;
+use crate::work::Stop;
 use crate::work::{Budget, Cost, Rate};
 use crate::{Error, Result};
 

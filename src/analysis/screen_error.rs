@@ -9,9 +9,9 @@
 //! `1 <= |k| < min(W, H) / 8` (below a quarter of the Nyquist frequency), `high_band` over
 //! `min(W, H) / 4 <= |k| < min(W, H) / 2`.
 
-use crate::analysis::stop::Stop;
 use crate::error::{Error, Result};
 use crate::pixel::PixelSampler;
+use crate::work::Stop;
 use crate::work::{Budget, Cost, Rate};
 
 /// A test integrand on the unit square, with its exact integral.

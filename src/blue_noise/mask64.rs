@@ -3,8 +3,8 @@
 //! permutation of `0..4096`; the mask tiles the plane (it was built on the torus), and
 //! `MASK64[i] < t` for `t = round(g 4096)` is a blue-noise pattern of grey level `g`.
 //!
-//! Built by [`VoidAndCluster`](crate::blue_noise::VoidAndCluster) with `sigma = 1.5`, seed
-//! 0, by `examples/gen_mask64.rs` (do not edit; a test regenerates and compares).
+//! Built by `blue_noise::VoidAndCluster` (feature `analysis`) with `sigma = 1.5`, seed 0, by
+//! `examples/gen_mask64.rs` (do not edit; a test regenerates and compares).
 //!
 //! ```
 //! use qmckit::blue_noise::mask64::{MASK64, threshold};

@@ -19,14 +19,12 @@ impl Rng {
         r
     }
 
-    /// The next 64 random bits.
+    /// The next 64 random bits: the Weyl step, then the splitmix64 finalizer
+    /// ([`crate::hash::mix64`]).
     #[inline]
     pub(crate) fn next_u64(&mut self) -> u64 {
         self.state = self.state.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.state;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
+        crate::hash::mix64(self.state)
     }
 
     /// A 0.32 fixed-point fraction, uniform on the 2^32 grid of `[0, 1)`.

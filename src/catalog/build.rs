@@ -6,16 +6,16 @@ use std::boxed::Box;
 use std::vec::Vec;
 
 // The constructions, by path: the one place to update when library modules move.
+use crate::digital::sobol::Order;
 use crate::digital::{DigitalNetB, MAX_BASE, is_prime};
-use crate::kronecker::Kronecker;
-use crate::lattice::{KUO_33002, Rank1Lattice, Tent, korobov, parse_lattice};
+use crate::lattice::kronecker::Kronecker;
+use crate::lattice::{KUO_33002, Rank1Lattice, korobov, parse_lattice};
 use crate::pmj::Pmj02;
 use crate::randomize::digits::DigitScramble;
 use crate::randomize::shuffle::Shuffled;
 use crate::randomize::{
-    CranleyPatterson, DigitalShift, ExactOwen, FastOwen, Lms, OwenHash, Scrambled,
+    CranleyPatterson, DigitalShift, ExactOwen, FastOwen, Lms, OwenHash, Scrambled, Tent,
 };
-use crate::sobol::Order;
 use crate::work::Budget;
 use crate::{
     Base2Digital, Halton, Hammersley, Independent, Jitter, LarcherPillichshammer, LatinHypercube,

@@ -1,5 +1,5 @@
 //! The test integrands, one list with one name each: the convergence integrands of
-//! [`crate::analysis::integration`], the torus integrands of
+//! [`crate::analysis::integrate`], the torus integrands of
 //! [`crate::analysis::variance`], the problems of [`crate::analysis::integrate`] (Genz's
 //! families, Keister, two options) and the pixel integrands of
 //! [`crate::analysis::screen_error`]. The functions stay where they are; the catalog
@@ -150,7 +150,7 @@ pub static INTEGRANDS: &[IntegrandEntry] = &[
         summary: "Genz's Gaussian peak at the centre, exp(-16 |x - c|^2)",
         math: "I = (sqrt(pi) erf(2) / 4)^d (Genz 1984)",
         params: &[DIMS],
-        item: "qmckit::analysis::integration::Integrand::Gaussian",
+        item: "qmckit::analysis::integrate::Integrand::Gaussian",
     },
     Entry {
         kind: IntegrandKind::Oscillatory,
@@ -159,7 +159,7 @@ pub static INTEGRANDS: &[IntegrandEntry] = &[
         summary: "Genz's oscillatory, cos(0.6 pi + 2 sum_k x_k)",
         math: "I = Re(e^(0.6 pi i) z^d), z = (e^(2i) - 1) / (2i) (Genz 1984)",
         params: &[DIMS],
-        item: "qmckit::analysis::integration::Integrand::Oscillatory",
+        item: "qmckit::analysis::integrate::Integrand::Oscillatory",
     },
     Entry {
         kind: IntegrandKind::Ball,
@@ -168,7 +168,7 @@ pub static INTEGRANDS: &[IntegrandEntry] = &[
         summary: "1 inside the ball of radius 0.45 about the centre",
         math: "I = V_d = V_(d-2) 2 pi r^2 / d (Owen, Practical QMC)",
         params: &[DIMS],
-        item: "qmckit::analysis::integration::Integrand::Ball",
+        item: "qmckit::analysis::integrate::Integrand::Ball",
     },
     Entry {
         kind: IntegrandKind::Heaviside,
@@ -177,7 +177,7 @@ pub static INTEGRANDS: &[IntegrandEntry] = &[
         summary: "1 where sum_k sqrt(k + 2) (x_k - 1/2) >= 0",
         math: "I = 1/2 (the cube is symmetric about its centre)",
         params: &[DIMS],
-        item: "qmckit::analysis::integration::Integrand::Heaviside",
+        item: "qmckit::analysis::integrate::Integrand::Heaviside",
     },
     Entry {
         kind: IntegrandKind::TorusDisk,
@@ -317,8 +317,8 @@ pub use built::{IntegrandParams, TestIntegrand, build_integrand};
 mod built {
     use super::super::CatalogError;
     use super::{IntegrandEntry, IntegrandKind as I};
+    use crate::analysis::integrate::Integrand;
     use crate::analysis::integrate::{GenzFamily, Market, Problem, ProblemKind};
-    use crate::analysis::integration::Integrand;
     use crate::analysis::screen_error::PixelIntegrand;
     use crate::analysis::variance::TorusIntegrand;
     use std::format;
@@ -345,7 +345,7 @@ mod built {
     /// A built integrand: `f`, its dimensions and its exact integral.
     #[derive(Clone, Debug, PartialEq)]
     pub enum TestIntegrand {
-        /// An integrand of [`crate::analysis::integration`] in `dims` dimensions.
+        /// An integrand of [`crate::analysis::integrate`] in `dims` dimensions.
         Cube {
             /// The integrand.
             f: Integrand,

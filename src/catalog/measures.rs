@@ -389,7 +389,7 @@ pub static MEASURES: &[MeasureEntry] = &[
             "gaussian-peak",
             "INTEGRANDS",
         )],
-        item: "qmckit::analysis::integration::integration_error",
+        item: "qmckit::analysis::integrate::integration_error",
     },
     Entry {
         kind: MeasureKind::Variance,

@@ -294,6 +294,6 @@ pub static RANDOMIZERS: &[RandomizerEntry] = &[
         summary: "random shift, then the tent (baker's) transform, for lattices",
         math: "x -> 1 - |2 frac(x + Delta_k) - 1| (Hickernell 2002)",
         params: &[SEED],
-        item: "qmckit::lattice::Tent",
+        item: "qmckit::randomize::Tent",
     },
 ];

@@ -359,7 +359,7 @@ pub static SAMPLERS: &[SamplerEntry] = &[
         summary: "Kronecker sequence frac(i alpha), alpha from the generalized golden ratio R_d",
         math: "x_i = frac(i alpha), alpha_k = phi_d^-k, phi_d^(d+1) = phi_d + 1 (Roberts 2018)",
         params: &[DIMS],
-        item: "qmckit::kronecker::Kronecker",
+        item: "qmckit::lattice::kronecker::Kronecker",
     },
     Entry {
         kind: SamplerKind::Faure,

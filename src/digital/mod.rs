@@ -1,7 +1,16 @@
-//! Digital nets and sequences in a prime base `b` from generator matrices, and Faure's
-//! (0, s)-sequences.
+//! Digital nets and sequences: points whose digits are linear images of the index's digits.
 //!
-//! # The construction
+//! | item | construction |
+//! |---|---|
+//! | [`sobol`] | Sobol' (base 2; Joe & Kuo's direction numbers), Owen-scrambled and interlaced variants |
+//! | [`lp`] | Larcher–Pillichshammer's (0, m, 2)-nets and sequence (base 2) |
+//! | [`DigitalNet2`], [`rank`] | any base-2 net from its generator matrices (Sobol', LP, Hammersley, van der Corput), and its exact t-value by the rank test (`std`) |
+//! | [`DigitalNetB`], [`faure_matrices`] | digital nets and sequences in a prime base `b` from generator matrices, Faure's (0, s)-sequences |
+//!
+//! The t-value of a block of a base-`b` sequence is counted from its points by
+//! `analysis::tvalue::t_value_block` (feature `analysis`).
+//!
+//! # The construction in base `b`
 //!
 //! A digital sequence in base `b` (Niederreiter 1987) has one generator matrix `C_j` over
 //! the field `F_b` per dimension. Index `i = sum_c a_c b^c` (digits `a_c`, least
@@ -50,12 +59,18 @@
 mod faure;
 #[cfg(feature = "std")]
 mod file;
-#[cfg(feature = "analysis")]
-pub mod quality;
+pub mod lp;
+#[cfg(feature = "std")]
+mod net2;
+#[cfg(feature = "std")]
+pub mod rank;
+pub mod sobol;
 
 pub use faure::faure_matrices;
 #[cfg(feature = "std")]
 pub use file::parse_dnet;
+#[cfg(feature = "std")]
+pub use net2::DigitalNet2;
 
 use crate::error::{Error, Result};
 use crate::randomize::digits::DigitScramble;

@@ -24,12 +24,13 @@
 //!
 //! Lattice rules integrate smooth *periodic* functions with error `O(n^-alpha (log n)^c)`
 //! (alpha the smoothness); for non-periodic integrands apply the baker's (tent) transform
-//! [`Tent`] after a random shift (Hickernell 2002), which makes the rule second-order.
+//! [`crate::randomize::Tent`] after a random shift (Hickernell 2002), which makes the rule
+//! second-order.
 //!
 //! # Randomization
 //!
 //! The random shift `x + u mod 1` is [`crate::randomize::CranleyPatterson`] (seeded) or
-//! [`Shift`] (explicit offsets, e.g. to reproduce another library's shift); both apply to
+//! [`crate::randomize::Shift`] (explicit offsets, e.g. to reproduce another library's shift); both apply to
 //! any sampler through [`crate::randomize::Scrambled`]. `(CranleyPatterson, Tent)` is the
 //! shifted, baker-transformed rule.
 //!
@@ -50,12 +51,11 @@
 //! # Ok::<(), qmckit::Error>(())
 //! ```
 
+pub mod kronecker;
 mod kuo;
-mod tent;
 mod vectors;
 
 pub use kuo::{KUO_33002, KUO_33002_DIMS};
-pub use tent::{Shift, ShiftScrambler, Tent, TentScrambler};
 pub use vectors::{LatticeFile, korobov, parse_lattice};
 
 use crate::error::{Error, Result};

@@ -2,26 +2,26 @@
 //! pixel found by solving for their indices (Grünschloss, Raab & Keller 2012, "Enumerating
 //! quasi-Monte Carlo point sequences in elementary intervals").
 
-use super::pbrt_hash::hash2;
 use super::{
     F32_ONE_MINUS_EPSILON, PixelGrid, PixelSampler, Randomization, pbrt_f32, sobol0, sobol1,
 };
+use crate::digital::sobol::SobolDimension;
 use crate::error::{Error, Result};
-use crate::sobol::SobolDimension;
+use crate::hash::pbrt::hash2;
 
 /// pbrt-v4's number of Sobol' dimensions (`NSobolDimensions`): its `SobolSampler` wraps
 /// the dimension counter to 2 there.
 pub const PBRT_SOBOL_DIMS: u32 = 1024;
 
 /// Where this build's [`ImageSobol`] wraps the dimension counter to 2: pbrt's rule applied to
-/// the Sobol' table compiled in, `min(`[`SOBOL_MAX_DIMS`](crate::sobol::SOBOL_MAX_DIMS)`,
+/// the Sobol' table compiled in, `min(`[`SOBOL_MAX_DIMS`](crate::digital::sobol::SOBOL_MAX_DIMS)`,
 /// `[`PBRT_SOBOL_DIMS`]`)`. That is 1024, pbrt's own value, with the `sobol-dims-1024` or
 /// `sobol-dims-21201` feature (the `cli` feature enables the latter): every dimension is
 /// then bit-identical to pbrt. The default table holds 64 dimensions, so a default build
 /// matches pbrt below dimension 64 and from there reads dimensions 2, 3, ... again where
 /// pbrt reads its dimensions 64 to 1023.
 pub const IMAGE_SOBOL_DIMS: u32 = {
-    let compiled = crate::sobol::SOBOL_MAX_DIMS;
+    let compiled = crate::digital::sobol::SOBOL_MAX_DIMS;
     if compiled < PBRT_SOBOL_DIMS as usize {
         compiled as u32
     } else {

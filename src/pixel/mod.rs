@@ -36,7 +36,6 @@
 mod image_sobol;
 mod independent;
 mod padded;
-pub mod pbrt_hash;
 pub mod pmj02bn;
 mod pmj_pixels;
 mod zsobol;

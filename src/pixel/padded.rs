@@ -1,9 +1,9 @@
 //! pbrt-v4's `PaddedSobolSampler`: Sobol' dimensions (0, 1) re-used for every dimension
 //! pair, decorrelated by a hashed per-pixel, per-dimension index permutation and scramble.
 
-use super::pbrt_hash::{hash4, permutation_element};
 use super::{PixelGrid, PixelSampler, Randomization, sobol0, sobol1};
 use crate::error::Result;
+use crate::hash::pbrt::{hash4, permutation_element};
 
 /// Padded Sobol': with `h = Hash(p.x, p.y, d, seed)` (MurmurHash64A of 16 bytes), sample
 /// `i` of pixel `p` at dimension `d` uses Sobol' index

@@ -3,10 +3,10 @@
 //! per-pixel, per-dimension permutation of aligned blocks of the same table, shifted by a
 //! blue-noise value, for the other dimensions.
 
-use super::pbrt_hash::{hash4, mix_bits, permutation_element};
 use super::{PixelGrid, PixelSampler};
 use crate::blue_noise::mask64::MASK64;
 use crate::error::{Error, Result};
+use crate::hash::pbrt::{hash4, mix_bits, permutation_element};
 use crate::pmj::bn;
 
 /// Points in the table, `2^16` (pbrt's `nPMJ02bnSamples`).

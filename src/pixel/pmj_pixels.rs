@@ -1,9 +1,9 @@
 //! PMJ02 as a pixel sampler: a seeded PMJ02 sequence per pixel and dimension, its first
 //! `spp` points visited through a hashed permutation.
 
-use super::pbrt_hash::{hash4, permutation_element};
 use super::{PixelGrid, PixelSampler};
 use crate::error::Result;
+use crate::hash::pbrt::{hash4, permutation_element};
 use crate::pmj::Pmj02;
 
 /// PMJ02 pixels: with `h = Hash(x, y, d, seed)` (pbrt's MurmurHash of 16 bytes), sample `i`

@@ -2,9 +2,9 @@
 //! "Screen-space blue-noise diffusion of Monte Carlo sampling error via hierarchical ordering
 //! of pixels"), bit-identical to pbrt-v4's `ZSobolSampler`.
 
-use super::pbrt_hash::{hash2, mix_bits};
 use super::{PixelGrid, PixelSampler, Randomization, sobol0, sobol1};
 use crate::error::{Error, Result};
+use crate::hash::pbrt::{hash2, mix_bits};
 
 /// The 24 permutations of `(0, 1, 2, 3)` in pbrt-v4's order: row `6a + 2b + c` is the
 /// identity after swapping positions `(0, a)`, then `(1, 1 + b)`, then `(2, 2 + c)`.

@@ -1,4 +1,6 @@
-//! The radical inverse in any base `b >= 2`, exact to the last bit, and its inverse.
+//! The radical inverse in any base `b >= 2`, exact to the last bit, and its inverse; with
+//! the constructions made of it: [`van_der_corput`] (one base), [`halton`] (one prime base a
+//! dimension) and [`hammersley`] (`i / N` beside Halton).
 //!
 //! For an index `i = sum_{j>=1} d_j b^(j-1)` with base-`b` digits `d_j`, the radical inverse
 //! mirrors the digits around the radix point:
@@ -44,11 +46,14 @@ use crate::error::{Error, Result};
 use crate::randomize::digits::DigitScramble;
 
 mod fill;
+pub mod halton;
+pub mod hammersley;
 mod random_access;
 mod sequential;
 mod tables;
 #[cfg(test)]
 mod tests;
+pub mod van_der_corput;
 
 #[cfg(target_pointer_width = "64")]
 pub(crate) use fill::RunFill;
@@ -77,7 +82,7 @@ const NESTED_CHUNK_MAX: u32 = 1 << 16;
 ///
 /// 104 bytes on 64-bit targets, 48 on 32-bit ones (plus the 707-byte shared digit-reversal
 /// tables, linked with any run-time use).
-/// Build it once (a `const`, or a table like [`crate::halton::HALTON_BASES`]).
+/// Build it once (a `const`, or a table like [`crate::radical_inverse::halton::HALTON_BASES`]).
 ///
 /// ```
 /// use qmckit::RadicalInverse;

@@ -45,7 +45,9 @@ fn exact_against_u128_oracle() {
 /// random ones, against the oracle.
 #[test]
 fn long_indices_against_oracle_for_every_halton_base() {
-    let halton = crate::halton::HALTON_BASES.iter().map(|ri| ri.base());
+    let halton = crate::radical_inverse::halton::HALTON_BASES
+        .iter()
+        .map(|ri| ri.base());
     let mut x = 0x2545_F491u32;
     for base in halton.chain([4, 6, 8, 9, 10, 12, 14, 15, 16]) {
         let ri = RadicalInverse::new(base).unwrap();

@@ -49,7 +49,7 @@
 //!
 //! ```
 //! use qmckit::randomize::FastOwen;
-//! use qmckit::sobol::SobolDimension;
+//! use qmckit::digital::sobol::SobolDimension;
 //! const OWEN: FastOwen = FastOwen::new(42);
 //! /// 64 Owen-scrambled 2D Sobol' points, computed by the compiler.
 //! const PATTERN: [[u32; 2]; 64] = {
@@ -78,6 +78,7 @@ mod lms;
 mod owen;
 mod pbrt_owen;
 mod shift;
+mod tent;
 
 pub mod digits;
 pub mod shuffle;
@@ -86,13 +87,10 @@ pub use affine::Affine;
 #[cfg(feature = "std")]
 pub use lms::LmsCache;
 pub use lms::{Lms, LmsDimension};
-#[allow(deprecated)]
-pub use owen::Owen;
-pub use owen::{
-    ExactOwen, ExactOwenScrambler, FastOwen, FastOwenScrambler, OwenHash, laine_karras, vegdahl,
-};
+pub use owen::{ExactOwen, ExactOwenScrambler, FastOwen, FastOwenScrambler, OwenHash};
 pub use pbrt_owen::PbrtOwenScrambler;
 pub use shift::{CranleyPatterson, DigitalShift, DigitalShiftScrambler, RotationScrambler};
+pub use tent::{Shift, ShiftScrambler, Tent, TentScrambler};
 
 pub use crate::sampler::Base2Digital;
 

@@ -8,7 +8,7 @@
 //! bit prefix, so it lives here.
 
 use super::Scrambler;
-use crate::pixel::pbrt_hash::mix_bits;
+use crate::hash::pbrt::mix_bits;
 
 /// pbrt-v4's `OwenScrambler(seed)`: nested uniform scrambling (Owen 1995) with one hash per
 /// bit. The top bit flips when `seed` is odd; bit `31 - b` (`b = 1..32`) flips when bit `b`

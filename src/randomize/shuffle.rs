@@ -7,9 +7,9 @@
 //! permutation of one aligned block of `2^m` indices, and every aligned block of a
 //! (t, s)-sequence in base 2 is a (t, m, s)-net.
 
-use super::owen::vegdahl;
 use crate::bits::reverse_bits;
 use crate::error::{Error, Result};
+use crate::hash::vegdahl;
 use crate::sampler::{FULL_RANGE, Sampler};
 
 /// The shuffle of `index` among `2^m` indices (`index < 2^m`, `m <= 32`) for `seed`: a

@@ -21,6 +21,8 @@
 //!
 //! The float warps need the `libm` feature (implied by `std`); [`fixed`] needs only the
 //! `fixed` feature.
+// Without `fixed` the fixed-point warps are absent and their links above are text.
+#![cfg_attr(not(feature = "fixed"), allow(rustdoc::broken_intra_doc_links))]
 
 #[cfg(feature = "libm")]
 pub mod disk;

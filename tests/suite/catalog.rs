@@ -7,7 +7,7 @@ use qmckit::bits::{to_f32, to_f64};
 use qmckit::catalog::{
     self, CatalogError, Family, Params, RANDOMIZERS, RandomizerEntry, SAMPLERS, SamplerEntry,
 };
-use qmckit::sobol::Order;
+use qmckit::digital::sobol::Order;
 use qmckit::{Sampler, sampler::fill_as_by_chunks};
 
 fn golden(name: &str) -> String {
@@ -449,10 +449,6 @@ fn fill(s: &dyn Sampler, n: usize) -> Vec<u32> {
 
 mod golden;
 mod names;
-
-/// The builder gives the command's bits (while the command is in this package).
-#[cfg(feature = "cli")]
-mod cli;
 
 /// A generating vector read from text: its modulus chooses the order, as in the command.
 #[test]

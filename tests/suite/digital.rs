@@ -3,7 +3,8 @@
 //! (elementary intervals in base b), unscrambled and scrambled.
 
 use qmckit::Sampler;
-use qmckit::digital::{DigitalNetB, output_digits, quality::t_value};
+use qmckit::analysis::tvalue::t_value_block;
+use qmckit::digital::{DigitalNetB, output_digits};
 use qmckit::randomize::digits::DigitScramble;
 use qmckit::work::Budget;
 
@@ -110,7 +111,10 @@ fn faure_blocks_are_0_m_s_nets_base_3_and_5() {
             for start in [0, n, 7 * n] {
                 assert_eq!(first_failure(&f, start, m), None, "b {base} s {s} m {m}");
             }
-            assert_eq!(t_value(&f, start_of(n), m, &Budget::DEFAULT).unwrap(), 0);
+            assert_eq!(
+                t_value_block(&f, start_of(n), m, &Budget::DEFAULT).unwrap(),
+                0
+            );
         }
     }
 }
@@ -150,7 +154,7 @@ fn counting_detects_a_non_net() {
     let copy = m[..441].to_vec();
     m[441..].copy_from_slice(&copy);
     let twin = DigitalNetB::new(3, 2, 21, m).unwrap();
-    assert_eq!(t_value(&twin, 0, 2, &Budget::DEFAULT).unwrap(), 1);
+    assert_eq!(t_value_block(&twin, 0, 2, &Budget::DEFAULT).unwrap(), 1);
     assert!(first_failure(&twin, 0, 2).is_some());
 }
 
@@ -165,8 +169,8 @@ fn digital_nets_refuse_bad_input() {
     let f = DigitalNetB::faure(3, 2).unwrap();
     assert!(f.sample(0, 2).is_err());
     let tiny = Budget::seconds(1e-9).unwrap();
-    assert!(t_value(&f, 0, 10, &tiny).is_err());
-    assert!(t_value(&f, u32::MAX, 3, &Budget::DEFAULT).is_err());
+    assert!(t_value_block(&f, 0, 10, &tiny).is_err());
+    assert!(t_value_block(&f, u32::MAX, 3, &Budget::DEFAULT).is_err());
 }
 
 /// Dick's interlaced Sobol' (order 2, digitally shifted) against Owen-scrambled Sobol' on
@@ -175,8 +179,8 @@ fn digital_nets_refuse_bad_input() {
 /// (theory: up to -2 against -1.5).
 #[test]
 fn interlaced_sobol_converges_faster_on_smooth_integrands() {
+    use qmckit::digital::sobol::interlaced::Interlaced;
     use qmckit::randomize::{DigitalShift, FastOwen, Lms, Scrambled};
-    use qmckit::sobol::interlaced::Interlaced;
     use qmckit::{Sobol, bits::to_f64};
     let exact = (std::f64::consts::E - 1.0).powi(2);
     let rmse = |s: &dyn Sampler, n: u32| {
@@ -227,7 +231,7 @@ fn interlaced_sobol_converges_faster_on_smooth_integrands() {
 
 #[test]
 fn interlacing_is_the_digit_shuffle() {
-    use qmckit::sobol::interlaced::{Interlaced, interlace};
+    use qmckit::digital::sobol::interlaced::{Interlaced, interlace};
     assert_eq!(interlace(&[0xFFFF_0000, 0]), 0xAAAA_AAAA);
     assert_eq!(interlace(&[0, 0x8000_0000, 0]), 0x4000_0000);
     let h = Interlaced::new(3, 3).unwrap();
@@ -265,7 +269,7 @@ fn niederreiter_xing_file_matches_qmcpy() {
         }
     }
     for m in 2..=12 {
-        let t = t_value(&net, 0, m, &Budget::DEFAULT).unwrap();
+        let t = t_value_block(&net, 0, m, &Budget::DEFAULT).unwrap();
         assert_eq!(t, 1, "m={m}");
     }
 }

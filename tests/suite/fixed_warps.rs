@@ -423,16 +423,3 @@ mod properties {
         }
     }
 }
-
-/// The old path `qmckit::fixed_warp` still names the same functions (deprecated).
-#[test]
-#[allow(deprecated)]
-fn the_deprecated_path_still_works() {
-    use qmckit::fixed_warp as old;
-    let u = uq([0x1234_5678, 0x9ABC_DEF0]);
-    assert_eq!(
-        old::sample_uniform_disk_concentric(u),
-        fx::sample_uniform_disk_concentric(u)
-    );
-    assert_eq!(old::UNIFORM_DISK_PDF, fx::UNIFORM_DISK_PDF);
-}

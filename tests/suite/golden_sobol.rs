@@ -4,7 +4,7 @@
 use crate::common;
 
 use common::{first_net_failure, points_2d};
-use qmckit::sobol::{Order, Sobol, SobolDimension, SobolTable, directions};
+use qmckit::digital::sobol::{Order, Sobol, SobolDimension, SobolTable, directions};
 use qmckit::{SOBOL_MAX_DIMS, Sampler};
 
 fn golden(name: &str) -> String {
@@ -194,8 +194,8 @@ fn byte_tables_match_the_matrix_product() {
 /// access, f32, the free functions, reseeding, and `Scrambled<Sobol, FastOwen>`.
 #[test]
 fn owen_sobol_matches_the_generic_scramble() {
+    use qmckit::digital::sobol::{OwenSobol, owen_sobol, owen_sobol_f32};
     use qmckit::randomize::{FastOwen, OwenHash, Scrambled};
-    use qmckit::sobol::{OwenSobol, owen_sobol, owen_sobol_f32};
     let dims = SOBOL_MAX_DIMS.min(70);
     for (seed, hash) in [(1u64, OwenHash::Vegdahl), (0xFEED, OwenHash::LaineKarras)] {
         let owen = FastOwen::with_hash(seed, hash);
@@ -251,8 +251,8 @@ fn owen_sobol_matches_the_generic_scramble() {
 /// `sample4_f32` and the generic path point by point.
 #[test]
 fn owen_sobol_fill_f32_matches_the_scalar_paths() {
+    use qmckit::digital::sobol::OwenSobol;
     use qmckit::randomize::FastOwen;
-    use qmckit::sobol::OwenSobol;
     let s = OwenSobol::new(4, 31).unwrap();
     let owen = FastOwen::new(31);
     let indices: Vec<u32> = (0..20_003u32)

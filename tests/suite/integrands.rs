@@ -1,11 +1,11 @@
-//! The test integrands of `qmckit::analysis::integration`: their closed-form integrals
+//! The test integrands of `qmckit::analysis::integrate`: their closed-form integrals
 //! against midpoint-rule quadrature written here from the definitions and against the
 //! textbook ball volumes, and the error rates the module promises: Monte Carlo's RMSE at
 //! `sigma / sqrt(N)`, QMC far below it on the smooth integrands.
 #![cfg(feature = "analysis")]
 
 use qmckit::analysis::Points;
-use qmckit::analysis::integration::{Integrand, integration_error};
+use qmckit::analysis::integrate::{Integrand, integration_error};
 use qmckit::randomize::{FastOwen, Scrambled};
 use qmckit::{Independent, Sampler, Sobol};
 

@@ -1,23 +1,20 @@
 //! qmckit's integration tests, one binary (one link) with a module per concern: goldens
-//! from SciPy, mpmath and exact rationals, peer crates, properties, warps, analysis, and the
-//! command line (its contract and hostile input).
+//! from SciPy, mpmath and exact rationals, peer crates, properties, warps and analysis. The
+//! command line (its contract and hostile input) is tested by its own package, cli/.
 
 mod common;
 
 mod blue_noise;
 mod catalog;
-mod cli;
-mod cli_analysis;
-mod cli_hostile;
-mod cli_reference;
 mod conversions;
+#[cfg(feature = "analysis")]
 mod digital;
 mod fixed_warps;
 mod golden_discrepancy;
 mod golden_scipy;
 mod golden_sobol;
-mod hostile;
 mod integrands;
+#[cfg(feature = "analysis")]
 mod integrate;
 mod lattice;
 mod mask;
@@ -25,12 +22,9 @@ mod nets;
 mod pcf;
 mod peers;
 mod pixel;
-mod plot;
 mod pmj;
 mod randomize;
-mod report;
 mod samplers;
-mod scene;
 mod spectrum;
 mod star_discrepancy;
 mod star_lower;

@@ -5,8 +5,8 @@
 
 use qmckit::Sampler;
 use qmckit::bits::gray;
-use qmckit::randomize::vegdahl;
-use qmckit::sobol::{Order, Sobol, SobolDimension};
+use qmckit::digital::sobol::{Order, Sobol, SobolDimension};
+use qmckit::hash::vegdahl;
 
 /// Points compared in Gray order.
 const N: usize = 4096;

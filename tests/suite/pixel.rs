@@ -8,7 +8,7 @@
 
 use crate::common::first_net_failure;
 use qmckit::Error;
-use qmckit::pixel::pbrt_hash::{hash2, hash4, mix_bits, permutation_element};
+use qmckit::hash::pbrt::{hash2, hash4, mix_bits, permutation_element};
 use qmckit::pixel::{
     ImageSobol, IndependentPixels, PaddedSobol, PixelSampler, PixelStream, Pmj02Pixels,
     Randomization, ZSobol, pbrt_f32,
@@ -339,165 +339,6 @@ fn independent_pixels_are_uniform_and_decorrelated() {
     assert_ne!(s.get_2d(0, 0, 0, 0).unwrap(), s.get_2d(0, 0, 0, 1).unwrap());
 }
 
-#[cfg(feature = "cli")]
-mod cli {
-    use crate::common::cli::{assert_usage_error, run};
-
-    fn lines(args: &[&str]) -> Vec<String> {
-        let out = run(args, "");
-        assert_eq!(out.status.code(), Some(0), "{args:?}: {:?}", out.stderr);
-        String::from_utf8(out.stdout)
-            .unwrap()
-            .lines()
-            .map(str::to_string)
-            .collect()
-    }
-
-    /// pbrt's check values through the command (16x9, seed 0, FastOwen).
-    #[test]
-    fn pixel_prints_pbrt_values() {
-        let base = ["pixel", "zsobol", "--resolution", "16x9", "--pixel", "1,0"];
-        let one = lines(&[&base[..], &["--spp", "1", "--format", "csv"]].concat());
-        assert_eq!(one, ["1,0.57022893,0.7021838,0.8538905"]);
-        let four = lines(&[&base[..], &["--spp", "4", "--format", "csv"]].concat());
-        assert_eq!(four.len(), 4);
-        assert!(four[3].starts_with("4,0.33697805,"), "{four:?}");
-        let padded = lines(&[
-            "pixel",
-            "padded-sobol",
-            "--resolution",
-            "16x16",
-            "--spp",
-            "16",
-            "--pixel",
-            "3,5",
-            "--randomize",
-            "none",
-            "--format",
-            "csv",
-        ]);
-        assert_eq!(padded[0], "-,0.5625,0.5625,0.4375");
-        let ind = lines(&[
-            "pixel",
-            "independent",
-            "--resolution",
-            "4x4",
-            "--spp",
-            "3",
-            "--pixel",
-            "0,0",
-        ]);
-        assert_eq!(ind.len(), 3);
-        assert!(
-            ind.iter()
-                .all(|l| l.starts_with("- ") && l.split(' ').count() == 4)
-        );
-        let pmj = lines(&[
-            "pixel",
-            "pmj02",
-            "--resolution",
-            "4x4",
-            "--spp",
-            "8",
-            "--pixel",
-            "1,2",
-        ]);
-        assert_eq!(pmj.len(), 8);
-        let sobol = lines(&[
-            "pixel",
-            "sobol",
-            "--resolution",
-            "16x9",
-            "--spp",
-            "2",
-            "--pixel",
-            "3,5",
-        ]);
-        let idx: Vec<u64> = sobol
-            .iter()
-            .map(|l| l.split(' ').next().unwrap().parse().unwrap())
-            .collect();
-        assert_eq!(idx.iter().map(|i| i >> 8).collect::<Vec<_>>(), [0, 1]);
-    }
-
-    #[test]
-    fn pixel_refuses_bad_input() {
-        let z = ["pixel", "zsobol", "--pixel", "1,0"];
-        assert_usage_error(
-            &[&z[..], &["--resolution", "16x9", "--spp", "3"]].concat(),
-            "",
-            "--spp 3",
-        );
-        assert_usage_error(
-            &[&z[..], &["--resolution", "16y9", "--spp", "4"]].concat(),
-            "",
-            "--resolution",
-        );
-        assert_usage_error(
-            &[&z[..], &["--resolution", "0x9", "--spp", "4"]].concat(),
-            "",
-            "at least 1",
-        );
-        assert_usage_error(
-            &[
-                "pixel",
-                "zsobol",
-                "--resolution",
-                "16x9",
-                "--spp",
-                "4",
-                "--pixel",
-                "16,0",
-            ],
-            "",
-            "outside the image",
-        );
-        assert_usage_error(
-            &[
-                "pixel",
-                "zsobol",
-                "--resolution",
-                "16x9",
-                "--spp",
-                "4",
-                "--pixel=-1,0",
-            ],
-            "",
-            "--pixel",
-        );
-        assert_usage_error(
-            &[
-                "pixel",
-                "sobol",
-                "--resolution",
-                "65536x1",
-                "--spp",
-                "4",
-                "--pixel",
-                "0,0",
-            ],
-            "",
-            "too many",
-        );
-        assert_usage_error(
-            &[
-                "pixel",
-                "independent",
-                "--resolution",
-                "4x4",
-                "--spp",
-                "4",
-                "--pixel",
-                "0,0",
-                "--randomize",
-                "owen",
-            ],
-            "",
-            "--randomize",
-        );
-    }
-}
-
 /// ZSobol's error is blue: at 1, 4 and 16 spp, its low-frequency error power (below a
 /// quarter of Nyquist) against per-pixel independently scrambled Sobol' (PaddedSobol, the
 /// same per-pixel nets without the Morton ordering), averaged over 16 seeds, 128 x 128
@@ -561,7 +402,7 @@ fn zsobol_error_is_blue_noise() {
 /// The fixed-size hashes equal MurmurHash64A of their packed bytes.
 #[test]
 fn word_hashes_equal_the_byte_hash() {
-    use qmckit::pixel::pbrt_hash::murmur_hash64a;
+    use qmckit::hash::pbrt::murmur_hash64a;
     for (a, b, c, d) in [
         (0u32, 0u32, 0u32, 0u32),
         (3, 5, 7, 11),
@@ -799,7 +640,7 @@ fn screen_error_study() {
 fn image_sobol_pads_past_its_table_as_pbrt_does() {
     use qmckit::pixel::{IMAGE_SOBOL_DIMS, PBRT_SOBOL_DIMS};
     // pbrt's rule on the compiled table: min(table, 1024) (1024 with the CLI's features).
-    let table = qmckit::sobol::SOBOL_MAX_DIMS.min(PBRT_SOBOL_DIMS as usize) as u32;
+    let table = qmckit::digital::sobol::SOBOL_MAX_DIMS.min(PBRT_SOBOL_DIMS as usize) as u32;
     assert_eq!(IMAGE_SOBOL_DIMS, table);
     let last = IMAGE_SOBOL_DIMS - 1;
     for r in ALL {

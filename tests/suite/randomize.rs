@@ -5,12 +5,12 @@
 use crate::common;
 
 use common::{first_net_failure, points_2d};
+use qmckit::digital::sobol::SobolDimension;
 use qmckit::randomize::digits::{DigitScramble, faure};
 use qmckit::randomize::shuffle::{Shuffled, shuffle};
 use qmckit::randomize::{
     CranleyPatterson, DigitalShift, ExactOwen, FastOwen, Lms, OwenHash, Randomizer, Scrambled,
 };
-use qmckit::sobol::SobolDimension;
 use qmckit::{
     Base2Digital, Halton, Hammersley, LarcherPillichshammer, RadicalInverse, Sampler, Sobol,
     VanDerCorput,
@@ -488,7 +488,7 @@ fn base2_randomizers_keep_nets_up_to_m16_for_1000_seeds() {
 mod properties {
     use super::*;
     use proptest::prelude::*;
-    use qmckit::stratified::STRATIFIED_MAX_DIMS;
+    use qmckit::random::stratified::STRATIFIED_MAX_DIMS;
     use qmckit::{
         HALTON_MAX_DIMS, Independent, Jitter, LatinHypercube, SOBOL_MAX_DIMS, Stratified,
     };
@@ -604,7 +604,7 @@ mod properties {
                     probe(&s)?;
                     probe(&Scrambled::new(s, FastOwen::new(seed)))?;
                     probe(&Scrambled::new(s, ExactOwen::new(seed)))?;
-                    probe(&qmckit::sobol::OwenSobol::new(d, seed).unwrap())?;
+                    probe(&qmckit::digital::sobol::OwenSobol::new(d, seed).unwrap())?;
                     probe(&Scrambled::new(
                         s,
                         (Lms::new(seed), DigitalShift::new(seed)),
@@ -829,8 +829,8 @@ fn permute_of_an_index_past_n_terminates() {
 /// non-affine scramble (FastOwen) is untouched by the mechanism.
 #[test]
 fn affine_scrambles_folded_into_sobol_match_per_value() {
+    use qmckit::digital::sobol::Order;
     use qmckit::randomize::{Affine, Scrambler};
-    use qmckit::sobol::Order;
     fn check<R: qmckit::randomize::Randomizes<Sobol> + Copy>(name: &str, s: Sobol, r: R) {
         let sc = Scrambled::new(s, r);
         let d = s.dims();

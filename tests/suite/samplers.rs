@@ -288,7 +288,7 @@ fn independent_from_any_rng() {
     let s3 = Independent::from_rng(2, &mut a).unwrap();
     assert_ne!(s1.sample(0, 0), s3.sample(0, 0));
     let mut buf = [0u32; 1000];
-    qmckit::independent::fill_from_rng(&mut b, &mut buf);
+    qmckit::random::independent::fill_from_rng(&mut b, &mut buf);
     let mean = buf.iter().map(|&x| x as f64).sum::<f64>() / 1000.0 / 4_294_967_296.0;
     assert!((0.45..0.55).contains(&mean), "{mean}");
 }

@@ -725,16 +725,6 @@ fn extreme_within_a_budget() {
     assert_eq!(extreme_2d(one), Ok(1.0));
 }
 
-#[test]
-#[allow(deprecated)]
-fn old_module_paths_still_work() {
-    // One point at the center of the cube: 1 - 1/8 (see dem_one_point_by_hand).
-    let p = Points::new(&[0.5, 0.5, 0.5], 3).unwrap();
-    assert_eq!(qmckit::analysis::dem::star_dem(p), Ok(0.875));
-    let b = qmckit::analysis::thiemard::bounds(p, 0.05).unwrap();
-    assert!(b.lower <= 0.875 && 0.875 <= b.upper);
-}
-
 /// Deadlines: a budget started and left to expire (its estimate admits the work) stops
 /// every super-linear loop of the star family and the L2 sums with `OutOfTime`; an
 /// unexpired one gives the same value as no budget.

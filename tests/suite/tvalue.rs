@@ -4,9 +4,11 @@
 
 use qmckit::analysis::Points;
 use qmckit::analysis::tvalue::{
-    DigitalNet2, IntervalFailure, dependent_shape, elementary_interval_failures,
-    elementary_interval_failures_u32, t_value, t_value_points, t_value_u32,
+    IntervalFailure, elementary_interval_failures, elementary_interval_failures_u32,
+    t_value_points, t_value_u32,
 };
+use qmckit::digital::DigitalNet2;
+use qmckit::digital::rank::{dependent_shape, t_value};
 use qmckit::randomize::{
     CranleyPatterson, DigitalShift, ExactOwen, FastOwen, Lms, OwenHash, Randomizer, Scrambled,
 };
@@ -85,7 +87,7 @@ fn the_rank_test_can_fail() {
     // Two copies of the same invertible matrix, points (x, x) on the diagonal: by hand, the
     // boxes [0, 1/2) x [1/2, 1) are empty (shape (1, 1) fails) while every 1D shape is
     // balanced, so t = m - 1 for m >= 2 (and t = 0 for m = 1: (0, 0), (1/2, 1/2)).
-    let c = *qmckit::sobol::directions(1).unwrap();
+    let c = *qmckit::digital::sobol::directions(1).unwrap();
     assert_eq!(
         t_value(&DigitalNet2::new(1, vec![c, c]).unwrap()).unwrap(),
         0
@@ -454,7 +456,7 @@ fn rank_test_in_thousands_of_dimensions_needs_no_deep_stack() {
 
 #[test]
 fn rank_tests_past_the_budget_are_refused_at_once() {
-    use qmckit::analysis::tvalue::t_value_within;
+    use qmckit::digital::rank::t_value_within;
     use qmckit::work::{Budget, no_progress};
     for (d, m) in [(50usize, 32u32), (1000, 20), (16, 32)] {
         let net = DigitalNet2::from_sobol(d, m).unwrap();

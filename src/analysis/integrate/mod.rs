@@ -1,5 +1,7 @@
 //! Integration with an error estimate: replicated randomized QMC, doubling the points until
-//! a Student-t interval meets a tolerance or a point budget is spent.
+//! a Student-t interval meets a tolerance or a point budget is spent; and the integration
+//! error of a point set on test integrands with closed-form integrals ([`Integrand`],
+//! [`integration_error`]).
 //!
 //! # Method
 //!
@@ -36,9 +38,11 @@
 //! # Ok::<(), qmckit::Error>(())
 //! ```
 
+mod integrands;
 mod problems;
 mod student;
 
+pub use integrands::{Integrand, integration_error};
 pub use problems::{GenzFamily, Market, Problem, ProblemKind, normal_quantile, test_suite};
 pub use student::{t_quantile, two_sided_cdf};
 

@@ -5,9 +5,9 @@
 
 use super::Points;
 use super::arith::Acc;
-use crate::analysis::stop::Stop;
 use crate::dispatch::{Kernel, run_float};
 use crate::work::Progress;
+use crate::work::Stop;
 use core::sync::atomic::{AtomicUsize, Ordering};
 use rayon::prelude::*;
 

@@ -117,8 +117,8 @@ pub use measures::{
 pub use tree::{TREE_MAX_D, l2_star_fast};
 
 use super::Points;
-use super::stop::Stop;
 use crate::Result;
+use crate::work::Stop;
 use crate::work::{Budget, Cost, Progress, Rate, no_progress};
 use kernel::{Build, Ticker};
 

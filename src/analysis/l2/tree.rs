@@ -7,7 +7,7 @@ use super::arith::{Acc, Dd, two_prod};
 use super::l2_star_direct;
 use super::sums::{KernelSums, checked, combine, pow2, root};
 use crate::Result;
-use crate::analysis::stop::Stop;
+use crate::work::Stop;
 use rayon::prelude::*;
 
 /// [`l2_star`](super::l2_star) by exact divide and conquer, in `O(n log^(d-1) n)` time

@@ -11,7 +11,7 @@ use rayon::prelude::*;
 use super::Spectrum;
 use crate::Result;
 use crate::analysis::Points;
-use crate::analysis::stop::Stop;
+use crate::work::Stop;
 
 /// Points whose phase tables are computed at once (`2 * BLOCK * (2K + 1)` `f64`s each for
 /// the `x` and `y` factors).

@@ -38,7 +38,7 @@ pub use average::SpectrumMean;
 pub use nufft::NUFFT_MIN_TOLERANCE;
 
 use super::Points;
-use super::stop::Stop;
+use crate::work::Stop;
 use crate::work::{Budget, Cost, Rate};
 use crate::{Error, Result};
 

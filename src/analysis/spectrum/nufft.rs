@@ -38,8 +38,8 @@ use rustfft::num_complex::Complex;
 use super::Spectrum;
 use crate::Result;
 use crate::analysis::Points;
-use crate::analysis::stop::Stop;
 use crate::size::vec_zeroed;
+use crate::work::Stop;
 
 /// The smallest tolerance the NUFFT path accepts: below it double rounding (about `1e-16 N`
 /// per sum, growing with `log n`) is the larger error.

@@ -83,7 +83,7 @@ use super::cells::{
 use super::cost::within;
 pub use super::cost::{max_points, max_points_within, work_estimate};
 use crate::analysis::Points;
-use crate::analysis::stop::Stop;
+use crate::work::Stop;
 use crate::work::{Budget, Progress, no_progress};
 use crate::{Error, Result};
 use rayon::prelude::*;

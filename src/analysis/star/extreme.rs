@@ -2,7 +2,7 @@
 
 use super::sweep::{counted, grid, rank};
 use crate::analysis::Points;
-use crate::analysis::stop::Stop;
+use crate::work::Stop;
 use crate::work::{Budget, Rate};
 use crate::{Error, Result};
 use rayon::prelude::*;

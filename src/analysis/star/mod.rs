@@ -62,7 +62,7 @@ pub use extreme::{EXTREME_2D_MAX_POINTS, EXTREME_RATE, extreme_2d, extreme_2d_wi
 pub use lower_bound::{lower_bound_steps, star_lower_bound, star_lower_bound_within};
 
 use super::Points;
-use super::stop::Stop;
+use crate::work::Stop;
 use crate::work::{Budget, Progress, no_progress};
 use crate::{Error, Result};
 

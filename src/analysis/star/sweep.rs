@@ -2,7 +2,7 @@
 
 use crate::Result;
 use crate::analysis::Points;
-use crate::analysis::stop::Stop;
+use crate::work::Stop;
 use rayon::prelude::*;
 
 /// The 2D sweep of [`super::star_2d`] without the size check; every column checks `stop`

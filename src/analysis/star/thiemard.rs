@@ -72,8 +72,8 @@ use super::thiemard_cost::{
     chain_step_cost, estimate, region_cost, root_chain_lower_bound, split_factor,
 };
 use crate::analysis::Points;
-use crate::analysis::stop::Stop;
 use crate::work::Budget;
+use crate::work::Stop;
 use crate::{Error, Result};
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};

@@ -2,7 +2,7 @@
 //! that break a given `t`.
 
 use crate::analysis::Points;
-use crate::analysis::stop::Stop;
+use crate::work::Stop;
 use crate::work::{Budget, Cost, Rate};
 use crate::{Error, Result};
 use core::fmt;

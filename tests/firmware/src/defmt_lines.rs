@@ -12,7 +12,7 @@
 use core::hint::black_box;
 
 use qmckit::randomize::{FastOwen, OwenHash};
-use qmckit::sobol::{Order, Sobol, SobolDimension};
+use qmckit::digital::sobol::{Order, Sobol, SobolDimension};
 use qmckit::{Halton, Hammersley, LarcherPillichshammer, RadicalInverse, Sampler, VanDerCorput};
 
 /// Logs every line; returns the number of lines.

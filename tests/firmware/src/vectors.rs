@@ -18,13 +18,13 @@ mod pixel_vectors;
 
 use qmckit::bits;
 use qmckit::hash;
-use qmckit::sobol::OwenSobol;
+use qmckit::digital::sobol::OwenSobol;
 use qmckit::randomize::digits::DigitScramble;
 use qmckit::randomize::shuffle::Shuffled;
 use qmckit::randomize::{
     CranleyPatterson, DigitalShift, FastOwen, Lms, ExactOwen, OwenHash, Randomizer, Scrambled,
 };
-use qmckit::sobol::{Order, Sobol, SobolDimension, SobolTable};
+use qmckit::digital::sobol::{Order, Sobol, SobolDimension, SobolTable};
 use qmckit::{
     Error, HALTON_MAX_DIMS, Halton, Hammersley, Independent, Jitter, LarcherPillichshammer,
     LatinHypercube, RadicalInverse, Sampler, Stratified, VanDerCorput,
@@ -345,7 +345,7 @@ fn halton<W: Write>(out: &mut W) -> fmt::Result {
     let big = Halton::new(black_box(HALTON_MAX_DIMS));
     if let Ok(big) = big {
         for dim in [100usize, 511, 1023] {
-            let p = qmckit::halton::prime(dim).unwrap_or(0);
+            let p = qmckit::radical_inverse::halton::prime(dim).unwrap_or(0);
             for i in [1u32, 8161, 4_000_000_000] {
                 writeln!(
                     out,

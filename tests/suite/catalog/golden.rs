@@ -6,7 +6,7 @@ use super::{data_lines, fill, golden, named};
 use qmckit::Sampler;
 use qmckit::bits::to_f64;
 use qmckit::catalog::{self, INTEGRANDS, Params};
-use qmckit::sobol::Order;
+use qmckit::digital::sobol::Order;
 
 /// FNV-1a 64 over the little-endian bytes of the values (as tests/golden/gen.py does).
 fn fnv1a64(values: impl IntoIterator<Item = u32>) -> u64 {
@@ -289,7 +289,7 @@ fn integrands_are_the_test_suite_and_its_exact_values() {
     let p = IntegrandParams::default();
     for (name, f) in [("gaussian", "gaussian"), ("heaviside", "heaviside")] {
         let built = catalog::build_integrand(catalog::integrand(name).unwrap(), &p).unwrap();
-        let lib = qmckit::analysis::integration::Integrand::ALL
+        let lib = qmckit::analysis::integrate::Integrand::ALL
             .into_iter()
             .find(|i| i.name() == f)
             .unwrap();

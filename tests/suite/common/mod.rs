@@ -2,9 +2,6 @@
 //! definitions (elementary intervals, star discrepancy), not from qmckit's code paths.
 #![allow(dead_code)]
 
-#[cfg(feature = "cli")]
-pub mod cli;
-
 use qmckit::Sampler;
 
 /// Points `0..n` of a sampler by random access, as `f64` coordinates (exact), row-major.

@@ -23,7 +23,7 @@ use cortex_m_semihosting::hio;
 use qmckit::bits::to_f32;
 use qmckit::buffer::points;
 use qmckit::randomize::{FastOwen, Scrambled};
-use qmckit::sobol::{Sobol, SobolDimension};
+use qmckit::digital::sobol::{Sobol, SobolDimension};
 
 const SEED: u64 = 0x5EED;
 const OWEN: FastOwen = FastOwen::new(SEED);

@@ -27,9 +27,9 @@ use core::ptr::{read_volatile, write_volatile};
 use cortex_m_rt::entry;
 use cortex_m_semihosting::debug::{self, EXIT_FAILURE, EXIT_SUCCESS};
 use cortex_m_semihosting::hio;
-use qmckit::sobol::OwenSobol;
+use qmckit::digital::sobol::OwenSobol;
 use qmckit::randomize::FastOwen;
-use qmckit::sobol::{Sobol, SobolDimension, SobolTable};
+use qmckit::digital::sobol::{Sobol, SobolDimension, SobolTable};
 use qmckit::{RadicalInverse, Sampler};
 
 const SYST_CSR: *mut u32 = 0xE000_E010 as *mut u32;

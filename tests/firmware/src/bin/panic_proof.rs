@@ -26,9 +26,9 @@ use core::hint::black_box;
 
 use cortex_m_rt::entry;
 use qmckit::bits;
-use qmckit::sobol::OwenSobol;
+use qmckit::digital::sobol::OwenSobol;
 use qmckit::randomize::{FastOwen, ExactOwen};
-use qmckit::sobol::{Sobol, SobolDimension, SobolTable};
+use qmckit::digital::sobol::{Sobol, SobolDimension, SobolTable};
 use qmckit::{Halton, Hammersley, LarcherPillichshammer, RadicalInverse, Sampler};
 
 unsafe extern "C" {

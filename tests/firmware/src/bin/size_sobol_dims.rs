@@ -11,7 +11,7 @@ use core::hint::black_box;
 
 use cortex_m_rt::entry;
 use qmckit::SOBOL_MAX_DIMS;
-use qmckit::sobol::SobolDimension;
+use qmckit::digital::sobol::SobolDimension;
 
 #[entry]
 fn main() -> ! {

@@ -10,7 +10,7 @@ use core::hint::black_box;
 
 use cortex_m_rt::entry;
 use qmckit::randomize::FastOwen;
-use qmckit::sobol::SobolDimension;
+use qmckit::digital::sobol::SobolDimension;
 
 const X: SobolDimension = match SobolDimension::new(0) {
     Ok(d) => d,

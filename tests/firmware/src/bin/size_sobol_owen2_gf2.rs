@@ -13,7 +13,7 @@ use core::hint::black_box;
 use cortex_m_rt::entry;
 use qmckit::bits::gf2_mul;
 use qmckit::randomize::FastOwen;
-use qmckit::sobol::directions;
+use qmckit::digital::sobol::directions;
 
 const VX: [u32; 32] = match directions(0) {
     Ok(v) => *v,

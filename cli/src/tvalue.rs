@@ -1,0 +1,248 @@
+//! `qmckit tvalue SAMPLER -m M [-d D] [--scramble KIND] [--seed S] [--explain]`: the t-value
+//! of the first `2^m` points of a base-2 construction.
+
+use std::io::Write;
+
+use clap::{Args, ValueEnum};
+use qmckit::analysis::tvalue::{
+    COUNT_RATE, IntervalFailure, count_steps, elementary_interval_failures_u32_within,
+    t_value_u32_within,
+};
+use qmckit::digital::DigitalNet2;
+use qmckit::digital::rank::t_value_within;
+use qmckit::work::{Budget, Cost};
+
+use super::Failure;
+use super::budget::BudgetArgs;
+use super::points::{SamplerName, ScrambleName, Spec, samples_u32, value_name};
+use super::progress::{with_progress, with_spinner};
+
+/// Text shown after the options of `qmckit tvalue --help`.
+pub const AFTER_HELP: &str = "\
+Samplers (base 2): sobol (any d), lp (d = 2), hammersley (d = 2: (i/2^m, phi_2(i))),
+vdc (d = 1, base 2). In base b: faure (the first b^m points, counted exactly in base b;
+--base B, a prime >= d; --scramble owen|perm|faure; output adds a 'base B' line). Other
+samplers are refused.
+
+Method: without --scramble, the rank test on the generator matrices (exact, m <= 32; its
+cost grows like C(m - t + 1 + d, d), fast for small d; estimated first and refused when the
+estimate exceeds --max-seconds, e.g. -m 32 -d 50 or -m 20 -d 1000). With --scramble KIND
+(any kind `qmckit points` accepts for the sampler), the 2^m points are generated and counted
+in elementary intervals (exact; m <= 21 and 2^m * d <= 2^25, and an estimated
+log2(m) C(m + d - 1, d - 1) 2^m (d + 1) steps at 1e8 a second within --max-seconds: e.g.
+m <= 21 in 2D, m <= 15 in 4D by default; larger requests are refused). --explain counts
+too, so it has the same limits.
+
+Output, one 'key value' line each:
+  sampler NAME
+  scramble KIND
+  m M
+  d D
+  method rank|count
+  t T
+With --explain and t > 0, up to five 'fail ...' lines follow, each an elementary interval
+of volume 2^(t-1-m) that does not hold 2^(t-1) points (why t-1 fails), e.g.
+  fail shape [1, 2]: [0, 1)/2^1 x [3, 4)/2^2 holds 0 point(s), 1 expected";
+
+/// The base-2 constructions `tvalue` measures.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum TvalueSampler {
+    /// Sobol' sequence, any d.
+    Sobol,
+    /// Larcher–Pillichshammer net, d = 2.
+    Lp,
+    /// Hammersley set in base 2, d = 2: (i/2^m, phi_2(i)).
+    Hammersley,
+    /// Van der Corput sequence in base 2, d = 1.
+    Vdc,
+    /// Faure's sequence in prime base b >= d (--base; default the smallest such prime):
+    /// counted in base b, exactly.
+    Faure,
+}
+
+impl TvalueSampler {
+    /// The construction as `points` names it.
+    fn name(self) -> SamplerName {
+        match self {
+            TvalueSampler::Sobol => SamplerName::Sobol,
+            TvalueSampler::Lp => SamplerName::Lp,
+            TvalueSampler::Hammersley => SamplerName::Hammersley,
+            TvalueSampler::Vdc => SamplerName::Vdc,
+            TvalueSampler::Faure => SamplerName::Faure,
+        }
+    }
+}
+
+/// Arguments of `qmckit tvalue`.
+#[derive(Args, Debug)]
+pub struct TvalueArgs {
+    /// Which construction.
+    sampler: TvalueSampler,
+    /// The set has 2^m points (m <= 32; m <= 21 when counting).
+    #[arg(short = 'm', value_name = "M")]
+    m: u32,
+    /// Dimensions [default: 1 for vdc, 2 otherwise].
+    #[arg(short = 'd', value_name = "D")]
+    d: Option<usize>,
+    /// Randomization, as for `qmckit points` (then the points are counted).
+    #[arg(long, value_enum, default_value_t = ScrambleName::None)]
+    scramble: ScrambleName,
+    /// Seed of the randomization.
+    #[arg(long, default_value_t = 0)]
+    seed: u64,
+    /// Name up to five elementary intervals that break t-1.
+    #[arg(long)]
+    explain: bool,
+    /// Base of faure (a prime at least d) [default: the smallest such prime].
+    #[arg(long)]
+    base: Option<u32>,
+    #[command(flatten)]
+    budget: BudgetArgs,
+}
+
+/// Largest `m` whose points are generated and counted.
+const COUNT_MAX_M: u32 = 21;
+/// Largest number of coordinates (`2^m d`) generated for counting.
+const COUNT_MAX_VALUES: u64 = 1 << 25;
+
+/// Failures listed by `--explain`.
+const EXPLAIN_LIMIT: usize = 5;
+
+/// The unscrambled construction as generator matrices, after checking `d`.
+fn net(sampler: SamplerName, m: u32, d: usize) -> Result<DigitalNet2, Failure> {
+    let fixed = |want: usize, what: &str| {
+        if d == want {
+            Ok(())
+        } else {
+            Err(Failure::usage(format!(
+                "{what} is {want}-dimensional: -d must be {want}, got {d}"
+            )))
+        }
+    };
+    Ok(match sampler {
+        SamplerName::Sobol if d > qmckit::SOBOL_MAX_DIMS => {
+            return Err(Failure::usage(format!(
+                "sobol has {} dimensions: -d must be at most that, got {d}",
+                qmckit::SOBOL_MAX_DIMS
+            )));
+        }
+        SamplerName::Sobol => DigitalNet2::from_sobol(d, m)?,
+        SamplerName::Lp => {
+            fixed(2, "lp")?;
+            DigitalNet2::larcher_pillichshammer(m)?
+        }
+        SamplerName::Hammersley => {
+            fixed(2, "hammersley in base 2")?;
+            DigitalNet2::hammersley(m)?
+        }
+        SamplerName::Vdc => {
+            fixed(1, "vdc")?;
+            DigitalNet2::van_der_corput(m)?
+        }
+        other => {
+            return Err(Failure::usage(format!(
+                "tvalue measures base-2 constructions (sobol, lp, hammersley, vdc); {} is not one",
+                value_name(&other)
+            )));
+        }
+    })
+}
+
+/// Refuses point counts too large to generate and count in reasonable time and memory.
+fn check_countable(m: u32, d: usize, why: &str, budget: &Budget) -> Result<(), Failure> {
+    let values = (1u64 << m).saturating_mul(d as u64);
+    if m > COUNT_MAX_M || values > COUNT_MAX_VALUES {
+        return Err(Failure::usage(format!(
+            "{why} counts points: 2^{m} points of {d} dimensions are too many \
+             (m <= {COUNT_MAX_M} and 2^m * d <= 2^25)"
+        )));
+    }
+    let levels = u32::BITS - m.leading_zeros();
+    let cost = Cost::steps(count_steps(1u64 << m, d, m, levels), COUNT_RATE);
+    if let Err(e) = budget.check("counting", cost) {
+        return Err(Failure::usage(format!(
+            "{why} counts points: 2^{m} points of {d} dimensions take too long to count \
+             ({e}); lower -m or -d, or raise --max-seconds"
+        )));
+    }
+    Ok(())
+}
+
+/// Runs `qmckit tvalue`.
+pub fn run(args: &TvalueArgs) -> Result<(), Failure> {
+    let budget = args.budget.budget()?;
+    let sampler = args.sampler.name();
+    let m = args.m;
+    if m > 32 {
+        return Err(Failure::usage(format!(
+            "-m {m}: at most 32 (2^m points of 32-bit coordinates)"
+        )));
+    }
+    let d = sampler.dims(args.d);
+    if d == 0 {
+        return Err(Failure::usage("-d must be at least 1"));
+    }
+    if args.base.is_some() && sampler != SamplerName::Faure {
+        return Err(Failure::usage("--base applies to faure only"));
+    }
+    if sampler == SamplerName::Faure {
+        if args.explain {
+            return Err(Failure::usage("--explain is for base-2 constructions"));
+        }
+        let (t, b) =
+            super::toolbox::tvalue_faure(m, d, args.base, args.scramble, args.seed, &budget)?;
+        let mut out = std::io::stdout().lock();
+        writeln!(out, "sampler faure\nbase {b}")?;
+        writeln!(out, "scramble {}", value_name(&args.scramble))?;
+        writeln!(out, "m {m}\nd {d}\nmethod count\nt {t}")?;
+        out.flush()?;
+        return Ok(());
+    }
+    // Validates the sampler and d for both methods.
+    let net = net(sampler, m, d)?;
+    let counting = args.scramble != ScrambleName::None;
+    if args.explain {
+        check_countable(m, d, "--explain", &budget)?;
+    }
+    let (t, samples) = if counting {
+        check_countable(m, d, "--scramble", &budget)?;
+        let spec = Spec::base2(sampler, 1u64 << m, d, args.scramble, args.seed);
+        let (samples, dims) = samples_u32(&spec)?;
+        let t = with_spinner("t-value (counting)", || {
+            t_value_u32_within(&samples, dims, m, &Budget::UNLIMITED)
+        })?;
+        (t, Some(samples))
+    } else {
+        let t = with_progress("t-value (rank test)", |progress| {
+            t_value_within(&net, &budget, progress)
+        })?;
+        (t, None)
+    };
+    let mut out = std::io::stdout().lock();
+    writeln!(out, "sampler {}", value_name(&sampler))?;
+    writeln!(out, "scramble {}", value_name(&args.scramble))?;
+    writeln!(out, "m {m}\nd {d}")?;
+    writeln!(out, "method {}", if counting { "count" } else { "rank" })?;
+    writeln!(out, "t {t}")?;
+    if args.explain && t > 0 {
+        let samples = match samples {
+            Some(s) => s,
+            None => net.points()?,
+        };
+        let failures: Vec<IntervalFailure> = with_spinner("elementary intervals", || {
+            elementary_interval_failures_u32_within(
+                &samples,
+                d,
+                m,
+                t - 1,
+                EXPLAIN_LIMIT,
+                &Budget::UNLIMITED,
+            )
+        })?;
+        for f in failures {
+            writeln!(out, "fail {f}")?;
+        }
+    }
+    out.flush()?;
+    Ok(())
+}

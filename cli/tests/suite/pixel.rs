@@ -1,0 +1,158 @@
+//! `qmckit pixel`: the samples of one pixel from the pbrt-v4 pixel samplers, and one-line
+//! refusals.
+
+use crate::common::cli::{assert_usage_error, run};
+
+fn lines(args: &[&str]) -> Vec<String> {
+    let out = run(args, "");
+    assert_eq!(out.status.code(), Some(0), "{args:?}: {:?}", out.stderr);
+    String::from_utf8(out.stdout)
+        .unwrap()
+        .lines()
+        .map(str::to_string)
+        .collect()
+}
+
+/// pbrt's check values through the command (16x9, seed 0, FastOwen).
+#[test]
+fn pixel_prints_pbrt_values() {
+    let base = ["pixel", "zsobol", "--resolution", "16x9", "--pixel", "1,0"];
+    let one = lines(&[&base[..], &["--spp", "1", "--format", "csv"]].concat());
+    assert_eq!(one, ["1,0.57022893,0.7021838,0.8538905"]);
+    let four = lines(&[&base[..], &["--spp", "4", "--format", "csv"]].concat());
+    assert_eq!(four.len(), 4);
+    assert!(four[3].starts_with("4,0.33697805,"), "{four:?}");
+    let padded = lines(&[
+        "pixel",
+        "padded-sobol",
+        "--resolution",
+        "16x16",
+        "--spp",
+        "16",
+        "--pixel",
+        "3,5",
+        "--randomize",
+        "none",
+        "--format",
+        "csv",
+    ]);
+    assert_eq!(padded[0], "-,0.5625,0.5625,0.4375");
+    let ind = lines(&[
+        "pixel",
+        "independent",
+        "--resolution",
+        "4x4",
+        "--spp",
+        "3",
+        "--pixel",
+        "0,0",
+    ]);
+    assert_eq!(ind.len(), 3);
+    assert!(
+        ind.iter()
+            .all(|l| l.starts_with("- ") && l.split(' ').count() == 4)
+    );
+    let pmj = lines(&[
+        "pixel",
+        "pmj02",
+        "--resolution",
+        "4x4",
+        "--spp",
+        "8",
+        "--pixel",
+        "1,2",
+    ]);
+    assert_eq!(pmj.len(), 8);
+    let sobol = lines(&[
+        "pixel",
+        "sobol",
+        "--resolution",
+        "16x9",
+        "--spp",
+        "2",
+        "--pixel",
+        "3,5",
+    ]);
+    let idx: Vec<u64> = sobol
+        .iter()
+        .map(|l| l.split(' ').next().unwrap().parse().unwrap())
+        .collect();
+    assert_eq!(idx.iter().map(|i| i >> 8).collect::<Vec<_>>(), [0, 1]);
+}
+
+#[test]
+fn pixel_refuses_bad_input() {
+    let z = ["pixel", "zsobol", "--pixel", "1,0"];
+    assert_usage_error(
+        &[&z[..], &["--resolution", "16x9", "--spp", "3"]].concat(),
+        "",
+        "--spp 3",
+    );
+    assert_usage_error(
+        &[&z[..], &["--resolution", "16y9", "--spp", "4"]].concat(),
+        "",
+        "--resolution",
+    );
+    assert_usage_error(
+        &[&z[..], &["--resolution", "0x9", "--spp", "4"]].concat(),
+        "",
+        "at least 1",
+    );
+    assert_usage_error(
+        &[
+            "pixel",
+            "zsobol",
+            "--resolution",
+            "16x9",
+            "--spp",
+            "4",
+            "--pixel",
+            "16,0",
+        ],
+        "",
+        "outside the image",
+    );
+    assert_usage_error(
+        &[
+            "pixel",
+            "zsobol",
+            "--resolution",
+            "16x9",
+            "--spp",
+            "4",
+            "--pixel=-1,0",
+        ],
+        "",
+        "--pixel",
+    );
+    assert_usage_error(
+        &[
+            "pixel",
+            "sobol",
+            "--resolution",
+            "65536x1",
+            "--spp",
+            "4",
+            "--pixel",
+            "0,0",
+        ],
+        "",
+        "too many",
+    );
+    assert_usage_error(
+        &[
+            "pixel",
+            "independent",
+            "--resolution",
+            "4x4",
+            "--spp",
+            "4",
+            "--pixel",
+            "0,0",
+            "--randomize",
+            "owen",
+        ],
+        "",
+        "--randomize",
+    );
+}

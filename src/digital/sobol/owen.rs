@@ -1,0 +1,359 @@
+//! Owen-scrambled Sobol' for hot loops and per-pixel seeds (Burley 2020's use case).
+//!
+//! `reverse` distributes over XOR, so the bit-reversed Sobol' point is the GF(2) product of
+//! the bit-reversed direction numbers with the index; the hash-based Owen scramble works on
+//! reversed bits. A sample is therefore
+//!
+//! ```text
+//! x_d(i) = reverse(hash(T0[i0] ^ T1[i1] ^ T2[i2] ^ T3[i3], key_d))
+//! ```
+//!
+//! with `T_b` the byte tables of the reversed direction numbers (`i0..i3` the bytes of `i`)
+//! and `key_d = dimension_seed(seed, d)`. The tables of dimensions 0..4 are one
+//! seed-independent `static` (16 KiB, interleaved so that a point's four coordinates are
+//! four 16-byte rows); the seed lives only in the four keys, so reseeding costs four
+//! hashes. Dimensions from 4 on are evaluated from the direction numbers (32 AND/XOR steps).
+
+use super::{SOBOL_DIRECTIONS, SOBOL_MAX_DIMS, Sobol, SobolDimension, byte_tables};
+use crate::bits::{reverse_bits, to_f32, to_f32_via_f64};
+use crate::error::{Error, Result};
+use crate::randomize::{FastOwen, FastOwenScrambler, OwenHash, Scrambled, dimension_seed};
+use crate::sampler::{FULL_RANGE, Sampler, check};
+
+/// Dimensions served by the interleaved tables.
+const TABLE_DIMS: usize = 4;
+
+/// `REVERSED4[b][v][lane]`: the XOR of `reverse(V_(8b + k + 1))` of dimension `lane` over the
+/// set bits `k` of `v`. Built by the compiler from the direction numbers (4096 XORs).
+static REVERSED4: [[[u32; TABLE_DIMS]; 256]; 4] = interleaved_tables();
+
+const fn interleaved_tables() -> [[[u32; TABLE_DIMS]; 256]; 4] {
+    let mut t = [[[0u32; TABLE_DIMS]; 256]; 4];
+    let mut lane = 0;
+    while lane < TABLE_DIMS {
+        let mut rev = [0u32; 32];
+        let mut k = 0;
+        while k < 32 {
+            rev[k] = SOBOL_DIRECTIONS[lane][k].reverse_bits();
+            k += 1;
+        }
+        let tables = byte_tables(&rev);
+        let mut b = 0;
+        while b < 4 {
+            let mut v = 0;
+            while v < 256 {
+                t[b][v][lane] = tables[b][v];
+                v += 1;
+            }
+            b += 1;
+        }
+        lane += 1;
+    }
+    t
+}
+
+/// The four unscrambled, bit-reversed coordinates (dimensions 0..4) of point `index`.
+#[inline(always)]
+const fn reversed4(index: u32) -> [u32; 4] {
+    let r0 = &REVERSED4[0][(index & 0xFF) as usize];
+    let r1 = &REVERSED4[1][((index >> 8) & 0xFF) as usize];
+    let r2 = &REVERSED4[2][((index >> 16) & 0xFF) as usize];
+    let r3 = &REVERSED4[3][(index >> 24) as usize];
+    [
+        r0[0] ^ r1[0] ^ r2[0] ^ r3[0],
+        r0[1] ^ r1[1] ^ r2[1] ^ r3[1],
+        r0[2] ^ r1[2] ^ r2[2] ^ r3[2],
+        r0[3] ^ r1[3] ^ r2[3] ^ r3[3],
+    ]
+}
+
+/// The Sobol' sequence with hash-based Owen scrambling ([`FastOwen`]): the same bits as
+/// `Scrambled<Sobol, FastOwen>` with the same seed and hash, at random access cost of four
+/// table reads, the hash and one bit reversal (dimensions 0..4), and with a reseed of four
+/// hashes ([`with_seed`](Self::with_seed), [`reseed`](Self::reseed)) for a seed per pixel.
+/// The value is 32 bytes; the tables are shared by every seed.
+///
+/// ```
+/// use qmckit::digital::sobol::OwenSobol;
+/// let s = OwenSobol::new(4, 7)?;
+/// let mut px = [[0f32; 4]; 16];
+/// for pixel in 0..4u64 {
+///     let s = s.with_seed(pixel); // four hashes
+///     s.fill_f32(&core::array::from_fn::<u32, 16, _>(|k| k as u32), &mut px)?;
+///     assert!(px.iter().flatten().all(|x| (0.0..1.0).contains(x)));
+///     assert_eq!(px[5][2], s.sample_f32(5, 2)?);
+/// }
+/// # Ok::<(), qmckit::Error>(())
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct OwenSobol {
+    dims: usize,
+    owen: FastOwen,
+    keys: [u32; TABLE_DIMS],
+}
+
+impl OwenSobol {
+    /// `dims` dimensions (`1 <= dims <= SOBOL_MAX_DIMS`) scrambled with Vegdahl's hash and
+    /// `seed`. `const`.
+    ///
+    /// # Errors
+    /// [`Error::ZeroDimensions`], [`Error::DimensionOutOfRange`].
+    pub const fn new(dims: usize, seed: u64) -> Result<Self> {
+        Self::with_hash(dims, seed, OwenHash::Vegdahl)
+    }
+
+    /// The given hash. `const`.
+    ///
+    /// # Errors
+    /// As [`new`](Self::new).
+    pub const fn with_hash(dims: usize, seed: u64, hash: OwenHash) -> Result<Self> {
+        if let Err(e) = Sobol::new(dims) {
+            return Err(e);
+        }
+        Ok(Self::keyed(dims, FastOwen::with_hash(seed, hash)))
+    }
+
+    const fn keyed(dims: usize, owen: FastOwen) -> Self {
+        let seed = owen.seed();
+        OwenSobol {
+            dims,
+            owen,
+            keys: [
+                dimension_seed(seed, 0),
+                dimension_seed(seed, 1),
+                dimension_seed(seed, 2),
+                dimension_seed(seed, 3),
+            ],
+        }
+    }
+
+    /// The same sequence with another seed: four hashes. `const`.
+    #[inline]
+    pub const fn with_seed(&self, seed: u64) -> Self {
+        Self::keyed(self.dims, FastOwen::with_hash(seed, self.owen.hash()))
+    }
+
+    /// Sets the seed in place: four hashes.
+    #[inline]
+    pub fn reseed(&mut self, seed: u64) {
+        *self = self.with_seed(seed);
+    }
+
+    /// The scramble ([`FastOwen`] with this seed and hash).
+    pub const fn fast_owen(&self) -> FastOwen {
+        self.owen
+    }
+
+    /// Coordinate `dim` of point `index` as a 0.32 fraction. `const`.
+    ///
+    /// # Errors
+    /// [`Error::DimensionOutOfRange`] for `dim >= dims()`.
+    #[inline]
+    pub const fn sample(&self, index: u32, dim: usize) -> Result<u32> {
+        if let Err(e) = check(index, FULL_RANGE, dim, self.dims) {
+            return Err(e);
+        }
+        if dim < TABLE_DIMS {
+            let s = FastOwenScrambler::from_key(self.keys[dim], self.owen.hash());
+            return Ok(reverse_bits(s.scramble_reversed(reversed4(index)[dim])));
+        }
+        match SobolDimension::new(dim) {
+            Ok(d) => Ok(self.owen.scrambler(dim).scramble(d.sample(index))),
+            Err(e) => Err(e),
+        }
+    }
+
+    /// Coordinate `dim` of point `index` as an `f32` in `[0, 1)` ([`crate::bits::to_f32`]).
+    /// `const`.
+    ///
+    /// # Errors
+    /// As [`sample`](Self::sample).
+    #[inline]
+    pub const fn sample_f32(&self, index: u32, dim: usize) -> Result<f32> {
+        match self.sample(index, dim) {
+            Ok(x) => Ok(to_f32(x)),
+            Err(e) => Err(e),
+        }
+    }
+
+    /// Dimensions 0..4 of point `index` (whatever [`dims`](Sampler::dims) is), as 0.32
+    /// fractions: four table rows, four hashes. `const`.
+    #[inline(always)]
+    pub const fn sample4(&self, index: u32) -> [u32; 4] {
+        let rev = reversed4(index);
+        let h = self.owen.hash();
+        let mut out = [0u32; 4];
+        let mut lane = 0;
+        while lane < 4 {
+            let s = FastOwenScrambler::from_key(self.keys[lane], h);
+            out[lane] = reverse_bits(s.scramble_reversed(rev[lane]));
+            lane += 1;
+        }
+        out
+    }
+
+    /// [`sample4`](Self::sample4) as `f32` in `[0, 1)`.
+    #[inline(always)]
+    pub fn sample4_f32(&self, index: u32) -> [f32; 4] {
+        self.sample4(index).map(to_f32_via_f64)
+    }
+
+    /// `out[k] = sample4_f32(indices[k])` for every `k`, four points (16 lanes) at a time.
+    /// On x86-64 with `std` it runs the widest build of the same loop the CPU supports,
+    /// detected at run time: AVX-512 with GFNI, else AVX2, else the portable one. The same
+    /// bits on every build (tested against [`sample4_f32`](Self::sample4_f32)).
+    ///
+    /// # Errors
+    /// [`Error::BufferLength`] (`expected: indices.len()`, `got: out.len()`) unless the two
+    /// slices have the same length; `out` is then left untouched.
+    pub fn fill_f32(&self, indices: &[u32], out: &mut [[f32; 4]]) -> Result<()> {
+        check_lengths(indices, out)?;
+        crate::dispatch::owen_sobol4_fill_f32(self, indices, out);
+        Ok(())
+    }
+
+    /// The portable build of [`fill_f32`](Self::fill_f32) (what other targets use).
+    ///
+    /// # Errors
+    /// As [`fill_f32`](Self::fill_f32).
+    pub fn fill_f32_portable(&self, indices: &[u32], out: &mut [[f32; 4]]) -> Result<()> {
+        check_lengths(indices, out)?;
+        fill_blocks(self, indices, out);
+        Ok(())
+    }
+}
+
+/// `Ok` when `out` has one slot per index.
+fn check_lengths(indices: &[u32], out: &[[f32; 4]]) -> Result<()> {
+    if indices.len() == out.len() {
+        Ok(())
+    } else {
+        Err(Error::BufferLength {
+            expected: indices.len(),
+            got: out.len(),
+        })
+    }
+}
+
+/// The loop of every [`OwenSobol::fill_f32`] build (the lengths are checked by the caller;
+/// the shorter one bounds the loop). On 64-bit targets four points at a
+/// time: their 16 coordinates form one array, so the hash, the reversal and the conversion
+/// are 16 lanes of identical work that the compiler maps onto vectors of the build's width;
+/// the last `len % 4` points go one by one. 32-bit targets go point by point (small code).
+#[inline(always)]
+pub(crate) fn fill_blocks(s: &OwenSobol, indices: &[u32], out: &mut [[f32; 4]]) {
+    let n = indices.len().min(out.len());
+    let (indices, out) = (
+        indices.get(..n).unwrap_or(&[]),
+        out.get_mut(..n).unwrap_or(&mut []),
+    );
+    #[cfg(target_pointer_width = "64")]
+    let (indices, out) = {
+        let (idx4, idx_rest) = indices.as_chunks::<4>();
+        let (out4, out_rest) = out.as_chunks_mut::<4>();
+        match s.owen.hash() {
+            OwenHash::Vegdahl => {
+                for (o, i) in out4.iter_mut().zip(idx4) {
+                    *o = block_f32(s, i, crate::hash::vegdahl);
+                }
+            }
+            OwenHash::LaineKarras => {
+                for (o, i) in out4.iter_mut().zip(idx4) {
+                    *o = block_f32(s, i, crate::hash::laine_karras);
+                }
+            }
+        }
+        (idx_rest, out_rest)
+    };
+    for (o, &i) in out.iter_mut().zip(indices) {
+        *o = s.sample4_f32(i);
+    }
+}
+
+/// Four points as 16 lanes: point `p`'s table rows XORed into lanes `4p .. 4p + 4`, then one
+/// hash, reversal and conversion loop over all 16 with the keys spread to 16 lanes (a plain
+/// loop over fixed-size arrays, which the compiler vectorizes).
+#[cfg(target_pointer_width = "64")]
+#[inline(always)]
+fn block_f32(s: &OwenSobol, idx: &[u32; 4], hash: impl Fn(u32, u32) -> u32) -> [[f32; 4]; 4] {
+    let mut x = [0u32; 16];
+    for (p, &index) in idx.iter().enumerate() {
+        let rev = reversed4(index);
+        for lane in 0..4 {
+            x[(4 * p + lane) % 16] = rev[lane];
+        }
+    }
+    let mut y = [0f32; 16];
+    let keys: [u32; 16] = core::array::from_fn(|k| s.keys[k % 4]);
+    for ((yk, &xk), &key) in y.iter_mut().zip(&x).zip(&keys) {
+        *yk = to_f32_via_f64(reverse_bits(hash(xk, key)));
+    }
+    core::array::from_fn(|p| core::array::from_fn(|lane| y[(4 * p + lane) % 16]))
+}
+
+impl Sampler for OwenSobol {
+    fn dims(&self) -> usize {
+        self.dims
+    }
+
+    fn len(&self) -> u64 {
+        FULL_RANGE
+    }
+
+    #[inline]
+    fn sample(&self, index: u32, dim: usize) -> Result<u32> {
+        OwenSobol::sample(self, index, dim)
+    }
+
+    /// Sobol's sequential fill, then the scramble (as `Scrambled<Sobol, FastOwen>`).
+    fn fill(&self, start: u32, out: &mut [u32]) -> Result<()> {
+        match Sobol::new(self.dims) {
+            Ok(sobol) => Scrambled::new(sobol, self.owen).fill(start, out),
+            Err(e) => Err(e),
+        }
+    }
+}
+
+/// Coordinate `dim` of point `index` of the Owen-scrambled Sobol' sequence with `seed`
+/// (Vegdahl's hash): the same bits as `OwenSobol::new(dim + 1, seed)?.sample(index, dim)`
+/// and `Scrambled<Sobol, FastOwen>`. Hashes the seed on every call (three [`crate::hash::mix64`]);
+/// for many samples of one seed, hold an [`OwenSobol`]. `const`.
+///
+/// # Errors
+/// [`Error::DimensionOutOfRange`] past [`SOBOL_MAX_DIMS`].
+///
+/// ```
+/// use qmckit::digital::sobol::{OwenSobol, owen_sobol};
+/// assert_eq!(owen_sobol(9, 2, 42)?, OwenSobol::new(3, 42)?.sample(9, 2)?);
+/// # Ok::<(), qmckit::Error>(())
+/// ```
+#[inline]
+pub const fn owen_sobol(index: u32, dim: usize, seed: u64) -> Result<u32> {
+    if dim >= SOBOL_MAX_DIMS {
+        return Err(Error::DimensionOutOfRange {
+            dim,
+            dims: SOBOL_MAX_DIMS,
+        });
+    }
+    let s = FastOwen::new(seed).scrambler(dim);
+    if dim < TABLE_DIMS {
+        return Ok(reverse_bits(s.scramble_reversed(reversed4(index)[dim])));
+    }
+    match SobolDimension::new(dim) {
+        Ok(d) => Ok(s.scramble(d.sample(index))),
+        Err(e) => Err(e),
+    }
+}
+
+/// [`owen_sobol`] as an `f32` in `[0, 1)`. `const`.
+///
+/// # Errors
+/// As [`owen_sobol`].
+#[inline]
+pub const fn owen_sobol_f32(index: u32, dim: usize, seed: u64) -> Result<f32> {
+    match owen_sobol(index, dim, seed) {
+        Ok(x) => Ok(to_f32(x)),
+        Err(e) => Err(e),
+    }
+}
