@@ -3,9 +3,10 @@
 
 use std::io::{BufWriter, Write};
 
-use clap::{Args, ValueEnum};
+use clap::Args;
 use qmckit::analysis::Points;
 use qmckit::analysis::integrate::{Integrand, integration_error};
+use qmckit::catalog::{IntegrandEntry, IntegrandKind};
 
 use qmckit::blue_noise::{BestCandidate, GaussianBlueNoise, PoissonDisk};
 use qmckit::randomize::{CranleyPatterson, Scrambled};
@@ -22,7 +23,7 @@ use qmckit::catalog::{RandomizerKind, SamplerKind};
 /// Text shown after the options of `qmckit convergence --help`.
 pub const AFTER_HELP: &str = "\
 Integrands over [0, 1]^d, each with a closed-form integral I:
-  gaussian     exp(-16 |x - c|^2), c the centre (Genz's Gaussian peak)
+  gaussian-peak  exp(-16 |x - c|^2), c the centre (Genz's Gaussian peak; alias gaussian)
   oscillatory  cos(0.6 pi + 2 sum_k x_k) (Genz's oscillatory)
   ball         1 inside the ball of radius 0.45 about the centre
   heaviside    1 where sum_k sqrt(k + 2) (x_k - 1/2) >= 0 (I = 1/2)
@@ -43,17 +44,21 @@ Halton; the blue-noise sets (poisson, best-candidate, gaussian-blue-noise) are e
 their construction cost instead, and built within the same deadline. Largest set: 2^24
 points. Errors: one line, exit code 2.";
 
-/// The integrands by name.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub enum IntegrandName {
-    /// Genz's Gaussian peak.
-    Gaussian,
-    /// Genz's oscillatory.
-    Oscillatory,
-    /// Ball indicator.
-    Ball,
-    /// Half-space indicator.
-    Heaviside,
+/// The integrands `convergence` takes: the catalog's integrands on the cube with a
+/// closed form in any dimension.
+fn on_cube(e: &IntegrandEntry) -> bool {
+    cube(e.kind).is_some()
+}
+
+/// The integrand of `kind`, if it is one of the cube's.
+fn cube(kind: IntegrandKind) -> Option<Integrand> {
+    match kind {
+        IntegrandKind::GaussianPeak => Some(Integrand::Gaussian),
+        IntegrandKind::Oscillatory => Some(Integrand::Oscillatory),
+        IntegrandKind::Ball => Some(Integrand::Ball),
+        IntegrandKind::Heaviside => Some(Integrand::Heaviside),
+        _ => None,
+    }
 }
 
 /// Arguments of `qmckit convergence`.
@@ -63,8 +68,11 @@ pub struct ConvergenceArgs {
     #[arg(value_parser = names::samplers())]
     sampler: SamplerName,
     /// The integrand (see below).
-    #[arg(long, value_enum, default_value_t = IntegrandName::Gaussian)]
-    integrand: IntegrandName,
+    #[arg(long, default_value = "gaussian-peak", value_parser = names::integrands().only(
+        on_cube,
+        "convergence integrates gaussian-peak, oscillatory, ball and heaviside",
+    ))]
+    integrand: &'static IntegrandEntry,
     /// Dimensions [default: 1 for vdc, 2 otherwise].
     #[arg(short = 'd', value_name = "D")]
     d: Option<usize>,
@@ -225,12 +233,12 @@ pub fn run(args: &ConvergenceArgs) -> Result<(), Failure> {
     }
     let budget = args.budget.budget()?;
     let mut sizes = sizes(args.sampler, d, max_m);
-    let f = match args.integrand {
-        IntegrandName::Gaussian => Integrand::Gaussian,
-        IntegrandName::Oscillatory => Integrand::Oscillatory,
-        IntegrandName::Ball => Integrand::Ball,
-        IntegrandName::Heaviside => Integrand::Heaviside,
-    };
+    let f = cube(args.integrand.kind).ok_or_else(|| {
+        Failure::usage(format!(
+            "convergence does not integrate {}",
+            args.integrand.name
+        ))
+    })?;
     let spec = |n: u64, k: u64| Spec {
         budget,
         ..Spec::base2(args.sampler, n, d, args.scramble, args.seed.wrapping_add(k))
@@ -281,11 +289,7 @@ pub fn run(args: &ConvergenceArgs) -> Result<(), Failure> {
     budget
         .check("the convergence curve", estimate)
         .map_err(over)?;
-    let label = format!(
-        "{} on {}",
-        super::points::value_name(&args.integrand),
-        args.sampler.name
-    );
+    let label = format!("{} on {}", args.integrand.name, args.sampler.name);
     let rows = with_progress(&label, |progress| -> Result<Vec<(u64, f64)>, Failure> {
         let mut rows = Vec::with_capacity(sizes.len());
         let mut done = 0.0;
