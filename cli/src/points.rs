@@ -587,10 +587,3 @@ pub fn samples_u32(spec: &Spec) -> Result<(Vec<u32>, usize), Failure> {
     sampler.fill(0, &mut buf)?;
     Ok((buf, dims))
 }
-
-/// The command-line name of a value (`fast-owen`, `sobol`).
-pub fn value_name(v: &impl ValueEnum) -> String {
-    v.to_possible_value()
-        .map(|v| v.get_name().to_owned())
-        .unwrap_or_default()
-}
