@@ -116,6 +116,12 @@ pub fn run(args: &PixelArgs) -> Result<(), Failure> {
     // Checks the pixel once, so an error comes before any output.
     sampler.get_1d(x, y, 0, args.dim)?;
     let mut out = BufWriter::new(std::io::stdout().lock());
+    // The header names the kind, so `qmckit plot` refuses it instead of drawing points.
+    writeln!(
+        out,
+        "# qmckit pixel {} {w}x{h} pixel {x},{y} spp {spp} dim {}: index v1 x y",
+        args.sampler.name, args.dim
+    )?;
     for i in 0..spp {
         let index = match sampler.sample_index(x, y, i, args.dim)? {
             Some(k) => k.to_string(),

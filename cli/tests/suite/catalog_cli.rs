@@ -268,7 +268,7 @@ fn the_pixel_builder_gives_the_command_s_values() {
             let s =
                 catalog::build_pixel(entry, r.map(|r| catalog::randomizer(r).unwrap()), &params)
                     .unwrap();
-            for (i, line) in text.lines().enumerate() {
+            for (i, line) in text.lines().filter(|l| !l.starts_with('#')).enumerate() {
                 let f: Vec<&str> = line.split(' ').collect();
                 let v: Vec<u32> = f[1..].iter().map(|t| t.parse().unwrap()).collect();
                 let [a, b] = s.get_2d(3, 5, i as u32, 2).unwrap();
