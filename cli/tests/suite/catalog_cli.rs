@@ -67,7 +67,7 @@ fn cases() -> Vec<(&'static str, Params)> {
         ),
         ("pmj02", p()),
     ];
-    if cfg!(feature = "analysis") {
+    {
         v.extend([
             ("pmj02bn", p().with_points(256)),
             ("poisson", p().with_points(100)),
@@ -452,4 +452,57 @@ fn tvalue_judges_a_point_file() {
         "power of the base",
     );
     crate::common::cli::assert_usage_error(&["tvalue", "latin", "-m", "4"], "", "qmckit tvalue -");
+}
+
+/// `plot` reads what the tool writes, or refuses in one line what it cannot draw.
+#[test]
+fn plot_reads_every_output_or_refuses() {
+    let dir = std::env::temp_dir().join(format!("qmckit-plot-kinds-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let svg = dir.join("f.svg");
+    let o = svg.to_str().unwrap();
+    let output = |args: &[&str], input: &str| {
+        let out = run(args, input);
+        assert_eq!(out.status.code(), Some(0), "{args:?}");
+        String::from_utf8(out.stdout).unwrap()
+    };
+    // pcf: g(r) against r.
+    let pts = output(&["points", "sobol", "-n", "256"], "");
+    let pcf = output(&["pcf"], &pts);
+    assert_eq!(output(&["plot", "--out", o], &pcf), "");
+    assert!(
+        std::fs::read_to_string(&svg)
+            .unwrap()
+            .contains("pair correlation")
+    );
+    // npy point files.
+    let npy = dir.join("p.npy");
+    let out = run(&["points", "halton", "-n", "64", "--format", "npy"], "");
+    std::fs::write(&npy, &out.stdout).unwrap();
+    let out = run(&["plot", "--out", o, npy.to_str().unwrap()], "");
+    assert_eq!(out.status.code(), Some(0), "{:?}", out.stderr);
+    assert!(std::fs::read_to_string(&svg).unwrap().contains("64 points"));
+    // Masks are images, pixel output is refused.
+    let mask = output(&["mask", "void-and-cluster", "--size", "8x8"], "");
+    let out = run(&["plot", "--out", o], &mask);
+    assert_eq!(out.status.code(), Some(0));
+    assert!(std::fs::read_to_string(&svg).unwrap().contains("8x8 image"));
+    let pixel = output(
+        &[
+            "pixel",
+            "zsobol",
+            "--resolution",
+            "4x4",
+            "--spp",
+            "4",
+            "--pixel",
+            "0,0",
+        ],
+        "",
+    );
+    crate::common::cli::assert_usage_error(&["plot", "--out", o], &pixel, "qmckit pixel");
+    // The readers skip the header comments.
+    let out = run(&["discrepancy", "--metric", "cd"], &mask);
+    assert_eq!(out.status.code(), Some(0));
+    std::fs::remove_dir_all(&dir).unwrap();
 }
