@@ -365,6 +365,8 @@ fn params(spec: &Spec) -> Result<Params, Failure> {
             "-d 0: at least 1 dimension is needed (the number of dimensions per point)",
         ));
     }
+    // A stratified set with its strata computed from the size takes no separate size.
+    let points = points.filter(|_| kind != SamplerKind::Stratified || spec.strata.is_some());
     Ok(Params {
         dims: spec.d,
         points,
@@ -374,20 +376,12 @@ fn params(spec: &Spec) -> Result<Params, Failure> {
             OrderName::Natural => Order::Natural,
             OrderName::Gray => Order::Gray,
         },
-        // Stratified's strata are its size; a stratified set with its strata computed
-        // from the size takes no separate size.
         strata: strata.filter(|_| kind == SamplerKind::Stratified),
         centered: spec.centered,
         korobov: spec.korobov,
         vector,
-        budget: spec.budget.clone(),
+        budget: spec.budget,
         blue_noise: BlueNoiseOptions::default(),
-    })
-    .map(|mut p| {
-        if kind == SamplerKind::Stratified && spec.strata.is_none() {
-            p.points = None;
-        }
-        p
     })
 }
 

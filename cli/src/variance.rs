@@ -173,7 +173,7 @@ fn points_of(
             .then_some(u64::from(n)),
         strata: stratified.then(|| vec![side, side]),
         seed: key,
-        budget: budget.clone(),
+        budget: *budget,
         ..Params::default()
     };
     let sampler = catalog::build(which.sampler, which.scramble, &params)?;
