@@ -133,8 +133,16 @@ pub fn flag_text(e: &CatalogError) -> String {
                 1,
             )
         }
-        CatalogError::NotApplicable { randomizer, .. } => {
-            text.replacen(randomizer, &format!("--scramble {randomizer}"), 1)
+        CatalogError::NotApplicable {
+            randomizer,
+            sampler,
+            base,
+            rule,
+        } => {
+            let base = base.map(|b| format!(" in base {b}")).unwrap_or_default();
+            format!(
+                "--scramble {randomizer} does not apply to {sampler}{base} (it applies to {rule})"
+            )
         }
         _ => text,
     }
