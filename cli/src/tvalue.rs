@@ -1,5 +1,6 @@
 //! `qmckit tvalue SAMPLER -m M [-d D] [--scramble KIND] [--seed S] [--explain]`: the t-value
-//! of the first `2^m` points of a base-2 construction.
+//! of the first `2^m` points of a base-2 construction (or `b^m` of faure); `qmckit tvalue
+//! FILE|-`: the t-value of a point file of `b^m` points.
 
 use std::io::Write;
 
@@ -24,9 +25,15 @@ use super::progress::{with_progress, with_spinner};
 /// Text shown after the options of `qmckit tvalue --help`.
 pub const AFTER_HELP: &str = "\
 Samplers (base 2): sobol (any d), lp (d = 2), hammersley (d = 2: (i/2^m, phi_2(i))),
-vdc (d = 1, base 2). In base b: faure (the first b^m points, counted exactly in base b;
---base B, a prime >= d; --scramble owen|perm|faure; output adds a 'base B' line). Other
-samplers are refused.
+vdc (d = 1, base 2); pmj02 and pmj02bn (d = 2, seeded by --seed, generated and counted).
+In base b: faure (the first b^m points, counted exactly in base b; --base B, a prime >= d;
+--scramble owen|perm|faure; output adds a 'base B' line). Other catalog samplers are
+refused in one line.
+
+A point file (FILE, or '-' for standard input) of b^m points (base --base B, default 2),
+in any format 'qmckit points' writes, is judged by counting its elementary intervals:
+  qmckit points pmj02bn -n 256 | qmckit tvalue -
+prints 'file', 'base', 'm', 'd', 'method count' and 't' lines.
 
 Method: without --scramble, the rank test on the generator matrices (exact, m <= 32; its
 cost grows like C(m - t + 1 + d, d), fast for small d; estimated first and refused when the
