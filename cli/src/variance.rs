@@ -227,6 +227,17 @@ pub fn run(args: &VarianceArgs) -> Result<(), Failure> {
             scramble: catalog::randomizer("none")?,
         },
     };
+    if matches!(
+        drawn.sampler.kind,
+        SamplerKind::Poisson | SamplerKind::GaussianBlueNoise
+    ) && drawn.scramble.kind != RandomizerKind::None
+    {
+        return Err(Failure::usage(format!(
+            "--scramble does not apply to {} here (its sets are drawn on the torus, each \
+             shifted at random already)",
+            drawn.sampler.name
+        )));
+    }
     if drawn.sampler.kind == SamplerKind::Stratified {
         let side = (n as f64).sqrt().round() as u32;
         if side * side != n {
