@@ -101,7 +101,9 @@ impl clap::builder::TypedValueParser for InputParser {
         names::samplers()
             .only(
                 judged,
-                "tvalue judges sobol, lp, vdc, hammersley, faure, pmj02 and pmj02bn; for                  another set write b^m points and pass the file, e.g. 'qmckit points NAME -n                  256 | qmckit tvalue -'",
+                "tvalue judges sobol, lp, vdc, hammersley, faure, pmj02 and pmj02bn; for \
+                 another set write b^m points and pass the file, e.g. 'qmckit points NAME -n \
+                 256 | qmckit tvalue -'",
             )
             .parse_ref(cmd, arg, value)
             .map(TvalueInput::Sampler)

@@ -258,6 +258,8 @@ fn the_pixel_builder_gives_the_command_s_values() {
                 "3,5",
                 "--dim",
                 "2",
+                "--format",
+                "u32",
             ];
             if let Some(r) = r {
                 args.extend(["--randomize", r]);
@@ -298,6 +300,8 @@ fn a_vector_file_gives_the_command_s_lattice() {
         "shift-tent",
         "--seed",
         "4",
+        "--format",
+        "u32",
     ];
     let out = run(&args, "");
     std::fs::remove_file(&path).unwrap();
