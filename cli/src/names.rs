@@ -141,7 +141,7 @@ pub fn flag_text(e: &CatalogError) -> String {
         } => {
             let base = base.map(|b| format!(" in base {b}")).unwrap_or_default();
             format!(
-                "--scramble {randomizer} does not apply to {sampler}{base} (it applies to {rule})"
+                "--scramble {randomizer} does not apply to {sampler}{base}: it applies to {rule}"
             )
         }
         _ => text,
