@@ -162,39 +162,3 @@ pub fn write(set: &PointSet, format: Format) -> Result<(), Failure> {
     writer.write(set.coords(), set.dims())?;
     writer.finish()
 }
-
-/// PMJ02BN's throughput in cache: spread steps (a point at one of the `ceil(log2 n)`
-/// levels) a second, one core, release (measured 2.5e6 to 2.8e6 for 10^4 to 10^5 points).
-const PMJ02BN_STEPS: qmckit::work::Rate = qmckit::work::Rate::per_second(2.8e6);
-
-/// The growth of a step's cost per doubling of `n` past `2^16` points, when the workspace
-/// (`8n` to `16n` words) leaves the caches (measured: 10^6 points, 20 levels, 15 s).
-const PMJ02BN_MEMORY: f64 = 0.3;
-
-/// The first `n` points of the PMJ02BN sequence of `seed` (PMJ02 spread by nested flips),
-/// as a point set: `O(n log n)`, estimated and refused past `budget` (`--max-seconds`),
-/// stopped at its deadline, memory checked by `size::vec_zeroed`.
-pub fn pmj02bn_set(
-    n: u64,
-    seed: u64,
-    budget: qmckit::work::Budget,
-) -> Result<qmckit::blue_noise::PointSet, Failure> {
-    use qmckit::pmj::bn;
-    use qmckit::work::Cost;
-    let budget = budget.started();
-    let len = usize::try_from(n).unwrap_or(usize::MAX);
-    let work_len = bn::workspace_len(len)?;
-    let log = (n.max(2) as f64).log2();
-    let memory = 1.0 + PMJ02BN_MEMORY * (log - 16.0).max(0.0);
-    let steps = n as f64 * log.ceil() * memory;
-    budget
-        .check("pmj02bn points", Cost::steps(steps, PMJ02BN_STEPS))
-        .map_err(|e| Failure::usage(super::budget::over_budget(e)))?;
-    let mut pts = qmckit::size::vec_zeroed::<[u32; 2]>(len)?;
-    let mut work = qmckit::size::vec_zeroed::<u32>(work_len)?;
-    bn::fill_within(seed, &mut pts, &mut work, &budget)?;
-    drop(work);
-    let mut coords = qmckit::size::vec_with_capacity(qmckit::size::coordinates(n, 2)?)?;
-    coords.extend(pts.into_iter().flatten());
-    Ok(qmckit::blue_noise::PointSet::new(coords, 2)?)
-}

@@ -3,9 +3,10 @@
 
 use std::io::{BufWriter, Write};
 
-use clap::{Args, ValueEnum};
+use clap::Args;
 use qmckit::analysis::Points;
 use qmckit::analysis::integrate::{Integrand, integration_error};
+use qmckit::catalog::{IntegrandEntry, IntegrandKind};
 
 use qmckit::blue_noise::{BestCandidate, GaussianBlueNoise, PoissonDisk};
 use qmckit::randomize::{CranleyPatterson, Scrambled};
@@ -14,13 +15,15 @@ use qmckit::work::{Budget, Cost, Rate};
 
 use super::Failure;
 use super::budget::BudgetArgs;
-use super::points::{SamplerName, ScrambleName, Spec, build, value_name};
+use super::names;
+use super::points::{SamplerName, ScrambleName, Spec, blue_noise_kind, build, dims_of};
 use super::progress::with_progress;
+use qmckit::catalog::{RandomizerKind, SamplerKind};
 
 /// Text shown after the options of `qmckit convergence --help`.
 pub const AFTER_HELP: &str = "\
 Integrands over [0, 1]^d, each with a closed-form integral I:
-  gaussian     exp(-16 |x - c|^2), c the centre (Genz's Gaussian peak)
+  gaussian-peak  exp(-16 |x - c|^2), c the centre (Genz's Gaussian peak; alias gaussian)
   oscillatory  cos(0.6 pi + 2 sum_k x_k) (Genz's oscillatory)
   ball         1 inside the ball of radius 0.45 about the centre
   heaviside    1 where sum_k sqrt(k + 2) (x_k - 1/2) >= 0 (I = 1/2)
@@ -41,27 +44,35 @@ Halton; the blue-noise sets (poisson, best-candidate, gaussian-blue-noise) are e
 their construction cost instead, and built within the same deadline. Largest set: 2^24
 points. Errors: one line, exit code 2.";
 
-/// The integrands by name.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub enum IntegrandName {
-    /// Genz's Gaussian peak.
-    Gaussian,
-    /// Genz's oscillatory.
-    Oscillatory,
-    /// Ball indicator.
-    Ball,
-    /// Half-space indicator.
-    Heaviside,
+/// The integrands `convergence` takes: the catalog's integrands on the cube with a
+/// closed form in any dimension.
+fn on_cube(e: &IntegrandEntry) -> bool {
+    cube(e.kind).is_some()
+}
+
+/// The integrand of `kind`, if it is one of the cube's.
+fn cube(kind: IntegrandKind) -> Option<Integrand> {
+    match kind {
+        IntegrandKind::GaussianPeak => Some(Integrand::Gaussian),
+        IntegrandKind::Oscillatory => Some(Integrand::Oscillatory),
+        IntegrandKind::Ball => Some(Integrand::Ball),
+        IntegrandKind::Heaviside => Some(Integrand::Heaviside),
+        _ => None,
+    }
 }
 
 /// Arguments of `qmckit convergence`.
 #[derive(Args, Debug)]
 pub struct ConvergenceArgs {
     /// Which construction, as for `qmckit points`.
+    #[arg(value_parser = names::samplers())]
     sampler: SamplerName,
     /// The integrand (see below).
-    #[arg(long, value_enum, default_value_t = IntegrandName::Gaussian)]
-    integrand: IntegrandName,
+    #[arg(long, default_value = "gaussian-peak", value_parser = names::integrands().only(
+        on_cube,
+        "convergence integrates gaussian-peak, oscillatory, ball and heaviside",
+    ))]
+    integrand: &'static IntegrandEntry,
     /// Dimensions [default: 1 for vdc, 2 otherwise].
     #[arg(short = 'd', value_name = "D")]
     d: Option<usize>,
@@ -70,7 +81,7 @@ pub struct ConvergenceArgs {
     #[arg(long, value_name = "M")]
     max_m: Option<u32>,
     /// Randomization, as for `qmckit points`.
-    #[arg(long, value_enum, default_value_t = ScrambleName::None)]
+    #[arg(long, value_parser = names::randomizers(), default_value = "none")]
     scramble: ScrambleName,
     /// Number of seeds whose errors are averaged (root mean square).
     #[arg(long, default_value_t = 1)]
@@ -108,7 +119,7 @@ fn sizes(sampler: SamplerName, d: usize, m: u32) -> Vec<u64> {
     let mut sizes = Vec::new();
     let mut k = 1u64;
     while k <= top {
-        let n = if sampler == SamplerName::Stratified {
+        let n = if sampler.kind == SamplerKind::Stratified {
             k.checked_pow(power).unwrap_or(u64::MAX)
         } else {
             k
@@ -130,20 +141,20 @@ const BATCH_VALUES: usize = 1 << 20;
 /// other through [`build`] (its whole-set constructions, pmj02bn, take `spec.budget`).
 fn sampler_of(spec: &Spec, budget: &Budget) -> Result<Box<dyn Sampler>, Failure> {
     let (n, seed) = (spec.n, spec.seed);
-    let set = match spec.sampler {
-        SamplerName::Poisson => PoissonDisk::with_points(spec.d.unwrap_or(2), n)?
+    let set = match spec.sampler.kind {
+        SamplerKind::Poisson => PoissonDisk::with_points(spec.d.unwrap_or(2), n)?
             .torus(false)
             .maximal(false)
             .seed(seed)
             .generate_within(budget)?,
-        SamplerName::BestCandidate => BestCandidate::new(n)?.seed(seed).generate_within(budget)?,
-        SamplerName::GaussianBlueNoise => GaussianBlueNoise::new(n)?
+        SamplerKind::BestCandidate => BestCandidate::new(n)?.seed(seed).generate_within(budget)?,
+        SamplerKind::GaussianBlueNoise => GaussianBlueNoise::new(n)?
             .seed(seed)
             .generate_within(budget)?,
         _ => return build(spec),
     };
-    Ok(match spec.scramble {
-        ScrambleName::Rotate => Box::new(Scrambled::new(set, CranleyPatterson::new(seed))),
+    Ok(match spec.scramble.kind {
+        RandomizerKind::Rotate => Box::new(Scrambled::new(set, CranleyPatterson::new(seed))),
         _ => Box::new(set),
     })
 }
@@ -152,12 +163,12 @@ fn sampler_of(spec: &Spec, budget: &Budget) -> Result<Box<dyn Sampler>, Failure>
 /// whose cost the probe measures).
 fn construction(spec: &Spec) -> Result<f64, Failure> {
     let n = spec.n;
-    Ok(match spec.sampler {
-        SamplerName::Poisson => PoissonDisk::with_points(spec.d.unwrap_or(2), n)?
+    Ok(match spec.sampler.kind {
+        SamplerKind::Poisson => PoissonDisk::with_points(spec.d.unwrap_or(2), n)?
             .cost()?
             .seconds(),
-        SamplerName::BestCandidate => BestCandidate::new(n)?.cost().seconds(),
-        SamplerName::GaussianBlueNoise => GaussianBlueNoise::new(n)?.cost().seconds(),
+        SamplerKind::BestCandidate => BestCandidate::new(n)?.cost().seconds(),
+        SamplerKind::GaussianBlueNoise => GaussianBlueNoise::new(n)?.cost().seconds(),
         _ => 0.0,
     })
 }
@@ -206,8 +217,8 @@ fn probe_rate(
 
 /// Runs `qmckit convergence`.
 pub fn run(args: &ConvergenceArgs) -> Result<(), Failure> {
-    let max_m = args.max_m.unwrap_or(match args.sampler {
-        SamplerName::BestCandidate | SamplerName::GaussianBlueNoise => 10,
+    let max_m = args.max_m.unwrap_or(match args.sampler.kind {
+        SamplerKind::BestCandidate | SamplerKind::GaussianBlueNoise => 10,
         _ => 12,
     });
     if max_m > MAX_M {
@@ -216,23 +227,23 @@ pub fn run(args: &ConvergenceArgs) -> Result<(), Failure> {
     if args.seeds == 0 {
         return Err(Failure::usage("--seeds must be at least 1"));
     }
-    let d = args.sampler.dims(args.d);
+    let d = dims_of(args.sampler, args.d);
     if d == 0 {
         return Err(Failure::usage("-d must be at least 1"));
     }
     let budget = args.budget.budget()?;
     let mut sizes = sizes(args.sampler, d, max_m);
-    let f = match args.integrand {
-        IntegrandName::Gaussian => Integrand::Gaussian,
-        IntegrandName::Oscillatory => Integrand::Oscillatory,
-        IntegrandName::Ball => Integrand::Ball,
-        IntegrandName::Heaviside => Integrand::Heaviside,
-    };
+    let f = cube(args.integrand.kind).ok_or_else(|| {
+        Failure::usage(format!(
+            "convergence does not integrate {}",
+            args.integrand.name
+        ))
+    })?;
     let spec = |n: u64, k: u64| Spec {
         budget,
         ..Spec::base2(args.sampler, n, d, args.scramble, args.seed.wrapping_add(k))
     };
-    let blue = args.sampler.blue_noise().is_some();
+    let blue = blue_noise_kind(args.sampler).is_some();
     // Validates the request (sampler, d, scramble) before anything is timed; leading sizes
     // the construction refuses (too few points for it) are left out.
     let first = loop {
@@ -278,11 +289,7 @@ pub fn run(args: &ConvergenceArgs) -> Result<(), Failure> {
     budget
         .check("the convergence curve", estimate)
         .map_err(over)?;
-    let label = format!(
-        "{} on {}",
-        value_name(&args.integrand),
-        value_name(&args.sampler)
-    );
+    let label = format!("{} on {}", args.integrand.name, args.sampler.name);
     let rows = with_progress(&label, |progress| -> Result<Vec<(u64, f64)>, Failure> {
         let mut rows = Vec::with_capacity(sizes.len());
         let mut done = 0.0;

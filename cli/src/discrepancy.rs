@@ -2,7 +2,7 @@
 
 use std::io::{BufWriter, Write};
 
-use clap::{Args, ValueEnum};
+use clap::Args;
 use qmckit::analysis::Points;
 use qmckit::analysis::l2::L2Metric;
 use qmckit::analysis::pointfile::PointSet;
@@ -13,8 +13,9 @@ use qmckit::work::Budget;
 use super::Failure;
 use super::budget::{BudgetArgs, over_budget};
 use super::input::{InputArgs, read_point_sets, set_label};
-use super::points::value_name;
 use super::progress::{with_progress, with_spinner};
+use clap::builder::{PossibleValue, TypedValueParser};
+use qmckit::catalog::{self, MEASURES, MeasureEntry, MeasureKind};
 
 /// Text shown after the options of `qmckit discrepancy --help`.
 pub const AFTER_HELP: &str = "\
@@ -59,70 +60,126 @@ computed with tracked exponents, so a value representable in f64 is right to abo
 and one that is not is refused, never NaN or 0. A bar shows on a terminal when a metric
 takes more than a second. Errors: 'qmckit: error: FILE: line N: reason', exit code 2.";
 
-/// A measure `--metric` names.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+/// A measure `--metric` names: a catalog measure this command computes, or `all`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Metric {
-    /// Star discrepancy, exact.
-    Star,
-    /// Lower and upper bounds on the star discrepancy.
-    StarBounds,
-    /// Extreme discrepancy, exact, 2D only.
-    Extreme,
-    /// L2-star discrepancy (square root).
-    L2Star,
-    /// Centered L2 discrepancy (squared).
-    Cd,
-    /// Wrap-around L2 discrepancy (squared).
-    Wd,
-    /// Mixture L2 discrepancy (squared).
-    Md,
-    /// Symmetric L2 discrepancy (square root).
-    Sl2,
-    /// Unanchored L2 discrepancy (square root).
-    Ul2,
-    /// Generalized L2 discrepancy (square root).
-    Gl2,
-    /// Diaphony (square root).
-    Diaphony,
-    /// star and the eight L2 measures.
+    /// One catalog measure.
+    One(MeasureKind, &'static str),
+    /// star and the eight L2 measures (`MeasureKind::ALL_DISCREPANCIES`).
     All,
 }
 
 impl Metric {
     /// The library measure behind an L2 name.
     fn l2(self) -> Option<L2Metric> {
-        Some(match self {
-            Metric::L2Star => L2Metric::L2Star,
-            Metric::Cd => L2Metric::Centered,
-            Metric::Wd => L2Metric::WrapAround,
-            Metric::Md => L2Metric::Mixture,
-            Metric::Sl2 => L2Metric::Symmetric,
-            Metric::Ul2 => L2Metric::Unanchored,
-            Metric::Gl2 => L2Metric::Generalized,
-            Metric::Diaphony => L2Metric::Diaphony,
-            Metric::Star | Metric::StarBounds | Metric::Extreme | Metric::All => return None,
-        })
+        match self {
+            Metric::One(kind, _) => kind.l2(),
+            Metric::All => None,
+        }
+    }
+
+    /// The measure's kind (`all` has none).
+    fn kind(self) -> Option<MeasureKind> {
+        match self {
+            Metric::One(kind, _) => Some(kind),
+            Metric::All => None,
+        }
+    }
+
+    /// The measure's canonical name.
+    fn name(self) -> &'static str {
+        match self {
+            Metric::One(_, name) => name,
+            Metric::All => "all",
+        }
+    }
+
+    /// The metric of `kind`.
+    fn of(kind: MeasureKind) -> Metric {
+        let name = MEASURES
+            .iter()
+            .find(|e| e.kind == kind)
+            .map_or("", |e| e.name);
+        Metric::One(kind, name)
     }
 }
 
-/// The metrics of `all`, in output order.
-const ALL: [Metric; 9] = [
-    Metric::Star,
-    Metric::L2Star,
-    Metric::Cd,
-    Metric::Wd,
-    Metric::Md,
-    Metric::Sl2,
-    Metric::Ul2,
-    Metric::Gl2,
-    Metric::Diaphony,
-];
+/// The measures this command computes: the star discrepancy, its bounds, the extreme
+/// discrepancy and the L2 measures.
+fn computed(e: &MeasureEntry) -> bool {
+    e.kind.l2().is_some()
+        || matches!(
+            e.kind,
+            MeasureKind::Star | MeasureKind::StarBounds | MeasureKind::Extreme
+        )
+}
+
+/// Parses `--metric`: `all` or a catalog measure (any alias) this command computes.
+#[derive(Clone)]
+struct MetricParser;
+
+impl TypedValueParser for MetricParser {
+    type Value = Metric;
+
+    fn parse_ref(
+        &self,
+        cmd: &clap::Command,
+        arg: Option<&clap::Arg>,
+        value: &std::ffi::OsStr,
+    ) -> Result<Metric, clap::Error> {
+        let text = value.to_string_lossy();
+        if text.eq_ignore_ascii_case("all") {
+            return Ok(Metric::All);
+        }
+        let found = match catalog::measure(&text) {
+            Ok(e) if computed(e) => Ok(Metric::One(e.kind, e.name)),
+            Ok(e) => Err(format!(
+                "{}: discrepancy computes star, star-bounds, extreme and the L2 measures (see \
+                 'qmckit {}' where there is one)",
+                e.name,
+                match e.kind {
+                    MeasureKind::TValue => "tvalue",
+                    MeasureKind::Spectrum | MeasureKind::RadialSpectrum => "spectrum",
+                    MeasureKind::Pcf => "pcf",
+                    MeasureKind::Variance => "variance",
+                    MeasureKind::IntegrationError => "convergence",
+                    _ => "--help",
+                }
+            )),
+            Err(e) => Err(e.to_string()),
+        };
+        found.map_err(|reason| {
+            let mut err = clap::Error::new(clap::error::ErrorKind::InvalidValue).with_cmd(cmd);
+            if let Some(arg) = arg {
+                err.insert(
+                    clap::error::ContextKind::InvalidArg,
+                    clap::error::ContextValue::String(arg.to_string()),
+                );
+            }
+            err.insert(
+                clap::error::ContextKind::InvalidValue,
+                clap::error::ContextValue::String(reason),
+            );
+            err
+        })
+    }
+
+    fn possible_values(&self) -> Option<Box<dyn Iterator<Item = PossibleValue> + '_>> {
+        Some(Box::new(
+            MEASURES
+                .iter()
+                .filter(|e| computed(e))
+                .map(|e| PossibleValue::new(e.name).help(e.summary))
+                .chain([PossibleValue::new("all").help("star and the eight L2 measures")]),
+        ))
+    }
+}
 
 /// Arguments of `qmckit discrepancy`.
 #[derive(Args, Debug)]
 pub struct DiscrepancyArgs {
     /// Metrics to compute, comma-separated (see below).
-    #[arg(long, value_enum, value_delimiter = ',', default_value = "all")]
+    #[arg(long, value_parser = MetricParser, value_delimiter = ',', default_value = "all")]
     metric: Vec<Metric>,
     /// Gap between the bounds of star-bounds, in (0, 1].
     #[arg(long, default_value_t = 0.05)]
@@ -159,14 +216,18 @@ fn measure(
     args: &DiscrepancyArgs,
     budget: &Budget,
 ) -> Result<Vec<(String, f64)>, String> {
-    let name = value_name(&metric);
+    let name = metric.name().to_owned();
     if let Some(l2) = metric.l2() {
         let value = with_progress(&name, |progress| l2.eval_within(p, budget, progress))
             .map_err(over_budget)?;
         return Ok(vec![(name.clone(), value)]);
     }
-    let value = match metric {
-        Metric::Star => {
+    let kind = match metric {
+        Metric::One(kind, _) => kind,
+        Metric::All => return Err("'all' is expanded".to_owned()),
+    };
+    let value = match kind {
+        MeasureKind::Star => {
             let estimate =
                 star::cost::work_estimate(p.len(), p.dims()) / star::STAR_RATE.steps_per_second();
             let limit = format!(" within --max-seconds {}", args.budget.max_seconds);
@@ -181,7 +242,7 @@ fn measure(
                 e => refusal(e, "star", set, &limit),
             })
         }
-        Metric::StarBounds => {
+        MeasureKind::StarBounds => {
             let b = with_spinner(&name, || thiemard::bounds_within(p, args.delta, budget))
                 .map_err(|e| match e {
                     qmckit::Error::TooManyPoints { max: 0, .. } => format!(
@@ -202,13 +263,13 @@ fn measure(
                 ("star-upper".to_owned(), b.upper),
             ]);
         }
-        Metric::Extreme if set.dims != 2 => Err(format!(
+        MeasureKind::Extreme if set.dims != 2 => Err(format!(
             "extreme is implemented for 2-dimensional points only, not {}",
             set.dims
         )),
-        Metric::Extreme => with_spinner(&name, || star::extreme_2d_within(p, budget))
+        MeasureKind::Extreme => with_spinner(&name, || star::extreme_2d_within(p, budget))
             .map_err(|e| refusal(e, "extreme", set, "")),
-        _ => unreachable!("l2 metrics are handled above and 'all' is expanded"),
+        _ => Err(format!("{name} is not computed here")),
     }?;
     Ok(vec![(name, value)])
 }
@@ -218,8 +279,12 @@ fn measure(
 fn expand(asked: &[Metric]) -> Vec<Metric> {
     let mut out = Vec::new();
     for &m in asked {
-        let items: &[Metric] = if m == Metric::All { &ALL } else { &[m] };
-        for &item in items {
+        let items: Vec<Metric> = if m == Metric::All {
+            MeasureKind::ALL_DISCREPANCIES.map(Metric::of).to_vec()
+        } else {
+            vec![m]
+        };
+        for item in items {
             if !out.contains(&item) {
                 out.push(item);
             }
@@ -249,13 +314,18 @@ pub fn run(args: &DiscrepancyArgs) -> Result<(), Failure> {
                         writeln!(out, "{label} {value:.16e}")?;
                     }
                 }
-                Err(reason) if all && ALL.contains(&metric) => {
+                Err(reason)
+                    if all
+                        && metric
+                            .kind()
+                            .is_some_and(|k| MeasureKind::ALL_DISCREPANCIES.contains(&k)) =>
+                {
                     // Past the deadline every later measure would stop too: one error.
                     if let Err(e) = budget.check_deadline("the discrepancy measures") {
                         out.flush()?;
                         return Err(Failure::usage(format!("{name}: {}", over_budget(e))));
                     }
-                    writeln!(out, "# {} skipped: {reason}", value_name(&metric))?;
+                    writeln!(out, "# {} skipped: {reason}", metric.name())?;
                 }
                 Err(reason) => {
                     out.flush()?;

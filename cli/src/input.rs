@@ -318,7 +318,7 @@ fn check_npy_header(bytes: &[u8]) -> Result<(), String> {
 
 /// The point set of a `.npy` file: float64 or float32, shape (N, D) or (N,), C or Fortran
 /// order.
-fn read_npy(bytes: &[u8]) -> Result<PointSet, String> {
+pub fn read_npy(bytes: &[u8]) -> Result<PointSet, String> {
     check_npy_header(bytes)?;
     let file = npyz::NpyFile::new(bytes).map_err(|e| format!("not a readable .npy file: {e}"))?;
     let shape = file.shape().to_vec();

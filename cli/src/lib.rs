@@ -16,6 +16,7 @@ mod convergence;
 mod discrepancy;
 mod input;
 mod mask;
+mod names;
 mod output;
 mod pcf;
 mod pixel;
@@ -237,6 +238,15 @@ where
             let _ = std::io::stdout().flush();
             report(&f.message);
             f.code
+        }
+    }
+}
+
+impl From<qmckit::catalog::CatalogError> for Failure {
+    fn from(e: qmckit::catalog::CatalogError) -> Self {
+        match e {
+            qmckit::catalog::CatalogError::Build(e) => Failure::from(e),
+            other => Failure::usage(names::flag_text(&other)),
         }
     }
 }

@@ -100,6 +100,8 @@ fn write_mask(out: &mut impl Write, mask: &RankMask, format: MaskFormat) -> Resu
     let n = w * h;
     match format {
         MaskFormat::U16 => {
+            // The header names the kind, so `qmckit plot` draws it as an image.
+            writeln!(out, "# qmckit mask {w}x{h}: rank levels, one row a line")?;
             let mut line = String::new();
             for row in mask.ranks().chunks(w) {
                 line.clear();

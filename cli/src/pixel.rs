@@ -5,12 +5,10 @@
 use std::io::{BufWriter, Write};
 
 use clap::{Args, ValueEnum};
-use qmckit::pixel::{
-    ImageSobol, IndependentPixels, PaddedSobol, PixelSampler, Pmj02BnTables, Pmj02Pixels,
-    Randomization, ZSobol, pbrt_f32,
-};
+use qmckit::catalog::{self, CatalogError, PixelEntry, PixelParams, RandomizerEntry};
+use qmckit::pixel::pbrt_f32;
 
-use super::Failure;
+use super::{Failure, names};
 
 /// Text shown after the options of `qmckit pixel --help`.
 pub const AFTER_HELP: &str = "\
@@ -32,36 +30,6 @@ decimals that parse back to them (every one is an f64); u32: 'index v1 x y', the
 integers v * 2^32; csv: 'index,v1,x,y' with the floats pbrt returns (min(float(v) 2^-32,
 1 - 2^-24)), shortest round-trip text.";
 
-/// The pixel samplers.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub enum PixelSamplerName {
-    /// pbrt-v4 ZSobolSampler: blue-noise Sobol' (Ahmed & Wonka 2020).
-    Zsobol,
-    /// pbrt-v4 SobolSampler: one Sobol' sequence over the image plane.
-    Sobol,
-    /// pbrt-v4 PaddedSobolSampler: per-pixel, per-dimension permuted and scrambled Sobol'.
-    PaddedSobol,
-    /// A seeded PMJ02 sequence per pixel and dimension, index permuted per pixel.
-    Pmj02,
-    /// pbrt-v4 PMJ02BNSampler layout on a generated PMJ02BN table.
-    Pmj02bn,
-    /// Independent uniform values per pixel (hashed).
-    Independent,
-}
-
-/// `--randomize`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub enum RandomizeName {
-    /// No randomization.
-    None,
-    /// XOR with a hashed key (pbrt's PermuteDigits).
-    Xor,
-    /// Hash-based Owen scrambling (pbrt's FastOwen).
-    FastOwen,
-    /// pbrt's exact Owen scrambling.
-    Owen,
-}
-
 /// `--format`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub enum PixelFormat {
@@ -76,9 +44,9 @@ pub enum PixelFormat {
 /// `qmckit pixel` arguments.
 #[derive(Args, Debug)]
 pub struct PixelArgs {
-    /// The sampler.
-    #[arg(value_enum)]
-    pub sampler: PixelSamplerName,
+    /// The sampler (a catalog pixel sampler or alias, any case).
+    #[arg(value_parser = names::pixel_samplers())]
+    pub sampler: &'static PixelEntry,
     /// Image size, WxH (e.g. 1920x1080).
     #[arg(long)]
     pub resolution: String,
@@ -94,9 +62,12 @@ pub struct PixelArgs {
     /// The dimension counter D.
     #[arg(long, default_value_t = 0)]
     pub dim: u32,
-    /// Randomization of the Sobol' samplers.
-    #[arg(long, value_enum, default_value_t = RandomizeName::FastOwen)]
-    pub randomize: RandomizeName,
+    /// Randomization of the Sobol' samplers [default: fast-owen].
+    #[arg(long, value_parser = names::randomizers().only(
+        |r| r.kind.pixel().is_some(),
+        "the pixel samplers take none, xor, fast-owen and owen",
+    ))]
+    pub randomize: Option<&'static RandomizerEntry>,
     /// Output format.
     #[arg(long, value_enum, default_value_t = PixelFormat::Decimal)]
     pub format: PixelFormat,
@@ -120,49 +91,37 @@ fn pair(flag: &str, text: &str, sep: char) -> Result<(u32, u32), Failure> {
 pub fn run(args: &PixelArgs) -> Result<(), Failure> {
     let (w, h) = pair("--resolution", &args.resolution, 'x')?;
     let (x, y) = pair("--pixel", &args.pixel, ',')?;
-    let r = match args.randomize {
-        RandomizeName::None => Randomization::None,
-        RandomizeName::Xor => Randomization::PermuteDigits,
-        RandomizeName::FastOwen => Randomization::FastOwen,
-        RandomizeName::Owen => Randomization::Owen,
-    };
-    let (spp, seed) = (args.spp, args.seed);
-    if args.sampler == PixelSamplerName::Zsobol && !spp.is_power_of_two() {
+    let spp = args.spp;
+    if args.sampler.kind.needs_power_of_two() && !spp.is_power_of_two() {
         return Err(Failure::usage(format!(
-            "--spp {spp}: zsobol needs a power of two"
+            "--spp {spp}: {} needs a power of two",
+            args.sampler.name
         )));
     }
-    let tables;
-    let sampler: Box<dyn PixelSampler> = match args.sampler {
-        PixelSamplerName::Zsobol => Box::new(ZSobol::new(w, h, spp, r, seed)?),
-        PixelSamplerName::Sobol => Box::new(ImageSobol::new(w, h, spp, r, seed)?),
-        PixelSamplerName::PaddedSobol => Box::new(PaddedSobol::new(w, h, spp, r, seed)?),
-        PixelSamplerName::Independent | PixelSamplerName::Pmj02 | PixelSamplerName::Pmj02bn => {
-            if args.randomize != RandomizeName::FastOwen {
-                return Err(Failure::usage(format!(
-                    "--randomize does not apply to {} (its randomness is its own)",
-                    match args.sampler {
-                        PixelSamplerName::Pmj02 => "pmj02",
-                        PixelSamplerName::Pmj02bn => "pmj02bn",
-                        _ => "independent",
-                    }
-                )));
-            }
-            match args.sampler {
-                PixelSamplerName::Pmj02 => Box::new(Pmj02Pixels::new(w, h, spp, seed)?),
-                PixelSamplerName::Pmj02bn => {
-                    // Validates the image before the table is built.
-                    qmckit::pixel::PixelGrid::new(w, h, spp, false)?;
-                    tables = Pmj02BnTables::new(spp, seed as u64)?;
-                    Box::new(tables.sampler(w, h, seed)?)
-                }
-                _ => Box::new(IndependentPixels::new(w, h, spp, seed as u64)?),
-            }
-        }
+    let params = PixelParams {
+        width: w,
+        height: h,
+        spp,
+        seed: args.seed,
     };
+    let sampler =
+        catalog::build_pixel(args.sampler, args.randomize, &params).map_err(|e| match e {
+            CatalogError::NotApplicable { sampler, .. } if args.randomize.is_some() => {
+                Failure::usage(format!(
+                    "--randomize does not apply to {sampler} (its randomness is its own)"
+                ))
+            }
+            other => Failure::from(other),
+        })?;
     // Checks the pixel once, so an error comes before any output.
     sampler.get_1d(x, y, 0, args.dim)?;
     let mut out = BufWriter::new(std::io::stdout().lock());
+    // The header names the kind, so `qmckit plot` refuses it instead of drawing points.
+    writeln!(
+        out,
+        "# qmckit pixel {} {w}x{h} pixel {x},{y} spp {spp} dim {}: index v1 x y",
+        args.sampler.name, args.dim
+    )?;
     for i in 0..spp {
         let index = match sampler.sample_index(x, y, i, args.dim)? {
             Some(k) => k.to_string(),

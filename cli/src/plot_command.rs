@@ -19,11 +19,13 @@ Input (FILE, or standard input for '-' or none), by --kind (auto: from the first
   spectrum     'qmckit spectrum' output ('# kx ky power' lines): a log-scaled image with
                the DC term circled and a colour bar in dB
   radial       'qmckit spectrum --radial' output ('# radius count mean anisotropy')
+  pcf          'qmckit pcf' output ('# radius g'): g(r) against r
   convergence  'qmckit convergence' output ('# n rmse' lines), log-log with the fitted slope
-  image        PGM (P2/P5), PNG, or text rows of numbers ('qmckit mask' output), with a
-               colour bar
-auto reads '# kx ky', '# radius', '# n rmse' headers, PNG/PGM signatures, and points
-otherwise. Several sets (split by lines holding only '#', or '# set K') are drawn as
+  image        PGM (P2/P5), PNG, or text rows of numbers ('qmckit mask' output, headed
+               '# qmckit mask'), with a colour bar
+auto reads '# kx ky', '# radius g', '# radius', '# n rmse', '# qmckit mask' headers,
+PNG/PGM/npy signatures, and points otherwise (text or .npy, as 'qmckit points' writes
+them); 'qmckit pixel' output (headed '# qmckit pixel') is refused in one line. Several sets (split by lines holding only '#', or '# set K') are drawn as
 separate curves, named by a '# label: NAME' line in the set or 'set K' (radial,
 convergence), or the first is drawn (points, spectrum).
 
@@ -47,6 +49,8 @@ pub enum Kind {
     Spectrum,
     /// Radial spectra.
     Radial,
+    /// A pair correlation function ('qmckit pcf' output).
+    Pcf,
     /// Error against N.
     Convergence,
     /// An image.
@@ -131,27 +135,44 @@ fn read(file: Option<&str>) -> Result<(String, Vec<u8>), Failure> {
     Ok((name, bytes))
 }
 
-/// The kind `auto` picks for these bytes.
-fn detect(bytes: &[u8]) -> Kind {
+/// The kind `auto` picks for these bytes, or why it cannot tell (an output of the tool
+/// that is not a figure's input).
+fn detect(bytes: &[u8]) -> Result<Kind, String> {
     if bytes.starts_with(b"\x89PNG") || bytes.starts_with(b"P5") || bytes.starts_with(b"P2") {
-        return Kind::Image;
+        return Ok(Kind::Image);
+    }
+    if bytes.starts_with(b"\x93NUMPY") {
+        return Ok(Kind::Points);
     }
     let head = String::from_utf8_lossy(&bytes[..bytes.len().min(4096)]);
     for line in head.lines().map(str::trim) {
+        if line.starts_with("# qmckit mask") {
+            return Ok(Kind::Image);
+        }
+        if line.starts_with("# qmckit pixel") {
+            return Err(
+                "'qmckit pixel' output (one pixel's samples: index, 1D and 2D values) is not a \
+                 figure's input; write the points with 'qmckit points' to plot them"
+                    .to_owned(),
+            );
+        }
+        if line.starts_with("# radius g") {
+            return Ok(Kind::Pcf);
+        }
         if line.starts_with("# kx ky") {
-            return Kind::Spectrum;
+            return Ok(Kind::Spectrum);
         }
         if line.starts_with("# radius") {
-            return Kind::Radial;
+            return Ok(Kind::Radial);
         }
         if line.starts_with("# n rmse") || line.starts_with("# n ") {
-            return Kind::Convergence;
+            return Ok(Kind::Convergence);
         }
         if !line.is_empty() && !line.starts_with('#') {
             break;
         }
     }
-    Kind::Points
+    Ok(Kind::Points)
 }
 
 /// Runs `qmckit plot`.
@@ -165,7 +186,7 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
         .transpose()?;
     let (name, bytes) = read(args.file.as_deref())?;
     let kind = match args.kind {
-        Kind::Auto => detect(&bytes),
+        Kind::Auto => detect(&bytes).map_err(|e| Failure::usage(format!("{name}: {e}")))?,
         k => k,
     };
     if kind != Kind::Points && (intervals.is_some() || args.warp.is_some() || args.groups.is_some())
@@ -183,8 +204,14 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
     let mut note = None;
     let out = match kind {
         Kind::Points | Kind::Auto => {
-            let sets =
-                parse_point_sets(text()?).map_err(|e| Failure::usage(format!("{name}: {e}")))?;
+            let sets = if bytes.starts_with(b"\x93NUMPY") {
+                vec![
+                    super::input::read_npy(&bytes)
+                        .map_err(|e| Failure::usage(format!("{name}: {e}")))?,
+                ]
+            } else {
+                parse_point_sets(text()?).map_err(|e| Failure::usage(format!("{name}: {e}")))?
+            };
             let set = &sets[0];
             if set.dims < 2 {
                 return Err(Failure::usage(format!(
@@ -244,6 +271,25 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
             let fig = RadialFigure {
                 title: title("radial power spectrum"),
                 x_label: "radius |k|".into(),
+                curves,
+            };
+            draw(&fig, format, w, h, &name)?
+        }
+        Kind::Pcf => {
+            let blocks = parse_blocks(text()?, 2).map_err(input)?;
+            let curves = blocks
+                .iter()
+                .enumerate()
+                .map(|(i, b)| {
+                    (
+                        curve_label(b, i),
+                        b.rows.iter().map(|r| (r[0], r[1])).collect(),
+                    )
+                })
+                .collect();
+            let fig = RadialFigure {
+                title: title("pair correlation g(r)"),
+                x_label: "distance r".into(),
                 curves,
             };
             draw(&fig, format, w, h, &name)?

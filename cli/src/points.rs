@@ -3,19 +3,17 @@
 use std::io::BufWriter;
 
 use clap::{Args, ValueEnum};
-use qmckit::digital::sobol::{Order, Sobol};
-use qmckit::randomize::digits::DigitScramble;
-use qmckit::randomize::shuffle::Shuffled;
-use qmckit::randomize::{
-    CranleyPatterson, DigitalShift, ExactOwen, FastOwen, Lms, OwenHash, Scrambled,
+use qmckit::Sampler;
+use qmckit::catalog::{
+    self, BlueNoiseOptions, CatalogError, GeneratingVector, Params, RandomizerEntry,
+    RandomizerKind, SamplerEntry, SamplerKind, Size,
 };
-use qmckit::{
-    Base2Digital, Halton, Hammersley, Independent, Jitter, LarcherPillichshammer, LatinHypercube,
-    Sampler, Stratified, VanDerCorput,
-};
+use qmckit::digital::sobol::Order;
+use qmckit::lattice::KUO_33002;
 
 use super::Failure;
 use super::blue_noise::{self, BlueNoiseArgs};
+use super::names;
 use super::output::{Format, PointWriter};
 use super::warp::{Warp, WarpArgs};
 
@@ -52,78 +50,11 @@ not apply):
                        --iterations I
   --max-seconds S refuses, before starting, a set whose estimated time exceeds S.";
 
-/// The constructions `points` knows.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub enum SamplerName {
-    /// Independent uniform random points (hash of seed, index, dimension).
-    Independent,
-    /// Jittered stratified grid, one point in each of k^d cells.
-    Stratified,
-    /// Latin hypercube: one point in each of the n slabs of every axis.
-    Latin,
-    /// Van der Corput sequence, 1D (base 2; other bases in `points`).
-    Vdc,
-    /// Halton sequence: radical inverses in the first d primes.
-    Halton,
-    /// Hammersley set of N points: (i/N, phi_2(i), phi_3(i), ...).
-    Hammersley,
-    /// Larcher–Pillichshammer (0,m,2)-net, 2D, N a power of two.
-    Lp,
-    /// Sobol' sequence, Joe–Kuo direction numbers, up to 21201 dimensions.
-    Sobol,
-    /// Rank-1 lattice: Kuo's extensible vector (2^20 points, radical-inverse order).
-    Lattice,
-    /// Kronecker sequence frac(i alpha), alpha from the generalized golden ratio R_d.
-    Kronecker,
-    /// Faure (0,s)-sequence in a prime base b >= d (by default the smallest).
-    Faure,
-    /// Poisson disk (Bridson): --radius R or -n N (about N), -d D, --torus, --maximal.
-    Poisson,
-    /// Mitchell's best candidate on the torus, 2D (--candidates M).
-    BestCandidate,
-    /// Gaussian blue noise (Ahmed, Ren, Wonka 2022) on the torus, 2D (--iterations I).
-    GaussianBlueNoise,
-    /// PMJ02: progressive multi-jittered (0,2)-sequence, 2D, seeded (stochastic generation).
-    Pmj02,
-    /// PMJ02BN: PMJ02 spread by nested flips to blue noise, every prefix a (0,2)-net; 2D, seeded.
-    Pmj02bn,
-}
+/// A catalog sampler (`qmckit::catalog::SAMPLERS`).
+pub type SamplerName = &'static SamplerEntry;
 
-impl SamplerName {
-    /// `-d` as given, else the construction's default: 1 for vdc, 2 otherwise.
-    pub fn dims(self, d: Option<usize>) -> usize {
-        d.unwrap_or(if self == SamplerName::Vdc { 1 } else { 2 })
-    }
-}
-
-/// Randomization (`--scramble`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub enum ScrambleName {
-    /// No randomization.
-    None,
-    /// Random digital shift (XOR), base 2.
-    Xor,
-    /// Cranley–Patterson rotation (x + u mod 1), any construction; does not keep nets.
-    Rotate,
-    /// Owen scrambling: exact nested uniform in base 2; in base b for halton, hammersley, vdc.
-    Owen,
-    /// Hash-based Owen scrambling (Vegdahl's hash), base 2.
-    FastOwen,
-    /// Hash-based Owen scrambling (Laine–Karras hash), base 2.
-    FastOwenLk,
-    /// Random linear matrix scramble plus digital shift (SciPy's Sobol' scrambling), base 2.
-    Lms,
-    /// Burley's shuffled, hash-Owen-scrambled Sobol' (index shuffle + fast-owen), base 2.
-    ShuffleOwen,
-    /// Random digit permutations per digit position (halton, hammersley, vdc).
-    Perm,
-    /// Faure's digit permutations (halton, hammersley, vdc, faure).
-    Faure,
-    /// Random shift modulo 1 (lattice, kronecker; the same as rotate).
-    Shift,
-    /// Random shift, then the baker's (tent) transform 1 - |2x - 1| (lattice, kronecker).
-    ShiftTent,
-}
+/// A catalog randomizer (`qmckit::catalog::RANDOMIZERS`).
+pub type ScrambleName = &'static RandomizerEntry;
 
 /// Point order (`--order`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -137,7 +68,8 @@ pub enum OrderName {
 /// Arguments of `qmckit points`.
 #[derive(Args, Debug)]
 pub struct PointsArgs {
-    /// Which construction.
+    /// Which construction (a catalog name or alias, any case).
+    #[arg(value_parser = names::samplers())]
     sampler: SamplerName,
     /// Number of points to write (poisson: about N points, or --radius).
     #[arg(short = 'n', value_name = "N")]
@@ -157,7 +89,7 @@ pub struct PointsArgs {
     #[arg(long)]
     seed: Option<u64>,
     /// Randomization; which kinds apply depends on the sampler (see the list below).
-    #[arg(long, value_enum, default_value_t = ScrambleName::None)]
+    #[arg(long, value_parser = names::randomizers(), default_value = "none")]
     scramble: ScrambleName,
     /// Point order (sobol only) [default: natural].
     #[arg(long, value_enum)]
@@ -207,8 +139,9 @@ pub struct Spec {
     pub scramble: ScrambleName,
     /// Point order.
     pub order: OrderName,
-    /// Base of the van der Corput sequence.
-    pub base: u32,
+    /// Base of the van der Corput and Faure sequences [default: 2, faure the smallest prime
+    /// at least d].
+    pub base: Option<u32>,
     /// Strata per dimension for stratified (`8x4`).
     pub strata: Option<String>,
     /// Stratified: cell centers instead of jitter.
@@ -238,8 +171,7 @@ impl Spec {
             seed,
             scramble,
             order: OrderName::Natural,
-            // Faure's base 0 picks the smallest prime at least d.
-            base: if sampler == SamplerName::Faure { 0 } else { 2 },
+            base: None,
             strata: None,
             centered: false,
             vector: None,
@@ -253,50 +185,51 @@ impl PointsArgs {
     /// The sampler part of the arguments, after refusing every option that does not apply
     /// to the chosen sampler and randomization.
     fn spec(&self, n: u64) -> Result<Spec, Failure> {
-        use SamplerName as S;
+        use SamplerKind as S;
         let sampler = self.sampler;
-        let name = value_name(&sampler);
+        let name = sampler.name;
         let refuse = |option: &str, why: &str| {
             Err(Failure::usage(format!(
                 "{option} does not apply to {name}{why}"
             )))
         };
-        let randomized = matches!(sampler, S::Independent | S::Latin | S::Pmj02 | S::Pmj02bn)
-            || sampler.blue_noise().is_some()
-            || (sampler == S::Stratified && !self.centered)
-            || self.scramble != ScrambleName::None;
+        let kind = sampler.kind;
+        let randomized = matches!(kind, S::Independent | S::Latin | S::Pmj02 | S::Pmj02bn)
+            || blue_noise_kind(sampler).is_some()
+            || (kind == S::Stratified && !self.centered)
+            || self.scramble.kind != RandomizerKind::None;
         if self.seed.is_some() && !randomized {
             return refuse(
                 "--seed",
-                if sampler == S::Stratified {
+                if kind == S::Stratified {
                     " with --centered (nothing is random)"
                 } else {
                     " without --scramble (it is deterministic)"
                 },
             );
         }
-        if self.base.is_some() && !matches!(sampler, S::Vdc | S::Faure) {
+        if self.base.is_some() && !matches!(kind, S::Vdc | S::Faure) {
             return refuse("--base", " (only vdc and faure take a base)");
         }
-        if (self.vector.is_some() || self.korobov.is_some()) && sampler != S::Lattice {
+        if (self.vector.is_some() || self.korobov.is_some()) && kind != S::Lattice {
             return refuse(
                 "--vector/--korobov",
                 " (only lattice has a generating vector)",
             );
         }
-        if self.total.is_some() && !sampler.is_finite_set() && sampler != S::Lattice {
+        if self.total.is_some() && !is_finite_set(sampler) && kind != S::Lattice {
             return refuse(
                 "--total",
                 " (a sequence; only stratified, latin, hammersley and lp are sets)",
             );
         }
-        if self.strata.is_some() && sampler != S::Stratified {
+        if self.strata.is_some() && kind != S::Stratified {
             return refuse("--strata", " (only stratified has strata)");
         }
-        if self.centered && sampler != S::Stratified {
+        if self.centered && kind != S::Stratified {
             return refuse("--centered", " (only stratified has cells)");
         }
-        if self.order.is_some() && sampler != S::Sobol {
+        if self.order.is_some() && kind != S::Sobol {
             return refuse("--order", " (only sobol has a Gray-code order)");
         }
         Ok(Spec {
@@ -307,7 +240,7 @@ impl PointsArgs {
             seed: self.seed.unwrap_or(0),
             scramble: self.scramble,
             order: self.order.unwrap_or(OrderName::Natural),
-            base: self.base.unwrap_or(if sampler == S::Faure { 0 } else { 2 }),
+            base: self.base,
             strata: self.strata.clone(),
             centered: self.centered,
             vector: self.vector.clone(),
@@ -317,237 +250,152 @@ impl PointsArgs {
     }
 }
 
-impl SamplerName {
-    /// The blue-noise set this names, if any.
-    pub fn blue_noise(self) -> Option<blue_noise::Kind> {
-        match self {
-            SamplerName::Poisson => Some(blue_noise::Kind::Poisson),
-            SamplerName::BestCandidate => Some(blue_noise::Kind::BestCandidate),
-            SamplerName::GaussianBlueNoise => Some(blue_noise::Kind::Gaussian),
-            _ => None,
-        }
-    }
-
-    /// `true` for the finite point sets (sized by `--total`).
-    pub fn is_finite_set(self) -> bool {
-        matches!(
-            self,
-            SamplerName::Stratified
-                | SamplerName::Latin
-                | SamplerName::Hammersley
-                | SamplerName::Lp
-        )
-    }
-}
-
-/// The command-line name of a value (`fast-owen`, `sobol`).
-pub fn value_name(v: &impl ValueEnum) -> String {
-    v.to_possible_value()
-        .map(|v| v.get_name().to_owned())
-        .unwrap_or_default()
-}
-
-/// A construction, classified by the library's types: which randomizations it takes.
-enum Built {
-    /// A base-2 digital construction ([`Base2Digital`]): every base-2 randomizer applies.
-    Digital(Box<dyn Base2Digital>),
-    /// Anything else: only the Cranley–Patterson rotation applies (digit scrambles, if
-    /// asked, are already part of its radical inverse).
-    Other(Box<dyn Sampler>),
-}
-
-/// Builds the sampler `args` names, randomized as `--scramble` asks. Which randomizer fits
-/// which construction is the library's rule (`Scrambled<S, R>` is a sampler only when
-/// `R: Randomizes<S>`); this only maps names to types.
-pub fn build(args: &Spec) -> Result<Box<dyn Sampler>, Failure> {
-    use ScrambleName as K;
-    if matches!(
-        args.sampler,
-        SamplerName::Lattice | SamplerName::Kronecker | SamplerName::Faure
-    ) {
-        return super::toolbox::build(args);
-    }
-    if matches!(args.scramble, K::Shift | K::ShiftTent) {
-        return Err(does_not_apply(args));
-    }
-    let seed = args.seed;
-    let takes_digits = args.sampler.takes_digit_scrambles(args.base);
-    let digits = match args.scramble {
-        K::Perm => Some(DigitScramble::Permutations(seed)),
-        K::Faure => Some(DigitScramble::Faure),
-        K::Owen if takes_digits => Some(DigitScramble::Owen(seed)),
+/// The blue-noise set `sampler` names, if any.
+pub fn blue_noise_kind(sampler: SamplerName) -> Option<blue_noise::Kind> {
+    match sampler.kind {
+        SamplerKind::Poisson => Some(blue_noise::Kind::Poisson),
+        SamplerKind::BestCandidate => Some(blue_noise::Kind::BestCandidate),
+        SamplerKind::GaussianBlueNoise => Some(blue_noise::Kind::Gaussian),
         _ => None,
-    };
-    if digits.is_some() && !takes_digits {
-        return Err(does_not_apply(args));
     }
-    let built = construct(args, digits.unwrap_or_default())?;
-    Ok(match (built, args.scramble) {
-        (Built::Digital(s), K::None) => Box::new(s),
-        (Built::Other(s), _) if digits.is_some() => s,
-        (Built::Other(s), K::None) => s,
-        (Built::Other(s), K::Rotate) => Box::new(Scrambled::new(s, CranleyPatterson::new(seed))),
-        (Built::Digital(s), K::Rotate) => Box::new(Scrambled::new(s, CranleyPatterson::new(seed))),
-        (Built::Digital(s), K::Xor) => Box::new(Scrambled::new(s, DigitalShift::new(seed))),
-        (Built::Digital(s), K::Owen) => Box::new(Scrambled::new(s, ExactOwen::new(seed))),
-        (Built::Digital(s), K::FastOwen) => Box::new(Scrambled::new(s, FastOwen::new(seed))),
-        (Built::Digital(s), K::FastOwenLk) => Box::new(Scrambled::new(
-            s,
-            FastOwen::with_hash(seed, OwenHash::LaineKarras),
-        )),
-        (Built::Digital(s), K::Lms) => {
-            let lms = Lms::new(seed).cached(s.dims())?;
-            Box::new(Scrambled::new(s, (lms, DigitalShift::new(seed))))
-        }
-        (Built::Digital(s), K::ShuffleOwen) => Box::new(Shuffled::new(
-            Scrambled::new(s, FastOwen::new(seed)),
-            seed,
-            0,
-        )?),
-        (Built::Digital(_), K::Perm | K::Faure)
-        | (Built::Other(_), K::Xor | K::Owen | K::FastOwen | K::FastOwenLk | K::Lms)
-        | (Built::Other(_), K::ShuffleOwen | K::Perm | K::Faure)
-        | (_, K::Shift | K::ShiftTent) => {
-            return Err(does_not_apply(args));
-        }
+}
+
+/// `true` for the finite point sets (sized by `--total`).
+pub fn is_finite_set(sampler: SamplerName) -> bool {
+    sampler.kind.size() == Size::Set
+}
+
+/// `-d` as given, else the construction's default: 1 for vdc, 2 otherwise.
+pub fn dims_of(sampler: SamplerName, d: Option<usize>) -> usize {
+    d.unwrap_or(sampler.kind.default_dims())
+}
+
+/// Bytes of a generating-vector file read (9125 dimensions take 60 KiB).
+const MAX_VECTOR_FILE: u64 = 64 << 20;
+
+/// The generating vector in `path`, read through the bounded reader: at least `d`
+/// components.
+fn read_vector(path: &std::path::Path, d: usize) -> Result<GeneratingVector, Failure> {
+    let shown = path.display();
+    let limits = super::input::Limits {
+        bytes: MAX_VECTOR_FILE,
+        line: 1 << 16,
+        option: "--vector",
+        records: u64::MAX,
+    };
+    let file = path.to_string_lossy();
+    let (_, bytes) = super::input::read_bounded(Some(&file), limits)?;
+    let text = String::from_utf8(bytes)
+        .map_err(|e| Failure::usage(format!("--vector {shown}: not UTF-8 text ({e})")))?;
+    GeneratingVector::parse(&text, d).map_err(|e| match e {
+        CatalogError::Parameter {
+            param: "vector",
+            got: Some(read),
+            ..
+        } => Failure::usage(format!("{shown} has {read} components, -d asks for {d}")),
+        other => Failure::usage(format!("{shown}: {other}")),
     })
 }
 
-/// The usage error of a randomization that does not fit the construction.
-fn does_not_apply(args: &Spec) -> Failure {
-    Failure::usage(format!(
-        "--scramble {} does not apply to {} (base-2 kinds: sobol, lp, vdc base 2; \
-         rotate: any; perm/faure/owen: halton, hammersley, vdc)",
-        value_name(&args.scramble),
-        value_name(&args.sampler),
-    ))
-}
-
-impl SamplerName {
-    /// Whether the construction is a radical inverse that takes a digit scramble
-    /// (`with_scramble`): halton, hammersley, vdc in a base other than 2 (vdc base 2 is
-    /// built as Sobol' dimension 0, the same bits, so the base-2 randomizers apply).
-    fn takes_digit_scrambles(self, base: u32) -> bool {
-        matches!(self, SamplerName::Halton | SamplerName::Hammersley)
-            || (self == SamplerName::Vdc && base != 2)
+/// The catalog's parameters for `spec`: `points` is `--total` (or `-n`) for the finite
+/// sets and the sets built whole (stratified with `--strata`: only an explicit
+/// `--total`), an explicit `--total` for lattice, nothing for the sequences.
+fn params(spec: &Spec) -> Result<Params, Failure> {
+    let kind = spec.sampler.kind;
+    let d = dims_of(spec.sampler, spec.d);
+    let explicit_strata = spec.strata.as_deref().map(parse_strata).transpose()?;
+    let points = match kind.size() {
+        Size::Sequence => None,
+        Size::Rule => spec.total,
+        Size::Set if kind == SamplerKind::Stratified && explicit_strata.is_some() => spec.total,
+        Size::Set | Size::Whole => Some(spec.total.unwrap_or(spec.n)),
+    };
+    let strata = match (kind, explicit_strata) {
+        (SamplerKind::Stratified, Some(strata)) => {
+            if spec.d.is_some() && strata.len() != d {
+                return Err(Failure::usage(format!(
+                    "--strata {} has {} dimensions but -d is {d}",
+                    spec.strata.as_deref().unwrap_or(""),
+                    strata.len()
+                )));
+            }
+            let cells = strata
+                .iter()
+                .try_fold(1u64, |n, &k| n.checked_mul(u64::from(k)));
+            if let (Some(total), Some(cells)) = (spec.total, cells)
+                && total != cells
+            {
+                return Err(Failure::usage(format!(
+                    "--total {total} does not match the {cells} cells of --strata"
+                )));
+            }
+            Some(strata)
+        }
+        (SamplerKind::Stratified, None) => {
+            let n = points.unwrap_or(spec.n);
+            let k = root(n, d)?;
+            let mut strata = qmckit::size::vec_zeroed::<u32>(d)?;
+            strata.fill(k);
+            Some(strata)
+        }
+        (_, other) => other,
+    };
+    if kind == SamplerKind::Lattice {
+        if spec.korobov.is_some() && spec.vector.is_some() {
+            return Err(Failure::usage("--korobov and --vector exclude each other"));
+        }
+        if spec.korobov.is_some() && spec.total.is_none() {
+            return Err(Failure::usage(
+                "--korobov needs the number of points of the rule: pass --total N",
+            ));
+        }
+        if spec.vector.is_none() && d > KUO_33002.len() {
+            return Err(Failure::usage(format!(
+                "lattice: the built-in vector has {} dimensions, -d is {d} (use --vector FILE)",
+                KUO_33002.len()
+            )));
+        }
     }
+    let vector = match &spec.vector {
+        Some(path) if kind == SamplerKind::Lattice => Some(read_vector(path, d)?),
+        _ => None,
+    };
+    if d == 0 {
+        return Err(Failure::usage(
+            "-d 0: at least 1 dimension is needed (the number of dimensions per point)",
+        ));
+    }
+    // A stratified set with its strata computed from the size takes no separate size.
+    let points = points.filter(|_| kind != SamplerKind::Stratified || spec.strata.is_some());
+    Ok(Params {
+        dims: spec.d,
+        points,
+        base: spec.base,
+        seed: spec.seed,
+        order: match spec.order {
+            OrderName::Natural => Order::Natural,
+            OrderName::Gray => Order::Gray,
+        },
+        strata: strata.filter(|_| kind == SamplerKind::Stratified),
+        centered: spec.centered,
+        korobov: spec.korobov,
+        vector,
+        budget: spec.budget,
+        blue_noise: BlueNoiseOptions::default(),
+    })
 }
 
-/// Builds the construction itself (digit scrambles are part of the radical inverse).
-fn construct(args: &Spec, digits: DigitScramble) -> Result<Built, Failure> {
-    let d = args.sampler.dims(args.d);
-    let total = args.total.unwrap_or(args.n);
-    if args.order == OrderName::Gray && args.sampler != SamplerName::Sobol {
+/// Builds the sampler `spec` names, randomized as `--scramble` asks: the catalog's
+/// builder (`qmckit::catalog::build`), whose rule says which randomizer applies to which
+/// construction; its messages name the command's flags.
+pub fn build(spec: &Spec) -> Result<Box<dyn Sampler>, Failure> {
+    if spec.order == OrderName::Gray && spec.sampler.kind != SamplerKind::Sobol {
         return Err(Failure::usage(
             "--order gray applies to sobol only (other samplers have natural order)",
         ));
     }
-    if args.sampler == SamplerName::Vdc && args.base == 2 && digits.is_none() {
-        if d != 1 {
-            return Err(Failure::usage(format!(
-                "vdc is one-dimensional: -d must be 1, got {d}"
-            )));
-        }
-        // Van der Corput in base 2 is Sobol's dimension 0, bit for bit.
-        return Ok(Built::Digital(Box::new(Sobol::new(1)?)));
-    }
-    if let Some(kind) = args.sampler.blue_noise() {
-        let set = blue_noise::build(
-            kind,
-            &BlueNoiseArgs::default(),
-            Some(total),
-            args.d,
-            args.seed,
-            args.budget.started(),
-        )?;
-        return Ok(Built::Other(Box::new(set)));
-    }
-    Ok(Built::Other(match args.sampler {
-        SamplerName::Sobol => {
-            let order = match args.order {
-                OrderName::Natural => Order::Natural,
-                OrderName::Gray => Order::Gray,
-            };
-            return Ok(Built::Digital(Box::new(Sobol::with_order(d, order)?)));
-        }
-        SamplerName::Poisson | SamplerName::BestCandidate | SamplerName::GaussianBlueNoise => {
-            return Err(Failure::usage(
-                "a blue-noise set is built by 'qmckit points'",
-            ));
-        }
-        SamplerName::Independent => Box::new(Independent::new(d, args.seed)?),
-        SamplerName::Pmj02 => {
-            if d != 2 {
-                return Err(Failure::usage(format!(
-                    "pmj02 is two-dimensional: -d must be 2, got {d}"
-                )));
-            }
-            Box::new(qmckit::pmj::Pmj02::new(args.seed))
-        }
-        SamplerName::Pmj02bn => {
-            if d != 2 {
-                return Err(Failure::usage(format!(
-                    "pmj02bn is two-dimensional: -d must be 2, got {d}"
-                )));
-            }
-            Box::new(blue_noise::pmj02bn_set(total, args.seed, args.budget)?)
-        }
-        SamplerName::Halton => Box::new(Halton::with_scramble(d, digits)?),
-        SamplerName::Vdc => {
-            if d != 1 {
-                return Err(Failure::usage(format!(
-                    "vdc is one-dimensional: -d must be 1, got {d}"
-                )));
-            }
-            Box::new(VanDerCorput::with_scramble(args.base, digits)?)
-        }
-        SamplerName::Hammersley => Box::new(Hammersley::with_scramble(total, d, digits)?),
-        SamplerName::Latin => Box::new(LatinHypercube::new(total, d, args.seed)?),
-        SamplerName::Lp => {
-            if d != 2 {
-                return Err(Failure::usage(format!(
-                    "lp is two-dimensional: -d must be 2, got {d}"
-                )));
-            }
-            return Ok(Built::Digital(Box::new(
-                LarcherPillichshammer::with_points(total)?,
-            )));
-        }
-        SamplerName::Lattice | SamplerName::Kronecker | SamplerName::Faure => {
-            return Err(Failure::usage("unreachable: built by the toolbox"));
-        }
-        SamplerName::Stratified => {
-            let strata = match &args.strata {
-                Some(text) => parse_strata(text)?,
-                None => {
-                    let k = root(total, d)?;
-                    let mut strata = qmckit::size::vec_zeroed::<u32>(d)?;
-                    strata.fill(k);
-                    strata
-                }
-            };
-            if args.d.is_some() && strata.len() != d {
-                return Err(Failure::usage(format!(
-                    "--strata {} has {} dimensions but -d is {d}",
-                    args.strata.as_deref().unwrap_or(""),
-                    strata.len()
-                )));
-            }
-            let jitter = if args.centered {
-                Jitter::Center
-            } else {
-                Jitter::Random(args.seed)
-            };
-            let s = Stratified::new(&strata, jitter)?;
-            if args.total.is_some_and(|t| t != s.len()) {
-                return Err(Failure::usage(format!(
-                    "--total {total} does not match the {} cells of --strata",
-                    s.len()
-                )));
-            }
-            Box::new(s)
-        }
-    }))
+    let params = params(spec)?;
+    Ok(catalog::build(spec.sampler, spec.scramble, &params)?)
 }
 
 /// `k` with `k^d == n`, or a usage error.
@@ -584,10 +432,10 @@ fn parse_strata(text: &str) -> Result<Vec<u32>, Failure> {
 
 /// Runs `qmckit points`.
 pub fn run(args: &PointsArgs) -> Result<(), Failure> {
-    if let Some(kind) = args.sampler.blue_noise() {
+    if let Some(kind) = blue_noise_kind(args.sampler) {
         return args.run_blue_noise(kind);
     }
-    let budgeted = args.sampler == SamplerName::Pmj02bn;
+    let budgeted = args.sampler.kind == SamplerKind::Pmj02bn;
     if let Some(option) = args.blue.first_given(budgeted) {
         let to = if option == "--max-seconds" {
             "poisson, best-candidate, gaussian-blue-noise, pmj02bn"
@@ -596,7 +444,7 @@ pub fn run(args: &PointsArgs) -> Result<(), Failure> {
         };
         return Err(Failure::usage(format!(
             "{option} does not apply to {} (only to {to})",
-            value_name(&args.sampler)
+            args.sampler.name
         )));
     }
     let n = args
@@ -621,12 +469,12 @@ pub fn run(args: &PointsArgs) -> Result<(), Failure> {
     let end = qmckit::size::end(start, n, sampler.len()).map_err(|e| match e {
         qmckit::Error::IndexOutOfRange { index, len } => Failure::usage(format!(
             "points {start}..{index} are past the end: this {} has {len} points{}",
-            if args.sampler.is_finite_set() {
+            if is_finite_set(args.sampler) {
                 "set"
             } else {
                 "sequence"
             },
-            if args.sampler.is_finite_set() {
+            if is_finite_set(args.sampler) {
                 " (see --total)"
             } else {
                 ""
@@ -690,7 +538,7 @@ impl PointsArgs {
     /// `points poisson|best-candidate|gaussian-blue-noise`: the options that do not apply
     /// are refused, the set is built whole and written.
     fn run_blue_noise(&self, kind: blue_noise::Kind) -> Result<(), Failure> {
-        let name = value_name(&self.sampler);
+        let name = self.sampler.name;
         for (option, given) in [
             ("--start", self.start.is_some()),
             ("--total", self.total.is_some()),
@@ -698,7 +546,7 @@ impl PointsArgs {
             ("--base", self.base.is_some()),
             ("--strata", self.strata.is_some()),
             ("--centered", self.centered),
-            ("--scramble", self.scramble != ScrambleName::None),
+            ("--scramble", self.scramble.kind != RandomizerKind::None),
             ("--warp", self.warp.warp.is_some()),
         ] {
             if given {

@@ -1,9 +1,10 @@
 //! `qmckit tvalue SAMPLER -m M [-d D] [--scramble KIND] [--seed S] [--explain]`: the t-value
-//! of the first `2^m` points of a base-2 construction.
+//! of the first `2^m` points of a base-2 construction (or `b^m` of faure); `qmckit tvalue
+//! FILE|-`: the t-value of a point file of `b^m` points.
 
 use std::io::Write;
 
-use clap::{Args, ValueEnum};
+use clap::Args;
 use qmckit::analysis::tvalue::{
     COUNT_RATE, IntervalFailure, count_steps, elementary_interval_failures_u32_within,
     t_value_u32_within,
@@ -14,15 +15,25 @@ use qmckit::work::{Budget, Cost};
 
 use super::Failure;
 use super::budget::BudgetArgs;
-use super::points::{SamplerName, ScrambleName, Spec, samples_u32, value_name};
+use qmckit::catalog::{RandomizerKind, SamplerKind};
+
+use super::input::{InputArgs, InputFormat, read_point_sets};
+use super::names;
+use super::points::{SamplerName, ScrambleName, Spec, dims_of, samples_u32};
 use super::progress::{with_progress, with_spinner};
 
 /// Text shown after the options of `qmckit tvalue --help`.
 pub const AFTER_HELP: &str = "\
 Samplers (base 2): sobol (any d), lp (d = 2), hammersley (d = 2: (i/2^m, phi_2(i))),
-vdc (d = 1, base 2). In base b: faure (the first b^m points, counted exactly in base b;
---base B, a prime >= d; --scramble owen|perm|faure; output adds a 'base B' line). Other
-samplers are refused.
+vdc (d = 1, base 2); pmj02 and pmj02bn (d = 2, seeded by --seed, generated and counted).
+In base b: faure (the first b^m points, counted exactly in base b; --base B, a prime >= d;
+--scramble owen|perm|faure; output adds a 'base B' line). Other catalog samplers are
+refused in one line.
+
+A point file (FILE, or '-' for standard input) of b^m points (base --base B, default 2),
+in any format 'qmckit points' writes, is judged by counting its elementary intervals:
+  qmckit points pmj02bn -n 256 | qmckit tvalue -
+prints 'file', 'base', 'm', 'd', 'method count' and 't' lines.
 
 Method: without --scramble, the rank test on the generator matrices (exact, m <= 32; its
 cost grows like C(m - t + 1 + d, d), fast for small d; estimated first and refused when the
@@ -44,48 +55,86 @@ With --explain and t > 0, up to five 'fail ...' lines follow, each an elementary
 of volume 2^(t-1-m) that does not hold 2^(t-1) points (why t-1 fails), e.g.
   fail shape [1, 2]: [0, 1)/2^1 x [3, 4)/2^2 holds 0 point(s), 1 expected";
 
-/// The base-2 constructions `tvalue` measures.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub enum TvalueSampler {
-    /// Sobol' sequence, any d.
-    Sobol,
-    /// Larcher–Pillichshammer net, d = 2.
-    Lp,
-    /// Hammersley set in base 2, d = 2: (i/2^m, phi_2(i)).
-    Hammersley,
-    /// Van der Corput sequence in base 2, d = 1.
-    Vdc,
-    /// Faure's sequence in prime base b >= d (--base; default the smallest such prime):
-    /// counted in base b, exactly.
-    Faure,
+/// What `tvalue` judges: a catalog sampler, or a point file (`-`: standard input).
+#[derive(Clone, Debug)]
+pub enum TvalueInput {
+    /// A catalog sampler that tvalue can judge.
+    Sampler(SamplerName),
+    /// A point file of `b^m` points (`-` is standard input).
+    File(String),
 }
 
-impl TvalueSampler {
-    /// The construction as `points` names it.
-    fn name(self) -> SamplerName {
-        match self {
-            TvalueSampler::Sobol => SamplerName::Sobol,
-            TvalueSampler::Lp => SamplerName::Lp,
-            TvalueSampler::Hammersley => SamplerName::Hammersley,
-            TvalueSampler::Vdc => SamplerName::Vdc,
-            TvalueSampler::Faure => SamplerName::Faure,
+/// The samplers `tvalue` judges: the base-2 digital constructions, hammersley, faure and
+/// the (0,2)-sequences pmj02 and pmj02bn.
+fn judged(e: &qmckit::catalog::SamplerEntry) -> bool {
+    matches!(
+        e.kind,
+        SamplerKind::Sobol
+            | SamplerKind::Lp
+            | SamplerKind::Vdc
+            | SamplerKind::Hammersley
+            | SamplerKind::Faure
+            | SamplerKind::Pmj02
+            | SamplerKind::Pmj02bn
+    )
+}
+
+/// Parses `SAMPLER|FILE|-`: a catalog name (any alias) first, else `-` or an existing file.
+#[derive(Clone)]
+struct InputParser;
+
+impl clap::builder::TypedValueParser for InputParser {
+    type Value = TvalueInput;
+
+    fn parse_ref(
+        &self,
+        cmd: &clap::Command,
+        arg: Option<&clap::Arg>,
+        value: &std::ffi::OsStr,
+    ) -> Result<TvalueInput, clap::Error> {
+        let text = value.to_string_lossy();
+        if qmckit::catalog::sampler(&text).is_err()
+            && (text == "-" || std::path::Path::new(value).is_file())
+        {
+            return Ok(TvalueInput::File(text.into_owned()));
         }
+        names::samplers()
+            .only(
+                judged,
+                "tvalue judges sobol, lp, vdc, hammersley, faure, pmj02 and pmj02bn; for \
+                 another set write b^m points and pass the file, e.g. 'qmckit points NAME -n \
+                 256 | qmckit tvalue -'",
+            )
+            .parse_ref(cmd, arg, value)
+            .map(TvalueInput::Sampler)
+    }
+
+    fn possible_values(
+        &self,
+    ) -> Option<Box<dyn Iterator<Item = clap::builder::PossibleValue> + '_>> {
+        Some(Box::new(
+            qmckit::catalog::SAMPLERS
+                .iter()
+                .filter(|e| judged(e))
+                .map(|e| clap::builder::PossibleValue::new(e.name).help(e.summary)),
+        ))
     }
 }
 
 /// Arguments of `qmckit tvalue`.
 #[derive(Args, Debug)]
 pub struct TvalueArgs {
-    /// Which construction.
-    sampler: TvalueSampler,
-    /// The set has 2^m points (m <= 32; m <= 21 when counting).
+    /// Which construction, or a point file of b^m points ('-': standard input).
+    #[arg(value_parser = InputParser, value_name = "SAMPLER|FILE|-")]
+    sampler: TvalueInput,
+    /// The set has 2^m points (m <= 32; m <= 21 when counting) [a file: its size].
     #[arg(short = 'm', value_name = "M")]
-    m: u32,
+    m: Option<u32>,
     /// Dimensions [default: 1 for vdc, 2 otherwise].
     #[arg(short = 'd', value_name = "D")]
     d: Option<usize>,
     /// Randomization, as for `qmckit points` (then the points are counted).
-    #[arg(long, value_enum, default_value_t = ScrambleName::None)]
+    #[arg(long, value_parser = names::randomizers(), default_value = "none")]
     scramble: ScrambleName,
     /// Seed of the randomization.
     #[arg(long, default_value_t = 0)]
@@ -119,30 +168,30 @@ fn net(sampler: SamplerName, m: u32, d: usize) -> Result<DigitalNet2, Failure> {
             )))
         }
     };
-    Ok(match sampler {
-        SamplerName::Sobol if d > qmckit::SOBOL_MAX_DIMS => {
+    Ok(match sampler.kind {
+        SamplerKind::Sobol if d > qmckit::SOBOL_MAX_DIMS => {
             return Err(Failure::usage(format!(
                 "sobol has {} dimensions: -d must be at most that, got {d}",
                 qmckit::SOBOL_MAX_DIMS
             )));
         }
-        SamplerName::Sobol => DigitalNet2::from_sobol(d, m)?,
-        SamplerName::Lp => {
+        SamplerKind::Sobol => DigitalNet2::from_sobol(d, m)?,
+        SamplerKind::Lp => {
             fixed(2, "lp")?;
             DigitalNet2::larcher_pillichshammer(m)?
         }
-        SamplerName::Hammersley => {
+        SamplerKind::Hammersley => {
             fixed(2, "hammersley in base 2")?;
             DigitalNet2::hammersley(m)?
         }
-        SamplerName::Vdc => {
+        SamplerKind::Vdc => {
             fixed(1, "vdc")?;
             DigitalNet2::van_der_corput(m)?
         }
-        other => {
+        _ => {
             return Err(Failure::usage(format!(
                 "tvalue measures base-2 constructions (sobol, lp, hammersley, vdc); {} is not one",
-                value_name(&other)
+                sampler.name
             )));
         }
     })
@@ -171,21 +220,26 @@ fn check_countable(m: u32, d: usize, why: &str, budget: &Budget) -> Result<(), F
 /// Runs `qmckit tvalue`.
 pub fn run(args: &TvalueArgs) -> Result<(), Failure> {
     let budget = args.budget.budget()?;
-    let sampler = args.sampler.name();
-    let m = args.m;
+    let sampler = match &args.sampler {
+        TvalueInput::Sampler(s) => *s,
+        TvalueInput::File(file) => return run_file(args, file, &budget),
+    };
+    let m = args
+        .m
+        .ok_or_else(|| Failure::usage("-m M is needed: the set has 2^m points"))?;
     if m > 32 {
         return Err(Failure::usage(format!(
             "-m {m}: at most 32 (2^m points of 32-bit coordinates)"
         )));
     }
-    let d = sampler.dims(args.d);
+    let d = dims_of(sampler, args.d);
     if d == 0 {
         return Err(Failure::usage("-d must be at least 1"));
     }
-    if args.base.is_some() && sampler != SamplerName::Faure {
+    if args.base.is_some() && sampler.kind != SamplerKind::Faure {
         return Err(Failure::usage("--base applies to faure only"));
     }
-    if sampler == SamplerName::Faure {
+    if sampler.kind == SamplerKind::Faure {
         if args.explain {
             return Err(Failure::usage("--explain is for base-2 constructions"));
         }
@@ -193,14 +247,26 @@ pub fn run(args: &TvalueArgs) -> Result<(), Failure> {
             super::toolbox::tvalue_faure(m, d, args.base, args.scramble, args.seed, &budget)?;
         let mut out = std::io::stdout().lock();
         writeln!(out, "sampler faure\nbase {b}")?;
-        writeln!(out, "scramble {}", value_name(&args.scramble))?;
+        writeln!(out, "scramble {}", args.scramble.name)?;
         writeln!(out, "m {m}\nd {d}\nmethod count\nt {t}")?;
         out.flush()?;
         return Ok(());
     }
+    // The (0,2)-sequences are not digital: their points are generated and counted.
+    let generated = matches!(sampler.kind, SamplerKind::Pmj02 | SamplerKind::Pmj02bn);
     // Validates the sampler and d for both methods.
-    let net = net(sampler, m, d)?;
-    let counting = args.scramble != ScrambleName::None;
+    let net = if generated {
+        if d != 2 {
+            return Err(Failure::usage(format!(
+                "{} is 2-dimensional: -d must be 2, got {d}",
+                sampler.name
+            )));
+        }
+        None
+    } else {
+        Some(net(sampler, m, d)?)
+    };
+    let counting = generated || args.scramble.kind != RandomizerKind::None;
     if args.explain {
         check_countable(m, d, "--explain", &budget)?;
     }
@@ -213,21 +279,27 @@ pub fn run(args: &TvalueArgs) -> Result<(), Failure> {
         })?;
         (t, Some(samples))
     } else {
+        let net = net
+            .as_ref()
+            .ok_or_else(|| Failure::usage("unreachable: no generator matrices"))?;
         let t = with_progress("t-value (rank test)", |progress| {
-            t_value_within(&net, &budget, progress)
+            t_value_within(net, &budget, progress)
         })?;
         (t, None)
     };
     let mut out = std::io::stdout().lock();
-    writeln!(out, "sampler {}", value_name(&sampler))?;
-    writeln!(out, "scramble {}", value_name(&args.scramble))?;
+    writeln!(out, "sampler {}", sampler.name)?;
+    writeln!(out, "scramble {}", args.scramble.name)?;
     writeln!(out, "m {m}\nd {d}")?;
     writeln!(out, "method {}", if counting { "count" } else { "rank" })?;
     writeln!(out, "t {t}")?;
     if args.explain && t > 0 {
         let samples = match samples {
             Some(s) => s,
-            None => net.points()?,
+            None => match &net {
+                Some(net) => net.points()?,
+                None => return Err(Failure::usage("unreachable: no points")),
+            },
         };
         let failures: Vec<IntervalFailure> = with_spinner("elementary intervals", || {
             elementary_interval_failures_u32_within(
@@ -243,6 +315,69 @@ pub fn run(args: &TvalueArgs) -> Result<(), Failure> {
             writeln!(out, "fail {f}")?;
         }
     }
+    out.flush()?;
+    Ok(())
+}
+
+/// `qmckit tvalue FILE|-`: the t-value of a point file of `b^m` points in base `--base`
+/// (default 2), counted in elementary intervals.
+fn run_file(args: &TvalueArgs, file: &str, budget: &Budget) -> Result<(), Failure> {
+    for (option, given) in [
+        ("-d", args.d.is_some()),
+        ("--scramble", args.scramble.kind != RandomizerKind::None),
+        ("--explain", args.explain),
+    ] {
+        if given {
+            return Err(Failure::usage(format!(
+                "{option} does not apply to a point file (its points are counted as they are)"
+            )));
+        }
+    }
+    let input = InputArgs {
+        input_format: InputFormat::Auto,
+        file: Some(file.to_owned()),
+    };
+    let (name, sets) = read_point_sets(&input)?;
+    let [set] = sets.as_slice() else {
+        return Err(Failure::usage(format!(
+            "{name}: {} point sets; tvalue judges one",
+            sets.len()
+        )));
+    };
+    let points = set
+        .points()
+        .map_err(|e| Failure::usage(format!("{name}: {e}")))?;
+    let n = points.len() as u64;
+    let base = args.base.unwrap_or(2);
+    if base < 2 {
+        return Err(Failure::usage(format!("--base {base}: at least 2")));
+    }
+    let mut m = 0u32;
+    let mut size = 1u64;
+    while size < n {
+        size = size.saturating_mul(u64::from(base));
+        m += 1;
+    }
+    if size != n {
+        return Err(Failure::usage(format!(
+            "{name}: {n} points is not a power of the base {base} (a (t,m,s)-net has b^m points)"
+        )));
+    }
+    if args.m.is_some_and(|given| given != m) {
+        return Err(Failure::usage(format!(
+            "-m {}: the file holds {n} = {base}^{m} points",
+            args.m.unwrap_or(0)
+        )));
+    }
+    let d = points.dims();
+    let t = with_spinner("t-value (counting)", || {
+        qmckit::analysis::tvalue::t_value_points_within(points, base, m, budget)
+    })?;
+    let mut out = std::io::stdout().lock();
+    writeln!(
+        out,
+        "file {name}\nbase {base}\nm {m}\nd {d}\nmethod count\nt {t}"
+    )?;
     out.flush()?;
     Ok(())
 }

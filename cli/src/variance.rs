@@ -4,19 +4,22 @@
 
 use std::io::{BufWriter, Write};
 
-use clap::{Args, ValueEnum};
+use clap::Args;
+use clap::builder::{PossibleValue, TypedValueParser};
 use qmckit::analysis::Points;
 use qmckit::analysis::spectrum::{
     DEFAULT_TOLERANCE, SPECTRUM_MAX_K, choose_method, estimated_cost, periodogram_2d,
 };
 use qmckit::analysis::variance::{Measured, TorusIntegrand, predicted_variance, shifted_error};
 use qmckit::blue_noise::{GaussianBlueNoise, PoissonDisk};
-use qmckit::randomize::{ExactOwen, Scrambled};
-use qmckit::{Halton, Independent, Jitter, Sampler, Sobol, Stratified};
+use qmckit::catalog::{
+    self, Family, IntegrandEntry, IntegrandKind, Params, RandomizerEntry, RandomizerKind,
+    SamplerEntry, SamplerKind, Size,
+};
 
-use super::Failure;
 use super::budget::BudgetArgs;
 use super::progress::with_spinner;
+use super::{Failure, names};
 
 /// Text shown after the options of `qmckit variance --help`.
 pub const AFTER_HELP: &str = "\
@@ -38,48 +41,81 @@ Deterministic samplers (halton, sobol) have one set, shifted S times. Default K 
 2 ceil(sqrt(N)) (at least 16); a given --k-max (1 to 2048) is used as given. Values with 17 significant digits. Refused when the S
 periodograms are estimated to exceed --max-seconds. Errors: one line, exit code 2.";
 
-/// The samplers `qmckit variance` knows.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub enum VarianceSampler {
-    /// Independent uniform points (white noise).
-    Independent,
-    /// Jittered sampling: one uniform point in each cell of the sqrt(N) x sqrt(N) grid.
-    Jittered,
-    /// Halton points, bases 2 and 3.
-    Halton,
-    /// Sobol' points, dimensions 0 and 1.
-    Sobol,
-    /// Owen-scrambled (nested uniform) Sobol' points.
-    OwenSobol,
-    /// Bridson Poisson disk on the torus, about N points (the radius from N, as
-    /// `points poisson -n N --torus`; each set has its own count).
-    Poisson,
-    /// Gaussian blue noise (Ahmed, Ren & Wonka 2022) on the torus, exactly N points, the
-    /// default iterations of `points gaussian-blue-noise`.
-    GaussianBlueNoise,
+/// What `variance` draws: a catalog sampler with a randomizer (`owen-sobol` is the
+/// shorthand for `sobol --scramble owen`).
+#[derive(Clone, Copy, Debug)]
+pub struct VarianceSampler {
+    sampler: &'static SamplerEntry,
+    shorthand: Option<&'static RandomizerEntry>,
 }
 
-/// `--integrand`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub enum IntegrandArg {
-    /// Indicator of the disk of radius --radius.
-    Disk,
-    /// Periodized Gaussian of standard deviation --sigma.
-    Gaussian,
+/// Parses a catalog sampler name, or the shorthand `owen-sobol`.
+#[derive(Clone)]
+struct SamplerParser;
+
+impl TypedValueParser for SamplerParser {
+    type Value = VarianceSampler;
+
+    fn parse_ref(
+        &self,
+        cmd: &clap::Command,
+        arg: Option<&clap::Arg>,
+        value: &std::ffi::OsStr,
+    ) -> Result<VarianceSampler, clap::Error> {
+        if catalog::same_name(&value.to_string_lossy(), "owen-sobol") {
+            return Ok(VarianceSampler {
+                sampler: catalog::sampler("sobol")
+                    .map_err(|_| clap::Error::new(clap::error::ErrorKind::InvalidValue))?,
+                shorthand: catalog::randomizer("owen").ok(),
+            });
+        }
+        names::samplers()
+            .parse_ref(cmd, arg, value)
+            .map(|sampler| VarianceSampler {
+                sampler,
+                shorthand: None,
+            })
+    }
+
+    fn possible_values(&self) -> Option<Box<dyn Iterator<Item = PossibleValue> + '_>> {
+        let shorthand = PossibleValue::new("owen-sobol").help("shorthand: sobol --scramble owen");
+        let listed: Vec<PossibleValue> = names::samplers()
+            .possible_values()
+            .into_iter()
+            .flatten()
+            .chain([shorthand])
+            .collect();
+        Some(Box::new(listed.into_iter()))
+    }
+}
+
+/// The integrands `variance` takes: the torus ones.
+fn on_torus(e: &IntegrandEntry) -> bool {
+    matches!(
+        e.kind,
+        IntegrandKind::TorusDisk | IntegrandKind::TorusGaussian
+    )
 }
 
 /// Arguments of `qmckit variance`.
 #[derive(Args, Debug)]
 pub struct VarianceArgs {
-    /// Which sampler.
-    #[arg(value_enum)]
+    /// Which sampler (a catalog name or alias, any case; owen-sobol is sobol --scramble
+    /// owen).
+    #[arg(value_parser = SamplerParser)]
     sampler: VarianceSampler,
+    /// Randomization, as for `qmckit points` (the torus shift comes after it).
+    #[arg(long, value_parser = names::randomizers())]
+    scramble: Option<&'static RandomizerEntry>,
     /// Points per set.
     #[arg(short = 'n', value_name = "N")]
     n: u32,
-    /// The integrand.
-    #[arg(long, value_enum, default_value_t = IntegrandArg::Disk)]
-    integrand: IntegrandArg,
+    /// The integrand (a catalog integrand on the torus).
+    #[arg(long, default_value = "torus-disk", value_parser = names::integrands().only(
+        on_torus,
+        "variance integrates the torus integrands: torus-disk, torus-gaussian",
+    ))]
+    integrand: &'static IntegrandEntry,
     /// Disk radius R, in [1e-50, 0.5].
     #[arg(long, default_value_t = 0.25, value_name = "R")]
     radius: f64,
@@ -104,21 +140,21 @@ pub struct VarianceArgs {
 /// command's started `budget`: the caller checked the cost of all of them, the deadline
 /// bounds them).
 fn points_of(
-    which: VarianceSampler,
+    which: &Drawn,
     n: u32,
     seed: u64,
     s: u32,
     budget: &qmckit::work::Budget,
-) -> qmckit::Result<Vec<f64>> {
+) -> Result<Vec<f64>, Failure> {
     let key = qmckit::hash::hash3(seed, s as u64, 0x5e7);
-    let set = match which {
-        VarianceSampler::Poisson => Some(
+    let set = match which.sampler.kind {
+        SamplerKind::Poisson => Some(
             PoissonDisk::with_points(2, u64::from(n))?
                 .torus(true)
                 .seed(key)
                 .generate_within(budget)?,
         ),
-        VarianceSampler::GaussianBlueNoise => Some(
+        SamplerKind::GaussianBlueNoise => Some(
             GaussianBlueNoise::new(u64::from(n))?
                 .seed(key)
                 .generate_within(budget)?,
@@ -128,24 +164,42 @@ fn points_of(
     if let Some(set) = set {
         return Ok(set.to_f64());
     }
-    let sampler: Box<dyn Sampler> = match which {
-        VarianceSampler::Independent => Box::new(Independent::new(2, key)?),
-        VarianceSampler::Jittered => {
-            let side = (n as f64).sqrt().round() as u32;
-            Box::new(Stratified::uniform(side, 2, Jitter::Random(key))?)
-        }
-        VarianceSampler::Halton => Box::new(Halton::new(2)?),
-        VarianceSampler::Sobol => Box::new(Sobol::new(2)?),
-        VarianceSampler::OwenSobol => Box::new(Scrambled::new(Sobol::new(2)?, ExactOwen::new(key))),
-        VarianceSampler::Poisson | VarianceSampler::GaussianBlueNoise => {
-            return Err(qmckit::Error::InvalidParameter {
-                what: "a blue-noise set is not a Sampler",
-            });
-        }
+    let kind = which.sampler.kind;
+    let side = (n as f64).sqrt().round() as u32;
+    let stratified = kind == SamplerKind::Stratified;
+    let params = Params {
+        dims: (kind.fixed_dims() != Some(1)).then_some(2),
+        points: (matches!(kind.size(), Size::Set | Size::Whole) && !stratified)
+            .then_some(u64::from(n)),
+        strata: stratified.then(|| vec![side, side]),
+        seed: key,
+        budget: *budget,
+        ..Params::default()
     };
+    let sampler = catalog::build(which.sampler, which.scramble, &params)?;
+    if sampler.dims() != 2 {
+        return Err(Failure::usage(format!(
+            "{} is {}-dimensional: variance needs 2-dimensional points",
+            which.sampler.name,
+            sampler.dims()
+        )));
+    }
+    if sampler.len() < u64::from(n) {
+        return Err(Failure::usage(format!(
+            "-n {n}: {} has {} points",
+            which.sampler.name,
+            sampler.len()
+        )));
+    }
     let mut raw: Vec<u32> = qmckit::size::vec_zeroed(2 * n as usize)?;
     sampler.fill(0, &mut raw)?;
     Ok(Points::from_u32(&raw))
+}
+
+/// The sampler and randomizer drawn.
+struct Drawn {
+    sampler: &'static SamplerEntry,
+    scramble: &'static RandomizerEntry,
 }
 
 /// Runs `qmckit variance`.
@@ -158,17 +212,43 @@ pub fn run(args: &VarianceArgs) -> Result<(), Failure> {
     if n > 1 << 24 {
         return Err(Failure::usage(format!("-n {n}: at most 16777216")));
     }
-    if args.sampler == VarianceSampler::Jittered {
+    let drawn = match (args.sampler.shorthand, args.scramble) {
+        (Some(_), Some(_)) => {
+            return Err(Failure::usage(
+                "--scramble does not apply to owen-sobol (it is sobol --scramble owen)",
+            ));
+        }
+        (Some(r), None) | (None, Some(r)) => Drawn {
+            sampler: args.sampler.sampler,
+            scramble: r,
+        },
+        (None, None) => Drawn {
+            sampler: args.sampler.sampler,
+            scramble: catalog::randomizer("none")?,
+        },
+    };
+    if matches!(
+        drawn.sampler.kind,
+        SamplerKind::Poisson | SamplerKind::GaussianBlueNoise
+    ) && drawn.scramble.kind != RandomizerKind::None
+    {
+        return Err(Failure::usage(format!(
+            "--scramble does not apply to {} here (its sets are drawn on the torus, each \
+             shifted at random already)",
+            drawn.sampler.name
+        )));
+    }
+    if drawn.sampler.kind == SamplerKind::Stratified {
         let side = (n as f64).sqrt().round() as u32;
         if side * side != n {
             return Err(Failure::usage(format!(
-                "-n {n}: jittered needs a square number of points"
+                "-n {n}: stratified (jittered) needs a square number of points"
             )));
         }
     }
-    let f = match args.integrand {
-        IntegrandArg::Disk => TorusIntegrand::disk(args.radius),
-        IntegrandArg::Gaussian => TorusIntegrand::gaussian(args.sigma),
+    let f = match args.integrand.kind {
+        IntegrandKind::TorusGaussian => TorusIntegrand::gaussian(args.sigma),
+        _ => TorusIntegrand::disk(args.radius),
     }
     .map_err(|e| Failure::usage(e.to_string()))?;
     // The default is 2 ceil(sqrt N), at least 16; a given --k-max is used as given.
@@ -182,20 +262,22 @@ pub fn run(args: &VarianceArgs) -> Result<(), Failure> {
             "--k-max {k_max}: at most {SPECTRUM_MAX_K}"
         )));
     }
-    let random = !matches!(
-        args.sampler,
-        VarianceSampler::Halton | VarianceSampler::Sobol
-    );
+    // Deterministic constructions, unrandomized, have one set, shifted S times.
+    let random = drawn.scramble.kind != RandomizerKind::None
+        || matches!(
+            drawn.sampler.kind.family(None),
+            Family::Random | Family::BlueNoise
+        );
     let spectra = if random { args.sets } else { 1 };
     let method = choose_method(n as usize, k_max, DEFAULT_TOLERANCE);
     let one = estimated_cost(n as usize, k_max, method, DEFAULT_TOLERANCE).seconds();
     let evals = args.sets as f64 * n as f64 * 5e-9;
-    let construct = match args.sampler {
-        VarianceSampler::Poisson => PoissonDisk::with_points(2, u64::from(n))
+    let construct = match drawn.sampler.kind {
+        SamplerKind::Poisson => PoissonDisk::with_points(2, u64::from(n))
             .and_then(|p| p.torus(true).cost())
             .map_err(|e| Failure::usage(e.to_string()))?
             .seconds(),
-        VarianceSampler::GaussianBlueNoise => GaussianBlueNoise::new(u64::from(n))
+        SamplerKind::GaussianBlueNoise => GaussianBlueNoise::new(u64::from(n))
             .map_err(|e| Failure::usage(e.to_string()))?
             .cost()
             .seconds(),
@@ -213,7 +295,11 @@ pub fn run(args: &VarianceArgs) -> Result<(), Failure> {
     // The shift variance of one set is exactly (1/N_s) sum |c_k|^2 P_s(k), linear in P_s:
     // the mean of the per-set predictions is the prediction of the mean periodogram, and it
     // stays exact when the sets differ in size (Poisson disk by count).
-    let (predicted, counts, errors) = with_spinner("variance", || -> qmckit::Result<_> {
+    if !random {
+        // Refuses a construction that cannot make the set before anything is timed.
+        points_of(&drawn, n, args.seed, 0, &budget)?;
+    }
+    let (predicted, counts, errors) = with_spinner("variance", || -> Result<_, Failure> {
         let (mut variance, mut tail, mut counts) = (0.0, 0.0, 0usize);
         let mut errors: Vec<f64> = qmckit::size::vec_with_capacity(args.sets as usize)?;
         let mut pts = Vec::new();
@@ -221,7 +307,7 @@ pub fn run(args: &VarianceArgs) -> Result<(), Failure> {
         for s in 0..args.sets {
             if random || s == 0 {
                 budget.check_deadline("the integration variance")?;
-                pts = points_of(args.sampler, n, args.seed, s, &budget)?;
+                pts = points_of(&drawn, n, args.seed, s, &budget)?;
                 let p = Points::new(&pts, 2)?;
                 let one = predicted_variance(
                     &periodogram_2d(p, k_max, method, DEFAULT_TOLERANCE, &budget)?,
@@ -238,8 +324,7 @@ pub fn run(args: &VarianceArgs) -> Result<(), Failure> {
         }
         let inv = 1.0 / f64::from(spectra);
         Ok(((variance * inv, tail * inv), counts as f64 * inv, errors))
-    })
-    .map_err(|e| Failure::usage(super::budget::over_budget(e)))?;
+    })?;
     let measured = Measured::from_errors(&errors)?;
     let ratio = measured.variance / predicted.0;
     if !ratio.is_finite() {
@@ -250,14 +335,11 @@ pub fn run(args: &VarianceArgs) -> Result<(), Failure> {
     }
     let mut out = BufWriter::new(std::io::stdout().lock());
     let (name, parameter) = match f {
-        TorusIntegrand::Disk { radius } => ("disk", radius),
-        TorusIntegrand::Gaussian { sigma } => ("gaussian", sigma),
+        TorusIntegrand::Disk { radius } => ("torus-disk", radius),
+        TorusIntegrand::Gaussian { sigma } => ("torus-gaussian", sigma),
     };
-    let sampler = args
-        .sampler
-        .to_possible_value()
-        .map(|v| v.get_name().to_owned());
-    writeln!(out, "sampler {}", sampler.unwrap_or_default())?;
+    writeln!(out, "sampler {}", drawn.sampler.name)?;
+    writeln!(out, "scramble {}", drawn.scramble.name)?;
     writeln!(out, "n {n}")?;
     writeln!(out, "integrand {name}")?;
     writeln!(out, "parameter {parameter}")?;

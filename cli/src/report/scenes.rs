@@ -117,7 +117,7 @@ pub fn sections(ctx: &Ctx) -> Result<Vec<Section>, Failure> {
          power lies (compare the error images).",
     );
     add_study(ctx, &mut aos, "ao", &ao, &[])?;
-    aos.note = blue_against_white(&ao, "Owen-Sobol'", "ZSobol");
+    aos.note = blue_against_white(&ao, "Sobol' fast-owen", "ZSobol");
     Ok(vec![mse, quad, md, pls, aos])
 }
 

@@ -8,7 +8,7 @@
 //! * [`integrands`]: the per-pixel integrands (film area, light area by area sampling with
 //!   the `cos cos / r^2` geometry term, lens and time, cosine-weighted ambient occlusion) and
 //!   Lambert's closed-form polygon irradiance they are checked against.
-//! * [`samplers`]: how independent, stratified, Halton, Sobol', Owen-Sobol' and ZSobol points
+//! * [`samplers`]: how independent, stratified, Halton, Sobol', Sobol' fast-owen and ZSobol points
 //!   feed a pixel's dimensions, with a seed per pixel.
 //! * [`study`] (re-exported here): reference image, renders, MSE over seeds and the error
 //!   images' low-frequency power.
@@ -25,7 +25,7 @@
 //! let o = StudyOptions { width: 16, height: 16, spp: 16, seeds: 2, reference_spp: 256 };
 //! let s = soft_shadow_study(&o)?;
 //! assert_eq!(s.mse[0].sampler, "independent");
-//! assert!(s.mse[2].mse < s.mse[0].mse); // Owen-Sobol' beats independent points
+//! assert!(s.mse[2].mse < s.mse[0].mse); // Sobol' fast-owen beats independent points
 //! assert!(soft_shadow_study(&StudyOptions { spp: 12, ..o }).is_err());
 //! # Ok::<(), qmckit::Error>(())
 //! ```

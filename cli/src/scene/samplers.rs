@@ -11,7 +11,7 @@
 //! | [`SceneSampler::Stratified`] | jittered [`Stratified`] `2^ceil(m/2) x 2^floor(m/2)` grid (`spp = 2^m`; 2D only) |
 //! | [`SceneSampler::Halton`] | [`Halton`] points `0..spp` with random digit permutations keyed by the pixel's seed |
 //! | [`SceneSampler::SobolShift`] | Sobol' points `0..spp` with a random digital shift (XOR) per pixel |
-//! | [`SceneSampler::OwenSobol`] | Owen-scrambled Sobol' ([`OwenSobol`]) points `0..spp`, seeded per pixel |
+//! | [`SceneSampler::OwenSobol`] | Sobol' with the catalog's `fast-owen` randomizer (hash-based Owen scrambling, [`OwenSobol`], the bits of `qmckit points sobol --scramble fast-owen --seed K`) points `0..spp`, seeded per pixel |
 //! | [`SceneSampler::ZSobol`] | pbrt's blue-noise Sobol' ([`ZSobol`], FastOwen): dimensions in pairs, `get_2d(x, y, i, 2k)` |
 //!
 //! Cost: O(d) integer work a point (Halton's permutations O(d log spp)); ZSobol O(log2(W spp))
@@ -35,7 +35,7 @@ pub enum SceneSampler {
     Halton,
     /// Sobol' with a random digital shift.
     SobolShift,
-    /// Owen-scrambled Sobol'.
+    /// Sobol' with the catalog's `fast-owen` randomizer (hash-based Owen scrambling).
     OwenSobol,
     /// Ahmed & Wonka's blue-noise Sobol' (pbrt's ZSobolSampler).
     ZSobol,
@@ -49,7 +49,7 @@ impl SceneSampler {
             SceneSampler::Stratified => "stratified",
             SceneSampler::Halton => "Halton",
             SceneSampler::SobolShift => "Sobol'",
-            SceneSampler::OwenSobol => "Owen-Sobol'",
+            SceneSampler::OwenSobol => "Sobol' fast-owen",
             SceneSampler::ZSobol => "ZSobol",
         }
     }

@@ -477,7 +477,7 @@ pub fn pixel_area_study(o: &StudyOptions) -> Result<SceneStudy> {
 
 /// Lecture table 2 at `n = spp`: soft shadows of the quad light ([`Integrand::SoftShadow`],
 /// 2D: the light sample, by area) at the pixel center's hit, independent / stratified /
-/// Owen-Sobol'. Cost: 3 samplers.
+/// Sobol' fast-owen. Cost: 3 samplers.
 ///
 /// # Errors
 /// As [`pixel_area_study`].
@@ -486,7 +486,7 @@ pub fn soft_shadow_study(o: &StudyOptions) -> Result<SceneStudy> {
 }
 
 /// Motion blur and defocus ([`Integrand::MotionDefocus`], 5D: film 2, lens 2, time 1):
-/// independent / Halton (random digit permutations) / Owen-Sobol'. Cost: 3 samplers.
+/// independent / Halton (random digit permutations) / Sobol' fast-owen. Cost: 3 samplers.
 ///
 /// # Errors
 /// As [`pixel_area_study`].
@@ -495,7 +495,7 @@ pub fn motion_defocus_study(o: &StudyOptions) -> Result<SceneStudy> {
 }
 
 /// Pixel x light ([`Integrand::PixelLight`], 4D: film 2, light 2): independent, Sobol' 4D
-/// (digital shift), Owen-Sobol' 4D and ZSobol (blue-noise Sobol', pairs of dimensions).
+/// (digital shift), Sobol' fast-owen 4D and ZSobol (blue-noise Sobol', pairs of dimensions).
 /// Cost: 4 samplers.
 ///
 /// # Errors
@@ -505,7 +505,7 @@ pub fn pixel_light_study(o: &StudyOptions) -> Result<SceneStudy> {
 }
 
 /// Ambient occlusion ([`Integrand::AmbientOcclusion`], 2D: a cosine-weighted direction at
-/// the pixel center's hit): white noise (independent per pixel; Owen-Sobol' with a seed per
+/// the pixel center's hit): white noise (independent per pixel; Sobol' fast-owen with a seed per
 /// pixel) against blue noise (ZSobol). [`MseEntry::low_band`] holds the error images'
 /// low-frequency power. Cost: 3 samplers.
 ///

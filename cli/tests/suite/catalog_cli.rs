@@ -1,11 +1,89 @@
-//! The catalog against the `qmckit` command while the command is in this package: the
-//! command's names are the canonical names, and the builders give the command's bits.
+//! The command against `qmckit::catalog`, which it reads: its value lists are the
+//! catalog's canonical names, its points are the builders' bits, and every command that
+//! takes a sampler, given any catalog name, either answers or refuses in one line.
 
-use super::{cases, fill};
 use crate::common::cli::run;
 use qmckit::Sampler;
 use qmckit::catalog::{self, PIXEL_SAMPLERS, Params, RANDOMIZERS, SAMPLERS, Size};
 use qmckit::digital::sobol::Order;
+
+/// The parameter sets every sampler is walked with (each entry at least once).
+fn cases() -> Vec<(&'static str, Params)> {
+    let p = Params::default;
+    let mut v = vec![
+        ("independent", Params::dims(3)),
+        ("stratified", Params::dims(2).with_points(64)),
+        (
+            "stratified",
+            Params {
+                strata: Some(vec![4, 3, 2]),
+                ..p()
+            },
+        ),
+        (
+            "stratified",
+            Params {
+                centered: true,
+                ..Params::dims(2).with_points(16)
+            },
+        ),
+        ("latin", Params::dims(3).with_points(100)),
+        ("vdc", p()),
+        (
+            "vdc",
+            Params {
+                base: Some(3),
+                ..p()
+            },
+        ),
+        ("halton", Params::dims(5)),
+        ("hammersley", Params::dims(3).with_points(100)),
+        ("lp", p().with_points(64)),
+        ("sobol", Params::dims(5)),
+        (
+            "sobol",
+            Params {
+                order: Order::Gray,
+                ..Params::dims(3)
+            },
+        ),
+        ("lattice", Params::dims(4)),
+        ("lattice", Params::dims(3).with_points(101)),
+        (
+            "lattice",
+            Params {
+                korobov: Some(17),
+                ..Params::dims(3).with_points(89)
+            },
+        ),
+        ("kronecker", Params::dims(3)),
+        ("faure", Params::dims(3)),
+        (
+            "faure",
+            Params {
+                base: Some(5),
+                ..Params::dims(3)
+            },
+        ),
+        ("pmj02", p()),
+    ];
+    {
+        v.extend([
+            ("pmj02bn", p().with_points(256)),
+            ("poisson", p().with_points(100)),
+            ("best-candidate", p().with_points(64)),
+            ("gaussian-blue-noise", p().with_points(32)),
+        ]);
+    }
+    v
+}
+
+/// The first `n` points of `s`.
+fn fill(s: &dyn Sampler, n: usize) -> Vec<u32> {
+    let mut v = vec![0u32; n * s.dims()];
+    s.fill(0, &mut v).unwrap();
+    v
+}
 
 /// The values the command names, from its help text (the `Possible values:` list
 /// after `after`).
@@ -34,10 +112,9 @@ fn the_command_names_are_canonical_names() {
     let scrambles = possible_values(&["points", "--help"], "--scramble");
     let names: Vec<&str> = RANDOMIZERS.iter().map(|e| e.name).collect();
     assert_eq!(scrambles, names);
-    // The pixel command's `sobol` is image-sobol's alias.
-    for name in possible_values(&["pixel", "--help"], "<SAMPLER>") {
-        catalog::pixel_sampler(&name).unwrap();
-    }
+    let pixel = possible_values(&["pixel", "--help"], "<SAMPLER>");
+    let names: Vec<&str> = PIXEL_SAMPLERS.iter().map(|e| e.name).collect();
+    assert_eq!(pixel, names);
     for name in possible_values(&["discrepancy", "--help"], "--metric") {
         if name != "all" {
             assert_eq!(catalog::measure(&name).unwrap().name, name);
@@ -47,7 +124,14 @@ fn the_command_names_are_canonical_names() {
 
 /// The command line of a case: `points NAME -n N ...`.
 fn command(name: &str, r: &str, p: &Params, n: u64) -> Vec<String> {
-    let mut a: Vec<String> = vec!["points".into(), name.into(), "-n".into(), n.to_string()];
+    let mut a: Vec<String> = vec![
+        "points".into(),
+        name.into(),
+        "-n".into(),
+        n.to_string(),
+        "--format".into(),
+        "u32".into(),
+    ];
     let mut push = |k: &str, v: String| {
         a.push(k.into());
         a.push(v);
@@ -126,15 +210,13 @@ fn the_builder_gives_the_command_s_bits() {
             compared += 1;
         }
     }
-    // The catalog takes rotate on faure (the rotation applies to any sampler) and on
-    // the blue-noise sets (as `qmckit convergence` does); `qmckit points` refuses them.
+    // The catalog takes rotate on the blue-noise sets (as `qmckit convergence` does);
+    // `qmckit points` writes those sets whole, as built, and refuses --scramble.
     refused.sort();
     assert_eq!(
         refused,
         [
             "best-candidate rotate",
-            "faure rotate",
-            "faure rotate",
             "gaussian-blue-noise rotate",
             "poisson rotate"
         ]
@@ -163,14 +245,9 @@ fn the_pixel_builder_gives_the_command_s_values() {
             &[None]
         };
         for r in randomizers {
-            let cli_name = if entry.name == "image-sobol" {
-                "sobol"
-            } else {
-                entry.name
-            };
             let mut args = vec![
                 "pixel",
-                cli_name,
+                entry.name,
                 "--resolution",
                 "16x9",
                 "--spp",
@@ -181,6 +258,8 @@ fn the_pixel_builder_gives_the_command_s_values() {
                 "3,5",
                 "--dim",
                 "2",
+                "--format",
+                "u32",
             ];
             if let Some(r) = r {
                 args.extend(["--randomize", r]);
@@ -191,7 +270,7 @@ fn the_pixel_builder_gives_the_command_s_values() {
             let s =
                 catalog::build_pixel(entry, r.map(|r| catalog::randomizer(r).unwrap()), &params)
                     .unwrap();
-            for (i, line) in text.lines().enumerate() {
+            for (i, line) in text.lines().filter(|l| !l.starts_with('#')).enumerate() {
                 let f: Vec<&str> = line.split(' ').collect();
                 let v: Vec<u32> = f[1..].iter().map(|t| t.parse().unwrap()).collect();
                 let [a, b] = s.get_2d(3, 5, i as u32, 2).unwrap();
@@ -221,6 +300,8 @@ fn a_vector_file_gives_the_command_s_lattice() {
         "shift-tent",
         "--seed",
         "4",
+        "--format",
+        "u32",
     ];
     let out = run(&args, "");
     std::fs::remove_file(&path).unwrap();
@@ -236,4 +317,196 @@ fn a_vector_file_gives_the_command_s_lattice() {
     };
     let built = catalog::build_named("lattice", "shift-tent", &p).unwrap();
     assert_eq!(got, fill(&*built, 64));
+}
+
+/// A run that answers (exit 0, something on stdout) or refuses in exactly one line
+/// naming why (exit 2, nothing on stdout).
+fn answers_or_refuses(args: &[&str]) -> bool {
+    let out = run(args, "");
+    let err = String::from_utf8(out.stderr).unwrap();
+    match out.status.code() {
+        Some(0) => {
+            assert!(!out.stdout.is_empty(), "{args:?}: no output");
+            true
+        }
+        Some(2) => {
+            assert_eq!(err.lines().count(), 1, "{args:?}: {err:?}");
+            assert!(err.starts_with("qmckit: error: "), "{args:?}: {err:?}");
+            assert!(
+                err.len() > "qmckit: error: ".len() + 10,
+                "{args:?}: {err:?}"
+            );
+            assert!(!err.contains("panicked"), "{args:?}: {err:?}");
+            assert!(out.stdout.is_empty(), "{args:?}");
+            false
+        }
+        other => panic!("{args:?}: exit {other:?}: {err}"),
+    }
+}
+
+/// The must-show test: every command that takes a sampler, with every catalog sampler
+/// name (and `points` with every randomizer, `pixel` with every pixel sampler and
+/// randomizer), answers or refuses in one line.
+#[test]
+fn every_catalog_name_answers_or_is_refused_in_one_line() {
+    let mut answered = Vec::new();
+    for s in SAMPLERS {
+        let name = s.name;
+        for r in RANDOMIZERS {
+            let mut args = vec!["points", name, "-n", "16"];
+            if r.name != "none" {
+                args.extend(["--scramble", r.name]);
+            }
+            if answers_or_refuses(&args) {
+                answered.push(format!("points {name} {}", r.name));
+            }
+        }
+        for args in [
+            vec!["variance", name, "-n", "16", "--sets", "4"],
+            vec!["convergence", name, "--max-m", "4"],
+            vec!["tvalue", name, "-m", "4"],
+        ] {
+            if answers_or_refuses(&args) {
+                answered.push(format!("{} {name}", args[0]));
+            }
+        }
+    }
+    for p in PIXEL_SAMPLERS {
+        for r in std::iter::once("").chain(RANDOMIZERS.iter().map(|r| r.name)) {
+            let mut args = vec![
+                "pixel",
+                p.name,
+                "--resolution",
+                "4x4",
+                "--spp",
+                "4",
+                "--pixel",
+                "1,1",
+            ];
+            if !r.is_empty() {
+                args.extend(["--randomize", r]);
+            }
+            if answers_or_refuses(&args) {
+                answered.push(format!("pixel {} {r}", p.name));
+            }
+        }
+    }
+    // What must answer: every sampler unrandomized in points (the sets at their default
+    // size), the base-2 randomizers on sobol, the judged samplers in tvalue, the 2D
+    // samplers in variance and every pixel sampler with its default.
+    for must in [
+        "points sobol fast-owen",
+        "points sobol lms",
+        "points halton owen",
+        "points lattice shift-tent",
+        "points faure perm",
+        "tvalue sobol",
+        "tvalue pmj02",
+        "tvalue pmj02bn",
+        "tvalue faure",
+        "variance stratified",
+        "variance halton",
+        "variance pmj02",
+        "convergence sobol",
+        "convergence kronecker",
+        "pixel zsobol ",
+        "pixel pmj02bn ",
+    ] {
+        assert!(answered.iter().any(|a| a == must), "{must} did not answer");
+    }
+    for s in SAMPLERS {
+        let want = format!("points {} none", s.name);
+        assert!(answered.contains(&want), "{want} did not answer");
+    }
+}
+
+/// `qmckit points pmj02bn -n 256 | qmckit tvalue -`: PMJ02BN's (0, 2) claim checked from
+/// the shell, and a point set that is no net gets its t.
+#[test]
+fn tvalue_judges_a_point_file() {
+    for format in ["decimal", "u32", "csv"] {
+        let out = run(&["points", "pmj02bn", "-n", "256", "--format", format], "");
+        assert_eq!(out.status.code(), Some(0));
+        let text = String::from_utf8(out.stdout).unwrap();
+        let judged = run(&["tvalue", "-"], &text);
+        assert_eq!(judged.status.code(), Some(0), "{format}");
+        let answer = String::from_utf8(judged.stdout).unwrap();
+        assert!(
+            answer.contains("base 2\nm 8\nd 2\nmethod count\nt 0\n"),
+            "{answer}"
+        );
+    }
+    // Sobol' 3D: t of the file is the rank test's t.
+    let out = run(&["points", "sobol", "-n", "1024", "-d", "3"], "");
+    let file = String::from_utf8(out.stdout).unwrap();
+    let from_file = String::from_utf8(run(&["tvalue", "-"], &file).stdout).unwrap();
+    let ranked =
+        String::from_utf8(run(&["tvalue", "sobol", "-m", "10", "-d", "3"], "").stdout).unwrap();
+    let t = |s: &str| s.lines().find(|l| l.starts_with("t ")).unwrap().to_owned();
+    assert_eq!(t(&from_file), t(&ranked));
+    // Independent points are no (0, 2)-net.
+    let out = run(&["points", "independent", "-n", "64", "--seed", "3"], "");
+    let answer =
+        String::from_utf8(run(&["tvalue", "-"], &String::from_utf8(out.stdout).unwrap()).stdout)
+            .unwrap();
+    assert!(!answer.contains("\nt 0\n"), "{answer}");
+    crate::common::cli::assert_usage_error(
+        &["tvalue", "-"],
+        "0.5 0.5\n0.1 0.2\n0.3 0.3\n",
+        "power of the base",
+    );
+    crate::common::cli::assert_usage_error(&["tvalue", "latin", "-m", "4"], "", "qmckit tvalue -");
+}
+
+/// `plot` reads what the tool writes, or refuses in one line what it cannot draw.
+#[test]
+fn plot_reads_every_output_or_refuses() {
+    let dir = std::env::temp_dir().join(format!("qmckit-plot-kinds-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let svg = dir.join("f.svg");
+    let o = svg.to_str().unwrap();
+    let output = |args: &[&str], input: &str| {
+        let out = run(args, input);
+        assert_eq!(out.status.code(), Some(0), "{args:?}");
+        String::from_utf8(out.stdout).unwrap()
+    };
+    // pcf: g(r) against r.
+    let pts = output(&["points", "sobol", "-n", "256"], "");
+    let pcf = output(&["pcf"], &pts);
+    assert_eq!(output(&["plot", "--out", o], &pcf), "");
+    assert!(
+        std::fs::read_to_string(&svg)
+            .unwrap()
+            .contains("pair correlation")
+    );
+    // npy point files.
+    let npy = dir.join("p.npy");
+    let out = run(&["points", "halton", "-n", "64", "--format", "npy"], "");
+    std::fs::write(&npy, &out.stdout).unwrap();
+    let out = run(&["plot", "--out", o, npy.to_str().unwrap()], "");
+    assert_eq!(out.status.code(), Some(0), "{:?}", out.stderr);
+    assert!(std::fs::read_to_string(&svg).unwrap().contains("64 points"));
+    // Masks are images, pixel output is refused.
+    let mask = output(&["mask", "void-and-cluster", "--size", "8x8"], "");
+    let out = run(&["plot", "--out", o], &mask);
+    assert_eq!(out.status.code(), Some(0));
+    assert!(std::fs::read_to_string(&svg).unwrap().contains("8x8 image"));
+    let pixel = output(
+        &[
+            "pixel",
+            "zsobol",
+            "--resolution",
+            "4x4",
+            "--spp",
+            "4",
+            "--pixel",
+            "0,0",
+        ],
+        "",
+    );
+    crate::common::cli::assert_usage_error(&["plot", "--out", o], &pixel, "qmckit pixel");
+    // The readers skip the header comments.
+    let out = run(&["discrepancy", "--metric", "cd"], &mask);
+    assert_eq!(out.status.code(), Some(0));
+    std::fs::remove_dir_all(&dir).unwrap();
 }

@@ -324,7 +324,7 @@ fn tvalue_refusals() {
     assert_usage_error(
         &["tvalue", "halton", "-m", "4"],
         "",
-        "possible values: sobol, lp, hammersley, vdc",
+        "halton: tvalue judges sobol, lp, vdc, hammersley, faure, pmj02 and pmj02bn",
     );
     assert_usage_error(&["tvalue", "lp", "-m", "4", "-d", "3"], "", "-d must be 2");
     assert_usage_error(&["tvalue", "sobol", "-m", "4", "-d", "0"], "", "-d");

@@ -6,6 +6,7 @@
 mod common;
 
 mod blue_noise;
+mod catalog_cli;
 mod cli;
 mod cli_analysis;
 mod cli_hostile;

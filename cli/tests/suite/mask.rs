@@ -10,8 +10,11 @@ fn mask_command_writes_the_ranks() {
     );
     assert_eq!(out.status.code(), Some(0));
     let text = String::from_utf8(out.stdout).unwrap();
+    // The header names the kind for 'qmckit plot'.
+    assert!(text.starts_with("# qmckit mask 16x8"), "{text}");
     let rows: Vec<Vec<u32>> = text
         .lines()
+        .filter(|l| !l.starts_with('#'))
         .map(|l| l.split(' ').map(|v| v.parse().unwrap()).collect())
         .collect();
     assert_eq!(rows.len(), 8);

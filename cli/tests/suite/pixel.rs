@@ -3,12 +3,14 @@
 
 use crate::common::cli::{assert_usage_error, run};
 
+/// The sample lines (after the '# qmckit pixel' header, which names the kind).
 fn lines(args: &[&str]) -> Vec<String> {
     let out = run(args, "");
     assert_eq!(out.status.code(), Some(0), "{args:?}: {:?}", out.stderr);
-    String::from_utf8(out.stdout)
-        .unwrap()
-        .lines()
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.starts_with("# qmckit pixel "), "{text}");
+    text.lines()
+        .filter(|l| !l.starts_with('#'))
         .map(str::to_string)
         .collect()
 }

@@ -358,7 +358,7 @@ fn motion_defocus_and_pixel_light_qmc_beats_independent() {
 }
 
 /// ZSobol's ambient-occlusion error is blue: less low-frequency power than white noise
-/// (independent points, and Owen-Sobol' with a seed per pixel).
+/// (independent points, and Sobol' fast-owen with a seed per pixel).
 #[test]
 fn zsobol_ao_error_has_less_low_frequency_power() {
     let o = StudyOptions {
@@ -370,7 +370,7 @@ fn zsobol_ao_error_has_less_low_frequency_power() {
     };
     let ao = ambient_occlusion_study(&o).unwrap();
     let names: Vec<&str> = ao.mse.iter().map(|e| e.sampler.as_str()).collect();
-    assert_eq!(names, ["independent", "Owen-Sobol'", "ZSobol"]);
+    assert_eq!(names, ["independent", "Sobol' fast-owen", "ZSobol"]);
     let (ind, owen, z) = (&ao.mse[0], &ao.mse[1], &ao.mse[2]);
     // Silhouettes and the sky's zero-error rows dilute the effect: about 0.6 against 1.1.
     assert!(

@@ -35,8 +35,9 @@ fn cli_variance_prints_predicted_and_measured() {
             .unwrap_or_else(|| panic!("{key} missing in {text}"))
             .to_owned()
     };
-    assert_eq!(get("sampler"), "jittered");
-    assert_eq!(get("integrand"), "disk");
+    assert_eq!(get("sampler"), "stratified");
+    assert_eq!(get("scramble"), "none");
+    assert_eq!(get("integrand"), "torus-disk");
     let predicted: f64 = get("predicted").parse().unwrap();
     let want = jittered_closed_form(8, &TorusIntegrand::disk(0.25).unwrap(), 32);
     assert!(

@@ -354,7 +354,9 @@ fn qmckit(args: &[&str]) -> Result<String, String> {
 
 /// Columns 2.. (the values, without the global index) of `pixel` output lines.
 fn values(text: &str, from: usize) -> Vec<String> {
+    // The '# qmckit pixel' header names the run, not its values.
     text.lines()
+        .filter(|l| !l.starts_with('#'))
         .map(|l| {
             l.split_whitespace()
                 .skip(from)
@@ -398,7 +400,10 @@ fn sobol_pads_like_pbrt(run: &Run) -> Result<(), String> {
 
 /// As many lines as samples per pixel (8).
 fn eight_lines(run: &Run) -> Result<(), String> {
-    let n = String::from_utf8_lossy(&run.stdout).lines().count();
+    let n = String::from_utf8_lossy(&run.stdout)
+        .lines()
+        .filter(|l| !l.starts_with('#'))
+        .count();
     if run.code == 0 && n != 8 {
         return Err(format!("{n} lines for 8 samples"));
     }
@@ -411,7 +416,11 @@ fn rectangular(run: &Run) -> Result<(), String> {
         return Ok(());
     }
     let text = String::from_utf8_lossy(&run.stdout);
-    let widths: Vec<usize> = text.lines().map(|l| l.split_whitespace().count()).collect();
+    let widths: Vec<usize> = text
+        .lines()
+        .filter(|l| !l.starts_with('#'))
+        .map(|l| l.split_whitespace().count())
+        .collect();
     if widths.windows(2).any(|w| w[0] != w[1]) {
         return Err("ragged mask rows".into());
     }
