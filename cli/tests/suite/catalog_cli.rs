@@ -6,6 +6,7 @@ use crate::common::cli::run;
 use qmckit::Sampler;
 use qmckit::catalog::{self, PIXEL_SAMPLERS, Params, RANDOMIZERS, SAMPLERS, Size};
 use qmckit::digital::sobol::Order;
+use qmckit::pixel::PixelSampler;
 
 /// The values the command names, from its help text (the `Possible values:` list
 /// after `after`).
@@ -194,8 +195,9 @@ fn the_pixel_builder_gives_the_command_s_values() {
             for (i, line) in text.lines().enumerate() {
                 let f: Vec<&str> = line.split(' ').collect();
                 let v: Vec<u32> = f[1..].iter().map(|t| t.parse().unwrap()).collect();
-                let [a, b] = s.get_2d(3, 5, i as u32, 2).unwrap();
-                assert_eq!(v, [s.get_1d(3, 5, i as u32, 2).unwrap(), a, b], "{args:?}");
+                let start = || s.start_pixel_sample(3, 5, i as u32).unwrap().with_dimension(2);
+                let [a, b] = start().get_2d();
+                assert_eq!(v, [start().get_1d(), a, b], "{args:?}");
             }
         }
     }
