@@ -276,10 +276,8 @@ impl Pmj02BnTables {
     /// The sampler on these tables for a `grid` of their `spp` validated before (by
     /// [`sampler`](Self::sampler)): no checks, for the catalog's owned form.
     pub(crate) fn sampler_of(&self, grid: PixelGrid, seed: u64) -> Pmj02BnPixels<'_> {
-        let (tile_log2, log4) = match tile_log2(self.spp) {
-            Ok(t) => t,
-            Err(_) => (0, 0), // unreachable: `new` checked `spp`
-        };
+        // `new` checked `spp`, so the default is unreachable.
+        let (tile_log2, log4) = tile_log2(self.spp).unwrap_or_default();
         Pmj02BnPixels {
             grid,
             seed,
