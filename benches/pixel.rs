@@ -2,12 +2,13 @@
 //! dimensions a sample, `f32`, random access by (pixel, sample index). One criterion group,
 //! one row per way of producing a pixel's 64 values:
 //!
-//! * `qmckit_zsobol`: [`ZSobol`] (pbrt-v4's blue-noise Sobol'), the pixel prepared once,
-//!   then `get_2d` at dimensions 0 and 2 per sample (two permuted indices, two hashes);
-//! * `qmckit_zsobol_prepared`: the same values through [`ZSobolPixel::dim`], the pixel and
-//!   dimension prepared once (the permuted high digits and the hashes), then
+//! * `qmckit_zsobol_handle`: [`ZSobol`] (pbrt-v4's blue-noise Sobol') the renderer's way:
+//!   `start_pixel_sample(x, y, i)` per sample (the checks and the Morton index), then
+//!   `get_2d_f32` twice (dimensions 0 and 2: two permuted indices, two hashes);
+//! * `qmckit_zsobol_prepared`: the same values through [`ZSobol::pixel_dimension`], the
+//!   pixel and dimension prepared once (the permuted high digits and the hashes), then
 //!   `ceil(log4 spp)` MixBits a sample;
-//! * `qmckit_padded_sobol`: [`PaddedSobol`], `get_2d_f32` at dimensions 0 and 2;
+//! * `qmckit_padded_sobol`: [`PaddedSobol`], the handle, `get_2d_f32` twice;
 //! * `qmckit_owen_sobol_reseed`: `OwenSobol` reseeded per pixel, `fill_f32` of the 16
 //!   indices (per-pixel-seeded Owen-Sobol', the same as `benches/render.rs`);
 //! * `sobol_burley_sample_4d`: `sobol_burley::sample_4d(i, 0, seed)`;
@@ -25,7 +26,7 @@ use std::hint::black_box;
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use qmckit::digital::sobol::OwenSobol;
 use qmckit::hash::mix64;
-use qmckit::pixel::{PaddedSobol, PixelSampler, Randomization, ZSobol, ZSobolPixel, pbrt_f32};
+use qmckit::pixel::{PaddedSobol, PixelSampler, Randomization, ZSobol, pbrt_f32};
 
 const SIDE: u32 = 256;
 const SPP: usize = 16;
@@ -44,17 +45,17 @@ fn pixels(c: &mut Criterion) {
     let padded =
         PaddedSobol::new(SIDE, SIDE, SPP as u32, Randomization::FastOwen, 0).expect("valid");
     let indices: Vec<u32> = (0..SPP as u32).collect();
-    group.bench_function("qmckit_zsobol", |bch| {
+    group.bench_function("qmckit_zsobol_handle", |bch| {
         bch.iter(|| {
             let z = black_box(&z);
             let mut px = [[0f32; D]; SPP];
             for y in 0..SIDE {
                 for x in 0..SIDE {
-                    let p = z.pixel(x, y).expect("in the image");
                     for (i, slot) in px.iter_mut().enumerate() {
-                        let [a, b] = p.get_2d(i as u32, 0);
-                        let [c, d] = p.get_2d(i as u32, 2);
-                        *slot = [pbrt_f32(a), pbrt_f32(b), pbrt_f32(c), pbrt_f32(d)];
+                        let mut s = z.start_pixel_sample(x, y, i as u32).expect("in the image");
+                        let [a, b] = s.get_2d_f32();
+                        let [c, d] = s.get_2d_f32();
+                        *slot = [a, b, c, d];
                     }
                     black_box(&mut px);
                 }
@@ -67,8 +68,8 @@ fn pixels(c: &mut Criterion) {
             let mut px = [[0f32; D]; SPP];
             for y in 0..SIDE {
                 for x in 0..SIDE {
-                    let p: ZSobolPixel<'_> = z.pixel(x, y).expect("in the image");
-                    let (d0, d2) = (p.dim(0), p.dim(2));
+                    let d0 = z.pixel_dimension(x, y, 0).expect("in the image");
+                    let d2 = z.pixel_dimension(x, y, 2).expect("in the image");
                     for (i, slot) in px.iter_mut().enumerate() {
                         let [a, b] = d0.get_2d(i as u32);
                         let [c, d] = d2.get_2d(i as u32);
@@ -86,8 +87,9 @@ fn pixels(c: &mut Criterion) {
             for y in 0..SIDE {
                 for x in 0..SIDE {
                     for (i, slot) in px.iter_mut().enumerate() {
-                        let [a, b] = s.get_2d_f32(x, y, i as u32, 0).expect("in range");
-                        let [c, d] = s.get_2d_f32(x, y, i as u32, 2).expect("in range");
+                        let mut h = s.start_pixel_sample(x, y, i as u32).expect("in range");
+                        let [a, b] = h.get_2d_f32();
+                        let [c, d] = h.get_2d_f32();
                         *slot = [a, b, c, d];
                     }
                     black_box(&mut px);

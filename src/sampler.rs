@@ -1,4 +1,13 @@
 //! The interface every construction shares: random access by `(index, dimension)`.
+//!
+//! One integer type per concept across the library's public API: a point (sample) index is
+//! a `u32` (the digital constructions are 32-bit, and a pixel's sample index is one too), a
+//! dimension is a `usize` (it counts and indexes per-point slices and tables, as `dims()`
+//! and `out[dim]` do, so it needs no casts at the call site; [`crate::pixel`]'s dimension
+//! counter is a `usize` for the same reason, its hashes reading the low 32 bits as pbrt's
+//! `int`), and a seed is a `u64` (the width of the hashes it feeds; below `2^32` the pixel
+//! samplers read it as pbrt's `int` seed, bit-identical). An index into an underlying
+//! sequence that can pass `2^32` (a pixel sampler's global Sobol' index) is a `u64`.
 
 use crate::bits::FromFraction;
 use crate::error::{Error, Result};

@@ -6,7 +6,7 @@ use std::io::{BufWriter, Write};
 
 use clap::{Args, ValueEnum};
 use qmckit::catalog::{self, CatalogError, PixelEntry, PixelParams, RandomizerEntry};
-use qmckit::pixel::pbrt_f32;
+use qmckit::pixel::{PixelSampler, pbrt_f32};
 
 use super::{Failure, names};
 
@@ -23,7 +23,8 @@ its tables and blue-noise shifts); pmj02bn is pbrt's PMJ02BNSampler layout on a 
 max(D, 2), and the pixel position (GetPixel2D, a tile of the table) is not printed.
 
 --randomize (zsobol, sobol, padded-sobol): none, xor (pbrt's PermuteDigits), fast-owen (the
-default), owen. --spp must be a power of two for zsobol. --seed is pbrt's int seed (32 bits).
+default), owen. --spp must be a power of two for zsobol. --seed is a u64; below 2^32 it is
+pbrt's int seed as 32 bits (bit-identical).
 
 Formats: decimal (default): 'index v1 x y', the values v / 2^32 exactly, as the shortest
 decimals that parse back to them (every one is an f64); u32: 'index v1 x y', the values as
@@ -53,15 +54,15 @@ pub struct PixelArgs {
     /// Samples per pixel.
     #[arg(long)]
     pub spp: u32,
-    /// Seed (pbrt's int seed, as 32 bits).
+    /// Seed (below 2^32, pbrt's int seed as 32 bits).
     #[arg(long, default_value_t = 0)]
-    pub seed: u32,
+    pub seed: u64,
     /// The pixel, X,Y (0-based).
     #[arg(long)]
     pub pixel: String,
     /// The dimension counter D.
     #[arg(long, default_value_t = 0)]
-    pub dim: u32,
+    pub dim: usize,
     /// Randomization of the Sobol' samplers [default: fast-owen].
     #[arg(long, value_parser = names::randomizers().only(
         |r| r.kind.pixel().is_some(),
@@ -114,7 +115,7 @@ pub fn run(args: &PixelArgs) -> Result<(), Failure> {
             other => Failure::from(other),
         })?;
     // Checks the pixel once, so an error comes before any output.
-    sampler.get_1d(x, y, 0, args.dim)?;
+    PixelSampler::start_pixel_sample(&sampler, x, y, 0)?;
     let mut out = BufWriter::new(std::io::stdout().lock());
     // The header names the kind, so `qmckit plot` refuses it instead of drawing points.
     writeln!(
@@ -123,12 +124,14 @@ pub fn run(args: &PixelArgs) -> Result<(), Failure> {
         args.sampler.name, args.dim
     )?;
     for i in 0..spp {
-        let index = match sampler.sample_index(x, y, i, args.dim)? {
+        let start = PixelSampler::start_pixel_sample(&sampler, x, y, i)?.with_dimension(args.dim);
+        let index = match start.sample_index() {
             Some(k) => k.to_string(),
             None => "-".to_string(),
         };
-        let v = sampler.get_1d(x, y, i, args.dim)?;
-        let [a, b] = sampler.get_2d(x, y, i, args.dim)?;
+        let (mut one, mut two) = (start, start); // both with the counter at D
+        let v = one.get_1d();
+        let [a, b] = two.get_2d();
         match args.format {
             PixelFormat::Decimal => {
                 use qmckit::bits::to_f64;

@@ -65,7 +65,7 @@ fn check_unit(v: f32, what: &str) {
 }
 
 /// A few requests to a pixel sampler at arbitrary pixels, indices and dimensions.
-fn probe(s: &dyn PixelSampler, u: &mut Unstructured) -> Result<()> {
+fn probe<S: PixelSampler>(s: &S, u: &mut Unstructured) -> Result<()> {
     let grid = s.grid();
     assert!(grid.width >= 1 && grid.height >= 1 && grid.spp >= 1);
     for _ in 0..4 {
@@ -84,34 +84,26 @@ fn probe(s: &dyn PixelSampler, u: &mut Unstructured) -> Result<()> {
         } else {
             u.int_in_range(0..=grid.spp - 1)?
         };
-        let dim: u32 = u.arbitrary()?;
+        let dim: usize = u.arbitrary()?;
         let inside = x < grid.width && y < grid.height && i < grid.spp;
-        let one = s.get_1d_f32(x, y, i, dim);
-        let two = s.get_2d_f32(x, y, i, dim);
-        let pix = s.get_pixel_2d_f32(x, y, i, dim);
-        let _ = s.sample_index(x, y, i, dim);
-        if !inside {
-            assert!(
-                one.is_err() && two.is_err() && pix.is_err(),
-                "({x}, {y}) #{i} outside"
-            );
+        let Ok(h) = s.start_pixel_sample(x, y, i) else {
+            assert!(!inside, "({x}, {y}) #{i} inside but refused");
             continue;
-        }
-        if let Ok(v) = one {
-            check_unit(v, "get_1d");
-        }
-        for v in two.into_iter().chain(pix).flatten() {
+        };
+        assert!(inside, "({x}, {y}) #{i} outside but started");
+        let mut h = h.with_dimension(dim);
+        let _ = h.sample_index();
+        check_unit(h.get_1d_f32(), "get_1d");
+        for v in h.get_2d_f32().into_iter().chain(h.get_pixel_2d_f32()) {
             check_unit(v, "get_2d");
         }
     }
-    let mut out = vec![[0u32; 2]; u.int_in_range(0..=64)?];
-    let _ = s.fill_2d(0, 0, u.arbitrary()?, &mut out);
     Ok(())
 }
 
 fn pixel(u: &mut Unstructured) -> Result<()> {
     let (w, h, spp) = (size(u)?, size(u)?, size(u)?);
-    let seed: u32 = u.arbitrary()?;
+    let seed: u64 = u.arbitrary()?;
     let r = randomization(u)?;
     match u.int_in_range(0u8..=5)? {
         0 => {

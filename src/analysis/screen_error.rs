@@ -145,7 +145,7 @@ const DFT_RATE: Rate = Rate::per_second(2e8);
 /// assert!(ez.low_band < ep.low_band); // ZSobol's error is blue
 /// # Ok::<(), qmckit::Error>(())
 /// ```
-pub fn screen_error<S: PixelSampler + ?Sized>(
+pub fn screen_error<S: PixelSampler>(
     sampler: &S,
     f: PixelIntegrand,
     budget: &Budget,
@@ -169,7 +169,7 @@ pub fn screen_error<S: PixelSampler + ?Sized>(
             let px = (x as f64 + 0.5) / w as f64;
             let mut sum = 0.0;
             for i in 0..g.spp {
-                let [u, v] = sampler.get_pixel_2d_f32(x, y, i, 0)?;
+                let [u, v] = sampler.start_pixel_sample(x, y, i)?.get_pixel_2d_f32();
                 sum += f.eval_at(px, py, u as f64, v as f64);
             }
             error.push(sum / g.spp as f64 - f.exact_at(px, py));

@@ -52,7 +52,12 @@ const HEIGHT: Param = param(
     "1 to 2^30",
 );
 const SPP: Param = param("spp", "samples per pixel", "none: needed", "at least 1");
-const SEED: Param = param("seed", "pbrt's int seed, as 32 bits", "0", "any u32");
+const SEED: Param = param(
+    "seed",
+    "the seed; below 2^32, pbrt's int seed as 32 bits",
+    "0",
+    "any u64",
+);
 const RANDOMIZER: Param = param(
     "randomizer",
     "pbrt's RandomizeStrategy",
@@ -135,7 +140,7 @@ pub static PIXEL_SAMPLERS: &[PixelEntry] = &[
             WIDTH,
             HEIGHT,
             SPP,
-            param("seed", "the seed", "0", "any u32"),
+            param("seed", "the seed", "0", "any u64"),
         ],
         item: "qmckit::pixel::IndependentPixels",
     },
@@ -148,10 +153,9 @@ pub use built::{PixelParams, build_pixel};
 mod built {
     use super::super::{CatalogError, RandomizerEntry};
     use super::{PixelEntry, PixelKind as P};
-    use crate::error::Result;
     use crate::pixel::{
-        ImageSobol, IndependentPixels, PaddedSobol, PixelGrid, PixelSampler, Pmj02BnTables,
-        Pmj02Pixels, Randomization, ZSobol,
+        ImageSobol, IndependentPixels, PaddedSobol, PixelGrid, PixelPoint, PixelSampler,
+        Pmj02BnTables, Pmj02Pixels, Randomization, ZSobol,
     };
     use std::boxed::Box;
 
@@ -164,8 +168,8 @@ mod built {
         pub height: u32,
         /// Samples per pixel.
         pub spp: u32,
-        /// pbrt's int seed, as 32 bits.
-        pub seed: u32,
+        /// The seed (below `2^32`, pbrt's `int` seed as 32 bits).
+        pub seed: u64,
     }
 
     /// The pixel sampler `entry` names for `params`, randomized by `randomizer` (the
@@ -176,7 +180,7 @@ mod built {
     /// use qmckit::catalog::{self, PixelParams};
     /// let p = PixelParams { width: 16, height: 9, spp: 1, seed: 0 };
     /// let z = catalog::build_pixel(catalog::pixel_sampler("zsobol")?, None, &p)?;
-    /// assert_eq!(z.get_1d_f32(1, 0, 0, 0)?, 0.570228934);
+    /// assert_eq!(z.start_pixel_sample(1, 0, 0)?.get_1d_f32(), 0.570228934);
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     ///
@@ -217,11 +221,11 @@ mod built {
             P::ImageSobol => Box::new(ImageSobol::new(w, h, spp, r, seed)?),
             P::PaddedSobol => Box::new(PaddedSobol::new(w, h, spp, r, seed)?),
             P::Pmj02 => Box::new(Pmj02Pixels::new(w, h, spp, seed)?),
-            P::Independent => Box::new(IndependentPixels::new(w, h, spp, seed as u64)?),
+            P::Independent => Box::new(IndependentPixels::new(w, h, spp, seed)?),
             P::Pmj02bn => {
                 // Validates the image before the table is built.
                 PixelGrid::new(w, h, spp, false)?;
-                let tables = Pmj02BnTables::new(spp, seed as u64)?;
+                let tables = Pmj02BnTables::new(spp, seed)?;
                 let grid = tables.sampler(w, h, seed)?.grid();
                 Box::new(OwnedPmj02Bn { tables, grid, seed })
             }
@@ -232,17 +236,13 @@ mod built {
     struct OwnedPmj02Bn {
         tables: Pmj02BnTables,
         grid: PixelGrid,
-        seed: u32,
+        seed: u64,
     }
 
     impl OwnedPmj02Bn {
-        /// The borrowing sampler (validated when built: cheap).
-        fn on<T>(
-            &self,
-            f: impl FnOnce(&crate::pixel::Pmj02BnPixels<'_>) -> Result<T>,
-        ) -> Result<T> {
-            let g = self.grid;
-            f(&self.tables.sampler(g.width, g.height, self.seed)?)
+        /// The borrowing sampler (validated when built: no checks).
+        fn on(&self) -> crate::pixel::Pmj02BnPixels<'_> {
+            self.tables.sampler_of(self.grid, self.seed)
         }
     }
 
@@ -251,29 +251,32 @@ mod built {
             self.grid
         }
 
-        fn sample_index(&self, x: u32, y: u32, index: u32, dim: u32) -> Result<Option<u64>> {
-            self.on(|s| s.sample_index(x, y, index, dim))
+        fn pixel_key(&self, x: u32, y: u32, index: u32) -> u64 {
+            self.on().pixel_key(x, y, index)
         }
 
-        fn get_1d(&self, x: u32, y: u32, index: u32, dim: u32) -> Result<u32> {
-            self.on(|s| s.get_1d(x, y, index, dim))
+        fn sample_index(&self, at: &PixelPoint, dim: usize) -> Option<u64> {
+            self.on().sample_index(at, dim)
         }
 
-        fn get_2d(&self, x: u32, y: u32, index: u32, dim: u32) -> Result<[u32; 2]> {
-            self.on(|s| s.get_2d(x, y, index, dim))
+        fn counter_dimension(&self, dim: usize, width: usize) -> usize {
+            self.on().counter_dimension(dim, width)
         }
 
-        fn get_pixel_2d(&self, x: u32, y: u32, index: u32, dim: u32) -> Result<[u32; 2]> {
-            self.on(|s| s.get_pixel_2d(x, y, index, dim))
+        fn value_1d(&self, at: &PixelPoint, dim: usize) -> u32 {
+            self.on().value_1d(at, dim)
         }
 
-        fn counter_dimension(&self, dim: u32, width: u32) -> u32 {
-            self.on(|s| Ok(s.counter_dimension(dim, width)))
-                .unwrap_or(dim)
+        fn value_2d(&self, at: &PixelPoint, dim: usize) -> [u32; 2] {
+            self.on().value_2d(at, dim)
+        }
+
+        fn value_pixel_2d(&self, at: &PixelPoint, dim: usize) -> [u32; 2] {
+            self.on().value_pixel_2d(at, dim)
         }
 
         fn pixel_2d_moves_counter(&self) -> bool {
-            self.on(|s| Ok(s.pixel_2d_moves_counter())).unwrap_or(false)
+            self.on().pixel_2d_moves_counter()
         }
     }
 }

@@ -3,15 +3,15 @@
 //! quasi-Monte Carlo point sequences in elementary intervals").
 
 use super::{
-    F32_ONE_MINUS_EPSILON, PixelGrid, PixelSampler, Randomization, pbrt_f32, sobol0, sobol1,
+    F32_ONE_MINUS_EPSILON, PixelGrid, PixelPoint, PixelSampler, Randomization, pbrt_f32,
+    seed_hash2, sobol0, sobol1,
 };
 use crate::digital::sobol::SobolDimension;
 use crate::error::{Error, Result};
-use crate::hash::pbrt::hash2;
 
 /// pbrt-v4's number of Sobol' dimensions (`NSobolDimensions`): its `SobolSampler` wraps
 /// the dimension counter to 2 there.
-pub const PBRT_SOBOL_DIMS: u32 = 1024;
+pub const PBRT_SOBOL_DIMS: usize = 1024;
 
 /// Where this build's [`ImageSobol`] wraps the dimension counter to 2: pbrt's rule applied to
 /// the Sobol' table compiled in, `min(`[`SOBOL_MAX_DIMS`](crate::digital::sobol::SOBOL_MAX_DIMS)`,
@@ -20,10 +20,10 @@ pub const PBRT_SOBOL_DIMS: u32 = 1024;
 /// then bit-identical to pbrt. The default table holds 64 dimensions, so a default build
 /// matches pbrt below dimension 64 and from there reads dimensions 2, 3, ... again where
 /// pbrt reads its dimensions 64 to 1023.
-pub const IMAGE_SOBOL_DIMS: u32 = {
+pub const IMAGE_SOBOL_DIMS: usize = {
     let compiled = crate::digital::sobol::SOBOL_MAX_DIMS;
-    if compiled < PBRT_SOBOL_DIMS as usize {
-        compiled as u32
+    if compiled < PBRT_SOBOL_DIMS {
+        compiled
     } else {
         PBRT_SOBOL_DIMS
     }
@@ -40,18 +40,19 @@ pub const IMAGE_SOBOL_DIMS: u32 = {
 /// Sobol' dimension 2 (a counter below 2 reads as 2), scrambled with `low32(Hash(d, seed))`.
 /// Past the Sobol' table the sampler pads as pbrt's `Get1D`/`Get2D` do: a request whose
 /// dimension `d` (or `d + 1` for a pair) reaches [`IMAGE_SOBOL_DIMS`] reads dimension 2
-/// (and [`PixelStream`](super::PixelStream) counts on from there), so every counter value
+/// (and [`PixelSample`](super::PixelSample) counts on from there), so every counter value
 /// is answered; see [`IMAGE_SOBOL_DIMS`] for what that means for bit-exactness. Needs
 /// `spp 2^2m <= 2^32` (32-bit Sobol' indices; pbrt allows 52 bits).
-/// Cost: setup `O(m^2)`; per sample `O(m + log2 spp)` XORs for the index, then one Sobol'
-/// value (32 AND/XOR) and the scramble.
+/// Cost: setup `O(m^2)`; per [`start_pixel_sample`](PixelSampler::start_pixel_sample)
+/// `O(m + log2 spp)` XORs for the index (pbrt's `SobolIntervalToIndex`, once); per value one
+/// Sobol' value (32 AND/XOR), one MurmurHash and the scramble.
 ///
 /// ```
 /// use qmckit::pixel::{ImageSobol, PixelSampler, Randomization};
 /// let s = ImageSobol::new(16, 9, 4, Randomization::FastOwen, 0)?;
-/// let index = s.sample_index(3, 5, 2, 0)?.unwrap_or(0);
-/// assert_eq!(index >> 8, 2); // frame 2 of 256 indices
-/// let [u, v] = s.get_pixel_2d_f32(3, 5, 2, 0)?;
+/// let mut p = s.start_pixel_sample(3, 5, 2)?;
+/// assert_eq!(p.sample_index().unwrap_or(0) >> 8, 2); // frame 2 of 256 indices
+/// let [u, v] = p.get_pixel_2d_f32();
 /// assert!((0.0..1.0).contains(&u) && (0.0..1.0).contains(&v));
 /// # Ok::<(), qmckit::Error>(())
 /// ```
@@ -60,7 +61,7 @@ pub const IMAGE_SOBOL_DIMS: u32 = {
 pub struct ImageSobol {
     grid: PixelGrid,
     randomize: Randomization,
-    seed: u32,
+    seed: u64,
     m: u32,
     /// `f(2^(2m + c))`: what frame bit `c` adds to the pixel code.
     frame_cols: [u32; 32],
@@ -79,7 +80,8 @@ fn code(m: u32, i: u64) -> u32 {
 
 impl ImageSobol {
     /// The sampler of a `width x height` image with `spp` samples a pixel (any count; pbrt
-    /// advises a power of two). `seed` is pbrt's `int` seed, as its 32 bits.
+    /// advises a power of two). Below `2^32` the `seed` is pbrt's `int` seed as its 32 bits
+    /// (bit-identical); a larger seed is hashed with all its 64 bits.
     ///
     /// # Errors
     /// As [`PixelGrid::new`]; [`Error::TooLarge`] when `spp 2^2m` passes `2^32`.
@@ -88,7 +90,7 @@ impl ImageSobol {
         height: u32,
         spp: u32,
         randomize: Randomization,
-        seed: u32,
+        seed: u64,
     ) -> Result<Self> {
         let grid = PixelGrid::new(width, height, spp, false)?;
         let m = grid.pow2_side().trailing_zeros();
@@ -179,19 +181,17 @@ impl ImageSobol {
         ((frame as u64) << (2 * m)) | low as u64
     }
 
-    /// Sobol' dimension `d` (>= 2) of `index`, scrambled with `low32(Hash(d, seed))`.
-    fn dimension(&self, index: u64, d: u32) -> Result<u32> {
-        let v = SobolDimension::new(d as usize)?.sample(index as u32);
-        Ok(match self.randomize {
+    /// Sobol' dimension `d` of `index` (`2 <= d <` [`IMAGE_SOBOL_DIMS`], so in the table),
+    /// scrambled with `low32(Hash(d, seed))`.
+    fn dimension(&self, index: u64, d: usize) -> u32 {
+        let v = match SobolDimension::new(d) {
+            Ok(s) => s.sample(index as u32),
+            Err(_) => 0, // unreachable: `counter_dimension` keeps `d` in the table
+        };
+        match self.randomize {
             Randomization::None => v,
-            r => r.apply(v, hash2(d, self.seed) as u32),
-        })
-    }
-
-    /// The checked index of a sample.
-    fn index(&self, x: u32, y: u32, index: u32) -> Result<u64> {
-        self.grid.check(x, y, index)?;
-        Ok(self.interval_to_index(index, x, y))
+            r => r.apply(v, seed_hash2(d as u32, self.seed) as u32),
+        }
     }
 }
 
@@ -200,13 +200,18 @@ impl PixelSampler for ImageSobol {
         self.grid
     }
 
-    fn sample_index(&self, x: u32, y: u32, index: u32, _dim: u32) -> Result<Option<u64>> {
-        Ok(Some(self.index(x, y, index)?))
+    /// The Sobol' index of the sample, `SobolIntervalToIndex(m, index, (x, y))`.
+    fn pixel_key(&self, x: u32, y: u32, index: u32) -> u64 {
+        self.interval_to_index(index, x, y)
+    }
+
+    fn sample_index(&self, at: &PixelPoint, _dim: usize) -> Option<u64> {
+        Some(at.key())
     }
 
     /// pbrt's counter rule: `max(dim, 2)`, and 2 when the request's last dimension,
     /// `dim + width - 1`, reaches [`IMAGE_SOBOL_DIMS`].
-    fn counter_dimension(&self, dim: u32, width: u32) -> u32 {
+    fn counter_dimension(&self, dim: usize, width: usize) -> usize {
         let d = dim.max(2);
         if d.saturating_add(width.saturating_sub(1)) >= IMAGE_SOBOL_DIMS {
             2
@@ -215,38 +220,38 @@ impl PixelSampler for ImageSobol {
         }
     }
 
-    fn get_1d(&self, x: u32, y: u32, index: u32, dim: u32) -> Result<u32> {
-        let i = self.index(x, y, index)?;
-        self.dimension(i, self.counter_dimension(dim, 1))
+    fn value_1d(&self, at: &PixelPoint, dim: usize) -> u32 {
+        self.dimension(at.key(), self.counter_dimension(dim, 1))
     }
 
-    fn get_2d(&self, x: u32, y: u32, index: u32, dim: u32) -> Result<[u32; 2]> {
-        let i = self.index(x, y, index)?;
+    fn value_2d(&self, at: &PixelPoint, dim: usize) -> [u32; 2] {
         let d = self.counter_dimension(dim, 2); // d + 1 < IMAGE_SOBOL_DIMS
-        Ok([self.dimension(i, d)?, self.dimension(i, d + 1)?])
+        [
+            self.dimension(at.key(), d),
+            self.dimension(at.key(), d.wrapping_add(1)),
+        ]
     }
 
     /// The unscrambled point of dimensions (0, 1) in pixel coordinates as a 0.32 fraction:
     /// `frac(2^m u)`, the bits below the pixel's.
-    fn get_pixel_2d(&self, x: u32, y: u32, index: u32, _dim: u32) -> Result<[u32; 2]> {
-        let i = self.index(x, y, index)?;
-        let m = self.m;
-        Ok([sobol0(i) << m, sobol1(i) << m]) // m <= 16
-    }
-
-    fn pixel_2d_moves_counter(&self) -> bool {
-        false
+    fn value_pixel_2d(&self, at: &PixelPoint, _dim: usize) -> [u32; 2] {
+        let (i, m) = (at.key(), self.m);
+        [sobol0(i) << m, sobol1(i) << m] // m <= 16
     }
 
     /// pbrt's floats: `clamp(float(u) 2^m - p, 0, 1 - 2^-24)` with `float(u)` from
     /// [`pbrt_f32`] (so it can differ from the fraction's conversion in the last bits).
-    fn get_pixel_2d_f32(&self, x: u32, y: u32, index: u32, _dim: u32) -> Result<[f32; 2]> {
-        let i = self.index(x, y, index)?;
+    fn value_pixel_2d_f32(&self, at: &PixelPoint, _dim: usize) -> [f32; 2] {
+        let i = at.key();
         let scale = (1u64 << self.m) as f32;
         let f = |u: u32, p: u32| {
             let t = pbrt_f32(u) * scale - p as f32;
             t.clamp(0.0, F32_ONE_MINUS_EPSILON)
         };
-        Ok([f(sobol0(i), x), f(sobol1(i), y)])
+        [f(sobol0(i), at.x()), f(sobol1(i), at.y())]
+    }
+
+    fn pixel_2d_moves_counter(&self) -> bool {
+        false
     }
 }

@@ -1,6 +1,6 @@
 //! Independent uniform values per pixel: the white-noise baseline of the pixel samplers.
 
-use super::{PixelGrid, PixelSampler};
+use super::{PixelGrid, PixelPoint, PixelSampler};
 use crate::error::Result;
 use crate::hash::{hash3, mix64};
 
@@ -8,13 +8,16 @@ use crate::hash::{hash3, mix64};
 /// `hash3(seed_pixel, index, 2 dim + k)` ([`crate::hash::hash3`], splitmix64 finalizers) with
 /// `seed_pixel = mix64(seed ^ (x << 32 | y))` and `k = 0, 1` for the two coordinates of a 2D
 /// value (a 1D value is `k = 0`). Not pbrt's `IndependentSampler` (which steps a PCG32
-/// stream); the same statistics: independent, uniform, no stratification. `O(1)` a value.
+/// stream); the same statistics: independent, uniform, no stratification. Any dimension
+/// (`2 dim + k` wraps in `u64`). `seed_pixel` once per start; one `hash3` a value.
 ///
 /// ```
 /// use qmckit::pixel::{IndependentPixels, PixelSampler};
 /// let s = IndependentPixels::new(4, 4, 8, 1)?;
-/// assert_ne!(s.get_1d(0, 0, 0, 0)?, s.get_1d(1, 0, 0, 0)?);
-/// assert_eq!(s.get_1d(2, 3, 5, 7)?, s.get_2d(2, 3, 5, 7)?[0]);
+/// assert_ne!(s.start_pixel_sample(0, 0, 0)?.get_1d(), s.start_pixel_sample(1, 0, 0)?.get_1d());
+/// let mut one = s.start_pixel_sample(2, 3, 5)?.with_dimension(7);
+/// let mut two = one; // a handle is `Copy`: the same sample, the same counter
+/// assert_eq!(one.get_1d(), two.get_2d()[0]);
 /// # Ok::<(), qmckit::Error>(())
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -36,10 +39,10 @@ impl IndependentPixels {
         }
     }
 
+    /// Coordinate `coord` of the sample at `at`.
     #[inline]
-    const fn value(&self, x: u32, y: u32, index: u32, coord: u64) -> u32 {
-        let pixel = mix64(self.seed ^ (((x as u64) << 32) | y as u64));
-        (hash3(pixel, index as u64, coord) >> 32) as u32
+    const fn value(at: &PixelPoint, coord: u64) -> u32 {
+        (hash3(at.key(), at.index() as u64, coord) >> 32) as u32
     }
 }
 
@@ -48,14 +51,17 @@ impl PixelSampler for IndependentPixels {
         self.grid
     }
 
-    fn get_1d(&self, x: u32, y: u32, index: u32, dim: u32) -> Result<u32> {
-        self.grid.check(x, y, index)?;
-        Ok(self.value(x, y, index, 2 * dim as u64))
+    /// `seed_pixel = mix64(seed ^ (x << 32 | y))`.
+    fn pixel_key(&self, x: u32, y: u32, _index: u32) -> u64 {
+        mix64(self.seed ^ (((x as u64) << 32) | y as u64))
     }
 
-    fn get_2d(&self, x: u32, y: u32, index: u32, dim: u32) -> Result<[u32; 2]> {
-        self.grid.check(x, y, index)?;
-        let c = 2 * dim as u64;
-        Ok([self.value(x, y, index, c), self.value(x, y, index, c + 1)])
+    fn value_1d(&self, at: &PixelPoint, dim: usize) -> u32 {
+        Self::value(at, (dim as u64).wrapping_mul(2))
+    }
+
+    fn value_2d(&self, at: &PixelPoint, dim: usize) -> [u32; 2] {
+        let c = (dim as u64).wrapping_mul(2);
+        [Self::value(at, c), Self::value(at, c.wrapping_add(1))]
     }
 }

@@ -1,35 +1,67 @@
 //! Pixel samplers: the sample values a renderer asks for, as pure functions of
 //! `(pixel x, y; sample index; dimension)` and a seed, bit-identical to pbrt-v4's samplers.
 //!
-//! A renderer consumes dimensions in order: for pixel `(x, y)` and sample `i` it asks for a
-//! 2D value (the position in the pixel), then 1D and 2D values (lens, time, light, BSDF...).
-//! pbrt-v4's samplers keep a dimension counter: `Get1D` returns the value at the current
-//! dimension `d` and moves it to `d + 1`; `Get2D` returns a pair and moves it to `d + 2`.
-//! [`PixelSampler::get_1d`]`(x, y, i, d)` and [`PixelSampler::get_2d`]`(x, y, i, d)` are
-//! those two calls made with the counter at `d`: random access, no state. [`PixelStream`]
-//! is the counter, for code written the pbrt way. A 2D request does not realign the counter
-//! (a 1D request then a 2D one asks for the pair at dimension 1), and the samplers built on
-//! Sobol' dimensions (0, 1) "pad": every request, 1D or 2D, reuses those two dimensions
-//! under a fresh scramble, so any number of dimensions is available.
+//! Validate at the boundary, infallible inside: [`PixelSampler::start_pixel_sample`]`(x, y,
+//! i)` is pbrt's `StartPixelSample(p, i)`. It checks the pixel and the index once (the only
+//! [`Result`] on the way), does the sampler's per-pixel work once (ZSobol's Morton index,
+//! the image-plane Sobol' index, the pixel hash) and returns a [`PixelSample`] handle whose
+//! draws cannot fail: [`get_pixel_2d`](PixelSample::get_pixel_2d) (the position in the
+//! pixel), [`get_1d`](PixelSample::get_1d), [`get_2d`](PixelSample::get_2d) and their `_f32`
+//! forms. The handle keeps pbrt's dimension counter `d`: `get_1d` returns the value at `d`
+//! and moves it to `d + 1`, `get_2d` the pair at `d` and moves it to `d + 2` (a 2D request is
+//! not aligned: a 1D request then a 2D one reads the pair at dimension 1);
+//! [`with_dimension`](PixelSample::with_dimension) sets it (pbrt's `StartPixelSample(p, i,
+//! dim)`). Every dimension is answered, as in pbrt: the samplers built on Sobol' dimensions
+//! (0, 1) "pad" (every request reuses those two dimensions under a fresh hash of `d`, whose
+//! low 32 bits are pbrt's `int` dimension), [`ImageSobol`] wraps to dimension 2 at the end of
+//! its table, [`Pmj02BnPixels`] and [`Pmj02Pixels`] hash `d` into a permutation.
 //!
-//! | sampler | what it is | global index |
-//! |---|---|---|
-//! | [`ZSobol`] | Ahmed & Wonka 2020 blue-noise Sobol': Morton-ordered pixels, hashed base-4 digit permutations | yes (`u64`) |
-//! | [`ImageSobol`] | pbrt's `SobolSampler`: one Sobol' sequence over the image plane (Grünschloss et al. 2012) | yes |
-//! | [`PaddedSobol`] | per pixel and dimension: hashed index permutation and scramble of Sobol' (0, 1) | no |
-//! | [`Pmj02Pixels`] | a seeded PMJ02 sequence per pixel and dimension, index permuted (the layout of pbrt's `PMJ02BNSampler`, generated) | no |
-//! | [`Pmj02BnPixels`] | pbrt's `PMJ02BNSampler` layout: one PMJ02BN table bucketed into a pixel tile, permuted blocks plus blue-noise shifts for the other dimensions | no |
-//! | [`IndependentPixels`] | independent uniform values from a hash of `(seed, pixel, index, dimension)` | no |
+//! Types: pixel coordinates and the per-pixel sample index are `u32` (the index is the point
+//! index, `< spp`), dimensions are `usize` (as [`crate::Sampler`]'s), seeds `u64` (below
+//! `2^32` a seed is pbrt's `int` seed as its 32 bits, bit-identical; above, all 64 bits are
+//! hashed), values 0.32 fractions (`u32`); the global index into an underlying sequence
+//! ([`PixelSample::sample_index`]) is a `u64`, as it can pass `2^32`.
 //!
-//! Values are 0.32 fractions (`u32`); [`pbrt_f32`] converts them as pbrt does
-//! (`min(float(v) * 2^-32, 1 - 2^-24)`), and the `*_f32` methods return pbrt's floats.
+//! | sampler | what it is | global index | per start | per value |
+//! |---|---|---|---|---|
+//! | [`ZSobol`] | Ahmed & Wonka 2020 blue-noise Sobol': Morton-ordered pixels, hashed base-4 digit permutations | yes (`u64`) | Morton index | `log4(side^2 spp)` MixBits, one MurmurHash, the scramble |
+//! | [`ImageSobol`] | pbrt's `SobolSampler`: one Sobol' sequence over the image plane (Grünschloss et al. 2012) | yes | the Sobol' index, `O(m + log2 spp)` XORs | one Sobol' value, one MurmurHash, the scramble |
+//! | [`PaddedSobol`] | per pixel and dimension: hashed index permutation and scramble of Sobol' (0, 1) | no | nothing | one MurmurHash, one permutation, the scramble |
+//! | [`Pmj02Pixels`] | a seeded PMJ02 sequence per pixel and dimension, index permuted (the layout of pbrt's `PMJ02BNSampler`, generated) | no | nothing | one MurmurHash, one permutation, `2 log2 spp` hashes |
+//! | [`Pmj02BnPixels`] | pbrt's `PMJ02BNSampler` layout: one PMJ02BN table bucketed into a pixel tile, permuted blocks plus blue-noise shifts for the other dimensions | no | the tile entry | one MurmurHash, one permutation, two mask reads |
+//! | [`IndependentPixels`] | independent uniform values from a hash of `(seed, pixel, index, dimension)` | no | the pixel hash | one `hash3` |
+//!
+//! [`pbrt_f32`] converts a 0.32 fraction as pbrt does (`min(float(v) * 2^-32, 1 - 2^-24)`);
+//! the `*_f32` draws return pbrt's floats. For ZSobol, [`ZSobol::pixel_dimension`] is the
+//! batch path of one pixel and one dimension over all its samples (the digits above the
+//! sample's and both scramble keys computed once; bit-identical).
+//!
+//! A renderer's loop: for each pixel, for each sample, start, then draw.
 //!
 //! ```
 //! use qmckit::pixel::{PixelSampler, Randomization, ZSobol};
-//! let z = ZSobol::new(16, 9, 1, Randomization::FastOwen, 0)?;
-//! assert_eq!(z.sample_index(1, 0, 0, 0)?, Some(1));
-//! assert_eq!(z.get_1d_f32(1, 0, 0, 0)?, 0.570228934);
-//! assert_eq!(z.get_2d_f32(1, 0, 0, 0)?, [0.702183783, 0.853890479]);
+//! let (w, h, spp) = (16, 9, 4);
+//! let z = ZSobol::new(w, h, spp, Randomization::FastOwen, 0)?;
+//! let mut image = vec![0f32; (w * h) as usize];
+//! for y in 0..h {
+//!     for x in 0..w {
+//!         for i in 0..spp {
+//!             let mut s = z.start_pixel_sample(x, y, i)?; // the one check
+//!             let [fx, fy] = s.get_pixel_2d_f32(); // dimensions 0, 1: film
+//!             let [lu, lv] = s.get_2d_f32(); // 2, 3: lens
+//!             let t = s.get_1d_f32(); // 4: time
+//!             image[(y * w + x) as usize] += (fx + fy + lu + lv + t) / spp as f32;
+//!         }
+//!     }
+//! }
+//! // pbrt-v4's check values: pixel (1, 0), one sample a pixel, seed 0.
+//! let z1 = ZSobol::new(16, 9, 1, Randomization::FastOwen, 0)?;
+//! let mut s = z1.start_pixel_sample(1, 0, 0)?;
+//! assert_eq!(s.sample_index(), Some(1));
+//! assert_eq!(s.get_1d_f32(), 0.570228934);
+//! let mut s = z1.start_pixel_sample(1, 0, 0)?;
+//! assert_eq!(s.get_2d_f32(), [0.702183783, 0.853890479]);
+//! assert!(z1.start_pixel_sample(16, 0, 0).is_err()); // outside the image
 //! # Ok::<(), qmckit::Error>(())
 //! ```
 
@@ -47,7 +79,7 @@ pub use pmj_pixels::Pmj02Pixels;
 pub use pmj02bn::Pmj02BnPixels;
 #[cfg(feature = "std")]
 pub use pmj02bn::Pmj02BnTables;
-pub use zsobol::{ZSobol, ZSobolPixel, ZSobolPixelDim};
+pub use zsobol::{ZSobol, ZSobolPixelDim};
 
 use crate::bits::reverse_bits;
 use crate::error::{Error, Result};
@@ -210,230 +242,334 @@ impl PixelGrid {
     }
 }
 
-/// The interface of the pixel samplers: pbrt-v4's `Get1D`/`Get2D`/`GetPixel2D` with the
-/// dimension counter at `dim`, as pure functions (see the [module documentation](self)).
-/// Every method validates its pixel and index and returns an [`Error`] instead of panicking.
+/// A pixel sample validated by [`PixelSampler::start_pixel_sample`]: the pixel, the sample
+/// index and the sampler's per-pixel precomputation (`key`: ZSobol's Morton index, the
+/// image-plane Sobol' index, the independent sampler's pixel hash, a PMJ02BN tile entry).
+/// Only a start makes one, so a [`PixelSampler`]'s draws given a `PixelPoint` need no checks.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct PixelPoint {
+    x: u32,
+    y: u32,
+    index: u32,
+    key: u64,
+}
+
+impl PixelPoint {
+    /// The pixel's column.
+    pub const fn x(&self) -> u32 {
+        self.x
+    }
+
+    /// The pixel's row.
+    pub const fn y(&self) -> u32 {
+        self.y
+    }
+
+    /// The sample index in the pixel, `< spp`.
+    pub const fn index(&self) -> u32 {
+        self.index
+    }
+
+    /// What the sampler's [`pixel_key`](PixelSampler::pixel_key) computed for this sample.
+    pub const fn key(&self) -> u64 {
+        self.key
+    }
+}
+
+/// The interface a pixel sampler implements: its grid, its per-pixel precomputation and its
+/// draws at a validated [`PixelPoint`]. Renderers use it through the handle
+/// [`PixelSample`], made by [`start_pixel_sample`](Self::start_pixel_sample) (see the
+/// [module documentation](self)): the only place where anything is checked. The draw
+/// methods take a dimension `dim: usize` (the type of [`crate::Sampler`]'s dimensions)
+/// and are total: every dimension is answered (see [`counter_dimension`](Self::counter_dimension)).
 pub trait PixelSampler {
     /// The image and sample count.
     fn grid(&self) -> PixelGrid;
 
-    /// The global index of sample `index` of pixel `(x, y)` at dimension `dim`, where the
-    /// sampler has one (the index into the underlying sequence), else `None`.
-    ///
-    /// # Errors
-    /// As [`PixelGrid::check`].
-    /// The default is `None` after the range check: samplers without a global sequence
-    /// (independent, PMJ02 tables) keep it.
-    fn sample_index(&self, x: u32, y: u32, index: u32, dim: u32) -> Result<Option<u64>> {
-        let _ = dim;
-        self.grid().check(x, y, index)?;
-        Ok(None)
+    /// The per-pixel (and per-sample) precomputation, stored in the [`PixelPoint`]; called
+    /// once by [`start_pixel_sample`](Self::start_pixel_sample) after the checks, so
+    /// `x < width`, `y < height`, `index < spp`. The default is 0 (nothing to keep).
+    fn pixel_key(&self, x: u32, y: u32, index: u32) -> u64 {
+        let _ = (x, y, index);
+        0
     }
 
-    /// The 1D value (0.32 fraction) of sample `index` of pixel `(x, y)` with the dimension
-    /// counter at `dim` (pbrt's `Get1D`, which then moves the counter to `dim + 1`).
-    ///
-    /// # Errors
-    /// As [`PixelGrid::check`]; [`Error::DimensionOutOfRange`] where dimensions are finite.
-    fn get_1d(&self, x: u32, y: u32, index: u32, dim: u32) -> Result<u32>;
-
-    /// The 2D value with the counter at `dim` (pbrt's `Get2D`, then `dim + 2`).
-    ///
-    /// # Errors
-    /// As [`get_1d`](Self::get_1d).
-    fn get_2d(&self, x: u32, y: u32, index: u32, dim: u32) -> Result<[u32; 2]>;
-
-    /// The position in the pixel, `[0, 1)^2` (pbrt's `GetPixel2D`, with the counter at
-    /// `dim`); the same as [`get_2d`](Self::get_2d) except for [`ImageSobol`].
-    ///
-    /// # Errors
-    /// As [`get_1d`](Self::get_1d).
-    fn get_pixel_2d(&self, x: u32, y: u32, index: u32, dim: u32) -> Result<[u32; 2]> {
-        self.get_2d(x, y, index, dim)
+    /// The global index of the sample at dimension `dim`, where the sampler has one (the
+    /// index into the underlying sequence, which can pass `u32`), else `None` (the default).
+    fn sample_index(&self, at: &PixelPoint, dim: usize) -> Option<u64> {
+        let _ = (at, dim);
+        None
     }
 
     /// The dimension a request of `width` values (1 for `Get1D`, 2 for `Get2D`) reads with
-    /// the counter at `dim`; [`PixelStream`] moves its counter on from there, as pbrt's
-    /// samplers do. `dim` itself, except for [`ImageSobol`], which reads a counter below 2
-    /// as 2 and wraps to 2 at the end of its Sobol' table ([`IMAGE_SOBOL_DIMS`]). The
-    /// samplers built on Sobol' dimensions (0, 1) ([`ZSobol`], [`PaddedSobol`]) need no
-    /// wrap: as in pbrt, their counter only feeds hashes, so every `u32` is a dimension.
-    fn counter_dimension(&self, dim: u32, width: u32) -> u32 {
+    /// the counter at `dim`; [`PixelSample`] moves its counter on from there, as pbrt's
+    /// samplers do. `dim` itself (the default) for the samplers whose dimension only feeds
+    /// hashes ([`ZSobol`], [`PaddedSobol`], [`Pmj02Pixels`], [`IndependentPixels`]): every
+    /// dimension is valid, the hashes read its low 32 bits (pbrt's `int`). [`ImageSobol`]
+    /// reads a counter below 2 as 2 and wraps to 2 at the end of its Sobol' table
+    /// ([`IMAGE_SOBOL_DIMS`]); [`Pmj02BnPixels`] reads a counter below 2 as 2 (pbrt's
+    /// `max(2, dim)` in `StartPixelSample`).
+    fn counter_dimension(&self, dim: usize, width: usize) -> usize {
         let _ = width;
         dim
     }
 
+    /// The 1D value (0.32 fraction) at dimension `dim` (already through
+    /// [`counter_dimension`](Self::counter_dimension)): pbrt's `Get1D`.
+    fn value_1d(&self, at: &PixelPoint, dim: usize) -> u32;
+
+    /// The 2D value at dimension `dim` (through `counter_dimension`): pbrt's `Get2D`.
+    fn value_2d(&self, at: &PixelPoint, dim: usize) -> [u32; 2];
+
+    /// The position in the pixel, `[0, 1)^2`, with the counter at `dim` (pbrt's
+    /// `GetPixel2D`); the default is [`value_2d`](Self::value_2d).
+    fn value_pixel_2d(&self, at: &PixelPoint, dim: usize) -> [u32; 2] {
+        self.value_2d(at, dim)
+    }
+
+    /// [`value_pixel_2d`](Self::value_pixel_2d) as pbrt's `f32`s; the default converts
+    /// with [`pbrt_f32`].
+    fn value_pixel_2d_f32(&self, at: &PixelPoint, dim: usize) -> [f32; 2] {
+        self.value_pixel_2d(at, dim).map(pbrt_f32)
+    }
+
     /// Whether pbrt's `GetPixel2D` moves the dimension counter (by 2): true except for
-    /// [`ImageSobol`], whose pixel position uses Sobol' dimensions 0 and 1 outside the counter.
+    /// [`ImageSobol`] and [`Pmj02BnPixels`], whose pixel positions are outside the counter.
     fn pixel_2d_moves_counter(&self) -> bool {
         true
     }
 
-    /// [`get_1d`](Self::get_1d) as pbrt's `f32` ([`pbrt_f32`]).
+    /// pbrt's `StartPixelSample(p, index)`: checks `(x, y)` and `index` once, does the
+    /// per-pixel precomputation, and returns the handle whose draws cannot fail, with the
+    /// dimension counter at 0 ([`PixelSample::with_dimension`] sets it).
     ///
-    /// # Errors
-    /// As [`get_1d`](Self::get_1d).
-    fn get_1d_f32(&self, x: u32, y: u32, index: u32, dim: u32) -> Result<f32> {
-        Ok(pbrt_f32(self.get_1d(x, y, index, dim)?))
-    }
-
-    /// [`get_2d`](Self::get_2d) as pbrt's `f32`s.
-    ///
-    /// # Errors
-    /// As [`get_1d`](Self::get_1d).
-    fn get_2d_f32(&self, x: u32, y: u32, index: u32, dim: u32) -> Result<[f32; 2]> {
-        let [a, b] = self.get_2d(x, y, index, dim)?;
-        Ok([pbrt_f32(a), pbrt_f32(b)])
-    }
-
-    /// [`get_pixel_2d`](Self::get_pixel_2d) as pbrt's `f32`s.
-    ///
-    /// # Errors
-    /// As [`get_1d`](Self::get_1d).
-    fn get_pixel_2d_f32(&self, x: u32, y: u32, index: u32, dim: u32) -> Result<[f32; 2]> {
-        let [a, b] = self.get_pixel_2d(x, y, index, dim)?;
-        Ok([pbrt_f32(a), pbrt_f32(b)])
-    }
-
-    /// The 1D values at `dim` of samples `0, 1, ...` of pixel `(x, y)` into `out`
-    /// (`out.len() <= spp`).
-    ///
-    /// # Errors
-    /// [`Error::BufferLength`] if `out` is longer than `spp`; as [`get_1d`](Self::get_1d).
-    fn fill_1d(&self, x: u32, y: u32, dim: u32, out: &mut [u32]) -> Result<()> {
-        check_len(self.grid(), out.len())?;
-        for (i, slot) in out.iter_mut().enumerate() {
-            *slot = self.get_1d(x, y, i as u32, dim)?;
-        }
-        Ok(())
-    }
-
-    /// The 2D values at `dim` of samples `0, 1, ...` of pixel `(x, y)` into `out`.
-    ///
-    /// # Errors
-    /// As [`fill_1d`](Self::fill_1d).
-    fn fill_2d(&self, x: u32, y: u32, dim: u32, out: &mut [[u32; 2]]) -> Result<()> {
-        check_len(self.grid(), out.len())?;
-        for (i, slot) in out.iter_mut().enumerate() {
-            *slot = self.get_2d(x, y, i as u32, dim)?;
-        }
-        Ok(())
-    }
-
-    /// [`fill_2d`](Self::fill_2d) as pbrt's `f32`s.
-    ///
-    /// # Errors
-    /// As [`fill_1d`](Self::fill_1d).
-    fn fill_2d_f32(&self, x: u32, y: u32, dim: u32, out: &mut [[f32; 2]]) -> Result<()> {
-        check_len(self.grid(), out.len())?;
-        for (i, slot) in out.iter_mut().enumerate() {
-            *slot = self.get_2d_f32(x, y, i as u32, dim)?;
-        }
-        Ok(())
-    }
-}
-
-/// Refuses a per-pixel fill longer than the pixel's sample count.
-const fn check_len(grid: PixelGrid, len: usize) -> Result<()> {
-    if len as u64 > grid.spp as u64 {
-        return Err(Error::BufferLength {
-            expected: grid.spp as usize,
-            got: len,
-        });
-    }
-    Ok(())
-}
-
-/// pbrt's stateful sampler on top of a [`PixelSampler`]: `start(x, y, index, dim)` then
-/// `next_1d` / `next_2d` / `next_pixel_2d`, each moving the dimension counter by one or two.
-///
-/// ```
-/// use qmckit::pixel::{PixelSampler, PixelStream, Randomization, ZSobol};
-/// let z = ZSobol::new(16, 9, 4, Randomization::FastOwen, 0)?;
-/// let mut s = PixelStream::start(&z, 1, 0, 3, 0)?;
-/// let a = s.next_1d()?;
-/// let b = s.next_2d()?; // the pair at dimension 1
-/// assert_eq!((a, b), (z.get_1d(1, 0, 3, 0)?, z.get_2d(1, 0, 3, 1)?));
-/// assert_eq!(s.dimension(), 3);
-/// # Ok::<(), qmckit::Error>(())
-/// ```
-#[derive(Clone, Copy, Debug)]
-pub struct PixelStream<'a, S: PixelSampler + ?Sized> {
-    sampler: &'a S,
-    x: u32,
-    y: u32,
-    index: u32,
-    dim: u32,
-}
-
-impl<'a, S: PixelSampler + ?Sized> PixelStream<'a, S> {
-    /// pbrt's `StartPixelSample(p, index, dim)`.
+    /// The handle is typed by the sampler, so its draws inline. A `Box<dyn PixelSampler>`
+    /// is a sampler and starts as any other; for a `s: &dyn PixelSampler`, write
+    /// `PixelSampler::start_pixel_sample(&s, x, y, i)` (the `&S` implementation: a bare
+    /// trait object cannot name its own handle type).
     ///
     /// # Errors
     /// As [`PixelGrid::check`].
-    pub fn start(sampler: &'a S, x: u32, y: u32, index: u32, dim: u32) -> Result<Self> {
+    fn start_pixel_sample(&self, x: u32, y: u32, index: u32) -> Result<PixelSample<'_, Self>>
+    where
+        Self: Sized,
+    {
+        PixelSample::start(self, x, y, index)
+    }
+}
+
+/// A borrowed or boxed sampler is a sampler (so `&dyn PixelSampler` and
+/// `Box<dyn PixelSampler>` start pixel samples too).
+macro_rules! forward_pixel_sampler {
+    ($($t:ty),*) => {$(
+        impl<S: PixelSampler + ?Sized> PixelSampler for $t {
+            fn grid(&self) -> PixelGrid {
+                (**self).grid()
+            }
+            fn pixel_key(&self, x: u32, y: u32, index: u32) -> u64 {
+                (**self).pixel_key(x, y, index)
+            }
+            fn sample_index(&self, at: &PixelPoint, dim: usize) -> Option<u64> {
+                (**self).sample_index(at, dim)
+            }
+            fn counter_dimension(&self, dim: usize, width: usize) -> usize {
+                (**self).counter_dimension(dim, width)
+            }
+            #[inline]
+            fn value_1d(&self, at: &PixelPoint, dim: usize) -> u32 {
+                (**self).value_1d(at, dim)
+            }
+            #[inline]
+            fn value_2d(&self, at: &PixelPoint, dim: usize) -> [u32; 2] {
+                (**self).value_2d(at, dim)
+            }
+            fn value_pixel_2d(&self, at: &PixelPoint, dim: usize) -> [u32; 2] {
+                (**self).value_pixel_2d(at, dim)
+            }
+            fn value_pixel_2d_f32(&self, at: &PixelPoint, dim: usize) -> [f32; 2] {
+                (**self).value_pixel_2d_f32(at, dim)
+            }
+            fn pixel_2d_moves_counter(&self) -> bool {
+                (**self).pixel_2d_moves_counter()
+            }
+        }
+    )*};
+}
+
+forward_pixel_sampler!(&S);
+#[cfg(feature = "std")]
+forward_pixel_sampler!(std::boxed::Box<S>);
+
+/// One sample of one pixel, validated: pbrt's sampler after `StartPixelSample(p, index)`.
+/// Made by [`PixelSampler::start_pixel_sample`]; its draws cannot fail. Each draw reads the
+/// dimension at the counter (through [`PixelSampler::counter_dimension`]) and moves the
+/// counter on by the values it returns, as pbrt's `Get1D`/`Get2D`/`GetPixel2D` do; the
+/// counter wraps at `usize::MAX` instead of overflowing.
+///
+/// ```
+/// use qmckit::pixel::{PixelSampler, Randomization, ZSobol};
+/// let z = ZSobol::new(16, 9, 4, Randomization::FastOwen, 0)?;
+/// let mut s = z.start_pixel_sample(1, 0, 3)?;
+/// let a = s.get_1d();
+/// let b = s.get_2d(); // the pair at dimension 1
+/// assert_eq!(s.dimension(), 3);
+/// let mut t = z.start_pixel_sample(1, 0, 3)?.with_dimension(1);
+/// assert_eq!(t.get_2d(), b);
+/// assert_eq!(z.start_pixel_sample(1, 0, 3)?.get_1d(), a);
+/// # Ok::<(), qmckit::Error>(())
+/// ```
+pub struct PixelSample<'a, S: PixelSampler + ?Sized> {
+    sampler: &'a S,
+    at: PixelPoint,
+    dim: usize,
+}
+
+// By hand: a handle is a reference and two words, `Copy` whatever the sampler is.
+impl<S: PixelSampler + ?Sized> Clone for PixelSample<'_, S> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+
+impl<S: PixelSampler + ?Sized> Copy for PixelSample<'_, S> {}
+
+impl<S: PixelSampler + ?Sized> core::fmt::Debug for PixelSample<'_, S> {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("PixelSample")
+            .field("at", &self.at)
+            .field("dim", &self.dim)
+            .finish()
+    }
+}
+
+impl<'a, S: PixelSampler + ?Sized> PixelSample<'a, S> {
+    /// The checks and the precomputation of [`PixelSampler::start_pixel_sample`].
+    fn start(sampler: &'a S, x: u32, y: u32, index: u32) -> Result<Self> {
         sampler.grid().check(x, y, index)?;
-        Ok(PixelStream {
+        let key = sampler.pixel_key(x, y, index);
+        Ok(PixelSample {
             sampler,
-            x,
-            y,
-            index,
-            dim,
+            at: PixelPoint { x, y, index, key },
+            dim: 0,
         })
     }
 
+    /// The handle with the dimension counter at `dim` (pbrt's `StartPixelSample(p, index,
+    /// dim)`).
+    #[must_use]
+    pub const fn with_dimension(mut self, dim: usize) -> Self {
+        self.dim = dim;
+        self
+    }
+
     /// The dimension counter.
-    pub const fn dimension(&self) -> u32 {
+    pub const fn dimension(&self) -> usize {
         self.dim
     }
 
-    /// Moves the counter by `by`, refusing to wrap.
-    fn advance(&mut self, by: u32) -> Result<u32> {
-        let d = self.dim;
-        self.dim = d.checked_add(by).ok_or(Error::DimensionOutOfRange {
-            dim: d as usize,
-            dims: u32::MAX as usize,
-        })?;
-        Ok(d)
+    /// The pixel `(x, y)`.
+    pub const fn pixel(&self) -> (u32, u32) {
+        (self.at.x, self.at.y)
+    }
+
+    /// The sample index in the pixel.
+    pub const fn index(&self) -> u32 {
+        self.at.index
+    }
+
+    /// The global index of the sample with the counter where it is (pbrt's
+    /// `GetSampleIndex`), where the sampler has one.
+    pub fn sample_index(&self) -> Option<u64> {
+        self.sampler.sample_index(&self.at, self.dim)
     }
 
     /// `Get1D`: the value at the counter, which moves by 1.
-    ///
-    /// # Errors
-    /// As [`PixelSampler::get_1d`].
-    pub fn next_1d(&mut self) -> Result<u32> {
+    #[inline]
+    pub fn get_1d(&mut self) -> u32 {
         let d = self.sampler.counter_dimension(self.dim, 1);
-        let v = self.sampler.get_1d(self.x, self.y, self.index, d)?;
-        self.dim = d;
-        self.advance(1)?;
-        Ok(v)
+        self.dim = d.wrapping_add(1);
+        self.sampler.value_1d(&self.at, d)
     }
 
     /// `Get2D`: the pair at the counter, which moves by 2.
-    ///
-    /// # Errors
-    /// As [`PixelSampler::get_2d`].
-    pub fn next_2d(&mut self) -> Result<[u32; 2]> {
+    #[inline]
+    pub fn get_2d(&mut self) -> [u32; 2] {
         let d = self.sampler.counter_dimension(self.dim, 2);
-        let v = self.sampler.get_2d(self.x, self.y, self.index, d)?;
-        self.dim = d;
-        self.advance(2)?;
-        Ok(v)
+        self.dim = d.wrapping_add(2);
+        self.sampler.value_2d(&self.at, d)
     }
 
     /// `GetPixel2D`: the position in the pixel (the counter moves by 2, as in pbrt, except
-    /// for [`ImageSobol`], whose pixel dimensions are separate and do not move it).
-    ///
-    /// # Errors
-    /// As [`PixelSampler::get_pixel_2d`].
-    pub fn next_pixel_2d(&mut self) -> Result<[u32; 2]> {
-        let v = self
-            .sampler
-            .get_pixel_2d(self.x, self.y, self.index, self.dim)?;
-        if !self.sampler.pixel_2d_moves_counter() {
-            return Ok(v);
-        }
-        self.advance(2)?;
-        Ok(v)
+    /// for [`ImageSobol`] and [`Pmj02BnPixels`], whose pixel positions are separate).
+    #[inline]
+    pub fn get_pixel_2d(&mut self) -> [u32; 2] {
+        let v = self.sampler.value_pixel_2d(&self.at, self.dim);
+        self.move_past_pixel_2d();
+        v
     }
+
+    /// [`get_1d`](Self::get_1d) as pbrt's `f32` ([`pbrt_f32`]).
+    #[inline]
+    pub fn get_1d_f32(&mut self) -> f32 {
+        pbrt_f32(self.get_1d())
+    }
+
+    /// [`get_2d`](Self::get_2d) as pbrt's `f32`s.
+    #[inline]
+    pub fn get_2d_f32(&mut self) -> [f32; 2] {
+        self.get_2d().map(pbrt_f32)
+    }
+
+    /// [`get_pixel_2d`](Self::get_pixel_2d) as pbrt's `f32`s (for [`ImageSobol`], pbrt's
+    /// own conversion in pixel coordinates).
+    #[inline]
+    pub fn get_pixel_2d_f32(&mut self) -> [f32; 2] {
+        let v = self.sampler.value_pixel_2d_f32(&self.at, self.dim);
+        self.move_past_pixel_2d();
+        v
+    }
+
+    fn move_past_pixel_2d(&mut self) {
+        if self.sampler.pixel_2d_moves_counter() {
+            self.dim = self.dim.wrapping_add(2);
+        }
+    }
+}
+
+/// pbrt's `Hash(a, seed)` with a 64-bit seed: MurmurHash64A of the 8 bytes `(a, seed)` for
+/// `seed < 2^32` (pbrt's `int` seed, bit-identical), of the 12 bytes `(a, seed as u64)`
+/// above, so distinct seeds stay distinct.
+#[inline]
+pub(crate) const fn seed_hash2(a: u32, seed: u64) -> u64 {
+    if seed >> 32 == 0 {
+        return crate::hash::pbrt::hash2(a, seed as u32);
+    }
+    let (a, s) = (a.to_le_bytes(), seed.to_le_bytes());
+    let b = [
+        a[0], a[1], a[2], a[3], s[0], s[1], s[2], s[3], s[4], s[5], s[6], s[7],
+    ];
+    crate::hash::pbrt::murmur_hash64a(&b, 0)
+}
+
+/// pbrt's `Hash(p, dim, seed)` with a 64-bit seed: [`hash4`](crate::hash::pbrt::hash4) of
+/// the 16 bytes for `seed < 2^32`, MurmurHash64A of the 20 bytes `(x, y, dim, seed as
+/// u64)` above. `dim` is the dimension's low 32 bits (pbrt's `int`).
+#[inline]
+pub(crate) const fn seed_hash4(x: u32, y: u32, dim: usize, seed: u64) -> u64 {
+    let d = dim as u32;
+    if seed >> 32 == 0 {
+        return crate::hash::pbrt::hash4(x, y, d, seed as u32);
+    }
+    let (x, y, d, s) = (
+        x.to_le_bytes(),
+        y.to_le_bytes(),
+        d.to_le_bytes(),
+        seed.to_le_bytes(),
+    );
+    let b = [
+        x[0], x[1], x[2], x[3], y[0], y[1], y[2], y[3], d[0], d[1], d[2], d[3], s[0], s[1], s[2],
+        s[3], s[4], s[5], s[6], s[7],
+    ];
+    crate::hash::pbrt::murmur_hash64a(&b, 0)
 }

@@ -1,9 +1,9 @@
 //! pbrt-v4's `PaddedSobolSampler`: Sobol' dimensions (0, 1) re-used for every dimension
 //! pair, decorrelated by a hashed per-pixel, per-dimension index permutation and scramble.
 
-use super::{PixelGrid, PixelSampler, Randomization, sobol0, sobol1};
+use super::{PixelGrid, PixelPoint, PixelSampler, Randomization, seed_hash4, sobol0, sobol1};
 use crate::error::Result;
-use crate::hash::pbrt::{hash4, permutation_element};
+use crate::hash::pbrt::permutation_element;
 
 /// Padded Sobol': with `h = Hash(p.x, p.y, d, seed)` (MurmurHash64A of 16 bytes), sample
 /// `i` of pixel `p` at dimension `d` uses Sobol' index
@@ -11,13 +11,15 @@ use crate::hash::pbrt::{hash4, permutation_element};
 /// `high32(h)`, a 2D value is dimensions (0, 1) scrambled with `low32(h)` and `high32(h)`.
 /// Every pixel's `spp` samples are a scrambled (0, m, 2)-net in each dimension pair when
 /// `spp = 2^m`, but the pairs are independent of each other and of the neighbours (white
-/// noise across pixels). Any `spp >= 1`. Cost: one MurmurHash, one permutation (about 20
-/// multiplications) and the scramble.
+/// noise across pixels). Any `spp >= 1`; any dimension (it only feeds the hash, its low 32
+/// bits as pbrt's `int`). Cost: nothing to precompute per pixel (the hash needs the
+/// dimension); per value one MurmurHash, one permutation (about 20 multiplications) and the
+/// scramble.
 ///
 /// ```
 /// use qmckit::pixel::{PaddedSobol, PixelSampler, Randomization};
 /// let p = PaddedSobol::new(16, 16, 16, Randomization::None, 0)?;
-/// assert_eq!(p.get_2d_f32(3, 5, 0, 0)?, [0.5625, 0.4375]);
+/// assert_eq!(p.start_pixel_sample(3, 5, 0)?.get_2d_f32(), [0.5625, 0.4375]);
 /// # Ok::<(), qmckit::Error>(())
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -25,12 +27,13 @@ use crate::hash::pbrt::{hash4, permutation_element};
 pub struct PaddedSobol {
     grid: PixelGrid,
     randomize: Randomization,
-    seed: u32,
+    seed: u64,
 }
 
 impl PaddedSobol {
     /// The sampler of a `width x height` image with `spp` samples a pixel (any count; a
-    /// power of two keeps the nets). `seed` is pbrt's `int` seed, as its 32 bits.
+    /// power of two keeps the nets). Below `2^32` the `seed` is pbrt's `int` seed as its 32
+    /// bits (bit-identical); a larger seed is hashed with all its 64 bits.
     ///
     /// # Errors
     /// As [`PixelGrid::new`].
@@ -39,7 +42,7 @@ impl PaddedSobol {
         height: u32,
         spp: u32,
         randomize: Randomization,
-        seed: u32,
+        seed: u64,
     ) -> Result<Self> {
         match PixelGrid::new(width, height, spp, false) {
             Ok(grid) => Ok(PaddedSobol {
@@ -51,11 +54,11 @@ impl PaddedSobol {
         }
     }
 
-    /// The hash and the permuted Sobol' index (unchecked arguments).
+    /// The hash and the permuted Sobol' index.
     #[inline]
-    fn index(&self, x: u32, y: u32, index: u32, dim: u32) -> (u64, u32) {
-        let h = hash4(x, y, dim, self.seed);
-        (h, permutation_element(index, self.grid.spp, h as u32))
+    fn index(&self, at: &PixelPoint, dim: usize) -> (u64, u32) {
+        let h = seed_hash4(at.x(), at.y(), dim, self.seed);
+        (h, permutation_element(at.index(), self.grid.spp, h as u32))
     }
 }
 
@@ -64,18 +67,16 @@ impl PixelSampler for PaddedSobol {
         self.grid
     }
 
-    fn get_1d(&self, x: u32, y: u32, index: u32, dim: u32) -> Result<u32> {
-        self.grid.check(x, y, index)?;
-        let (h, i) = self.index(x, y, index, dim);
-        Ok(self.randomize.apply(sobol0(i as u64), (h >> 32) as u32))
+    fn value_1d(&self, at: &PixelPoint, dim: usize) -> u32 {
+        let (h, i) = self.index(at, dim);
+        self.randomize.apply(sobol0(i as u64), (h >> 32) as u32)
     }
 
-    fn get_2d(&self, x: u32, y: u32, index: u32, dim: u32) -> Result<[u32; 2]> {
-        self.grid.check(x, y, index)?;
-        let (h, i) = self.index(x, y, index, dim);
-        Ok([
+    fn value_2d(&self, at: &PixelPoint, dim: usize) -> [u32; 2] {
+        let (h, i) = self.index(at, dim);
+        [
             self.randomize.apply(sobol0(i as u64), h as u32),
             self.randomize.apply(sobol1(i as u64), (h >> 32) as u32),
-        ])
+        ]
     }
 }

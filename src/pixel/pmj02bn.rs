@@ -3,10 +3,10 @@
 //! per-pixel, per-dimension permutation of aligned blocks of the same table, shifted by a
 //! blue-noise value, for the other dimensions.
 
-use super::{PixelGrid, PixelSampler};
+use super::{PixelGrid, PixelPoint, PixelSampler, seed_hash4};
 use crate::blue_noise::mask64::MASK64;
 use crate::error::{Error, Result};
-use crate::hash::pbrt::{hash4, mix_bits, permutation_element};
+use crate::hash::pbrt::{mix_bits, permutation_element};
 use crate::pmj::bn;
 
 /// Points in the table, `2^16` (pbrt's `nPMJ02bnSamples`).
@@ -89,11 +89,12 @@ pub fn build_tables(
 }
 
 /// A blue-noise 0.32 fraction for dimension `t` at pixel `(x, y)`: the crate's 64x64
-/// void-and-cluster mask ([`MASK64`]) read at an offset hashed from `(seed, t)`, rank `r`
-/// giving `(r + 1/2) / 4096`. (pbrt reads one of 48 shipped 128x128 textures instead.)
+/// void-and-cluster mask ([`MASK64`]) read at an offset hashed from `(seed, t)`
+/// (`MixBits(rotl(seed, 32) ^ t)`, `(seed << 32) | t` for a 32-bit seed), rank `r` giving
+/// `(r + 1/2) / 4096`. (pbrt reads one of 48 shipped 128x128 textures instead.)
 #[inline]
-const fn blue_noise(seed: u32, t: u32, x: u32, y: u32) -> u32 {
-    let h = mix_bits(((seed as u64) << 32) | t as u64);
+const fn blue_noise(seed: u64, t: u32, x: u32, y: u32) -> u32 {
+    let h = mix_bits(seed.rotate_left(32) ^ t as u64);
     let ox = x.wrapping_add(h as u32) & 63;
     let oy = y.wrapping_add((h >> 32) as u32) & 63;
     let r = MASK64[(oy * 64 + ox) as usize] as u32;
@@ -102,7 +103,7 @@ const fn blue_noise(seed: u32, t: u32, x: u32, y: u32) -> u32 {
 
 /// PMJ02BN pixels (pbrt-v4's `PMJ02BNSampler` layout, on generated tables; see
 /// [`build_tables`]):
-/// * position in the pixel ([`get_pixel_2d`](PixelSampler::get_pixel_2d)): entry `i` of
+/// * position in the pixel ([`get_pixel_2d`](super::PixelSample::get_pixel_2d)): entry `i` of
 ///   pixel `(x mod T, y mod T)` of the tile, so each pixel's first `spp` samples come from
 ///   one cell of the table's (0, 16, 2)-net (for `spp` a power of 4, a (0, log2 spp, 2)-net
 ///   in the pixel), and neighbouring pixels hold neighbouring, well-spaced points;
@@ -116,8 +117,10 @@ const fn blue_noise(seed: u32, t: u32, x: u32, y: u32) -> u32 {
 /// * a 1D value: `(PermutationElement(i, spp, low32 h) + blue noise(d)) / spp` (as pbrt).
 ///
 /// The blue-noise values read the crate's 64x64 void-and-cluster mask at a per-dimension
-/// hashed offset (pbrt ships 48 textures of 128x128). Any `spp` in `1..=65536`.
-/// Cost: one MurmurHash, one permutation and two mask reads a value; `O(1)` position.
+/// hashed offset (pbrt ships 48 textures of 128x128). Any `spp` in `1..=65536`; any
+/// dimension (its low 32 bits feed the hashes, as pbrt's `int`).
+/// Cost: the tile entry once per start; one MurmurHash, one permutation and two mask reads
+/// a value; `O(1)` position.
 ///
 /// ```
 /// use qmckit::pixel::{PixelSampler, Pmj02BnPixels, pmj02bn};
@@ -127,7 +130,7 @@ const fn blue_noise(seed: u32, t: u32, x: u32, y: u32) -> u32 {
 /// let s = Pmj02BnPixels::new(100, 100, 16, 0, &table, &tile)?;
 /// let mut cols = [false; 16];
 /// for i in 0..16 {
-///     cols[(s.get_pixel_2d(70, 3, i, 0)?[0] >> 28) as usize] = true;
+///     cols[(s.start_pixel_sample(70, 3, i)?.get_pixel_2d()[0] >> 28) as usize] = true;
 /// }
 /// assert!(cols.iter().all(|&c| c)); // stratified in x within the pixel
 /// # Ok::<(), qmckit::Error>(())
@@ -135,7 +138,7 @@ const fn blue_noise(seed: u32, t: u32, x: u32, y: u32) -> u32 {
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Pmj02BnPixels<'t> {
     grid: PixelGrid,
-    seed: u32,
+    seed: u64,
     tile_log2: u32,
     per_pixel: u32,
     table: &'t [[u32; 2]],
@@ -144,7 +147,8 @@ pub struct Pmj02BnPixels<'t> {
 
 impl<'t> Pmj02BnPixels<'t> {
     /// The sampler of a `width x height` image with `spp` samples a pixel, on tables from
-    /// [`build_tables`] (called with the same `spp`).
+    /// [`build_tables`] (called with the same `spp`). The `seed` is hashed as pbrt's `int`
+    /// seed below `2^32`, with all its 64 bits above.
     ///
     /// # Errors
     /// As [`PixelGrid::new`]; [`Error::TooLarge`] past 65,536 spp; [`Error::BufferLength`]
@@ -153,7 +157,7 @@ impl<'t> Pmj02BnPixels<'t> {
         width: u32,
         height: u32,
         spp: u32,
-        seed: u32,
+        seed: u64,
         table: &'t [[u32; 2]],
         tile: &'t [[u32; 2]],
     ) -> Result<Self> {
@@ -177,11 +181,11 @@ impl<'t> Pmj02BnPixels<'t> {
         })
     }
 
-    /// `(h, the permuted index)` of sample `index` of pixel `(x, y)` at dimension `d`.
+    /// `(h, the permuted index)` of the sample at dimension `d`.
     #[inline]
-    fn permuted(&self, x: u32, y: u32, index: u32, d: u32) -> (u64, u32) {
-        let h = hash4(x, y, d, self.seed);
-        (h, permutation_element(index, self.grid.spp, h as u32))
+    fn permuted(&self, at: &PixelPoint, d: usize) -> (u64, u32) {
+        let h = seed_hash4(at.x(), at.y(), d, self.seed);
+        (h, permutation_element(at.index(), self.grid.spp, h as u32))
     }
 }
 
@@ -190,18 +194,28 @@ impl PixelSampler for Pmj02BnPixels<'_> {
         self.grid
     }
 
-    fn get_1d(&self, x: u32, y: u32, index: u32, dim: u32) -> Result<u32> {
-        self.grid.check(x, y, index)?;
-        let d = dim.max(2);
-        let (_, i) = self.permuted(x, y, index, d);
-        let v = ((i as u64) << 32) + blue_noise(self.seed, d, x, y) as u64;
-        Ok((v / self.grid.spp as u64) as u32)
+    /// The sample's entry in the tile: `(pixel in the tile) per_pixel + index`.
+    fn pixel_key(&self, x: u32, y: u32, index: u32) -> u64 {
+        let mask = (1u32 << self.tile_log2) - 1;
+        let cell = (((y & mask) << self.tile_log2) | (x & mask)) as u64;
+        cell * self.per_pixel as u64 + index as u64
     }
 
-    fn get_2d(&self, x: u32, y: u32, index: u32, dim: u32) -> Result<[u32; 2]> {
-        self.grid.check(x, y, index)?;
+    /// `max(dim, 2)`: pbrt's `StartPixelSample` starts the counter at 2 at least.
+    fn counter_dimension(&self, dim: usize, _width: usize) -> usize {
+        dim.max(2)
+    }
+
+    fn value_1d(&self, at: &PixelPoint, dim: usize) -> u32 {
         let d = dim.max(2);
-        let (h, i) = self.permuted(x, y, index, d);
+        let (_, i) = self.permuted(at, d);
+        let v = ((i as u64) << 32) + blue_noise(self.seed, d as u32, at.x(), at.y()) as u64;
+        (v / self.grid.spp as u64) as u32
+    }
+
+    fn value_2d(&self, at: &PixelPoint, dim: usize) -> [u32; 2] {
+        let d = dim.max(2);
+        let (h, i) = self.permuted(at, d);
         let block = self.grid.spp.next_power_of_two() as u64;
         let blocks = TABLE_LEN as u64 / block;
         let b = ((h >> 32) * blocks) >> 32;
@@ -210,21 +224,15 @@ impl PixelSampler for Pmj02BnPixels<'_> {
             .get((b * block + i as u64) as usize)
             .copied()
             .unwrap_or([0, 0]);
-        Ok([
-            p[0].wrapping_add(blue_noise(self.seed, d, x, y)),
-            p[1].wrapping_add(blue_noise(self.seed, d.wrapping_add(1), x, y)),
-        ])
+        let t = d as u32;
+        [
+            p[0].wrapping_add(blue_noise(self.seed, t, at.x(), at.y())),
+            p[1].wrapping_add(blue_noise(self.seed, t.wrapping_add(1), at.x(), at.y())),
+        ]
     }
 
-    fn get_pixel_2d(&self, x: u32, y: u32, index: u32, _dim: u32) -> Result<[u32; 2]> {
-        self.grid.check(x, y, index)?;
-        let mask = (1u32 << self.tile_log2) - 1;
-        let cell = (((y & mask) << self.tile_log2) | (x & mask)) as usize;
-        Ok(self
-            .tile
-            .get(cell * self.per_pixel as usize + index as usize)
-            .copied()
-            .unwrap_or([0, 0]))
+    fn value_pixel_2d(&self, at: &PixelPoint, _dim: usize) -> [u32; 2] {
+        self.tile.get(at.key() as usize).copied().unwrap_or([0, 0])
     }
 
     /// False: as in pbrt, the pixel position is read from the tile, outside the counter.
@@ -261,8 +269,23 @@ impl Pmj02BnTables {
     ///
     /// # Errors
     /// As [`Pmj02BnPixels::new`].
-    pub fn sampler(&self, width: u32, height: u32, seed: u32) -> Result<Pmj02BnPixels<'_>> {
+    pub fn sampler(&self, width: u32, height: u32, seed: u64) -> Result<Pmj02BnPixels<'_>> {
         Pmj02BnPixels::new(width, height, self.spp, seed, &self.table, &self.tile)
+    }
+
+    /// The sampler on these tables for a `grid` of their `spp` validated before (by
+    /// [`sampler`](Self::sampler)): no checks, for the catalog's owned form.
+    pub(crate) fn sampler_of(&self, grid: PixelGrid, seed: u64) -> Pmj02BnPixels<'_> {
+        // `new` checked `spp`, so the default is unreachable.
+        let (tile_log2, log4) = tile_log2(self.spp).unwrap_or_default();
+        Pmj02BnPixels {
+            grid,
+            seed,
+            tile_log2,
+            per_pixel: 1 << (2 * log4),
+            table: &self.table,
+            tile: &self.tile,
+        }
     }
 
     /// The PMJ02BN sequence the tables come from.

@@ -1,9 +1,9 @@
 //! PMJ02 as a pixel sampler: a seeded PMJ02 sequence per pixel and dimension, its first
 //! `spp` points visited through a hashed permutation.
 
-use super::{PixelGrid, PixelSampler};
+use super::{PixelGrid, PixelPoint, PixelSampler, seed_hash4};
 use crate::error::Result;
-use crate::hash::pbrt::{hash4, permutation_element};
+use crate::hash::pbrt::permutation_element;
 use crate::pmj::Pmj02;
 
 /// PMJ02 pixels: with `h = Hash(x, y, d, seed)` (pbrt's MurmurHash of 16 bytes), sample `i`
@@ -12,16 +12,17 @@ use crate::pmj::Pmj02;
 /// layout of pbrt-v4's `PMJ02BNSampler` for dimensions past the pixel position (a per-pixel,
 /// per-dimension index permutation), with a generated sequence per pixel instead of pbrt's
 /// shipped tables and blue-noise shifts. With `spp = 2^m` each pixel's samples are a
-/// (0, m, 2)-net in every dimension pair. Cost: one MurmurHash, one permutation and
-/// `2 log2(spp)` hashes a 2D value.
+/// (0, m, 2)-net in every dimension pair. Any dimension (it only feeds the hash). Cost:
+/// one MurmurHash, one permutation and `2 log2(spp)` hashes a 2D value.
 ///
 /// ```
 /// use qmckit::pixel::{PixelSampler, Pmj02Pixels};
 /// let s = Pmj02Pixels::new(8, 8, 16, 0)?;
-/// let mut pts = [[0u32; 2]; 16];
-/// s.fill_2d(3, 4, 0, &mut pts)?;
 /// let mut rows = [false; 16];
-/// for p in &pts { rows[(p[1] >> 28) as usize] = true; }
+/// for i in 0..16 {
+///     let p = s.start_pixel_sample(3, 4, i)?.get_2d();
+///     rows[(p[1] >> 28) as usize] = true;
+/// }
 /// assert!(rows.iter().all(|&r| r)); // stratified in y
 /// # Ok::<(), qmckit::Error>(())
 /// ```
@@ -29,15 +30,16 @@ use crate::pmj::Pmj02;
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub struct Pmj02Pixels {
     grid: PixelGrid,
-    seed: u32,
+    seed: u64,
 }
 
 impl Pmj02Pixels {
-    /// The sampler of a `width x height` image with `spp` samples a pixel.
+    /// The sampler of a `width x height` image with `spp` samples a pixel; the `seed` is
+    /// hashed as pbrt's `int` seed below `2^32`, with all its 64 bits above.
     ///
     /// # Errors
     /// As [`PixelGrid::new`].
-    pub const fn new(width: u32, height: u32, spp: u32, seed: u32) -> Result<Self> {
+    pub const fn new(width: u32, height: u32, spp: u32, seed: u64) -> Result<Self> {
         match PixelGrid::new(width, height, spp, false) {
             Ok(grid) => Ok(Pmj02Pixels { grid, seed }),
             Err(e) => Err(e),
@@ -45,11 +47,11 @@ impl Pmj02Pixels {
     }
 
     #[inline]
-    fn point(&self, x: u32, y: u32, index: u32, dim: u32) -> (Pmj02, u32) {
-        let h = hash4(x, y, dim, self.seed);
+    fn point(&self, at: &PixelPoint, dim: usize) -> (Pmj02, u32) {
+        let h = seed_hash4(at.x(), at.y(), dim, self.seed);
         (
             Pmj02::new(h),
-            permutation_element(index, self.grid.spp, h as u32),
+            permutation_element(at.index(), self.grid.spp, h as u32),
         )
     }
 }
@@ -59,15 +61,13 @@ impl PixelSampler for Pmj02Pixels {
         self.grid
     }
 
-    fn get_1d(&self, x: u32, y: u32, index: u32, dim: u32) -> Result<u32> {
-        self.grid.check(x, y, index)?;
-        let (p, i) = self.point(x, y, index, dim);
-        Ok(p.value(i, 0))
+    fn value_1d(&self, at: &PixelPoint, dim: usize) -> u32 {
+        let (p, i) = self.point(at, dim);
+        p.value(i, 0)
     }
 
-    fn get_2d(&self, x: u32, y: u32, index: u32, dim: u32) -> Result<[u32; 2]> {
-        self.grid.check(x, y, index)?;
-        let (p, i) = self.point(x, y, index, dim);
-        Ok([p.value(i, 0), p.value(i, 1)])
+    fn value_2d(&self, at: &PixelPoint, dim: usize) -> [u32; 2] {
+        let (p, i) = self.point(at, dim);
+        [p.value(i, 0), p.value(i, 1)]
     }
 }

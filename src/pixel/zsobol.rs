@@ -2,9 +2,9 @@
 //! "Screen-space blue-noise diffusion of Monte Carlo sampling error via hierarchical ordering
 //! of pixels"), bit-identical to pbrt-v4's `ZSobolSampler`.
 
-use super::{PixelGrid, PixelSampler, Randomization, sobol0, sobol1};
+use super::{PixelGrid, PixelPoint, PixelSampler, Randomization, seed_hash2, sobol0, sobol1};
 use crate::error::{Error, Result};
-use crate::hash::pbrt::{hash2, mix_bits};
+use crate::hash::pbrt::mix_bits;
 
 /// The 24 permutations of `(0, 1, 2, 3)` in pbrt-v4's order: row `6a + 2b + c` is the
 /// identity after swapping positions `(0, a)`, then `(1, 1 + b)`, then `(2, 2 + c)`.
@@ -44,19 +44,22 @@ const fn spread(v: u32) -> u64 {
 /// one of 24 permutations chosen by `MixBits(higher digits ^ 0x55555555 * d) >> 24 mod 24`
 /// (a random quadtree permutation, re-drawn per dimension `d`); an odd `log2(spp)` leaves a
 /// last binary digit, flipped by one hash bit. Values are Sobol' dimension 0 (1D) or
-/// dimensions (0, 1) (2D) scrambled with `Hash(d + 1, seed)` or `Hash(d + 2, seed)`.
+/// dimensions (0, 1) (2D) scrambled with `Hash(d + 1, seed)` or `Hash(d + 2, seed)`. The
+/// dimension only feeds hashes (its low 32 bits, pbrt's `int`), so every dimension is valid.
 ///
 /// So each pixel's `spp` indices form one aligned block, distinct pixels get distinct
 /// blocks, and neighbouring pixels get well-spread points of one (0, 2)-sequence: the error
 /// is blue noise across the image. Any resolution (`RoundUpPow2(max(w, h))` sets the digit
 /// count), power-of-two `spp`, `2 log2(side) + log2(spp) <= 64`.
-/// Cost: per value, `log4(side^2 spp)` [`mix_bits`] plus one MurmurHash and the scramble.
+/// Cost: the Morton index once per [`start_pixel_sample`](PixelSampler::start_pixel_sample);
+/// per value, `log4(side^2 spp)` [`mix_bits`] plus one MurmurHash and the scramble.
 ///
 /// ```
 /// use qmckit::pixel::{PixelSampler, Randomization, ZSobol};
 /// let z = ZSobol::new(16, 9, 4, Randomization::FastOwen, 0)?;
-/// assert_eq!(z.sample_index(1, 0, 3, 0)?, Some(4));
-/// assert_eq!(z.get_1d_f32(1, 0, 3, 0)?, 0.336978048);
+/// let mut s = z.start_pixel_sample(1, 0, 3)?;
+/// assert_eq!(s.sample_index(), Some(4));
+/// assert_eq!(s.get_1d_f32(), 0.336978048);
 /// # Ok::<(), qmckit::Error>(())
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -64,14 +67,15 @@ const fn spread(v: u32) -> u64 {
 pub struct ZSobol {
     grid: PixelGrid,
     randomize: Randomization,
-    seed: u32,
+    seed: u64,
     log2_spp: u32,
     digits: u32,
 }
 
 impl ZSobol {
     /// The sampler of a `width x height` image with `spp` samples a pixel (a power of two).
-    /// `seed` is pbrt's `int` seed, as its 32 bits.
+    /// Below `2^32` the `seed` is pbrt's `int` seed as its 32 bits (bit-identical); a larger
+    /// seed is hashed with all its 64 bits.
     ///
     /// # Errors
     /// As [`PixelGrid::new`]; [`Error::TooLarge`] when the Morton index would pass 64 bits.
@@ -80,7 +84,7 @@ impl ZSobol {
         height: u32,
         spp: u32,
         randomize: Randomization,
-        seed: u32,
+        seed: u64,
     ) -> Result<Self> {
         let grid = match PixelGrid::new(width, height, spp, true) {
             Ok(g) => g,
@@ -131,16 +135,29 @@ impl ZSobol {
     /// pbrt's `GetSampleIndex` for a Morton index at dimension `dim`: the permuted base-4
     /// digits (plus the hashed last bit when `log2(spp)` is odd).
     #[inline]
-    pub const fn permuted_index(&self, morton: u64, dim: u32) -> u64 {
+    pub const fn permuted_index(&self, morton: u64, dim: usize) -> u64 {
         let salt = Self::salt(dim);
         let low = self.low_digits();
         self.permute_digits(morton, salt, low, self.digits) | self.permute_low(morton, salt)
     }
 
-    /// pbrt's salt of dimension `dim`: `0x55555555 * dim` as a `u32`, zero-extended.
+    /// pbrt's salt of dimension `dim`: `0x55555555 * dim` as a `u32` (of the low 32 bits of
+    /// `dim`, pbrt's `int`), zero-extended.
     #[inline]
-    const fn salt(dim: u32) -> u64 {
-        0x5555_5555u32.wrapping_mul(dim) as u64
+    const fn salt(dim: usize) -> u64 {
+        0x5555_5555u32.wrapping_mul(dim as u32) as u64
+    }
+
+    /// The scramble key of a 1D value at `dim`: `low32(Hash(dim + 1, seed))`.
+    #[inline]
+    const fn key_1d(&self, dim: usize) -> u32 {
+        seed_hash2((dim as u32).wrapping_add(1), self.seed) as u32
+    }
+
+    /// The scramble keys of a 2D value at `dim`: `Hash(dim + 2, seed)`.
+    #[inline]
+    const fn key_2d(&self, dim: usize) -> u64 {
+        seed_hash2((dim as u32).wrapping_add(2), self.seed)
     }
 
     /// The number of base-4 digits that hold bits of the sample index (`ceil(log2(spp) / 2)`);
@@ -182,98 +199,46 @@ impl ZSobol {
         index
     }
 
-    /// The 1D value at a prepared Morton index (no checks).
-    #[inline]
-    fn value_1d(&self, morton: u64, dim: u32) -> u32 {
-        let index = self.permuted_index(morton, dim);
-        let key = hash2(dim.wrapping_add(1), self.seed) as u32;
-        self.randomize.apply(sobol0(index), key)
-    }
-
-    /// The 2D value at a prepared Morton index (no checks).
-    #[inline]
-    fn value_2d(&self, morton: u64, dim: u32) -> [u32; 2] {
-        let index = self.permuted_index(morton, dim);
-        let h = hash2(dim.wrapping_add(2), self.seed);
-        [
-            self.randomize.apply(sobol0(index), h as u32),
-            self.randomize.apply(sobol1(index), (h >> 32) as u32),
-        ]
-    }
-
-    /// Pixel `(x, y)` prepared for its samples: the Morton code computed once.
-    ///
-    /// # Errors
-    /// As [`PixelGrid::check`].
-    pub const fn pixel(&self, x: u32, y: u32) -> Result<ZSobolPixel<'_>> {
-        if let Err(e) = self.grid.check(x, y, 0) {
-            return Err(e);
-        }
-        Ok(ZSobolPixel {
-            sampler: self,
-            base: self.morton(x, y, 0),
-        })
-    }
-}
-
-/// One pixel of a [`ZSobol`] sampler, for the fast per-sample calls.
-#[derive(Clone, Copy, Debug)]
-pub struct ZSobolPixel<'a> {
-    sampler: &'a ZSobol,
-    base: u64,
-}
-
-impl ZSobolPixel<'_> {
-    /// The 1D value of sample `index` at dimension `dim`; `index` is reduced modulo `spp`.
-    #[inline]
-    pub fn get_1d(&self, index: u32, dim: u32) -> u32 {
-        let i = index & (self.sampler.grid.spp - 1);
-        self.sampler.value_1d(self.base | i as u64, dim)
-    }
-
-    /// The 2D value of sample `index` at dimension `dim`; `index` is reduced modulo `spp`.
-    #[inline]
-    pub fn get_2d(&self, index: u32, dim: u32) -> [u32; 2] {
-        let i = index & (self.sampler.grid.spp - 1);
-        self.sampler.value_2d(self.base | i as u64, dim)
-    }
-}
-
-impl<'a> ZSobolPixel<'a> {
-    /// The pixel prepared for the samples of one dimension counter `dim`: the permuted
+    /// Pixel `(x, y)` and dimension `dim` prepared for all its samples: the permuted
     /// digits of the pixel's part of the Morton index (all but the lowest
     /// `ceil(log2(spp) / 2)` digits) and the scramble keys `Hash(dim + 1, seed)`,
     /// `Hash(dim + 2, seed)` computed once, so a sample costs `ceil(log4 spp)` [`mix_bits`]
-    /// and the scramble instead of `log4(side^2 spp)` and a MurmurHash. Bit-identical to
-    /// [`ZSobol::get_1d`] and [`ZSobol::get_2d`].
+    /// and the scramble instead of `log4(side^2 spp)` and a MurmurHash. The batch path
+    /// (one dimension, every sample of a pixel); bit-identical to the handle's draws.
     ///
     /// ```
     /// use qmckit::pixel::{PixelSampler, Randomization, ZSobol};
     /// let z = ZSobol::new(1920, 1080, 16, Randomization::FastOwen, 3)?;
-    /// let d = z.pixel(700, 300)?.dim(4);
+    /// let d = z.pixel_dimension(700, 300, 4)?;
     /// for i in 0..16 {
-    ///     assert_eq!(d.get_2d(i), z.get_2d(700, 300, i, 4)?);
-    ///     assert_eq!(d.get_1d(i), z.get_1d(700, 300, i, 4)?);
+    ///     let mut s = z.start_pixel_sample(700, 300, i)?.with_dimension(4);
+    ///     let mut t = s;
+    ///     assert_eq!(d.get_2d(i), s.get_2d());
+    ///     assert_eq!(d.get_1d(i), t.get_1d());
     /// }
     /// # Ok::<(), qmckit::Error>(())
     /// ```
-    #[inline]
-    pub fn dim(&self, dim: u32) -> ZSobolPixelDim<'a> {
-        let z = self.sampler;
-        let salt = ZSobol::salt(dim);
-        ZSobolPixelDim {
-            sampler: z,
-            base: self.base,
-            salt,
-            high: z.permute_digits(self.base, salt, z.low_digits(), z.digits),
-            key1: hash2(dim.wrapping_add(1), z.seed) as u32,
-            key2: hash2(dim.wrapping_add(2), z.seed),
+    ///
+    /// # Errors
+    /// As [`PixelGrid::check`] (with sample index 0).
+    pub const fn pixel_dimension(&self, x: u32, y: u32, dim: usize) -> Result<ZSobolPixelDim<'_>> {
+        if let Err(e) = self.grid.check(x, y, 0) {
+            return Err(e);
         }
+        let base = self.morton(x, y, 0);
+        let salt = Self::salt(dim);
+        Ok(ZSobolPixelDim {
+            sampler: self,
+            base,
+            salt,
+            high: self.permute_digits(base, salt, self.low_digits(), self.digits),
+            key1: self.key_1d(dim),
+            key2: self.key_2d(dim),
+        })
     }
 }
 
-/// One pixel and dimension counter of a [`ZSobol`] sampler, prepared by
-/// [`ZSobolPixel::dim`].
+/// One pixel and dimension of a [`ZSobol`] sampler, prepared by [`ZSobol::pixel_dimension`].
 #[derive(Clone, Copy, Debug)]
 pub struct ZSobolPixelDim<'a> {
     sampler: &'a ZSobol,
@@ -287,7 +252,7 @@ pub struct ZSobolPixelDim<'a> {
 impl ZSobolPixelDim<'_> {
     /// pbrt's `GetSampleIndex` of sample `index` (reduced modulo `spp`).
     #[inline]
-    pub fn sample_index(&self, index: u32) -> u64 {
+    pub const fn sample_index(&self, index: u32) -> u64 {
         let z = self.sampler;
         let morton = self.base | (index & (z.grid.spp - 1)) as u64;
         self.high | z.permute_low(morton, self.salt)
@@ -295,7 +260,7 @@ impl ZSobolPixelDim<'_> {
 
     /// The 1D value of sample `index` (reduced modulo `spp`).
     #[inline]
-    pub fn get_1d(&self, index: u32) -> u32 {
+    pub const fn get_1d(&self, index: u32) -> u32 {
         let z = self.sampler;
         z.randomize
             .apply(sobol0(self.sample_index(index)), self.key1)
@@ -303,7 +268,7 @@ impl ZSobolPixelDim<'_> {
 
     /// The 2D value of sample `index` (reduced modulo `spp`).
     #[inline]
-    pub fn get_2d(&self, index: u32) -> [u32; 2] {
+    pub const fn get_2d(&self, index: u32) -> [u32; 2] {
         let z = self.sampler;
         let i = self.sample_index(index);
         [
@@ -318,18 +283,28 @@ impl PixelSampler for ZSobol {
         self.grid
     }
 
-    fn sample_index(&self, x: u32, y: u32, index: u32, dim: u32) -> Result<Option<u64>> {
-        self.grid.check(x, y, index)?;
-        Ok(Some(self.permuted_index(self.morton(x, y, index), dim)))
+    /// The Morton index `(EncodeMorton2(x, y) << log2 spp) | index`.
+    fn pixel_key(&self, x: u32, y: u32, index: u32) -> u64 {
+        self.morton(x, y, index)
     }
 
-    fn get_1d(&self, x: u32, y: u32, index: u32, dim: u32) -> Result<u32> {
-        self.grid.check(x, y, index)?;
-        Ok(self.value_1d(self.morton(x, y, index), dim))
+    fn sample_index(&self, at: &PixelPoint, dim: usize) -> Option<u64> {
+        Some(self.permuted_index(at.key(), dim))
     }
 
-    fn get_2d(&self, x: u32, y: u32, index: u32, dim: u32) -> Result<[u32; 2]> {
-        self.grid.check(x, y, index)?;
-        Ok(self.value_2d(self.morton(x, y, index), dim))
+    #[inline]
+    fn value_1d(&self, at: &PixelPoint, dim: usize) -> u32 {
+        let index = self.permuted_index(at.key(), dim);
+        self.randomize.apply(sobol0(index), self.key_1d(dim))
+    }
+
+    #[inline]
+    fn value_2d(&self, at: &PixelPoint, dim: usize) -> [u32; 2] {
+        let index = self.permuted_index(at.key(), dim);
+        let h = self.key_2d(dim);
+        [
+            self.randomize.apply(sobol0(index), h as u32),
+            self.randomize.apply(sobol1(index), (h >> 32) as u32),
+        ]
     }
 }

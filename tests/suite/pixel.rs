@@ -10,7 +10,7 @@ use crate::common::first_net_failure;
 use qmckit::Error;
 use qmckit::hash::pbrt::{hash2, hash4, mix_bits, permutation_element};
 use qmckit::pixel::{
-    ImageSobol, IndependentPixels, PaddedSobol, PixelSampler, PixelStream, Pmj02Pixels,
+    ImageSobol, IndependentPixels, PaddedSobol, PixelSample, PixelSampler, Pmj02Pixels,
     Randomization, ZSobol, pbrt_f32,
 };
 use qmckit::randomize::{FastOwenScrambler, OwenHash, PbrtOwenScrambler};
@@ -29,6 +29,62 @@ fn randomization(name: &str) -> Randomization {
         "fastowen" => Randomization::FastOwen,
         "owen" => Randomization::Owen,
         _ => panic!("unknown randomization {name}"),
+    }
+}
+
+/// The tests' shorthand for one draw at a given counter: `start_pixel_sample(x, y, i)`, then
+/// `with_dimension(d)`, then the draw (the `Result` is the start's).
+pub(crate) trait Draw {
+    fn at(&self, x: u32, y: u32, i: u32, d: usize) -> Result<PixelSample<'_, Self>, Error>
+    where
+        Self: PixelSampler;
+    fn get_1d(&self, x: u32, y: u32, i: u32, d: usize) -> Result<u32, Error>
+    where
+        Self: PixelSampler,
+    {
+        Ok(self.at(x, y, i, d)?.get_1d())
+    }
+    fn get_2d(&self, x: u32, y: u32, i: u32, d: usize) -> Result<[u32; 2], Error>
+    where
+        Self: PixelSampler,
+    {
+        Ok(self.at(x, y, i, d)?.get_2d())
+    }
+    fn get_pixel_2d(&self, x: u32, y: u32, i: u32, d: usize) -> Result<[u32; 2], Error>
+    where
+        Self: PixelSampler,
+    {
+        Ok(self.at(x, y, i, d)?.get_pixel_2d())
+    }
+    fn get_1d_f32(&self, x: u32, y: u32, i: u32, d: usize) -> Result<f32, Error>
+    where
+        Self: PixelSampler,
+    {
+        Ok(self.at(x, y, i, d)?.get_1d_f32())
+    }
+    fn get_2d_f32(&self, x: u32, y: u32, i: u32, d: usize) -> Result<[f32; 2], Error>
+    where
+        Self: PixelSampler,
+    {
+        Ok(self.at(x, y, i, d)?.get_2d_f32())
+    }
+    fn get_pixel_2d_f32(&self, x: u32, y: u32, i: u32, d: usize) -> Result<[f32; 2], Error>
+    where
+        Self: PixelSampler,
+    {
+        Ok(self.at(x, y, i, d)?.get_pixel_2d_f32())
+    }
+    fn index_at(&self, x: u32, y: u32, i: u32, d: usize) -> Result<Option<u64>, Error>
+    where
+        Self: PixelSampler,
+    {
+        Ok(self.at(x, y, i, d)?.sample_index())
+    }
+}
+
+impl<S: PixelSampler> Draw for S {
+    fn at(&self, x: u32, y: u32, i: u32, d: usize) -> Result<PixelSample<'_, Self>, Error> {
+        Ok(self.start_pixel_sample(x, y, i)?.with_dimension(d))
     }
 }
 
@@ -56,14 +112,14 @@ fn pbrt_hash_check_values() {
 #[test]
 fn zsobol_pbrt_check_values() {
     let z = ZSobol::new(16, 9, 1, Randomization::FastOwen, 0).unwrap();
-    assert_eq!(z.sample_index(1, 0, 0, 0).unwrap(), Some(1));
+    assert_eq!(z.index_at(1, 0, 0, 0).unwrap(), Some(1));
     assert_eq!(z.get_1d_f32(1, 0, 0, 0).unwrap(), 0.570_228_934);
     assert_eq!(
         z.get_2d_f32(1, 0, 0, 0).unwrap(),
         [0.702_183_783, 0.853_890_479]
     );
     let z = ZSobol::new(16, 9, 4, Randomization::FastOwen, 0).unwrap();
-    assert_eq!(z.sample_index(1, 0, 3, 0).unwrap(), Some(4));
+    assert_eq!(z.index_at(1, 0, 3, 0).unwrap(), Some(4));
     assert_eq!(z.get_1d_f32(1, 0, 3, 0).unwrap(), 0.336_978_048);
 }
 
@@ -99,8 +155,8 @@ fn golden_pbrt_samplers() {
     for line in text.lines().filter(|l| !l.starts_with('#')) {
         let f: Vec<&str> = line.split_whitespace().collect();
         let n = |k: usize| f[k].parse::<u32>().unwrap();
-        let (w, h, spp, seed, r) = (n(1), n(2), n(3), n(4), randomization(f[5]));
-        let (px, py, i, dim) = (n(6), n(7), n(8), n(9));
+        let (w, h, spp, seed, r) = (n(1), n(2), n(3), n(4) as u64, randomization(f[5]));
+        let (px, py, i, dim) = (n(6), n(7), n(8), n(9) as usize);
         let index = hex(f[10]);
         let want: Vec<u32> = f[11..].iter().map(|s| hex(s) as u32).collect();
         let s: Box<dyn PixelSampler> = match f[0] {
@@ -115,22 +171,14 @@ fn golden_pbrt_samplers() {
         match f[0] {
             "sobol" => {
                 counts[2] += 1;
-                assert_eq!(
-                    s.sample_index(px, py, i, dim).unwrap(),
-                    Some(index),
-                    "{line}"
-                );
+                assert_eq!(s.index_at(px, py, i, dim).unwrap(), Some(index), "{line}");
                 let pix = s.get_pixel_2d_f32(px, py, i, dim).unwrap();
                 assert_eq!([pix[0].to_bits(), pix[1].to_bits()], want[3..5], "{line}");
             }
             kind => {
                 if kind == "zsobol" {
                     counts[0] += 1;
-                    assert_eq!(
-                        s.sample_index(px, py, i, dim).unwrap(),
-                        Some(index),
-                        "{line}"
-                    );
+                    assert_eq!(s.index_at(px, py, i, dim).unwrap(), Some(index), "{line}");
                 } else {
                     counts[1] += 1;
                 }
@@ -150,9 +198,9 @@ fn zsobol_get1d_hashes_the_incremented_dimension() {
     let none = ZSobol::new(8, 8, 4, Randomization::None, 3).unwrap();
     for d in 0..6 {
         let plain = none.get_1d(2, 5, 1, d).unwrap();
-        let key = hash2(d + 1, 3) as u32;
+        let key = hash2(d as u32 + 1, 3) as u32;
         assert_eq!(z.get_1d(2, 5, 1, d).unwrap(), plain ^ key);
-        let idx = none.sample_index(2, 5, 1, d).unwrap().unwrap();
+        let idx = none.index_at(2, 5, 1, d).unwrap().unwrap();
         assert_eq!(plain, (idx as u32).reverse_bits());
     }
 }
@@ -165,12 +213,12 @@ fn zsobol_blocks_are_aligned_and_unique() {
         let spp = 1 << log2_spp;
         let (w, h) = (16u32, 9u32);
         let z = ZSobol::new(w, h, spp, Randomization::FastOwen, 0).unwrap();
-        for dim in [0u32, 3, 6] {
+        for dim in [0usize, 3, 6] {
             let mut blocks = std::collections::HashSet::new();
             for y in 0..h {
                 for x in 0..w {
                     let idx: Vec<u64> = (0..spp)
-                        .map(|i| z.sample_index(x, y, i, dim).unwrap().unwrap())
+                        .map(|i| z.index_at(x, y, i, dim).unwrap().unwrap())
                         .collect();
                     let block = idx[0] >> log2_spp;
                     let mut low: Vec<u64> = idx
@@ -194,26 +242,26 @@ fn zsobol_blocks_are_aligned_and_unique() {
 /// and PMJ02 pixels'.
 #[test]
 fn per_pixel_samples_are_nets() {
-    for seed in [0u32, 1, 5, 6, 10, 15] {
+    for seed in [0u64, 1, 5, 6, 10, 15] {
         for m in 2..=8u32 {
             let spp = 1 << m;
             for r in [Randomization::None, Randomization::PermuteDigits] {
                 let z = ZSobol::new(10, 10, spp, r, seed).unwrap();
                 for (x, y) in [(0, 0), (3, 7), (9, 9), (5, 2)] {
-                    let mut pts = vec![[0u32; 2]; spp as usize];
-                    z.fill_2d(x, y, 0, &mut pts).unwrap();
+                    let pts: Vec<[u32; 2]> =
+                        (0..spp).map(|i| z.get_2d(x, y, i, 0).unwrap()).collect();
                     assert_eq!(first_net_failure(&pts, m), None, "{r:?} seed {seed} m {m}");
                 }
             }
             for r in ALL {
                 let p = PaddedSobol::new(10, 10, spp, r, seed).unwrap();
-                let mut pts = vec![[0u32; 2]; spp as usize];
-                p.fill_2d(4, 6, 2 * m, &mut pts).unwrap();
+                let d = 2 * m as usize;
+                let pts: Vec<[u32; 2]> = (0..spp).map(|i| p.get_2d(4, 6, i, d).unwrap()).collect();
                 assert_eq!(first_net_failure(&pts, m), None, "padded {r:?} seed {seed}");
             }
             let q = Pmj02Pixels::new(10, 10, spp, seed).unwrap();
-            let mut pts = vec![[0u32; 2]; spp as usize];
-            q.fill_2d(7, 1, m, &mut pts).unwrap();
+            let d = m as usize;
+            let pts: Vec<[u32; 2]> = (0..spp).map(|i| q.get_2d(7, 1, i, d).unwrap()).collect();
             assert_eq!(first_net_failure(&pts, m), None, "pmj02 pixels seed {seed}");
         }
     }
@@ -246,7 +294,7 @@ fn image_sobol_index_is_the_brute_force_one() {
             for y in 0..h {
                 for x in 0..w {
                     assert_eq!(
-                        s.sample_index(x, y, frame, 0).unwrap(),
+                        s.index_at(x, y, frame, 0).unwrap(),
                         Some(seen[&(x, y)]),
                         "{w}x{h} frame {frame} ({x},{y})"
                     );
@@ -259,21 +307,22 @@ fn image_sobol_index_is_the_brute_force_one() {
 }
 
 #[test]
-fn stream_consumes_dimensions_like_pbrt() {
+fn handle_consumes_dimensions_like_pbrt() {
     let z = ZSobol::new(16, 9, 4, Randomization::FastOwen, 0).unwrap();
-    let mut s = PixelStream::start(&z, 1, 0, 3, 0).unwrap();
-    let p = s.next_pixel_2d().unwrap();
-    let a = s.next_1d().unwrap();
-    let b = s.next_2d().unwrap();
+    let mut s = z.start_pixel_sample(1, 0, 3).unwrap();
+    let p = s.get_pixel_2d();
+    let a = s.get_1d();
+    let b = s.get_2d();
     assert_eq!(p, z.get_2d(1, 0, 3, 0).unwrap());
     assert_eq!(a, z.get_1d(1, 0, 3, 2).unwrap());
     assert_eq!(b, z.get_2d(1, 0, 3, 3).unwrap());
     assert_eq!(s.dimension(), 5);
     let img = ImageSobol::new(16, 9, 4, Randomization::FastOwen, 0).unwrap();
-    let mut s = PixelStream::start(&img, 1, 0, 3, 0).unwrap();
-    s.next_pixel_2d().unwrap();
+    let mut s = img.start_pixel_sample(1, 0, 3).unwrap();
+    s.get_pixel_2d();
     assert_eq!(s.dimension(), 0); // the image-plane dimensions are outside the counter
-    assert_eq!(s.next_1d().unwrap(), img.get_1d(1, 0, 3, 2).unwrap());
+    assert_eq!(s.get_1d(), img.get_1d(1, 0, 3, 2).unwrap());
+    assert_eq!(s.dimension(), 3); // the counter read as 2, then moved past it
 }
 
 #[test]
@@ -308,18 +357,14 @@ fn bad_input_is_an_error() {
         z.get_2d(0, 0, 4, 0),
         Err(Error::IndexOutOfRange { index: 4, len: 4 })
     );
-    let mut five = [0u32; 5];
-    assert!(matches!(
-        z.fill_1d(0, 0, 0, &mut five),
-        Err(Error::BufferLength { .. })
-    ));
     let p = PaddedSobol::new(4, 4, 6, Randomization::None, 0).unwrap();
     assert!(p.get_1d(0, 0, 5, 0).is_ok()); // any spp for the padded sampler
     let s = ImageSobol::new(16, 9, 4, Randomization::None, 0).unwrap();
-    assert!(matches!(
-        s.get_1d(0, 0, 0, 1_000_000),
-        Ok(_) | Err(Error::DimensionOutOfRange { .. })
-    ));
+    // Every dimension is answered: past the table the counter wraps to 2, as in pbrt.
+    assert_eq!(
+        s.get_1d(0, 0, 0, 1_000_000).unwrap(),
+        s.get_1d(0, 0, 0, 2).unwrap()
+    );
 }
 
 #[test]
@@ -359,9 +404,10 @@ fn zsobol_error_is_blue_noise() {
         for spp in [1u32, 4, 16] {
             let (mut z, mut p, mut ind) = ([0.0; 3], [0.0; 3], [0.0; 3]);
             for seed in 0..SEEDS {
+                let seed = seed as u64;
                 let zs = ZSobol::new(128, 128, spp, Randomization::FastOwen, seed).unwrap();
                 let ps = PaddedSobol::new(128, 128, spp, Randomization::FastOwen, seed).unwrap();
-                let is = IndependentPixels::new(128, 128, spp, seed as u64).unwrap();
+                let is = IndependentPixels::new(128, 128, spp, seed).unwrap();
                 for (acc, e) in [
                     (&mut z, screen_error(&zs, f, &Budget::UNLIMITED).unwrap()),
                     (&mut p, screen_error(&ps, f, &Budget::UNLIMITED).unwrap()),
@@ -452,17 +498,12 @@ fn zsobol_prepared_dimension_is_identical() {
         for r in ALL {
             let z = ZSobol::new(w, h, spp, r, 5).unwrap();
             for (x, y) in [(0, 0), (w - 1, h - 1), (w / 2, h / 3)] {
-                let px = z.pixel(x, y).unwrap();
-                for dim in [0u32, 1, 2, 5, 1000] {
-                    let d = px.dim(dim);
+                for dim in [0usize, 1, 2, 5, 1000, (1 << 32) + 5] {
+                    let d = z.pixel_dimension(x, y, dim).unwrap();
                     for i in (0..spp).step_by((spp as usize / 64).max(1)) {
-                        assert_eq!(
-                            Some(d.sample_index(i)),
-                            z.sample_index(x, y, i, dim).unwrap()
-                        );
+                        assert_eq!(Some(d.sample_index(i)), z.index_at(x, y, i, dim).unwrap());
                         assert_eq!(d.get_1d(i), z.get_1d(x, y, i, dim).unwrap());
                         assert_eq!(d.get_2d(i), z.get_2d(x, y, i, dim).unwrap());
-                        assert_eq!(px.get_2d(i, dim), d.get_2d(i));
                     }
                 }
             }
@@ -471,6 +512,7 @@ fn zsobol_prepared_dimension_is_identical() {
 }
 
 mod pmj02bn_pixels {
+    use super::Draw;
     use crate::common::first_net_failure;
     use qmckit::pixel::pmj02bn::{TABLE_LEN, build_tables};
     use qmckit::pixel::{PixelSampler, Pmj02BnPixels, Pmj02BnTables};
@@ -543,7 +585,7 @@ mod pmj02bn_pixels {
                     s.get_pixel_2d(x % t, y % t, 0, 0).unwrap(),
                     s.get_pixel_2d(x, y, 0, 0).unwrap()
                 );
-                for dim in [2u32, 3, 7, 40] {
+                for dim in [2usize, 3, 7, 40, (1 << 32) + 2] {
                     let mut strata = vec![false; spp as usize];
                     for i in 0..spp {
                         let v = s.get_1d(x, y, i, dim).unwrap();
@@ -564,9 +606,9 @@ mod pmj02bn_pixels {
         assert!(Pmj02BnPixels::new(10, 10, 1 << 17, 0, &table, &tile).is_err());
         assert!(Pmj02BnPixels::new(10, 10, 16, 0, &table[..100], &tile).is_err());
         let s = Pmj02BnPixels::new(10, 10, 16, 0, &table, &tile).unwrap();
-        assert!(s.get_2d(10, 0, 0, 2).is_err());
-        assert!(s.get_1d(0, 0, 16, 2).is_err());
-        assert!(s.get_pixel_2d(0, 10, 0, 0).is_err());
+        assert!(s.start_pixel_sample(10, 0, 0).is_err());
+        assert!(s.start_pixel_sample(0, 0, 16).is_err());
+        assert!(s.start_pixel_sample(0, 10, 0).is_err());
         let (mut a, mut b) = (vec![[0u32; 2]; TABLE_LEN], vec![[0u32; 2]; 10]);
         let mut work = vec![0u32; workspace_len(TABLE_LEN).unwrap()];
         assert!(build_tables(0, 16, &mut a, &mut b, &mut work).is_err());
@@ -603,14 +645,20 @@ fn screen_error_study() {
                 // [rmse^2, absolute low band, normalized low band] for Z, P, I, B.
                 let mut acc = [[0.0f64; 3]; 4];
                 for seed in 0..seeds {
-                    let z = ZSobol::new(side, side, spp, Randomization::FastOwen, seed).unwrap();
-                    let p =
-                        PaddedSobol::new(side, side, spp, Randomization::FastOwen, seed).unwrap();
-                    let i = IndependentPixels::new(side, side, spp, seed as u64).unwrap();
+                    let seed = seed as u64;
+                    let r = Randomization::FastOwen;
+                    let z = ZSobol::new(side, side, spp, r, seed).unwrap();
+                    let p = PaddedSobol::new(side, side, spp, r, seed).unwrap();
+                    let i = IndependentPixels::new(side, side, spp, seed).unwrap();
                     let b = tables[seed as usize].sampler(side, side, seed).unwrap();
-                    let samplers: [&dyn PixelSampler; 4] = [&z, &p, &i, &b];
-                    for (a, s) in acc.iter_mut().zip(samplers) {
-                        let e = screen_error(s, f, &Budget::UNLIMITED).unwrap();
+                    let u = Budget::UNLIMITED;
+                    let errors = [
+                        screen_error(&z, f, &u).unwrap(),
+                        screen_error(&p, f, &u).unwrap(),
+                        screen_error(&i, f, &u).unwrap(),
+                        screen_error(&b, f, &u).unwrap(),
+                    ];
+                    for (a, e) in acc.iter_mut().zip(errors) {
                         a[0] += e.rmse * e.rmse / seeds as f64;
                         a[1] += e.low_band_absolute / seeds as f64;
                         a[2] += e.low_band / seeds as f64;
@@ -640,7 +688,7 @@ fn screen_error_study() {
 fn image_sobol_pads_past_its_table_as_pbrt_does() {
     use qmckit::pixel::{IMAGE_SOBOL_DIMS, PBRT_SOBOL_DIMS};
     // pbrt's rule on the compiled table: min(table, 1024) (1024 with the CLI's features).
-    let table = qmckit::digital::sobol::SOBOL_MAX_DIMS.min(PBRT_SOBOL_DIMS as usize) as u32;
+    let table = qmckit::digital::sobol::SOBOL_MAX_DIMS.min(PBRT_SOBOL_DIMS);
     assert_eq!(IMAGE_SOBOL_DIMS, table);
     let last = IMAGE_SOBOL_DIMS - 1;
     for r in ALL {
@@ -650,13 +698,13 @@ fn image_sobol_pads_past_its_table_as_pbrt_does() {
         let pair = |d| s.get_2d(x, y, i, d).unwrap();
         // Get1D: `if (dimension >= NSobolDimensions) dimension = 2`.
         assert_ne!(at(last), at(2));
-        for d in [IMAGE_SOBOL_DIMS, IMAGE_SOBOL_DIMS + 1, 100_000, u32::MAX] {
+        for d in [IMAGE_SOBOL_DIMS, IMAGE_SOBOL_DIMS + 1, 100_000, usize::MAX] {
             assert_eq!(at(d), at(2), "{r:?} 1D at {d}");
         }
         // Get2D: `if (dimension + 1 >= NSobolDimensions) dimension = 2`, so the pair at the
-        // last dimension wraps too, and a counter of u32::MAX neither overflows nor fails.
+        // last dimension wraps too, and a counter of usize::MAX neither overflows nor fails.
         assert_eq!(pair(last - 1), [at(last - 1), at(last)]);
-        for d in [last, IMAGE_SOBOL_DIMS, u32::MAX - 1, u32::MAX] {
+        for d in [last, IMAGE_SOBOL_DIMS, usize::MAX - 1, usize::MAX] {
             assert_eq!(pair(d), pair(2), "{r:?} 2D at {d}");
         }
         assert_eq!(pair(2), [at(2), at(3)]);
@@ -664,31 +712,74 @@ fn image_sobol_pads_past_its_table_as_pbrt_does() {
 }
 
 #[test]
-fn image_sobol_stream_counts_like_pbrt() {
+fn image_sobol_handle_counts_like_pbrt() {
     use qmckit::pixel::IMAGE_SOBOL_DIMS;
     let s = ImageSobol::new(16, 9, 4, Randomization::FastOwen, 0).unwrap();
     // StartPixelSample sets dimension = max(2, dim): two Get1D calls read 2, then 3.
-    let mut st = PixelStream::start(&s, 1, 0, 3, 0).unwrap();
-    assert_eq!(st.next_1d().unwrap(), s.get_1d(1, 0, 3, 2).unwrap());
-    assert_eq!(st.next_1d().unwrap(), s.get_1d(1, 0, 3, 3).unwrap());
+    let mut st = s.start_pixel_sample(1, 0, 3).unwrap().with_dimension(0);
+    assert_eq!(st.get_1d(), s.get_1d(1, 0, 3, 2).unwrap());
+    assert_eq!(st.get_1d(), s.get_1d(1, 0, 3, 3).unwrap());
     assert_eq!(st.dimension(), 4);
     // At the end of the table the counter wraps to 2 and counts on from there.
     let last = IMAGE_SOBOL_DIMS - 1;
-    let mut st = PixelStream::start(&s, 1, 0, 3, last).unwrap();
-    assert_eq!(st.next_1d().unwrap(), s.get_1d(1, 0, 3, last).unwrap());
-    assert_eq!(st.next_1d().unwrap(), s.get_1d(1, 0, 3, 2).unwrap());
-    assert_eq!(st.next_2d().unwrap(), s.get_2d(1, 0, 3, 3).unwrap());
+    let mut st = s.start_pixel_sample(1, 0, 3).unwrap().with_dimension(last);
+    assert_eq!(st.get_1d(), s.get_1d(1, 0, 3, last).unwrap());
+    assert_eq!(st.get_1d(), s.get_1d(1, 0, 3, 2).unwrap());
+    assert_eq!(st.get_2d(), s.get_2d(1, 0, 3, 3).unwrap());
     assert_eq!(st.dimension(), 5);
     // A pair that would straddle the end wraps whole.
-    let mut st = PixelStream::start(&s, 1, 0, 3, last).unwrap();
-    assert_eq!(st.next_2d().unwrap(), s.get_2d(1, 0, 3, 2).unwrap());
+    let mut st = s.start_pixel_sample(1, 0, 3).unwrap().with_dimension(last);
+    assert_eq!(st.get_2d(), s.get_2d(1, 0, 3, 2).unwrap());
     assert_eq!(st.dimension(), 4);
     // The padded samplers reuse Sobol' (0, 1) under hashes: no wrap, every counter answers.
     let z = ZSobol::new(16, 9, 4, Randomization::FastOwen, 0).unwrap();
     let p = PaddedSobol::new(16, 9, 4, Randomization::FastOwen, 0).unwrap();
-    for d in [IMAGE_SOBOL_DIMS, 1 << 20, u32::MAX] {
-        assert!(z.get_2d(1, 0, 3, d).is_ok() && p.get_2d(1, 0, 3, d).is_ok());
+    for d in [IMAGE_SOBOL_DIMS, 1 << 20, u32::MAX as usize, usize::MAX] {
         assert_eq!(z.counter_dimension(d, 2), d);
         assert_eq!(p.counter_dimension(d, 1), d);
+        // The hashes read the dimension's low 32 bits (pbrt's int); the counter wraps.
+        let mut h = z.start_pixel_sample(1, 0, 3).unwrap().with_dimension(d);
+        assert_eq!(h.get_2d(), z.get_2d(1, 0, 3, d as u32 as usize).unwrap());
+        assert_eq!(h.dimension(), d.wrapping_add(2));
     }
+}
+
+/// pbrt's PMJ02BNSampler starts the counter at `max(2, dim)`: a handle started at 0 reads
+/// dimensions 2, 3, 4.. in turn, and the pixel position leaves the counter where it is.
+#[test]
+fn pmj02bn_handle_counts_like_pbrt() {
+    let tables = qmckit::pixel::Pmj02BnTables::new(16, 1).unwrap();
+    let s = tables.sampler(20, 20, 1).unwrap();
+    let mut h = s.start_pixel_sample(3, 4, 5).unwrap();
+    h.get_pixel_2d();
+    assert_eq!(h.dimension(), 0);
+    assert_eq!(h.get_1d(), s.get_1d(3, 4, 5, 2).unwrap());
+    assert_eq!(h.get_1d(), s.get_1d(3, 4, 5, 3).unwrap());
+    assert_eq!(h.get_2d(), s.get_2d(3, 4, 5, 4).unwrap());
+    assert_eq!(h.dimension(), 6);
+}
+
+/// A seed past 2^32 is hashed whole: it differs from its low 32 bits, and seeds below 2^32
+/// keep pbrt's values.
+#[test]
+fn seeds_are_u64() {
+    let r = Randomization::FastOwen;
+    let lo = ZSobol::new(16, 16, 4, r, 7).unwrap();
+    let hi = ZSobol::new(16, 16, 4, r, 7 | (1 << 32)).unwrap();
+    assert_ne!(
+        lo.get_1d(3, 5, 1, 0).unwrap(),
+        hi.get_1d(3, 5, 1, 0).unwrap()
+    );
+    let lo = PaddedSobol::new(16, 16, 4, r, 7).unwrap();
+    let hi = PaddedSobol::new(16, 16, 4, r, 7 | (1 << 32)).unwrap();
+    assert_ne!(
+        lo.get_2d(3, 5, 1, 0).unwrap(),
+        hi.get_2d(3, 5, 1, 0).unwrap()
+    );
+    let lo = Pmj02Pixels::new(16, 16, 4, 7).unwrap();
+    let hi = Pmj02Pixels::new(16, 16, 4, 7 | (1 << 32)).unwrap();
+    assert_ne!(
+        lo.get_2d(3, 5, 1, 0).unwrap(),
+        hi.get_2d(3, 5, 1, 0).unwrap()
+    );
 }

@@ -12,7 +12,7 @@
 //! | [`SceneSampler::Halton`] | [`Halton`] points `0..spp` with random digit permutations keyed by the pixel's seed |
 //! | [`SceneSampler::SobolShift`] | Sobol' points `0..spp` with a random digital shift (XOR) per pixel |
 //! | [`SceneSampler::OwenSobol`] | Sobol' with the catalog's `fast-owen` randomizer (hash-based Owen scrambling, [`OwenSobol`], the bits of `qmckit points sobol --scramble fast-owen --seed K`) points `0..spp`, seeded per pixel |
-//! | [`SceneSampler::ZSobol`] | pbrt's blue-noise Sobol' ([`ZSobol`], FastOwen): dimensions in pairs, `get_2d(x, y, i, 2k)` |
+//! | [`SceneSampler::ZSobol`] | pbrt's blue-noise Sobol' ([`ZSobol`], FastOwen): dimensions in pairs, one `start_pixel_sample(x, y, i)`, then `get_2d` per pair |
 //!
 //! Cost: O(d) integer work a point (Halton's permutations O(d log spp)); ZSobol O(log2(W spp))
 //! a pair.
@@ -97,7 +97,7 @@ impl Prepared {
                 height,
                 spp,
                 Randomization::FastOwen,
-                seed as u32,
+                seed,
             )?)
         } else {
             None
@@ -160,9 +160,10 @@ impl Prepared {
                     });
                 };
                 for (i, row) in out.chunks_exact_mut(d).enumerate().take(self.spp as usize) {
+                    let mut s = z.start_pixel_sample(x, y, i as u32)?;
                     let mut k = 0;
                     while k < d {
-                        let [a, b] = z.get_2d(x, y, i as u32, k as u32)?;
+                        let [a, b] = s.get_2d(); // the pair at dimension k
                         row[k] = to_f64(a);
                         if k + 1 < d {
                             row[k + 1] = to_f64(b);

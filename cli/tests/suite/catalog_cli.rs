@@ -6,6 +6,7 @@ use crate::common::cli::run;
 use qmckit::Sampler;
 use qmckit::catalog::{self, PIXEL_SAMPLERS, Params, RANDOMIZERS, SAMPLERS, Size};
 use qmckit::digital::sobol::Order;
+use qmckit::pixel::PixelSampler;
 
 /// The parameter sets every sampler is walked with (each entry at least once).
 fn cases() -> Vec<(&'static str, Params)> {
@@ -273,8 +274,13 @@ fn the_pixel_builder_gives_the_command_s_values() {
             for (i, line) in text.lines().filter(|l| !l.starts_with('#')).enumerate() {
                 let f: Vec<&str> = line.split(' ').collect();
                 let v: Vec<u32> = f[1..].iter().map(|t| t.parse().unwrap()).collect();
-                let [a, b] = s.get_2d(3, 5, i as u32, 2).unwrap();
-                assert_eq!(v, [s.get_1d(3, 5, i as u32, 2).unwrap(), a, b], "{args:?}");
+                let start = || {
+                    s.start_pixel_sample(3, 5, i as u32)
+                        .unwrap()
+                        .with_dimension(2)
+                };
+                let [a, b] = start().get_2d();
+                assert_eq!(v, [start().get_1d(), a, b], "{args:?}");
             }
         }
     }

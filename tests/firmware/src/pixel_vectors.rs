@@ -18,16 +18,22 @@ const RANDOMIZATIONS: [(&str, Randomization); 4] = [
 ];
 
 /// One pixel sample: `<name> (x,y) i d: index get1d get2d f32-bits`.
-fn one<W: Write>(out: &mut W, name: &str, s: &dyn PixelSampler, q: [u32; 4]) -> fmt::Result {
+fn one<W: Write, S: PixelSampler>(out: &mut W, name: &str, s: &S, q: [u32; 4]) -> fmt::Result {
     let [x, y, i, d] = q.map(black_box);
-    let index = match s.sample_index(x, y, i, d) {
-        Ok(Some(k)) => k,
-        Ok(None) => u64::MAX,
-        Err(_) => u64::MAX - 1,
+    let (index, v, [a, b], f) = match s.start_pixel_sample(x, y, i) {
+        Ok(h) => {
+            let h = h.with_dimension(d as usize);
+            let index = h.sample_index().unwrap_or(u64::MAX);
+            let (mut one, mut two, mut f32s) = (h, h, h);
+            (
+                index,
+                one.get_1d(),
+                two.get_2d(),
+                f32s.get_1d_f32().to_bits(),
+            )
+        }
+        Err(_) => (u64::MAX - 1, 0, [0, 0], 0),
     };
-    let v = s.get_1d(x, y, i, d).unwrap_or(0);
-    let [a, b] = s.get_2d(x, y, i, d).unwrap_or([0, 0]);
-    let f = s.get_1d_f32(x, y, i, d).map(f32::to_bits).unwrap_or(0);
     writeln!(
         out,
         "{name} ({x},{y}) i{i} d{d}: {index:x} {v:08x} {a:08x} {b:08x} f{f:08x}"
@@ -37,7 +43,7 @@ fn one<W: Write>(out: &mut W, name: &str, s: &dyn PixelSampler, q: [u32; 4]) -> 
 /// The pixel samplers: single samples, then a digest of a 32x32 image at 16 spp.
 pub fn pixel<W: Write>(out: &mut W) -> fmt::Result {
     for (rname, r) in RANDOMIZATIONS {
-        let seed = black_box(0u32);
+        let seed = black_box(0u64);
         if let Ok(z) = ZSobol::new(black_box(16), 9, 4, r, seed) {
             for q in [[1, 0, 3, 0], [7, 8, 0, 5], [15, 4, 2, 1]] {
                 one(out, &format_name("zsobol", rname), &z, q)?;
@@ -58,10 +64,11 @@ pub fn pixel<W: Write>(out: &mut W) -> fmt::Result {
         let mut d = Digest::new();
         for y in 0..32 {
             for x in 0..32 {
-                if let Ok(p) = z.pixel(x, y) {
-                    for i in 0..16 {
-                        d.push_all(&p.get_2d(i, black_box(0)));
-                        d.push(p.get_1d(i, 2));
+                for i in 0..16 {
+                    if let Ok(h) = z.start_pixel_sample(x, y, i) {
+                        let mut h = h.with_dimension(black_box(0));
+                        d.push_all(&h.get_2d());
+                        d.push(h.get_1d());
                     }
                 }
             }
@@ -71,8 +78,10 @@ pub fn pixel<W: Write>(out: &mut W) -> fmt::Result {
         let mut d = Digest::new();
         for y in 0..32 {
             for x in 0..32 {
-                if let Ok(p) = z.pixel(x, y) {
-                    let (d0, d2) = (p.dim(black_box(0)), p.dim(2));
+                if let (Ok(d0), Ok(d2)) = (
+                    z.pixel_dimension(x, y, black_box(0)),
+                    z.pixel_dimension(x, y, 2),
+                ) {
                     for i in 0..16 {
                         d.push_all(&d0.get_2d(i));
                         d.push(d2.get_1d(i));

@@ -7,6 +7,7 @@ use qmckit::Sampler;
 use qmckit::bits::to_f64;
 use qmckit::catalog::{self, INTEGRANDS, Params};
 use qmckit::digital::sobol::Order;
+use qmckit::pixel::PixelSampler;
 
 /// FNV-1a 64 over the little-endian bytes of the values (as tests/golden/gen.py does).
 fn fnv1a64(values: impl IntoIterator<Item = u32>) -> u64 {
@@ -143,23 +144,20 @@ fn pixel_samplers_are_pbrt() {
             width: n(1),
             height: n(2),
             spp: n(3),
-            seed: n(4),
+            seed: n(4) as u64,
         };
         // The file's names ("padded", "sobol", "fastowen") are catalog aliases.
         let entry = catalog::pixel_sampler(f[0]).unwrap();
         let r = catalog::randomizer(f[5]).unwrap();
         let s = catalog::build_pixel(entry, Some(r), &params).unwrap();
-        let (px, py, i, dim) = (n(6), n(7), n(8), n(9));
+        let (px, py, i, dim) = (n(6), n(7), n(8), n(9) as usize);
         let want: Vec<u32> = f[11..14]
             .iter()
             .map(|s| u32::from_str_radix(s, 16).unwrap())
             .collect();
-        let [a, b] = s.get_2d(px, py, i, dim).unwrap();
-        assert_eq!(
-            [s.get_1d(px, py, i, dim).unwrap(), a, b],
-            want[..],
-            "{line}"
-        );
+        let start = || s.start_pixel_sample(px, py, i).unwrap().with_dimension(dim);
+        let [a, b] = start().get_2d();
+        assert_eq!([start().get_1d(), a, b], want[..], "{line}");
         checked += 1;
     }
     assert!(checked >= 300, "{checked}");
