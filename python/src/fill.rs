@@ -103,17 +103,15 @@ pub fn fill_u32(
     })
 }
 
-/// `x & mask` for `x = v 2^32`, on the `f64` value: `mask` keeps the top `bits` bits
-/// (`mask = !0 << (32 - bits)`), so this is `floor(v 2^bits) 2^-bits`, exact (scaling by a
-/// power of two and `floor` are exact for these values).
+/// `(x & mask) / 2^32` for `v = x / 2^32` (so `x = v 2^32` is an exact `u32`), on the
+/// `f64` values in place.
 pub fn mask_f64(out: &mut [f64], mask: u32) {
     if mask == u32::MAX {
         return;
     }
-    let bits = mask.count_ones() as i32;
-    let (up, down) = (2f64.powi(bits), 2f64.powi(-bits));
     for v in out.iter_mut() {
-        *v = (*v * up).floor() * down;
+        let x = (*v * 4_294_967_296.0) as u32;
+        *v = f64::from(x & mask) * (1.0 / 4_294_967_296.0);
     }
 }
 
