@@ -103,21 +103,8 @@ pub fn fill_u32(
     })
 }
 
-/// `(x & mask) / 2^32` for `v = x / 2^32` (so `x = v 2^32` is an exact `u32`), on the
-/// `f64` values in place.
-pub fn mask_f64(out: &mut [f64], mask: u32) {
-    if mask == u32::MAX {
-        return;
-    }
-    for v in out.iter_mut() {
-        let x = (*v * 4_294_967_296.0) as u32;
-        *v = f64::from(x & mask) * (1.0 / 4_294_967_296.0);
-    }
-}
-
-/// Rows `start ..` of `s` into `out` as `f64` (`(x & mask) / 2^32`, exact), each thread
-/// through the sampler's own `f64` fill straight into its rows (`mask` keeps the top bits,
-/// `!0 << (32 - bits)`).
+/// Rows `start ..` of `s` into `out` as `f64` (`(x & mask) / 2^32`, exact): unmasked, each
+/// thread through the sampler's own `f64` fill straight into its rows.
 ///
 /// # Errors
 /// The sampler's (buffer length, index past its end).
@@ -130,9 +117,26 @@ pub fn fill_f64(
 ) -> qmckit::Result<()> {
     let dims = s.dims().max(1);
     qmckit::sampler::check_fill(s, start, out.len())?;
+    if mask == u32::MAX {
+        return split_rows(out, dims, workers, &|row, part: &mut [f64]| {
+            s.fill_f64(start + row as u32, part)
+        });
+    }
+    // Masked: the u32 fill, masked and converted in one pass over a per-thread buffer
+    // (one pass over the output instead of two).
     split_rows(out, dims, workers, &|row, part: &mut [f64]| {
-        s.fill_f64(start + row as u32, part)?;
-        mask_f64(part, mask);
+        let rows_per_chunk = (CHUNK_VALUES / dims).max(1);
+        let mut buf = vec![0u32; (rows_per_chunk * dims).min(part.len())];
+        for (c, chunk) in part.chunks_mut(rows_per_chunk * dims).enumerate() {
+            let tmp = buf.get_mut(..chunk.len()).unwrap_or(&mut []);
+            s.fill(start + (row + c * rows_per_chunk) as u32, tmp)?;
+            for (o, &x) in chunk.iter_mut().zip(tmp.iter()) {
+                *o = f64::from(x & mask) * (1.0 / 4_294_967_296.0);
+            }
+        }
         Ok(())
     })
 }
+
+/// Values converted per chunk of a masked fill (whole rows; at least one row).
+const CHUNK_VALUES: usize = 4096;

@@ -288,7 +288,11 @@ pub fn sobol(
     let s = Sobol::with_order(d, Order::Gray).map_err(to_py)?;
     let (b, name): (Box<SharedSampler>, &str) = match randomizer {
         None => (boxed(s), "Sobol'"),
-        Some("owen") => (boxed(SobolOwen::new(s, seed, bits)), "Sobol' + Owen"),
+        // Masks its own values (and skips the levels below `bits`): no mask on top.
+        Some("owen") => {
+            let b = boxed(SobolOwen::new(s, seed, bits));
+            return Ok(NativeSampler::points(b, u32::MAX, "Sobol' + Owen"));
+        }
         Some("fast-owen") => (
             boxed(Scrambled::new(s, FastOwen::new(seed))),
             "Sobol' + fast Owen",
