@@ -53,10 +53,14 @@ def cases(quick):
     yield (f"Sobol' 2^{m} x {d}, scrambled, workers=-1 (SciPy ignores workers)", "lms",
            lambda: qmc.Sobol(d, rng=1).random(n),
            lambda: qmckit.Sobol(d, rng=1, randomizer="lms").random(n, workers=-1))
+    yield (f"Halton 2^{m} x {d}, scrambled, workers=1", "perm (default)",
+           lambda: qmc.Halton(d, rng=1).random(n),
+           lambda: qmckit.Halton(d, rng=1).random(n))
     for w in (1, -1):
-        yield (f"Halton 2^{m} x {d}, scrambled, workers={w}", "perm (default, SciPy's)",
+        yield (f"Halton 2^{m} x {d}, scrambled, workers={w}", "scipy-perm (SciPy's)",
                lambda w=w: qmc.Halton(d, rng=1).random(n, workers=w),
-               lambda w=w: qmckit.Halton(d, rng=1).random(n, workers=w))
+               lambda w=w: qmckit.Halton(d, rng=1, randomizer="scipy-perm").random(
+                   n, workers=w))
     yield (f"Halton 2^{m} x {d}, scrambled, workers=1", "owen",
            lambda: qmc.Halton(d, rng=1).random(n),
            lambda: qmckit.Halton(d, rng=1, randomizer="owen").random(n))

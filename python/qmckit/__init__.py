@@ -10,7 +10,7 @@ they drop into code written for ``scipy.stats.qmc`` (including
     qmckit.discrepancy(x, method="CD")
 
 Unscrambled ``Sobol`` and ``Halton``, ``Sobol(randomizer="lms")`` and
-``Halton(randomizer="perm")`` (the default) give the same points as SciPy's engines.
+``Halton(randomizer="scipy-perm")`` give the same points as SciPy's engines.
 """
 
 from ._qmckit import __version__

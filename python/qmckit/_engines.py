@@ -361,14 +361,18 @@ class Sobol(_NativeEngine):
 class Halton(_NativeEngine):
     """Halton sequence, as :class:`scipy.stats.qmc.Halton`.
 
-    ``randomizer="perm"`` (default) scrambles with random digit permutations drawn from
-    ``rng`` exactly as SciPy draws them (Owen 2017), and evaluates the points in SciPy's
-    floating-point arithmetic: the same points as ``scipy.stats.qmc.Halton`` for the same
-    ``rng``, to the last bit, scrambled or not. ``randomizer="owen"`` is qmckit's nested
-    (Owen) scrambling in base ``b`` (0.32 fixed point; up to 1024 dimensions).
+    ``randomizer="perm"`` (default) scrambles with random digit permutations (one per
+    digit place and dimension, Owen 2017), keyed by a seed drawn from ``rng``, and computes
+    the points in qmckit's exact 0.32 fixed point (``x / 2**32``) by runs of the lowest
+    digits: many times faster than SciPy, but not SciPy's values. ``randomizer="scipy-perm"``
+    draws the permutations from ``rng`` exactly as SciPy draws them and evaluates the points
+    in SciPy's floating-point arithmetic: the same points as ``scipy.stats.qmc.Halton`` for
+    the same ``rng``, to the last bit (as ``scramble=False`` always is).
+    ``randomizer="owen"`` is qmckit's nested (Owen) scrambling in base ``b`` (0.32 fixed
+    point; up to 1024 dimensions).
     """
 
-    RANDOMIZERS = ("perm", "owen")
+    RANDOMIZERS = ("perm", "scipy-perm", "owen")
 
     @_transition_to_rng("seed", replace_doc=False)
     def __init__(
@@ -391,7 +395,7 @@ class Halton(_NativeEngine):
             return None
         if not self.scramble:
             return self._make("halton_scipy", self.base)
-        if self.randomizer == "perm":
+        if self.randomizer == "scipy-perm":
             perms = [
                 np.ascontiguousarray(
                     _van_der_corput_permutations(b, rng=self.rng), dtype=np.int64
@@ -399,7 +403,14 @@ class Halton(_NativeEngine):
                 for b in self.base
             ]
             return self._make("halton_scipy", self.base, perms)
-        return self._make("halton", self.d, "owen", _draw_seed(self.rng))
+        if self.d > _qmckit.HALTON_MAX_DIMS:
+            raise ValueError(
+                f"randomizer={self.randomizer!r} supports up to {_qmckit.HALTON_MAX_DIMS} "
+                f"dimensions (qmckit's Halton table), got d={self.d}; "
+                "randomizer='scipy-perm' (SciPy's scramble) has no such limit"
+            )
+        native = {"perm": "perm-hash", "owen": "owen"}[self.randomizer]
+        return self._make("halton", self.d, native, _draw_seed(self.rng))
 
 
 class LatinHypercube(_NativeEngine):

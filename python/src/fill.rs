@@ -4,20 +4,28 @@
 
 use qmckit::Sampler;
 
-/// A sampler shared between fill threads.
-pub type SharedSampler = dyn Sampler + Send + Sync;
+/// A sampler shared between fill threads, with its `f64` fill: the sampler's own
+/// `fill_as::<f64>` (its batch paths, written straight into the caller's buffer), which a
+/// `dyn Sampler` cannot call (it is generic).
+pub trait Fill: Sampler + Send + Sync {
+    /// `out` (whole rows) with points `start ..` as `f64`, `x / 2^32`.
+    ///
+    /// # Errors
+    /// The sampler's (buffer length, index past its end).
+    fn fill_f64(&self, start: u32, out: &mut [f64]) -> qmckit::Result<()>;
+}
 
-/// Values converted per chunk (whole rows; at least one row).
-const CHUNK_VALUES: usize = 4096;
+impl<S: Sampler + Send + Sync> Fill for S {
+    fn fill_f64(&self, start: u32, out: &mut [f64]) -> qmckit::Result<()> {
+        self.fill_as(start, out)
+    }
+}
+
+/// A sampler shared between fill threads.
+pub type SharedSampler = dyn Fill;
 
 /// Rows below which a fill stays on the calling thread.
 const MIN_ROWS_PER_THREAD: usize = 1024;
-
-/// `x / 2^32` (exact).
-#[inline]
-pub fn to_f64(x: u32) -> f64 {
-    f64::from(x) * (1.0 / 4_294_967_296.0)
-}
 
 /// The work on one part of a split fill: `(first_row, rows)`.
 pub type Part<'a, T, E> = dyn Fn(usize, &mut [T]) -> Result<(), E> + Sync + 'a;
@@ -95,8 +103,8 @@ pub fn fill_u32(
     })
 }
 
-/// Rows `start ..` of `s` into `out` as `f64` (`(x & mask) / 2^32`, exact), through a
-/// per-thread buffer of whole rows.
+/// Rows `start ..` of `s` into `out` as `f64` (`(x & mask) / 2^32`, exact): unmasked, each
+/// thread through the sampler's own `f64` fill straight into its rows.
 ///
 /// # Errors
 /// The sampler's (buffer length, index past its end).
@@ -109,6 +117,13 @@ pub fn fill_f64(
 ) -> qmckit::Result<()> {
     let dims = s.dims().max(1);
     qmckit::sampler::check_fill(s, start, out.len())?;
+    if mask == u32::MAX {
+        return split_rows(out, dims, workers, &|row, part: &mut [f64]| {
+            s.fill_f64(start + row as u32, part)
+        });
+    }
+    // Masked: the u32 fill, masked and converted in one pass over a per-thread buffer
+    // (one pass over the output instead of two).
     split_rows(out, dims, workers, &|row, part: &mut [f64]| {
         let rows_per_chunk = (CHUNK_VALUES / dims).max(1);
         let mut buf = vec![0u32; (rows_per_chunk * dims).min(part.len())];
@@ -116,9 +131,12 @@ pub fn fill_f64(
             let tmp = buf.get_mut(..chunk.len()).unwrap_or(&mut []);
             s.fill(start + (row + c * rows_per_chunk) as u32, tmp)?;
             for (o, &x) in chunk.iter_mut().zip(tmp.iter()) {
-                *o = to_f64(x & mask);
+                *o = f64::from(x & mask) * (1.0 / 4_294_967_296.0);
             }
         }
         Ok(())
     })
 }
+
+/// Values converted per chunk of a masked fill (whole rows; at least one row).
+const CHUNK_VALUES: usize = 4096;

@@ -1,6 +1,6 @@
 //! `qmckit._qmckit`: the native layer of the Python package. Point generators fill
-//! preallocated NumPy arrays in place ([`samplers`]); discrepancies run over qmckit's
-//! analysis ([`discrepancy`]). The Python package (`qmckit`) wraps them in SciPy's
+//! preallocated NumPy arrays in place (module `samplers`); discrepancies run over qmckit's
+//! analysis (module `discrepancy`). The Python package (`qmckit`) wraps them in SciPy's
 //! `QMCEngine` interface.
 
 use pyo3::prelude::*;
@@ -11,6 +11,7 @@ mod fill;
 mod poisson;
 mod samplers;
 mod scipy_halton;
+mod sobol_owen;
 
 #[pymodule]
 fn _qmckit(m: &Bound<'_, PyModule>) -> PyResult<()> {

@@ -10,18 +10,18 @@ use numpy::{PyReadonlyArray1, PyReadonlyArray2, PyReadwriteArray2, PyUntypedArra
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use qmckit::digital::DigitalNetB;
+use qmckit::digital::sobol::Order;
 use qmckit::lattice::Rank1Lattice;
 use qmckit::randomize::digits::DigitScramble;
 use qmckit::randomize::{
-    Affine, CranleyPatterson, DigitalShift, ExactOwen, FastOwen, Randomizer, Randomizes, Scrambled,
-    Scrambler,
+    Affine, CranleyPatterson, DigitalShift, FastOwen, Randomizer, Randomizes, Scrambled, Scrambler,
 };
-use qmckit::digital::sobol::Order;
 use qmckit::{Base2Digital, Halton, LatinHypercube, Sampler, Sobol};
 
 use crate::error::{to_py, value_error};
 use crate::fill::{self, SharedSampler};
 use crate::scipy_halton::{Dimension, ScipyHalton};
+use crate::sobol_owen::SobolOwen;
 
 /// Fills of at least this many values run with the GIL released.
 const DETACH_VALUES: usize = 1 << 14;
@@ -288,10 +288,11 @@ pub fn sobol(
     let s = Sobol::with_order(d, Order::Gray).map_err(to_py)?;
     let (b, name): (Box<SharedSampler>, &str) = match randomizer {
         None => (boxed(s), "Sobol'"),
-        Some("owen") => (
-            boxed(Scrambled::new(s, ExactOwen::new(seed))),
-            "Sobol' + Owen",
-        ),
+        // Masks its own values (and skips the levels below `bits`): no mask on top.
+        Some("owen") => {
+            let b = boxed(SobolOwen::new(s, seed, bits));
+            return Ok(NativeSampler::points(b, u32::MAX, "Sobol' + Owen"));
+        }
         Some("fast-owen") => (
             boxed(Scrambled::new(s, FastOwen::new(seed))),
             "Sobol' + fast Owen",

@@ -19,6 +19,7 @@ ALL_ENGINES = [
     engine_with(qmckit.Sobol, randomizer="lms"),
     engine_with(qmckit.Sobol, randomizer="xor"),
     qmckit.Halton,
+    engine_with(qmckit.Halton, randomizer="scipy-perm"),
     engine_with(qmckit.Halton, randomizer="owen"),
     qmckit.LatinHypercube,
     qmckit.Lattice,

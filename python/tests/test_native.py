@@ -171,6 +171,7 @@ def test_finite_sets_refuse_past_their_end():
     "make, match",
     [
         (lambda: qmckit.Halton(2000, randomizer="owen"), "dimension"),
+        (lambda: qmckit.Halton(2000), "scipy-perm"),
         (lambda: qmckit.Lattice(10_000), "dimension"),
         (lambda: qmckit.Sobol(2, randomizer="nope"), "not a valid randomizer"),
         (lambda: qmckit.Halton(2, randomizer="nope"), "not a valid randomizer"),
@@ -258,3 +259,35 @@ def test_poisson_disk_rectangle_and_continuation():
 def test_poisson_disk_refuses_above_eight_dimensions():
     with pytest.raises(ValueError, match="dimension"):
         qmckit.PoissonDisk(9, radius=0.5).random(1)
+
+
+@pytest.mark.parametrize("randomizer", ["perm", "owen"])
+def test_halton_fill_any_split(randomizer):
+    """qmckit's Halton scrambles filled in one call, in uneven chunks (runs starting
+    inside the digit tables) and as 0.32 integers: the same values."""
+    whole = qmckit.Halton(8, rng=5, randomizer=randomizer).random(5000)
+    e = qmckit.Halton(8, rng=5, randomizer=randomizer)
+    parts = np.vstack([e.random(k) for k in (1, 7, 1000, 2992, 1000)])
+    np.testing.assert_array_equal(whole, parts)
+    raw = np.empty((5000, 8), dtype=np.uint32)
+    qmckit.Halton(8, rng=5, randomizer=randomizer).fill(raw)
+    np.testing.assert_array_equal(whole, raw / 2**32)
+
+
+def test_halton_many_dims_scipy_perm():
+    x = qmckit.Halton(2000, rng=1, randomizer="scipy-perm").random(4)
+    assert x.shape == (4, 2000)
+
+
+def test_sobol_owen_fill_any_split():
+    """The batched exact Owen fill: one call, uneven chunks, several threads and 0.32
+    integers give the same values, kept to ``bits`` bits."""
+    whole = qmckit.Sobol(5, rng=3).random(6000)
+    e = qmckit.Sobol(5, rng=3)
+    parts = np.vstack([e.random(k) for k in (1, 3, 2044, 3952)])
+    np.testing.assert_array_equal(whole, parts)
+    np.testing.assert_array_equal(whole, qmckit.Sobol(5, rng=3).random(6000, workers=3))
+    raw = np.empty((6000, 5), dtype=np.uint32)
+    qmckit.Sobol(5, rng=3).fill(raw)
+    np.testing.assert_array_equal(whole, raw / 2**32)
+    assert np.all(raw % 4 == 0)  # bits=30

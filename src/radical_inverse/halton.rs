@@ -246,6 +246,11 @@ impl Sampler for Halton {
         if rows == 0 {
             return Ok(());
         }
+        #[cfg(feature = "std")]
+        if super::permuted::is_per_place(&self.scramble) && self.dims > 0 {
+            self.fill_permuted(start, out, rows);
+            return Ok(());
+        }
         if !self.scramble.is_none() && self.dims > 0 {
             for (k, row) in out.chunks_exact_mut(self.dims).enumerate() {
                 self.point_as(start + k as u32, row);
@@ -265,7 +270,52 @@ impl Sampler for Halton {
     }
 }
 
+/// Rows a block of the digit-permuted fill (its columns are written while the block's rows
+/// are in cache).
+#[cfg(feature = "std")]
+const PERMUTED_BLOCK: usize = 2048;
+
 impl Halton {
+    /// The fill of a sequence scrambled by one permutation a digit place (already
+    /// range-checked, `rows >= 1`): block by block of rows, each dimension from its
+    /// resumable [`PermutedFill`](super::permuted::PermutedFill) when the fill has at least
+    /// `base` rows (its tables are then paid for), else value by value. Same values as
+    /// [`sample`](Sampler::sample).
+    #[cfg(feature = "std")]
+    fn fill_permuted<T: FromFraction>(&self, start: u32, out: &mut [T], rows: usize) {
+        use super::permuted::PermutedFill;
+        let dims = self.dims;
+        let mut states: std::vec::Vec<Option<PermutedFill>> = HALTON_BASES
+            .iter()
+            .take(dims)
+            .enumerate()
+            .map(|(dim, ri)| {
+                (rows as u64 >= ri.base() as u64)
+                    .then(|| PermutedFill::new(ri, &self.scramble, dim, start))
+            })
+            .collect();
+        for (b, block) in out.chunks_mut(PERMUTED_BLOCK * dims).enumerate() {
+            let n = block.len() / dims;
+            let first = start as usize + b * PERMUTED_BLOCK;
+            for (dim, (state, ri)) in states.iter_mut().zip(HALTON_BASES.iter()).enumerate() {
+                let Some(column) = block.get_mut(dim..) else {
+                    continue;
+                };
+                match state {
+                    Some(s) => s.fill_strided_as(column, dims, n),
+                    None => {
+                        for (k, slot) in column.iter_mut().step_by(dims).take(n).enumerate() {
+                            // first + k < start + rows <= 2^32 (range-checked).
+                            let index = (first + k) as u32;
+                            *slot =
+                                T::from_fraction(ri.sample_scrambled(index, &self.scramble, dim));
+                        }
+                    }
+                }
+            }
+        }
+    }
+
     /// Point `index` into `out`, converted: its first `out.len()` coordinates (callers pass
     /// `dims()` slots; no bound beyond the table's is needed, which keeps the loop simple).
     #[inline]
@@ -392,6 +442,36 @@ mod tests {
     /// edges (7, 8, 9, 17 dims), the last prime base with a run table (dimension 54, base
     /// 251) and past it, all 1024 dimensions, row counts that are not a multiple of the block,
     /// and a range that ends at index `u32::MAX`.
+    /// The digit-permuted fill (random permutations and Faure's; tables for the dimensions
+    /// whose base is at most the row count, value by value above it) against random access:
+    /// runs that start mid-table, blocks of rows, bases past the low table (b^c > 1024 at
+    /// c = 1), and a range that ends at index `u32::MAX`.
+    #[cfg(feature = "std")]
+    #[test]
+    fn permuted_fill_matches_random_access() {
+        for scramble in [DigitScramble::Permutations(7), DigitScramble::Faure] {
+            for dims in [1, 2, 8, 9, 200] {
+                let h = Halton::with_scramble(dims, scramble).unwrap();
+                for (start, rows) in [(0u32, 5000usize), (1234, 2049), (u32::MAX - 1300, 1301)] {
+                    let mut out = vec![7u32; rows * dims];
+                    let mut wide = vec![7f64; rows * dims];
+                    Sampler::fill(&h, start, &mut out).unwrap();
+                    h.fill_as(start, &mut wide).unwrap();
+                    for (k, (point, wide)) in
+                        out.chunks_exact(dims).zip(wide.chunks(dims)).enumerate()
+                    {
+                        for (dim, (&x, &y)) in point.iter().zip(wide).enumerate() {
+                            let i = start + k as u32;
+                            let u = h.sample(i, dim).unwrap();
+                            assert_eq!(x, u, "{scramble:?} d {dims} i {i} dim {dim}");
+                            assert_eq!(y.to_bits(), to_f64(u).to_bits());
+                        }
+                    }
+                }
+            }
+        }
+    }
+
     #[test]
     fn fill_matches_random_access_across_blocks() {
         for dims in [1, 2, 3, 4, 7, 8, 9, 17, 32, 54, 55, 56, 130, 1024] {

@@ -48,6 +48,8 @@ use crate::randomize::digits::DigitScramble;
 mod fill;
 pub mod halton;
 pub mod hammersley;
+#[cfg(feature = "std")]
+mod permuted;
 mod random_access;
 mod sequential;
 mod tables;

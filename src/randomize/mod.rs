@@ -87,6 +87,8 @@ pub use affine::Affine;
 #[cfg(feature = "std")]
 pub use lms::LmsCache;
 pub use lms::{Lms, LmsDimension};
+#[cfg(feature = "std")]
+pub use owen::ExactOwenTable;
 pub use owen::{ExactOwen, ExactOwenScrambler, FastOwen, FastOwenScrambler, OwenHash};
 pub use pbrt_owen::PbrtOwenScrambler;
 pub use shift::{CranleyPatterson, DigitalShift, DigitalShiftScrambler, RotationScrambler};

@@ -277,3 +277,197 @@ impl Randomizer for FastOwen {
 }
 
 impl<S: Base2Digital + ?Sized> Randomizes<S> for FastOwen {}
+
+/// [`ExactOwenScrambler`] with the flips of its top `levels` tree levels tabled: for a
+/// batch of values, the flips of level `k` depend only on the top `k` bits of a value, so
+/// the top levels are `2^levels - 1` distinct hashes, computed once (a tree walk) rather
+/// than once a value. The lower levels are hashed a value at a time, a block of
+/// 16 values per level (so the hashes vectorize). Same bits as
+/// [`ExactOwenScrambler::scramble`]. `std` only (the table is allocated: `2^levels` `u32`).
+#[cfg(feature = "std")]
+#[derive(Clone, Debug)]
+pub struct ExactOwenTable {
+    key: u64,
+    levels: u32,
+    /// The flips of levels `0 .. levels` for every `levels`-bit prefix.
+    flips: std::vec::Vec<u32>,
+}
+
+/// Values a block of [`ExactOwenTable::scramble_top_strided`].
+#[cfg(feature = "std")]
+const OWEN_LANES: usize = 16;
+
+#[cfg(feature = "std")]
+impl ExactOwenScrambler {
+    /// The table of this scrambler's top `levels` levels (clamped to `1 ..= 24`): `2^levels
+    /// - 1` hashes, `2^levels` `u32` of memory. Pays for itself on batches of about
+    /// `2^levels` values or more.
+    pub fn table(&self, levels: u32) -> ExactOwenTable {
+        let levels = levels.clamp(1, 24);
+        let mut flips = std::vec![0u32; 1usize << levels];
+        // After step k, flips[p] (p < 2^(k+1)) holds the flips of levels 0..=k for the
+        // (k+1)-bit prefix p; the parent p >> 1 is read before its slot is overwritten.
+        for k in 0..levels {
+            for p in (0..1usize << k).rev() {
+                let node = (1u64 << k) | p as u64;
+                let flip = ((mix64(self.key ^ node) >> 63) as u32) << (31 - k);
+                let v = flips.get(p).copied().unwrap_or(0) | flip;
+                if let Some(pair) = flips.get_mut(2 * p..2 * p + 2) {
+                    pair.fill(v);
+                }
+            }
+        }
+        ExactOwenTable {
+            key: self.key,
+            levels,
+            flips,
+        }
+    }
+}
+
+#[cfg(feature = "std")]
+impl ExactOwenTable {
+    /// The levels tabled.
+    pub fn levels(&self) -> u32 {
+        self.levels
+    }
+
+    /// `scramble(x) & mask` with `mask` the top `bits` bits (`bits` clamped to `1 ..= 32`):
+    /// the levels at and below `bits` are not hashed.
+    #[inline]
+    pub fn scramble_top(&self, x: u32, bits: u32) -> u32 {
+        let bits = bits.clamp(1, 32);
+        let mut out = x ^ self.top(x);
+        for k in self.levels..bits {
+            out ^= self.flip(x, k);
+        }
+        out & (u32::MAX << (32 - bits))
+    }
+
+    /// The flips of the tabled levels for `x`.
+    #[inline(always)]
+    fn top(&self, x: u32) -> u32 {
+        // levels in 1..=24: the shift is in range (wrapping only drops the check).
+        self.flips
+            .get(x.wrapping_shr(32u32.wrapping_sub(self.levels)) as usize)
+            .copied()
+            .unwrap_or(0)
+    }
+
+    /// The flip of level `k` (`1 <= k < 32`) for `x`, in place.
+    #[inline(always)]
+    fn flip(&self, x: u32, k: u32) -> u32 {
+        // 1 <= k < 32: every shift is in range; the wrapping forms only drop the overflow
+        // checks (which would keep the lanes from vectorizing).
+        let node = 1u64.wrapping_shl(k) | u64::from(x.wrapping_shr(32u32.wrapping_sub(k)));
+        ((mix64(self.key ^ node) >> 63) as u32).wrapping_shl(31u32.wrapping_sub(k))
+    }
+
+    /// [`scramble_top`](Self::scramble_top) of `xs[0]`, `xs[stride]`, ... in place, with
+    /// the widest vector build the CPU runs.
+    pub fn scramble_top_strided(&self, xs: &mut [u32], stride: usize, bits: u32) {
+        let stride = stride.max(1);
+        let bits = bits.clamp(1, 32);
+        crate::dispatch::run_at(
+            crate::dispatch::level(),
+            OwenTopKernel {
+                t: self,
+                xs,
+                stride,
+                bits,
+            },
+        );
+    }
+
+    /// Blocks of [`OWEN_LANES`] values, level by level (the hashes of a level are
+    /// independent, so the compiler vectorizes them), then the rest one by one.
+    #[inline(always)]
+    fn scramble_blocks(&self, xs: &mut [u32], stride: usize, bits: u32) {
+        let mask = u32::MAX << (32 - bits);
+        let count = xs.len().div_ceil(stride);
+        let full = count / OWEN_LANES;
+        for b in 0..full {
+            let base = b * OWEN_LANES * stride;
+            let mut x = [0u32; OWEN_LANES];
+            for (l, v) in x.iter_mut().enumerate() {
+                *v = xs.get(base + l * stride).copied().unwrap_or(0);
+            }
+            let mut out = [0u32; OWEN_LANES];
+            for (o, &v) in out.iter_mut().zip(&x) {
+                *o = v ^ self.top(v);
+            }
+            for k in self.levels..bits {
+                for (o, &v) in out.iter_mut().zip(&x) {
+                    *o ^= self.flip(v, k);
+                }
+            }
+            for (l, &o) in out.iter().enumerate() {
+                if let Some(slot) = xs.get_mut(base + l * stride) {
+                    *slot = o & mask;
+                }
+            }
+        }
+        for slot in xs.iter_mut().step_by(stride).skip(full * OWEN_LANES) {
+            *slot = self.scramble_top(*slot, bits);
+        }
+    }
+}
+
+/// [`ExactOwenTable::scramble_top_strided`] as a dispatched kernel.
+#[cfg(feature = "std")]
+struct OwenTopKernel<'a> {
+    t: &'a ExactOwenTable,
+    xs: &'a mut [u32],
+    stride: usize,
+    bits: u32,
+}
+
+#[cfg(feature = "std")]
+impl crate::dispatch::Kernel for OwenTopKernel<'_> {
+    type Output = ();
+    #[inline(always)]
+    fn run(self) {
+        self.t.scramble_blocks(self.xs, self.stride, self.bits);
+    }
+}
+
+#[cfg(all(test, feature = "std"))]
+mod table_tests {
+    use super::*;
+
+    /// The tabled scramble against the definition: every level count, masks of 1 to 32
+    /// bits, strides, and lengths that leave a partial block.
+    #[test]
+    fn table_matches_scramble() {
+        let xs: std::vec::Vec<u32> = (0..333u64)
+            .map(|i| (mix64(i.wrapping_mul(0x9E37_79B9)) >> 7) as u32)
+            .chain([0, u32::MAX, 0x8000_0000, 1])
+            .collect();
+        for seed in [0u64, 5, u64::MAX] {
+            for dim in [0usize, 3] {
+                let s = ExactOwen::new(seed).scrambler(dim);
+                for levels in [1u32, 2, 7, 16, 24] {
+                    let t = s.table(levels);
+                    for bits in [1u32, 13, 30, 31, 32] {
+                        let mask = u32::MAX << (32 - bits);
+                        for stride in [1usize, 3] {
+                            let mut got = xs.clone();
+                            t.scramble_top_strided(&mut got, stride, bits);
+                            for (i, (&g, &x)) in got.iter().zip(&xs).enumerate() {
+                                let want = if i % stride == 0 {
+                                    s.scramble(x) & mask
+                                } else {
+                                    x
+                                };
+                                assert_eq!(g, want, "seed {seed} levels {levels} bits {bits}");
+                                if i % stride == 0 {
+                                    assert_eq!(t.scramble_top(x, bits), want);
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
