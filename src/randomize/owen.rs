@@ -101,7 +101,9 @@ impl Randomizer for ExactOwen {
     }
 }
 
-impl<S: Base2Digital + ?Sized> Randomizes<S> for ExactOwen {}
+impl<S: Base2Digital + ?Sized> Randomizes<S> for ExactOwen {
+    super::base2_affine_fill!();
+}
 
 /// Which hash [`FastOwen`] uses.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -276,4 +278,6 @@ impl Randomizer for FastOwen {
     }
 }
 
-impl<S: Base2Digital + ?Sized> Randomizes<S> for FastOwen {}
+impl<S: Base2Digital + ?Sized> Randomizes<S> for FastOwen {
+    super::base2_affine_fill!();
+}
