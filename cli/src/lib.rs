@@ -25,6 +25,7 @@ mod points;
 mod progress;
 mod report;
 pub mod scene;
+mod spec;
 mod spectrum;
 mod toolbox;
 mod tvalue;

@@ -13,7 +13,7 @@ use qmckit::randomize::{CranleyPatterson, Scrambled, Tent};
 use qmckit::work::Budget;
 
 use super::Failure;
-use super::points::{SamplerName, ScrambleName, Spec, value_name};
+use super::spec::{SamplerName, ScrambleName, Spec, value_name};
 
 /// Largest generating-vector file read (bytes): 9125 dimensions take 60 KiB.
 const MAX_VECTOR_FILE: u64 = 64 << 20;
