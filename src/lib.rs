@@ -14,8 +14,11 @@
 //! Each layer builds on the ones above it. The exceptions reach into [`randomize`], which
 //! itself needs only the core: constructions apply some randomizations inside them (the
 //! base-`b` digit scrambles of [`RadicalInverse`], [`OwenSobol`]'s hash-based Owen
-//! scrambling), and [`Sampler::fill_affine`] takes its affine maps ([`randomize::Affine`]).
-//! No module outside `analysis` imports `analysis`.
+//! scrambling), and [`Base2Digital::fill_affine`] takes its affine maps ([`bits::Affine`]).
+//! No module outside `analysis` imports `analysis` (but `catalog`, above it); run-time CPU
+//! dispatch is a leaf that imports nothing of the crate. `scripts/check_layers.py` checks
+//! this in CI: no import cycle, and every import goes to the module's own layer or an
+//! earlier one in the order core, randomize, constructions, uses, analysis, `catalog`.
 //!
 //! | layer | modules |
 //! |---|---|

@@ -10,6 +10,7 @@
 //! sequence that can pass `2^32` (a pixel sampler's global Sobol' index) is a `u64`.
 
 use crate::bits::FromFraction;
+use crate::dispatch::{self, Kernel, Level};
 use crate::error::{Error, Result};
 
 /// `u32`s the default [`Sampler::fill_as`] converts a call (4 KiB of stack).
@@ -32,9 +33,38 @@ fn convert_via<const N: usize, S: Sampler + ?Sized, T: FromFraction>(
         let tmp = buf.get_mut(..chunk.len()).unwrap_or(&mut []);
         // c * per < rows, so the index is at most the last one check_fill accepted.
         s.fill(start + (c * per) as u32, tmp)?;
-        crate::dispatch::convert(tmp, chunk);
+        convert(tmp, chunk);
     }
     Ok(())
+}
+
+/// Fractions to coordinates, compiled once per build ([`crate::dispatch::Kernel`]).
+struct Convert<'a, T> {
+    src: &'a [u32],
+    dst: &'a mut [T],
+}
+
+impl<T: FromFraction> Kernel for Convert<'_, T> {
+    type Output = ();
+    #[inline(always)]
+    fn run(self) {
+        for (y, &x) in self.dst.iter_mut().zip(self.src) {
+            *y = T::from_fraction(x);
+        }
+    }
+}
+
+/// `dst[j] = T::from_fraction(src[j])` (the shorter length), in the widest build this CPU
+/// runs: what [`Sampler::fill_as`] converts its `u32` buffer with.
+#[inline]
+pub(crate) fn convert<T: FromFraction>(src: &[u32], dst: &mut [T]) {
+    convert_at(dispatch::level(), src, dst);
+}
+
+/// [`convert`] with the widest build that is at most `want` and that the CPU runs.
+#[inline]
+pub(crate) fn convert_at<T: FromFraction>(want: Level, src: &[u32], dst: &mut [T]) {
+    dispatch::run_at(want, Convert { src, dst });
 }
 
 /// 2^32, the number of `u32` indices.
@@ -104,26 +134,6 @@ pub trait Sampler {
             self.point(start + k as u32, row)?;
         }
         Ok(())
-    }
-
-    /// [`fill`](Self::fill) with the affine map `maps(dim)` (`x -> M x ^ c` over GF(2))
-    /// applied to every coordinate of dimension `dim`: `Some` from samplers whose
-    /// coordinates are GF(2)-linear in the index bits (Sobol'), which fold the maps into
-    /// their generator matrices so the scramble costs nothing a value; `None` (the default)
-    /// when the sampler cannot, or when `maps` answers `None` for a dimension (then `out` may
-    /// be partly written: the caller fills it another way). [`crate::randomize::Scrambled`] calls it for affine scramblers (digital
-    /// shift, LMS).
-    ///
-    /// # Errors
-    /// As [`fill`](Self::fill), inside the `Some`.
-    fn fill_affine(
-        &self,
-        start: u32,
-        out: &mut [u32],
-        maps: &dyn Fn(usize) -> Option<crate::randomize::Affine>,
-    ) -> Option<Result<()>> {
-        let _ = (start, out, maps);
-        None
     }
 
     /// [`fill`](Self::fill) into any coordinate type ([`FromFraction`]: `f64`, `f32`,
@@ -221,12 +231,47 @@ pub fn check_fill<S: Sampler + ?Sized>(s: &S, start: u32, len: usize) -> Result<
 /// ([`crate::randomize::DigitalShift`], [`crate::randomize::ExactOwen`],
 /// [`crate::randomize::FastOwen`], [`crate::randomize::Lms`]) keep its nets and apply only
 /// to these (`Scrambled<S, R>` requires `R: Randomizes<S>`).
-pub trait Base2Digital: Sampler {}
+pub trait Base2Digital: Sampler {
+    /// [`fill`](Sampler::fill) with the affine map `maps(dim)` (`x -> M x ^ c` over GF(2))
+    /// applied to every coordinate of dimension `dim`: `Some` from constructions that fold
+    /// the maps into their generator matrices so the scramble costs nothing a value
+    /// (Sobol'); `None` (the default) when the construction cannot, or when `maps` answers
+    /// `None` for a dimension (then `out` may be partly written: the caller fills it
+    /// another way). [`crate::randomize::Scrambled`] calls it for affine scramblers
+    /// (digital shift, LMS, their compositions).
+    ///
+    /// # Errors
+    /// As [`fill`](Sampler::fill), inside the `Some`.
+    fn fill_affine(
+        &self,
+        start: u32,
+        out: &mut [u32],
+        maps: &dyn Fn(usize) -> Option<crate::bits::Affine>,
+    ) -> Option<Result<()>> {
+        let _ = (start, out, maps);
+        None
+    }
+}
 
-impl<S: Base2Digital + ?Sized> Base2Digital for &S {}
+/// Forwards [`Base2Digital`] through a pointer type.
+macro_rules! forward_base2 {
+    ($(#[$attr:meta])* $ptr:ty) => {
+        $(#[$attr])*
+        impl<S: Base2Digital + ?Sized> Base2Digital for $ptr {
+            fn fill_affine(
+                &self,
+                start: u32,
+                out: &mut [u32],
+                maps: &dyn Fn(usize) -> Option<crate::bits::Affine>,
+            ) -> Option<Result<()>> {
+                (**self).fill_affine(start, out, maps)
+            }
+        }
+    };
+}
 
-#[cfg(feature = "std")]
-impl<S: Base2Digital + ?Sized> Base2Digital for Box<S> {}
+forward_base2!(&S);
+forward_base2!(#[cfg(feature = "std")] Box<S>);
 
 /// Validates a finite set's size, `1 <= n <= 2^32`, and its dimension count, `dims >= 1`.
 pub(crate) const fn check_set(n: u64, dims: usize) -> Result<()> {
@@ -285,15 +330,6 @@ macro_rules! forward_sampler {
             fn fill(&self, start: u32, out: &mut [u32]) -> Result<()> {
                 (**self).fill(start, out)
             }
-
-            fn fill_affine(
-                &self,
-                start: u32,
-                out: &mut [u32],
-                maps: &dyn Fn(usize) -> Option<crate::randomize::Affine>,
-            ) -> Option<Result<()>> {
-                (**self).fill_affine(start, out, maps)
-            }
         }
     };
 }
@@ -308,3 +344,40 @@ forward_sampler!(
     #[cfg(feature = "std")]
     Box<S>
 );
+
+#[cfg(all(test, feature = "std"))]
+mod tests {
+    use super::*;
+
+    /// Every build of the conversion against `from_fraction`, for `f32`, `f64` and `u32`,
+    /// on the values where `f32` rounding changes (around powers of two) and a spread.
+    #[test]
+    fn every_conversion_build_matches_from_fraction() {
+        let mut xs: Vec<u32> = (0..32)
+            .flat_map(|b| [1u32 << b, (1u32 << b).wrapping_sub(1), (1u32 << b) + 1])
+            .collect();
+        xs.extend((0..2000u32).map(|k| k.wrapping_mul(0x9E37_79B9)));
+        xs.push(u32::MAX);
+        for lv in dispatch::levels() {
+            let mut f = vec![0f32; xs.len()];
+            convert_at(lv, &xs, &mut f);
+            let mut d = vec![0f64; xs.len()];
+            convert_at(lv, &xs, &mut d);
+            let mut u = vec![0u32; xs.len()];
+            convert_at(lv, &xs, &mut u);
+            for (j, &x) in xs.iter().enumerate() {
+                assert_eq!(
+                    f[j].to_bits(),
+                    crate::bits::to_f32(x).to_bits(),
+                    "{lv:?} f32 {x:#x}"
+                );
+                assert_eq!(
+                    d[j].to_bits(),
+                    crate::bits::to_f64(x).to_bits(),
+                    "{lv:?} f64 {x:#x}"
+                );
+                assert_eq!(u[j], x, "{lv:?} u32");
+            }
+        }
+    }
+}

@@ -121,7 +121,9 @@ impl Randomizer for LmsCache {
 }
 
 #[cfg(feature = "std")]
-impl<S: Base2Digital + ?Sized> Randomizes<S> for LmsCache {}
+impl<S: Base2Digital + ?Sized> Randomizes<S> for LmsCache {
+    super::base2_affine_fill!();
+}
 
 impl Randomizer for Lms {
     type Scrambler = LmsDimension;
@@ -134,7 +136,9 @@ impl Randomizer for Lms {
     }
 }
 
-impl<S: Base2Digital + ?Sized> Randomizes<S> for Lms {}
+impl<S: Base2Digital + ?Sized> Randomizes<S> for Lms {
+    super::base2_affine_fill!();
+}
 
 impl Scrambler for LmsDimension {
     const AFFINE: bool = true;

@@ -21,7 +21,7 @@
 //!
 //! The affine scramblers (digital shift, LMS, the identity and their compositions, marked by
 //! [`Scrambler::AFFINE`]) are folded into Sobol's direction numbers by `Scrambled`'s `fill`
-//! ([`Affine`], [`crate::Sampler::fill_affine`]): `M (C i) ^ c = (M C) i ^ c`, so a filled
+//! ([`Affine`], [`Base2Digital::fill_affine`]): `M (C i) ^ c = (M C) i ^ c`, so a filled
 //! LMS + shift Sobol' costs what the plain one does. Same bits as scrambling each value.
 //!
 //! Which randomizer applies to which construction is a type rule: `Scrambled<S, R>` is a
@@ -73,7 +73,7 @@
 //! # Ok::<(), qmckit::Error>(())
 //! ```
 
-mod affine;
+mod kernels;
 mod lms;
 mod owen;
 mod pbrt_owen;
@@ -83,7 +83,7 @@ mod tent;
 pub mod digits;
 pub mod shuffle;
 
-pub use affine::Affine;
+pub use crate::bits::Affine;
 #[cfg(feature = "std")]
 pub use lms::LmsCache;
 pub use lms::{Lms, LmsDimension};
@@ -96,8 +96,11 @@ pub use tent::{Shift, ShiftScrambler, Tent, TentScrambler};
 
 pub use crate::sampler::Base2Digital;
 
+use crate::bits::FromFraction;
+use crate::dispatch::{self, Level};
 use crate::error::Result;
-use crate::sampler::Sampler;
+use crate::sampler::{CONVERT_CHUNK, Sampler, check_fill};
+use kernels::{scramble_lanes_at, scramble_lanes_into_at, scramble_slice_at};
 
 /// One dimension's randomization, prepared by [`Randomizer::scrambler`]: a tiny `Copy`
 /// value applied to every coordinate of that dimension.
@@ -105,7 +108,7 @@ pub trait Scrambler: Copy {
     /// Whether every scrambler of this type is affine over GF(2) (`x -> M x ^ c`) and
     /// [`affine`](Self::affine) returns its map: the digital shift, LMS, the identity and
     /// compositions of them. A linear sequence (Sobol') then folds the map into its
-    /// generator matrices ([`crate::Sampler::fill_affine`]).
+    /// generator matrices ([`Base2Digital::fill_affine`]).
     const AFFINE: bool = false;
 
     /// The randomized coordinate (a 0.32 fraction). Pure.
@@ -155,7 +158,46 @@ pub trait Randomizer {
 
 /// `R: Randomizes<S>`: `R` is a valid randomization of the points of `S` (see the module
 /// table), which makes `Scrambled<S, R>` a [`Sampler`].
-pub trait Randomizes<S: ?Sized>: Randomizer {}
+pub trait Randomizes<S: ?Sized>: Randomizer {
+    /// How [`Scrambled`]'s fill reaches the sampler's folded affine fill
+    /// ([`Base2Digital::fill_affine`]): the base-2 digital randomizers, which require
+    /// `S: Base2Digital`, forward to it; the default (randomizers of any sampler) answers
+    /// `None`, and `Scrambled` then scrambles value by value. Only called when the
+    /// scrambler is [`Scrambler::AFFINE`]; `None` may leave `out` partly written.
+    ///
+    /// # Errors
+    /// As [`Sampler::fill`], inside the `Some`.
+    #[inline]
+    fn affine_fill(
+        sampler: &S,
+        start: u32,
+        out: &mut [u32],
+        maps: &dyn Fn(usize) -> Option<Affine>,
+    ) -> Option<Result<()>>
+    where
+        Self: Sized,
+    {
+        let _ = (sampler, start, out, maps);
+        None
+    }
+}
+
+/// The body of [`Randomizes::affine_fill`] for randomizers of [`Base2Digital`]
+/// constructions.
+macro_rules! base2_affine_fill {
+    () => {
+        #[inline]
+        fn affine_fill(
+            sampler: &S,
+            start: u32,
+            out: &mut [u32],
+            maps: &dyn Fn(usize) -> Option<crate::randomize::Affine>,
+        ) -> Option<crate::error::Result<()>> {
+            sampler.fill_affine(start, out, maps)
+        }
+    };
+}
+pub(crate) use base2_affine_fill;
 
 /// No randomization.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -206,7 +248,17 @@ impl<R: Randomizer> Randomizer for &R {
     }
 }
 
-impl<S: ?Sized, R: Randomizes<S>> Randomizes<S> for &R {}
+impl<S: ?Sized, R: Randomizes<S>> Randomizes<S> for &R {
+    #[inline]
+    fn affine_fill(
+        sampler: &S,
+        start: u32,
+        out: &mut [u32],
+        maps: &dyn Fn(usize) -> Option<Affine>,
+    ) -> Option<Result<()>> {
+        R::affine_fill(sampler, start, out, maps)
+    }
+}
 
 /// The scrambler of a `&dyn Randomizer`: the trait object and the dimension, applied per
 /// value through [`Randomizer::apply`] (a virtual call and the dimension's setup each
@@ -249,7 +301,9 @@ impl<'a> Randomizer for &'a dyn Randomizer {
 
 /// A trait object may hold any randomizer, so it is accepted where all of them apply: on
 /// [`Base2Digital`] constructions.
-impl<S: Base2Digital + ?Sized> Randomizes<S> for &dyn Randomizer {}
+impl<S: Base2Digital + ?Sized> Randomizes<S> for &dyn Randomizer {
+    base2_affine_fill!();
+}
 
 /// Composition: `self.0`, then `self.1`.
 impl<A: Scrambler, B: Scrambler> Scrambler for (A, B) {
@@ -277,7 +331,21 @@ impl<A: Randomizer, B: Randomizer> Randomizer for (A, B) {
     }
 }
 
-impl<S: ?Sized, A: Randomizes<S>, B: Randomizes<S>> Randomizes<S> for (A, B) {}
+impl<S: ?Sized, A: Randomizes<S>, B: Randomizes<S>> Randomizes<S> for (A, B) {
+    /// Whichever of the two reaches the sampler's affine fill.
+    #[inline]
+    fn affine_fill(
+        sampler: &S,
+        start: u32,
+        out: &mut [u32],
+        maps: &dyn Fn(usize) -> Option<Affine>,
+    ) -> Option<Result<()>> {
+        match A::affine_fill(sampler, start, out, maps) {
+            Some(done) => Some(done),
+            None => B::affine_fill(sampler, start, out, maps),
+        }
+    }
+}
 
 /// The per-dimension seed of randomizer `seed` in dimension `dim`: the top 32 bits of
 /// [`crate::hash::hash3`]`(seed, dim, 0x5EED)`, so that dimensions get independent
@@ -334,9 +402,9 @@ impl<S, R> Scrambled<S, R> {
 
 impl<S: Sampler, R: Randomizes<S>> Scrambled<S, R> {
     /// The dimensions' scramblers repeated over `width <= W` lanes (a whole number of rows),
-    /// applied element-wise to each chunk of `out` of that width.
+    /// each prepared once.
     #[inline]
-    fn scramble_rows<const W: usize>(&self, width: usize, out: &mut [u32]) {
+    fn lanes<const W: usize>(&self, width: usize) -> [R::Scrambler; W] {
         let dims = self.dims().max(1);
         let mut lanes = [self.randomizer.scrambler(0); W];
         for dim in 1..dims {
@@ -345,16 +413,86 @@ impl<S: Sampler, R: Randomizes<S>> Scrambled<S, R> {
                 *lane = s;
             }
         }
-        crate::dispatch::scramble_lanes(lanes.get(..width).unwrap_or(&[]), out);
+        lanes
+    }
+
+    /// The fill of points of at most [`ROW_LANES`] dimensions (`rows` validated): the
+    /// scramblers laid over `width = lane_width(dims)` lanes, prepared once for the whole
+    /// request, and the CPU's build asked once. In place for `u32` (`T = u32` and `out`
+    /// the sampler's own buffer), else through a stack buffer of whole lane patterns,
+    /// scrambled and converted in one pass.
+    #[inline]
+    fn fill_rows<const W: usize, T: FromFraction>(
+        &self,
+        level: Level,
+        width: usize,
+        start: u32,
+        out: &mut [T],
+        in_place: Option<&mut [u32]>,
+    ) -> Result<()> {
+        let lanes = self.lanes::<W>(width);
+        let lanes = lanes.get(..width).unwrap_or(&[]);
+        if let Some(xs) = in_place {
+            self.sampler.fill(start, xs)?;
+            scramble_lanes_at(level, lanes, xs);
+            return Ok(());
+        }
+        let dims = self.dims().max(1);
+        if out.len() <= SMALL {
+            let mut buf = [0u32; SMALL];
+            let xs = buf.get_mut(..out.len()).unwrap_or(&mut []);
+            self.sampler.fill(start, xs)?;
+            scramble_lanes_into_at(level, lanes, xs, out);
+            return Ok(());
+        }
+        // Whole lane patterns a chunk (width is a multiple of dims, so whole points too).
+        let chunk = CONVERT_CHUNK / width * width;
+        let per = chunk / dims;
+        let mut buf = [0u32; CONVERT_CHUNK];
+        for (c, part) in out.chunks_mut(chunk).enumerate() {
+            let xs = buf.get_mut(..part.len()).unwrap_or(&mut []);
+            // c * per < rows, so the index is at most the last one the caller validated.
+            self.sampler.fill(start + (c * per) as u32, xs)?;
+            scramble_lanes_into_at(level, lanes, xs, part);
+        }
+        Ok(())
+    }
+
+    /// [`fill_rows`](Self::fill_rows) with the lane width of this dimension count;
+    /// `dims <= ROW_LANES`.
+    #[inline]
+    fn fill_low<T: FromFraction>(
+        &self,
+        start: u32,
+        out: &mut [T],
+        in_place: Option<&mut [u32]>,
+    ) -> Result<()> {
+        let level = dispatch::level();
+        let width = lane_width(self.dims());
+        if width <= 16 {
+            self.fill_rows::<16, T>(level, width, start, out, in_place)
+        } else {
+            self.fill_rows::<ROW_LANES, T>(level, width, start, out, in_place)
+        }
     }
 }
+
+/// Values [`Scrambled::fill_as`] fills through its small stack buffer (one pixel's 16
+/// four-dimensional samples).
+const SMALL: usize = 64;
 
 /// A sampler with its dimensions' affine maps prepared (`Scrambled::fill_as`).
 #[cfg(feature = "std")]
 struct Prepared<'a, S> {
     sampler: &'a S,
     maps: &'a [Affine],
+    /// The randomizer's way to the sampler's folded fill ([`Randomizes::affine_fill`]).
+    fold: FoldFn<S>,
 }
+
+/// [`Randomizes::affine_fill`] of some randomizer.
+#[cfg(feature = "std")]
+type FoldFn<S> = fn(&S, u32, &mut [u32], &dyn Fn(usize) -> Option<Affine>) -> Option<Result<()>>;
 
 #[cfg(feature = "std")]
 impl<S: Sampler> Prepared<'_, S> {
@@ -378,9 +516,8 @@ impl<S: Sampler> Sampler for Prepared<'_, S> {
     }
 
     fn fill(&self, start: u32, out: &mut [u32]) -> Result<()> {
-        if let Some(done) = self
-            .sampler
-            .fill_affine(start, out, &|dim| self.maps.get(dim).copied())
+        if let Some(done) =
+            (self.fold)(self.sampler, start, out, &|dim| self.maps.get(dim).copied())
         {
             return done;
         }
@@ -411,13 +548,15 @@ impl<S: Sampler, R: Randomizes<S>> Sampler for Scrambled<S, R> {
     }
 
     /// With `std` and an affine scrambler, the dimensions' maps are prepared once for the
-    /// whole request (a conversion runs `fill` a chunk at a time, which would prepare them
-    /// per chunk); otherwise the default.
-    #[cfg(feature = "std")]
-    fn fill_as<T: crate::bits::FromFraction>(&self, start: u32, out: &mut [T]) -> Result<()>
+    /// whole request and folded into the sampler's fill where it can. Otherwise, up to
+    /// [`ROW_LANES`] dimensions, the scramblers are prepared once for the whole request and
+    /// each buffer the sampler fills is scrambled and converted in one pass (one vectorized
+    /// loop in the widest build the CPU runs); wider points take the default.
+    fn fill_as<T: FromFraction>(&self, start: u32, out: &mut [T]) -> Result<()>
     where
         Self: Sized,
     {
+        #[cfg(feature = "std")]
         if <R::Scrambler as Scrambler>::AFFINE {
             let dims = self.dims();
             let mut maps = Vec::new();
@@ -432,50 +571,52 @@ impl<S: Sampler, R: Randomizes<S>> Sampler for Scrambled<S, R> {
                     let prepared = Prepared {
                         sampler: &self.sampler,
                         maps: &maps,
+                        fold: R::affine_fill,
                     };
                     return crate::sampler::fill_as_by_chunks(&prepared, start, out);
                 }
             }
         }
-        crate::sampler::fill_as_by_chunks(self, start, out)
+        let dims = self.dims();
+        if dims == 0 || dims > ROW_LANES {
+            return crate::sampler::fill_as_by_chunks(self, start, out);
+        }
+        check_fill(self, start, out.len())?;
+        self.fill_low(start, out, None)
     }
 
     /// An affine scrambler (digital shift, LMS, compositions) folded into the sampler's
-    /// generator matrices where it has them ([`Sampler::fill_affine`]: Sobol'). Otherwise
-    /// the sampler's own (sequential) fill, then each dimension's scrambler, prepared once.
-    /// Up to [`ROW_LANES`] dimensions the scramblers are repeated over a whole number of rows
-    /// and applied element-wise to each chunk of that width; wider points have each column
-    /// gathered [`COLUMN`] values at a time into a contiguous buffer, scrambled there and
-    /// stored back. Both are vectorized (on x86-64 with `std` in the widest build the CPU
-    /// runs).
+    /// generator matrices where it has them ([`Base2Digital::fill_affine`]: Sobol').
+    /// Otherwise the sampler's own (sequential) fill, then each dimension's scrambler,
+    /// prepared once. Up to [`ROW_LANES`] dimensions the scramblers are repeated over a whole
+    /// number of rows and applied element-wise to each chunk of that width; wider points have
+    /// each column gathered [`COLUMN`] values at a time into a contiguous buffer, scrambled
+    /// there and stored back. Both are vectorized (on x86-64 with `std` in the widest build
+    /// the CPU runs).
     fn fill(&self, start: u32, out: &mut [u32]) -> Result<()> {
         if <R::Scrambler as Scrambler>::AFFINE
-            && let Some(done) = self
-                .sampler
-                .fill_affine(start, out, &|dim| self.randomizer.scrambler(dim).affine())
+            && let Some(done) = R::affine_fill(&self.sampler, start, out, &|dim| {
+                self.randomizer.scrambler(dim).affine()
+            })
         {
             return done;
         }
-        self.sampler.fill(start, out)?;
         let dims = self.dims();
         if dims == 0 {
-            return Ok(()); // unreachable: the sampler's fill refuses zero dimensions
+            return self.sampler.fill(start, out); // refuses zero dimensions
         }
         if dims == 1 {
-            crate::dispatch::scramble_slice(self.randomizer.scrambler(0), out);
+            self.sampler.fill(start, out)?;
+            scramble_slice_at(dispatch::level(), self.randomizer.scrambler(0), out);
             return Ok(());
         }
         if dims <= ROW_LANES {
             // Low dimensions: the scramblers repeated over whole rows, applied element-wise
             // (one scrambler prepared per dimension, copied down the lanes).
-            let width = lane_width(dims).min(out.len());
-            if width <= 16 {
-                self.scramble_rows::<16>(width, out);
-            } else {
-                self.scramble_rows::<ROW_LANES>(width, out);
-            }
-            return Ok(());
+            return self.fill_low::<u32>(start, &mut [], Some(out));
         }
+        self.sampler.fill(start, out)?;
+        let level = dispatch::level();
         let mut tmp = [0u32; COLUMN];
         for dim in 0..dims {
             let s = self.randomizer.scrambler(dim);
@@ -485,7 +626,7 @@ impl<S: Sampler, R: Randomizes<S>> Sampler for Scrambled<S, R> {
                     *t = row.get(dim).copied().unwrap_or(0);
                 }
                 let part = tmp.get_mut(..n).unwrap_or(&mut []);
-                crate::dispatch::scramble_slice(s, part);
+                scramble_slice_at(level, s, part);
                 for (row, t) in rows.chunks_exact_mut(dims).zip(part.iter()) {
                     if let Some(x) = row.get_mut(dim) {
                         *x = *t;

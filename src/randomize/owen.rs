@@ -101,7 +101,9 @@ impl Randomizer for ExactOwen {
     }
 }
 
-impl<S: Base2Digital + ?Sized> Randomizes<S> for ExactOwen {}
+impl<S: Base2Digital + ?Sized> Randomizes<S> for ExactOwen {
+    super::base2_affine_fill!();
+}
 
 /// Which hash [`FastOwen`] uses.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -254,9 +256,23 @@ impl Scrambler for FastOwenScrambler {
     }
 }
 
-/// `xs[j] = reverse(hash(reverse(xs[j]), keys[j % keys.len()]))`.
+/// `xs[j] = reverse(hash(reverse(xs[j]), keys[j % keys.len()]))`. A pattern of 16 lanes
+/// (points of 1, 2, 4, 8 or 16 dimensions laid over rows) goes through fixed-size chunks,
+/// one vector of the widest build a chunk.
 #[inline(always)]
 fn scramble_keyed(keys: &[u32], xs: &mut [u32], hash: fn(u32, u32) -> u32) {
+    if let Ok(keys) = <&[u32; 16]>::try_from(keys) {
+        let (full, rest) = xs.as_chunks_mut::<16>();
+        for chunk in full {
+            for (x, &k) in chunk.iter_mut().zip(keys) {
+                *x = reverse_bits(hash(reverse_bits(*x), k));
+            }
+        }
+        for (x, &k) in rest.iter_mut().zip(keys) {
+            *x = reverse_bits(hash(reverse_bits(*x), k));
+        }
+        return;
+    }
     for chunk in xs.chunks_mut(keys.len().max(1)) {
         for (x, &k) in chunk.iter_mut().zip(keys) {
             *x = reverse_bits(hash(reverse_bits(*x), k));
@@ -276,7 +292,9 @@ impl Randomizer for FastOwen {
     }
 }
 
-impl<S: Base2Digital + ?Sized> Randomizes<S> for FastOwen {}
+impl<S: Base2Digital + ?Sized> Randomizes<S> for FastOwen {
+    super::base2_affine_fill!();
+}
 
 /// [`ExactOwenScrambler`] with the flips of its top `levels` tree levels tabled: for a
 /// batch of values, the flips of level `k` depend only on the top `k` bits of a value, so

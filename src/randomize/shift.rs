@@ -85,7 +85,9 @@ impl Randomizer for DigitalShift {
     }
 }
 
-impl<S: Base2Digital + ?Sized> Randomizes<S> for DigitalShift {}
+impl<S: Base2Digital + ?Sized> Randomizes<S> for DigitalShift {
+    super::base2_affine_fill!();
+}
 
 /// Cranley–Patterson rotation: `x + u_dim mod 1` (wrapping `u32` addition), one uniform
 /// `u_dim` per dimension. Unbiased and cheap, but not a digital randomization: it does not

@@ -823,7 +823,7 @@ fn permute_of_an_index_past_n_terminates() {
     }
 }
 
-/// The affine scrambles folded into Sobol's direction numbers (`Sampler::fill_affine`) give
+/// The affine scrambles folded into Sobol's direction numbers (`Base2Digital::fill_affine`) give
 /// the bits of scrambling each value: LMS + digital shift, LMS alone, the shift alone, over
 /// both orders, block widths 1 to 40 and starts that cross high index bits; and a
 /// non-affine scramble (FastOwen) is untouched by the mechanism.

@@ -18,16 +18,15 @@
 //! [`OwenSobol`] (and the free functions [`owen_sobol`], [`owen_sobol_f32`]): the same bits
 //! as `Scrambled<Sobol, FastOwen>`.
 
+use crate::bits::Affine;
 use crate::bits::{gf2_mul, gray};
 use crate::error::{Error, Result};
-use crate::randomize::Affine;
 use crate::sampler::{Base2Digital, FULL_RANGE, Sampler, check};
 
 pub mod interlaced;
 mod owen;
 mod table;
 
-pub(crate) use owen::fill_blocks as owen_fill_blocks;
 pub use owen::{OwenSobol, owen_sobol, owen_sobol_f32};
 pub use table::SobolTable;
 pub(crate) use table::byte_tables;
@@ -379,18 +378,6 @@ impl Sampler for Sobol {
     fn fill(&self, start: u32, out: &mut [u32]) -> Result<()> {
         self.fill_maps(start, out, None).unwrap_or(Ok(()))
     }
-
-    /// The scramble folded into the direction numbers: `(M C) i ^ c`, the cost of the plain
-    /// fill plus `span + 1` map applications a dimension (`span`: the index bits the fill
-    /// changes).
-    fn fill_affine(
-        &self,
-        start: u32,
-        out: &mut [u32],
-        maps: &dyn Fn(usize) -> Option<Affine>,
-    ) -> Option<Result<()>> {
-        self.fill_maps(start, out, Some(maps))
-    }
 }
 
 impl Sobol {
@@ -451,4 +438,16 @@ impl Sobol {
 }
 
 /// Sobol' is a base-2 digital sequence: base-2 digital randomizations apply.
-impl Base2Digital for Sobol {}
+impl Base2Digital for Sobol {
+    /// The scramble folded into the direction numbers: `(M C) i ^ c`, the cost of the plain
+    /// fill plus `span + 1` map applications a dimension (`span`: the index bits the fill
+    /// changes).
+    fn fill_affine(
+        &self,
+        start: u32,
+        out: &mut [u32],
+        maps: &dyn Fn(usize) -> Option<Affine>,
+    ) -> Option<Result<()>> {
+        self.fill_maps(start, out, Some(maps))
+    }
+}

@@ -16,6 +16,7 @@
 
 use super::{SOBOL_DIRECTIONS, SOBOL_MAX_DIMS, Sobol, SobolDimension, byte_tables};
 use crate::bits::{reverse_bits, to_f32, to_f32_via_f64};
+use crate::dispatch::{self, Kernel};
 use crate::error::{Error, Result};
 use crate::randomize::{FastOwen, FastOwenScrambler, OwenHash, Scrambled, dimension_seed};
 use crate::sampler::{FULL_RANGE, Sampler, check};
@@ -209,7 +210,11 @@ impl OwenSobol {
     /// slices have the same length; `out` is then left untouched.
     pub fn fill_f32(&self, indices: &[u32], out: &mut [[f32; 4]]) -> Result<()> {
         check_lengths(indices, out)?;
-        crate::dispatch::owen_sobol4_fill_f32(self, indices, out);
+        dispatch::run(Fill4 {
+            s: self,
+            indices,
+            out,
+        });
         Ok(())
     }
 
@@ -222,6 +227,28 @@ impl OwenSobol {
         fill_blocks(self, indices, out);
         Ok(())
     }
+}
+
+/// The four-dimensional `f32` fill, compiled once per build ([`crate::dispatch::Kernel`]).
+struct Fill4<'a> {
+    s: &'a OwenSobol,
+    indices: &'a [u32],
+    out: &'a mut [[f32; 4]],
+}
+
+impl Kernel for Fill4<'_> {
+    type Output = ();
+    #[inline(always)]
+    fn run(self) {
+        fill_blocks(self.s, self.indices, self.out);
+    }
+}
+
+/// [`OwenSobol::fill_f32`] (lengths already checked) with the widest build that is at most
+/// `want` and that the CPU runs (for the test of every build).
+#[cfg(all(test, feature = "std"))]
+fn fill_f32_at(want: dispatch::Level, s: &OwenSobol, indices: &[u32], out: &mut [[f32; 4]]) {
+    dispatch::run_at(want, Fill4 { s, indices, out });
 }
 
 /// `Ok` when `out` has one slot per index.
@@ -242,7 +269,7 @@ fn check_lengths(indices: &[u32], out: &[[f32; 4]]) -> Result<()> {
 /// are 16 lanes of identical work that the compiler maps onto vectors of the build's width;
 /// the last `len % 4` points go one by one. 32-bit targets go point by point (small code).
 #[inline(always)]
-pub(crate) fn fill_blocks(s: &OwenSobol, indices: &[u32], out: &mut [[f32; 4]]) {
+fn fill_blocks(s: &OwenSobol, indices: &[u32], out: &mut [[f32; 4]]) {
     let n = indices.len().min(out.len());
     let (indices, out) = (
         indices.get(..n).unwrap_or(&[]),
@@ -355,5 +382,33 @@ pub const fn owen_sobol_f32(index: u32, dim: usize, seed: u64) -> Result<f32> {
     match owen_sobol(index, dim, seed) {
         Ok(x) => Ok(to_f32(x)),
         Err(e) => Err(e),
+    }
+}
+
+#[cfg(all(test, feature = "std"))]
+mod tests {
+    use super::*;
+
+    /// Every build the CPU runs, on lengths leaving 0 to 3 points past the blocks of four
+    /// and on unequal lengths, for both hashes, against the scalar `sample4_f32`.
+    #[test]
+    fn every_build_matches_the_scalar_path() {
+        let indices: Vec<u32> = (0..4099u32)
+            .map(|k| k.wrapping_mul(2_654_435_761) ^ (k >> 3))
+            .chain([0, 1, 255, 256, u32::MAX])
+            .collect();
+        for hash in [OwenHash::Vegdahl, OwenHash::LaineKarras] {
+            let s = OwenSobol::with_hash(4, 77, hash).unwrap();
+            for len in [0, 1, 2, 3, 4, 5, 6, 7, 4101, 4103, indices.len()] {
+                for lv in dispatch::levels() {
+                    let mut out = vec![[-1f32; 4]; len];
+                    fill_f32_at(lv, &s, &indices[..len], &mut out);
+                    for (k, o) in out.iter().enumerate() {
+                        let want = s.sample4_f32(indices[k]).map(f32::to_bits);
+                        assert_eq!(o.map(f32::to_bits), want, "{lv:?} {hash:?} len {len} k {k}");
+                    }
+                }
+            }
+        }
     }
 }
