@@ -3,7 +3,7 @@
 //! [`crate::analysis::variance`], the problems of [`crate::analysis::integrate`] (Genz's
 //! families, Keister, two options) and the pixel integrands of
 //! [`crate::analysis::screen_error`]. The functions stay where they are; the catalog
-//! names them and builds them ([`build_integrand`], `analysis`).
+//! names them and builds them (`build_integrand`, `analysis`).
 
 use super::{Entry, Param, alias, param};
 
@@ -97,7 +97,7 @@ impl IntegrandKind {
     }
 
     /// For a Genz family, the scale `s` of its default difficulty `a_k = s (1 + k) / d`
-    /// (as [`crate::analysis::integrate::test_suite`] has it); `None` for the others.
+    /// (as `analysis::integrate::test_suite` has it); `None` for the others.
     pub const fn genz_scale(self) -> Option<f64> {
         Some(match self {
             IntegrandKind::GenzOscillatory => 2.0,
@@ -324,7 +324,7 @@ mod built {
     use std::format;
     use std::vec::Vec;
 
-    /// The parameters of [`build_integrand`]; each applies to the integrands its field
+    /// The parameters of `build_integrand`; each applies to the integrands its field
     /// names.
     #[derive(Clone, Debug, Default, PartialEq)]
     pub struct IntegrandParams {
@@ -394,7 +394,7 @@ mod built {
     }
 
     /// The integrand `entry` names with `params`. The problems get the names and, by
-    /// default, the parameters of [`crate::analysis::integrate::test_suite`]
+    /// default, the parameters of `analysis::integrate::test_suite`
     /// (`genz-oscillatory-d5`, `keister-d3`, `european-d4`).
     ///
     /// ```

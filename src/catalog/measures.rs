@@ -1,6 +1,6 @@
 //! The measures of point sets: discrepancies, net quality, distances, spectra and
 //! integration errors. The table is `no_std`; the scalar measures evaluate behind
-//! `analysis` ([`MeasureEntry::scalar`]).
+//! `analysis` (`MeasureEntry::scalar`).
 
 use super::{Entry, Param, alias, param};
 
@@ -52,7 +52,7 @@ pub enum MeasureKind {
 /// What a measure returns.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Output {
-    /// One number ([`MeasureEntry::scalar`]).
+    /// One number (`MeasureEntry::scalar`).
     Scalar,
     /// Two numbers bounding the value.
     Bounds,

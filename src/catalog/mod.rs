@@ -8,8 +8,8 @@
 //! | [`SAMPLERS`] | [`SamplerKind`]: vdc, halton, sobol, lattice, ... | [`sampler`] | [`build`] (`std`): a `Box<dyn Sampler>` |
 //! | [`RANDOMIZERS`] | [`RandomizerKind`]: none, xor, owen, lms, shift, ... | [`randomizer`] | inside [`build`]; the rule is [`applies`] |
 //! | [`PIXEL_SAMPLERS`] | [`PixelKind`]: zsobol, image-sobol, ... | [`pixel_sampler`] | [`build_pixel`] (`std`): a `Box<dyn PixelSampler>` |
-//! | [`MEASURES`] | [`MeasureKind`]: star, cd, t-value, spectrum, ... | [`measure`] | [`MeasureEntry::scalar`] (`analysis`) |
-//! | [`INTEGRANDS`] | [`IntegrandKind`]: gaussian-peak, genz-*, keister, ... | [`integrand`] | [`build_integrand`] (`analysis`) |
+//! | [`MEASURES`] | [`MeasureKind`]: star, cd, t-value, spectrum, ... | [`measure`] | `MeasureEntry::scalar` (`analysis`) |
+//! | [`INTEGRANDS`] | [`IntegrandKind`]: gaussian-peak, genz-*, keister, ... | [`integrand`] | `build_integrand` (`analysis`) |
 //!
 //! The tables, the name resolution and the applicability rule are `no_std` and allocate
 //! nothing; the builders need `std` (boxes) and, for the blue-noise sets, the measures
