@@ -541,7 +541,9 @@ fn dem_within_a_budget_reports_progress() {
     let p = Points::new(&data, 3).unwrap();
     assert!(star_dem_within(p, &within(1e4), &no_progress).is_err());
     let calls = Mutex::new(Vec::new());
-    let got = star_dem_within(p, &within(1e6), &|done, total| {
+    // Admitted with room to spare: the deadline (1.25 times the budget) must not end a run
+    // slowed by a loaded machine; this part checks the value and the progress reports.
+    let got = star_dem_within(p, &Budget::seconds(60.0).unwrap(), &|done, total| {
         calls.lock().unwrap().push((done, total))
     })
     .unwrap();
