@@ -178,9 +178,12 @@ mod built {
     ///
     /// ```
     /// use qmckit::catalog::{self, PixelParams};
+    /// use qmckit::pixel::PixelSampler;
     /// let p = PixelParams { width: 16, height: 9, spp: 1, seed: 0 };
     /// let z = catalog::build_pixel(catalog::pixel_sampler("zsobol")?, None, &p)?;
-    /// assert_eq!(z.start_pixel_sample(1, 0, 0)?.get_1d_f32(), 0.570228934);
+    /// // A boxed sampler starts its pixel samples through the trait's path.
+    /// let mut first = PixelSampler::start_pixel_sample(&z, 1, 0, 0)?;
+    /// assert_eq!(first.get_1d_f32(), 0.570228934);
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     ///
