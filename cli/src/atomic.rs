@@ -6,9 +6,63 @@
 use std::fs::{self, File, OpenOptions};
 use std::io::{BufWriter, Write};
 use std::path::{Path, PathBuf};
+use std::sync::Mutex;
 use std::sync::atomic::{AtomicU32, Ordering};
 
 use super::Failure;
+
+/// The temporary files and directories of outputs in progress, removed by
+/// [`remove_pending`] when the process is interrupted (SIGINT, SIGTERM, SIGHUP), so that a
+/// killed command leaves nothing behind.
+static PENDING: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
+
+/// Records a temporary path as in progress.
+fn pending(path: &Path) {
+    if let Ok(mut p) = PENDING.lock() {
+        p.push(path.to_path_buf());
+    }
+}
+
+/// Forgets a temporary path (renamed into place or removed).
+fn settled(path: &Path) {
+    if let Ok(mut p) = PENDING.lock() {
+        p.retain(|q| q != path);
+    }
+}
+
+/// Removes every temporary output in progress; called by the termination handler
+/// ([`on_termination`]) before the process exits.
+pub fn remove_pending() {
+    let paths = match PENDING.lock() {
+        Ok(mut p) => std::mem::take(&mut *p),
+        Err(_) => return,
+    };
+    for path in paths {
+        // A directory still being written into may gain a file while it is removed: retry.
+        for _ in 0..3 {
+            let gone = if path.is_dir() {
+                fs::remove_dir_all(&path).is_ok()
+            } else {
+                fs::remove_file(&path).is_ok()
+            };
+            if gone || !path.exists() {
+                break;
+            }
+        }
+    }
+}
+
+/// Installs the handler that, on SIGINT, SIGTERM or SIGHUP, removes the temporary outputs
+/// in progress, prints one line and exits with status 130 (the user's files are as they
+/// were: nothing was renamed over them). Installing twice is harmless (the second is
+/// refused and ignored).
+pub fn on_termination() {
+    let _ = ctrlc::set_handler(|| {
+        remove_pending();
+        eprintln!("qmckit: interrupted; no output was written");
+        std::process::exit(130);
+    });
+}
 
 /// A failure of the environment (exit code 1) about `path`.
 fn env_failure(path: &Path, what: &str, e: std::io::Error) -> Failure {
@@ -73,11 +127,14 @@ pub fn write_with(
         )));
     }
     let tmp = sibling(path, "tmp");
-    let file = OpenOptions::new()
-        .write(true)
-        .create_new(true)
-        .open(&tmp)
-        .map_err(|e| env_failure(path, "cannot create a file beside it", e))?;
+    pending(&tmp);
+    let file = match OpenOptions::new().write(true).create_new(true).open(&tmp) {
+        Ok(f) => f,
+        Err(e) => {
+            settled(&tmp);
+            return Err(env_failure(path, "cannot create a file beside it", e));
+        }
+    };
     let mut out = BufWriter::new(file);
     let result = write(&mut out)
         .and_then(|()| {
@@ -95,6 +152,7 @@ pub fn write_with(
     if result.is_err() {
         let _ = fs::remove_file(&tmp);
     }
+    settled(&tmp);
     result
 }
 
@@ -155,8 +213,15 @@ impl StagedDir {
             fs::create_dir_all(parent).map_err(|e| env_failure(parent, "cannot create it", e))?;
         }
         let tmp = sibling(target, "tmp");
-        fs::create_dir(&tmp)
-            .map_err(|e| env_failure(target, "cannot create a directory beside it", e))?;
+        pending(&tmp);
+        if let Err(e) = fs::create_dir(&tmp) {
+            settled(&tmp);
+            return Err(env_failure(
+                target,
+                "cannot create a directory beside it",
+                e,
+            ));
+        }
         Ok(StagedDir {
             target: target.to_path_buf(),
             tmp,
@@ -196,6 +261,7 @@ impl StagedDir {
             ));
         }
         self.committed = true;
+        settled(&self.tmp);
         if let Some(old) = old {
             let _ = fs::remove_dir_all(old);
         }
@@ -207,6 +273,7 @@ impl Drop for StagedDir {
     fn drop(&mut self) {
         if !self.committed {
             let _ = fs::remove_dir_all(&self.tmp);
+            settled(&self.tmp);
         }
     }
 }

@@ -152,6 +152,14 @@ fn one_line_text(message: &str) -> String {
 /// The most worker threads a core that `RAYON_NUM_THREADS` may ask for (at least 256 in all).
 pub const MAX_THREADS_PER_CORE: usize = 64;
 
+/// Installs the interruption handler of the command: on SIGINT, SIGTERM or SIGHUP the
+/// temporary outputs in progress (a figure's temporary file, the report's staging
+/// directory) are removed, one line is printed and the process exits with status 130.
+/// The binary calls it first; tests that run the command in process do not.
+pub fn on_termination() {
+    atomic::on_termination();
+}
+
 /// Builds the global worker pool before any command starts, so that a `RAYON_NUM_THREADS`
 /// the system cannot honour (more threads than its memory or limits allow) is a one-line
 /// note and a working run with the default number of threads, not a panic inside the first

@@ -5,5 +5,6 @@ use std::process::ExitCode;
 
 fn main() -> ExitCode {
     qmckit_cli::threads();
+    qmckit_cli::on_termination();
     ExitCode::from(qmckit_cli::run_cli(std::env::args_os()))
 }

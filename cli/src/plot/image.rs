@@ -45,6 +45,8 @@ pub struct ImageFigure {
     pub range: Option<(f64, f64)>,
     /// Draw the colour bar (default true).
     pub bar: bool,
+    /// What the colour bar's values are (default "value"): "error", "radiance", "rank".
+    pub quantity: String,
 }
 
 impl ImageFigure {
@@ -77,6 +79,7 @@ impl ImageFigure {
             map: ColourMap::Grey,
             range: None,
             bar: true,
+            quantity: "value".into(),
         })
     }
 
@@ -89,6 +92,12 @@ impl ImageFigure {
     /// Sets the value range.
     pub fn range(mut self, lo: f64, hi: f64) -> Self {
         self.range = Some((lo, hi));
+        self
+    }
+
+    /// Names the quantity the colour bar shows.
+    pub fn quantity(mut self, quantity: impl Into<String>) -> Self {
+        self.quantity = quantity.into();
         self
     }
 
@@ -167,7 +176,7 @@ impl Figure for ImageFigure {
         });
         chart.draw_series(cells).map_err(drawing)?;
         if let Some(r) = right {
-            colour_bar(&r, lo, hi, "value", colour)?;
+            colour_bar(&r, lo, hi, &clean(&self.quantity), colour)?;
         }
         Ok(())
     }

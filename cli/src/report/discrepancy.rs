@@ -298,7 +298,7 @@ fn measured(ctx: &Ctx) -> Result<Section, Failure> {
                 points: sobol,
             },
             Curve {
-                label: "Owen-Sobol'".into(),
+                label: "Sobol' + fast-owen".into(),
                 points: owen,
             },
         ],
@@ -327,7 +327,7 @@ fn measured(ctx: &Ctx) -> Result<Section, Failure> {
         "jittered",
         "Halton",
         "Sobol'",
-        "Owen-scrambled Sobol'",
+        "Sobol' + fast-owen (hash-based Owen scrambling)",
     ];
     for ((name, sl), e) in names.iter().zip(&slopes).zip(expected) {
         s.rows.push(row(

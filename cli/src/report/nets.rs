@@ -163,7 +163,8 @@ fn blue_sobol(ctx: &Ctx) -> Result<Section, Failure> {
         let fig = ImageFigure::new(title, e.width, e.height, e.error.clone())
             .map_err(|x| Failure::usage(x.0))?
             .map(ColourMap::Diverging)
-            .range(-m, m);
+            .range(-m, m)
+            .quantity("pixel error");
         s.figures.push(ctx.figure(
             file,
             &fig,

@@ -4,6 +4,7 @@
 //! many seeds.
 
 use crate::plot::{ColourMap, ImageFigure, PointsFigure};
+use crate::scene::samplers::{SOBOL_OWEN, ZSOBOL};
 use crate::scene::{self, SceneImage, SceneStudy, Study, StudyOptions, quad_light_uv};
 use qmckit::work::{Cost, Rate, no_progress};
 
@@ -117,7 +118,7 @@ pub fn sections(ctx: &Ctx) -> Result<Vec<Section>, Failure> {
          power lies (compare the error images).",
     );
     add_study(ctx, &mut aos, "ao", &ao, &[])?;
-    aos.note = blue_against_white(&ao, "Sobol' fast-owen", "ZSobol");
+    aos.note = blue_against_white(&ao, &SOBOL_OWEN.name(), &ZSOBOL.name());
     Ok(vec![mse, quad, md, pls, aos])
 }
 
@@ -141,30 +142,42 @@ fn add_renders(ctx: &Ctx, s: &mut Section, stem: &str, st: &SceneStudy) -> Resul
         .copied()
         .fold(0.0f64, f64::max)
         .max(1e-9);
-    s.figures.push(ctx.figure(
-        &format!("{stem}-reference.png"),
-        &image("reference", &st.reference, ColourMap::Grey)?.range(0.0, top),
-        RENDER,
-        format!("{}: reference", st.name),
-    )?);
-    for (k, (name, im)) in st.renders.iter().enumerate() {
-        s.figures.push(ctx.figure(
-            &format!("{stem}-render-{k}.png"),
-            &image(name, im, ColourMap::Grey)?.range(0.0, top),
+    s.figures.push(
+        ctx.figure(
+            &format!("{stem}-reference.png"),
+            &image("reference", &st.reference, ColourMap::Grey)?
+                .range(0.0, top)
+                .quantity("pixel value"),
             RENDER,
-            format!("{name}, {} spp", st.spp),
-        )?);
+            format!("{}: reference", st.name),
+        )?,
+    );
+    for (k, (name, im)) in st.renders.iter().enumerate() {
+        s.figures.push(
+            ctx.figure(
+                &format!("{stem}-render-{k}.png"),
+                &image(name, im, ColourMap::Grey)?
+                    .range(0.0, top)
+                    .quantity("pixel value"),
+                RENDER,
+                format!("{name}, {} spp", st.spp),
+            )?,
+        );
     }
     // One scale for the error images compared side by side.
     let m = error_scale(st.errors.iter().map(|e| &e.1.pixels[..]));
     for (k, (name, im)) in st.errors.iter().enumerate() {
         let title = format!("error, {name} (±{})", sig(m, 2));
-        s.figures.push(ctx.figure(
-            &format!("{stem}-error-{k}.png"),
-            &image(&title, im, ColourMap::Diverging)?.range(-m, m),
-            RENDER,
-            error_caption(name, m, st.errors.len()),
-        )?);
+        s.figures.push(
+            ctx.figure(
+                &format!("{stem}-error-{k}.png"),
+                &image(&title, im, ColourMap::Diverging)?
+                    .range(-m, m)
+                    .quantity("render - reference"),
+                RENDER,
+                error_caption(name, m, st.errors.len()),
+            )?,
+        );
     }
     Ok(())
 }

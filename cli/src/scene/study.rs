@@ -181,12 +181,12 @@ impl Study {
 
     /// The samplers compared, the first the independent baseline.
     pub const fn samplers(self) -> &'static [SceneSampler] {
-        use SceneSampler::*;
+        use super::samplers::{HALTON, INDEPENDENT, SOBOL_OWEN, SOBOL_XOR, STRATIFIED, ZSOBOL};
         match self {
-            Study::PixelArea | Study::SoftShadow => &[Independent, Stratified, OwenSobol],
-            Study::MotionDefocus => &[Independent, Halton, OwenSobol],
-            Study::PixelLight => &[Independent, SobolShift, OwenSobol, ZSobol],
-            Study::AmbientOcclusion => &[Independent, OwenSobol, ZSobol],
+            Study::PixelArea | Study::SoftShadow => &[INDEPENDENT, STRATIFIED, SOBOL_OWEN],
+            Study::MotionDefocus => &[INDEPENDENT, HALTON, SOBOL_OWEN],
+            Study::PixelLight => &[INDEPENDENT, SOBOL_XOR, SOBOL_OWEN, ZSOBOL],
+            Study::AmbientOcclusion => &[INDEPENDENT, SOBOL_OWEN, ZSOBOL],
         }
     }
 
@@ -253,7 +253,7 @@ impl Study {
             &scene,
             &camera,
             integrand,
-            SceneSampler::OwenSobol,
+            super::samplers::SOBOL_OWEN,
             o.reference_spp,
             REFERENCE_SEED,
             &stop,
@@ -276,9 +276,9 @@ impl Study {
                 low += l;
                 low_abs += la;
                 if s == 0 {
-                    renders.push((kind.name().to_string(), img));
+                    renders.push((kind.name(), img));
                     errors.push((
-                        kind.name().to_string(),
+                        kind.name(),
                         SceneImage {
                             width: o.width,
                             height: o.height,
@@ -300,7 +300,7 @@ impl Study {
                 0.0
             };
             mse.push(MseEntry {
-                sampler: kind.name().to_string(),
+                sampler: kind.name(),
                 mse: mean,
                 relative: 1.0,
                 mse_stderr: (var / k).sqrt(),
@@ -398,10 +398,11 @@ fn render_with(
         .into_par_iter()
         .map(|y| {
             stop.budget_check()?;
+            let pixels = sampler.pixels()?;
             let mut buf = vec![0.0; spp as usize * d];
             let mut row = Vec::with_capacity(w as usize);
             for x in 0..w {
-                sampler.pixel(x, y, &mut buf)?;
+                sampler.pixel(pixels.as_deref(), x, y, &mut buf)?;
                 let sum: f64 = buf
                     .chunks_exact(d)
                     .map(|u| integrand.eval(scene, camera, x, y, u))
@@ -447,7 +448,7 @@ pub fn reference_image(study: Study, o: &StudyOptions, spp: u32, seed: u64) -> R
         &standard_scene(),
         &camera,
         study.integrand(),
-        SceneSampler::OwenSobol,
+        super::samplers::SOBOL_OWEN,
         spp,
         seed,
         &Stop::never("a scene reference"),

@@ -93,3 +93,46 @@ fn report_into_an_unwritable_dir_fails_with_one_line() {
     assert_eq!(out.status.code(), Some(1));
     assert_eq!(String::from_utf8(out.stderr).unwrap().lines().count(), 1);
 }
+
+/// A report killed while it runs (SIGTERM, as a job scheduler or `timeout` sends) leaves
+/// nothing behind: no staging directory beside the target, no target, status 130.
+#[cfg(unix)]
+#[test]
+fn a_terminated_report_leaves_no_staging_directory() {
+    use std::process::{Command, Stdio};
+    use std::time::{Duration, Instant};
+    let dir = std::env::temp_dir().join(format!("qmckit-term-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let mut child = Command::new(env!("CARGO_BIN_EXE_qmckit"))
+        .args(["report", "--quick", "--out", "out"])
+        .current_dir(&dir)
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    // Wait until the staging directory exists (the report is under way), then terminate.
+    let start = Instant::now();
+    while std::fs::read_dir(&dir).unwrap().next().is_none() {
+        assert!(
+            start.elapsed() < Duration::from_secs(60),
+            "no staging directory"
+        );
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    std::thread::sleep(Duration::from_millis(300));
+    let killed = Command::new("kill")
+        .args(["-TERM", &child.id().to_string()])
+        .status()
+        .unwrap();
+    assert!(killed.success());
+    let out = child.wait_with_output().unwrap();
+    let left: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    std::fs::remove_dir_all(&dir).unwrap();
+    assert_eq!(out.status.code(), Some(130), "{out:?}");
+    assert!(left.is_empty(), "left behind: {left:?}");
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert_eq!(err.lines().count(), 1, "{err}");
+}
