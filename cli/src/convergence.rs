@@ -4,9 +4,7 @@
 use std::io::{BufWriter, Write};
 
 use clap::Args;
-use qmckit::analysis::Points;
-use qmckit::analysis::integrate::{Integrand, integration_error};
-use qmckit::catalog::{IntegrandEntry, IntegrandKind};
+use qmckit::catalog::{IntegrandEntry, IntegrandParams, TestIntegrand, build_integrand};
 
 use qmckit::blue_noise::{BestCandidate, GaussianBlueNoise, PoissonDisk};
 use qmckit::randomize::{CranleyPatterson, Scrambled};
@@ -22,11 +20,13 @@ use qmckit::catalog::{RandomizerKind, SamplerKind};
 
 /// Text shown after the options of `qmckit convergence --help`.
 pub const AFTER_HELP: &str = "\
-Integrands over [0, 1]^d, each with a closed-form integral I:
-  gaussian-peak  exp(-16 |x - c|^2), c the centre (Genz's Gaussian peak; alias gaussian)
-  oscillatory  cos(0.6 pi + 2 sum_k x_k) (Genz's oscillatory)
-  ball         1 inside the ball of radius 0.45 about the centre
-  heaviside    1 where sum_k sqrt(k + 2) (x_k - 1/2) >= 0 (I = 1/2)
+Integrands: every integrand of the catalog (the --integrand list above), each with its
+exact integral I: on the cube, gaussian-peak exp(-16 |x - c|^2) (c the centre; the
+default), oscillatory cos(0.6 pi + 2 sum_k x_k), ball (radius 0.45 about the centre),
+heaviside (sum_k sqrt(k + 2) (x_k - 1/2) >= 0, I = 1/2), Genz's six families (genz-*,
+default difficulties), keister, european and asian-geometric (read at the cells' midpoints,
+inside (0, 1), for their inverse-CDF transforms); in 2D, the torus and pixel integrands.
+An integrand that does not take -d D is refused in one line.
 
 For N = 1, 2, 4, ..., 2^M (stratified: N = k^d for k = 1, 2, 4, ...), the first N points of
 the sampler (finite sets: a set of N points, every point of it: a Poisson-disk set asked
@@ -44,23 +44,6 @@ Halton; the blue-noise sets (poisson, best-candidate, gaussian-blue-noise) are e
 their construction cost instead, and built within the same deadline. Largest set: 2^24
 points. Errors: one line, exit code 2.";
 
-/// The integrands `convergence` takes: the catalog's integrands on the cube with a
-/// closed form in any dimension.
-fn on_cube(e: &IntegrandEntry) -> bool {
-    cube(e.kind).is_some()
-}
-
-/// The integrand of `kind`, if it is one of the cube's.
-fn cube(kind: IntegrandKind) -> Option<Integrand> {
-    match kind {
-        IntegrandKind::GaussianPeak => Some(Integrand::Gaussian),
-        IntegrandKind::Oscillatory => Some(Integrand::Oscillatory),
-        IntegrandKind::Ball => Some(Integrand::Ball),
-        IntegrandKind::Heaviside => Some(Integrand::Heaviside),
-        _ => None,
-    }
-}
-
 /// Arguments of `qmckit convergence`.
 #[derive(Args, Debug)]
 pub struct ConvergenceArgs {
@@ -68,10 +51,7 @@ pub struct ConvergenceArgs {
     #[arg(value_parser = names::samplers())]
     sampler: SamplerName,
     /// The integrand (see below).
-    #[arg(long, default_value = "gaussian-peak", value_parser = names::integrands().only(
-        on_cube,
-        "convergence integrates gaussian-peak, oscillatory, ball and heaviside",
-    ))]
+    #[arg(long, default_value = "gaussian-peak", value_parser = names::integrands())]
     integrand: &'static IntegrandEntry,
     /// Dimensions [default: 1 for vdc, 2 otherwise].
     #[arg(short = 'd', value_name = "D")]
@@ -175,14 +155,15 @@ fn construction(spec: &Spec) -> Result<f64, Failure> {
 
 /// The integration error of the first `count` points of the set `spec` names (all of a
 /// finite set holding fewer, as a Poisson-disk set may), its points generated in batches:
-/// the batches' errors weighted by their sizes, `sum_b N_b (mean_b - I) / N = mean - I`.
+/// the sum of `f` over the batches divided by the count, minus `I`.
 /// The deadline of `budget` is read once per batch.
-fn error_of(spec: &Spec, f: Integrand, count: u64, budget: &Budget) -> Result<f64, Failure> {
+fn error_of(spec: &Spec, f: &TestIntegrand, count: u64, budget: &Budget) -> Result<f64, Failure> {
     let sampler = sampler_of(spec, budget)?;
     let count = count.min(sampler.len());
     let dims = sampler.dims();
     let rows = (BATCH_VALUES / dims).max(1);
     let mut raw: Vec<u32> = qmckit::size::vec_zeroed(rows.saturating_mul(dims))?;
+    let mut point: Vec<f64> = qmckit::size::vec_zeroed(dims)?;
     let (mut weighted, mut start) = (0.0, 0u64);
     while start < count {
         budget.check_deadline("the convergence curve")?;
@@ -190,11 +171,17 @@ fn error_of(spec: &Spec, f: Integrand, count: u64, budget: &Budget) -> Result<f6
         let buf = &mut raw[..take * dims];
         let first = u32::try_from(start).map_err(|_| Failure::usage("index past 2^32"))?;
         sampler.fill(first, buf)?;
-        let data = Points::from_u32(buf);
-        weighted += take as f64 * integration_error(Points::new(&data, dims)?, f);
+        let mut sum = 0.0;
+        for row in buf.chunks_exact(dims) {
+            for (x, &r) in point.iter_mut().zip(row) {
+                *x = f.coordinate(r);
+            }
+            sum += f.eval(&point);
+        }
+        weighted += sum;
         start += take as u64;
     }
-    Ok(weighted / count as f64)
+    Ok(weighted / count as f64 - f.exact())
 }
 
 /// The measured rate, in coordinates a second, of generating and integrating a prefix of
@@ -202,7 +189,7 @@ fn error_of(spec: &Spec, f: Integrand, count: u64, budget: &Budget) -> Result<f6
 /// included.
 fn probe_rate(
     spec: &impl Fn(u64, u64) -> Spec,
-    f: Integrand,
+    f: &TestIntegrand,
     sizes: &[u64],
     d: usize,
     budget: &Budget,
@@ -233,12 +220,12 @@ pub fn run(args: &ConvergenceArgs) -> Result<(), Failure> {
     }
     let budget = args.budget.budget()?;
     let mut sizes = sizes(args.sampler, d, max_m);
-    let f = cube(args.integrand.kind).ok_or_else(|| {
-        Failure::usage(format!(
-            "convergence does not integrate {}",
-            args.integrand.name
-        ))
-    })?;
+    let params = IntegrandParams {
+        dims: Some(d),
+        ..IntegrandParams::default()
+    };
+    let f = &build_integrand(args.integrand, &params)
+        .map_err(|e| Failure::usage(format!("--integrand {}: {e}", args.integrand.name)))?;
     let spec = |n: u64, k: u64| Spec {
         budget,
         ..Spec::base2(args.sampler, n, d, args.scramble, args.seed.wrapping_add(k))

@@ -382,6 +382,18 @@ mod built {
             }
         }
 
+        /// The coordinate this integrand reads from a 32-bit sample `r` ([`crate::bits`]'s
+        /// fixed point): `r / 2^32` for the integrands defined on the closed cube, the
+        /// cell's midpoint `(r + 1/2) / 2^32` for the problems, whose inverse-CDF
+        /// transforms need `(0, 1)` (as [`crate::analysis::integrate::integrate`] maps
+        /// them). Exact in `f64`.
+        pub fn coordinate(&self, r: u32) -> f64 {
+            match self {
+                TestIntegrand::Problem(_) => (f64::from(r) + 0.5) * (1.0 / 4_294_967_296.0),
+                _ => crate::bits::to_f64(r),
+            }
+        }
+
         /// The exact integral.
         pub fn exact(&self) -> f64 {
             match self {

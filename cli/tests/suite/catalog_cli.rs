@@ -426,6 +426,50 @@ fn every_catalog_name_answers_or_is_refused_in_one_line() {
     }
 }
 
+/// `variance` and `convergence` read one integrand catalog: every integrand name answers
+/// or is refused in one line in both; `convergence` integrates every integrand of the
+/// catalog in its default dimensions and reports a finite error that falls from N = 1 to
+/// N = 256 with Owen-scrambled Sobol' (every integrand here has bounded variation or is
+/// smooth, so 256 scrambled points beat one by far), and `variance` takes the torus ones.
+#[test]
+fn every_catalog_integrand_answers_or_is_refused_in_one_line() {
+    for f in catalog::INTEGRANDS {
+        let args = [
+            "convergence",
+            "sobol",
+            "--scramble",
+            "owen",
+            "--seeds",
+            "8",
+            "--max-m",
+            "8",
+            "--integrand",
+            f.name,
+        ];
+        assert!(answers_or_refuses(&args), "{args:?} refused");
+        let text = String::from_utf8(run(&args, "").stdout).unwrap();
+        let rmse: Vec<f64> = text
+            .lines()
+            .skip(1)
+            .map(|l| l.split(' ').nth(1).unwrap().parse().unwrap())
+            .collect();
+        assert_eq!(rmse.len(), 9, "{text}");
+        assert!(rmse.iter().all(|e| e.is_finite() && *e >= 0.0), "{text}");
+        assert!(rmse[8] < 0.5 * rmse[0], "{}: {rmse:?}", f.name);
+        let torus = answers_or_refuses(&[
+            "variance",
+            "halton",
+            "-n",
+            "16",
+            "--sets",
+            "4",
+            "--integrand",
+            f.name,
+        ]);
+        assert_eq!(torus, f.name.starts_with("torus-"), "variance {}", f.name);
+    }
+}
+
 /// `qmckit points pmj02bn -n 256 | qmckit tvalue -`: PMJ02BN's (0, 2) claim checked from
 /// the shell, and a point set that is no net gets its t.
 #[test]
