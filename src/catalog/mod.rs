@@ -68,6 +68,8 @@ use core::fmt;
 
 #[cfg(feature = "std")]
 mod build;
+#[cfg(feature = "std")]
+mod examples;
 mod integrands;
 mod measures;
 mod pixel;
@@ -78,6 +80,8 @@ mod whole;
 
 #[cfg(feature = "std")]
 pub use build::{GeneratingVector, MAX_DIMS, Params, build, build_named};
+#[cfg(feature = "std")]
+pub use examples::examples;
 pub use integrands::{INTEGRANDS, IntegrandEntry, IntegrandKind};
 #[cfg(feature = "analysis")]
 pub use integrands::{IntegrandParams, TestIntegrand, build_integrand};

@@ -8,75 +8,12 @@ use qmckit::catalog::{self, PIXEL_SAMPLERS, Params, RANDOMIZERS, SAMPLERS, Size}
 use qmckit::digital::sobol::Order;
 use qmckit::pixel::PixelSampler;
 
-/// The parameter sets every sampler is walked with (each entry at least once).
+/// The parameter sets every sampler is walked with: the catalog's examples.
 fn cases() -> Vec<(&'static str, Params)> {
-    let p = Params::default;
-    let mut v = vec![
-        ("independent", Params::dims(3)),
-        ("stratified", Params::dims(2).with_points(64)),
-        (
-            "stratified",
-            Params {
-                strata: Some(vec![4, 3, 2]),
-                ..p()
-            },
-        ),
-        (
-            "stratified",
-            Params {
-                centered: true,
-                ..Params::dims(2).with_points(16)
-            },
-        ),
-        ("latin", Params::dims(3).with_points(100)),
-        ("vdc", p()),
-        (
-            "vdc",
-            Params {
-                base: Some(3),
-                ..p()
-            },
-        ),
-        ("halton", Params::dims(5)),
-        ("hammersley", Params::dims(3).with_points(100)),
-        ("lp", p().with_points(64)),
-        ("sobol", Params::dims(5)),
-        (
-            "sobol",
-            Params {
-                order: Order::Gray,
-                ..Params::dims(3)
-            },
-        ),
-        ("lattice", Params::dims(4)),
-        ("lattice", Params::dims(3).with_points(101)),
-        (
-            "lattice",
-            Params {
-                korobov: Some(17),
-                ..Params::dims(3).with_points(89)
-            },
-        ),
-        ("kronecker", Params::dims(3)),
-        ("faure", Params::dims(3)),
-        (
-            "faure",
-            Params {
-                base: Some(5),
-                ..Params::dims(3)
-            },
-        ),
-        ("pmj02", p()),
-    ];
-    {
-        v.extend([
-            ("pmj02bn", p().with_points(256)),
-            ("poisson", p().with_points(100)),
-            ("best-candidate", p().with_points(64)),
-            ("gaussian-blue-noise", p().with_points(32)),
-        ]);
-    }
-    v
+    catalog::examples()
+        .into_iter()
+        .map(|(e, p)| (e.name, p))
+        .collect()
 }
 
 /// The first `n` points of `s`.
