@@ -15,6 +15,7 @@ mod budget;
 mod convergence;
 mod discrepancy;
 mod input;
+mod integration_test;
 mod mask;
 mod names;
 mod output;
@@ -55,6 +56,9 @@ enum Command {
     /// Integration error of a sampler on a test integrand against the number of points.
     #[command(after_help = convergence::AFTER_HELP)]
     Convergence(convergence::ConvergenceArgs),
+    /// The integration benchmark: samplers against thousands of random integrands, RMSE and rate.
+    #[command(after_help = integration_test::AFTER_HELP)]
+    IntegrationTest(integration_test::IntegrationTestArgs),
     /// Fourier power spectrum (periodogram) of 2D point sets read from a file or stdin.
     #[command(after_help = spectrum::AFTER_HELP)]
     Spectrum(spectrum::SpectrumArgs),
@@ -218,7 +222,7 @@ where
             if err.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand {
                 report(
                     "a command is needed: points, pixel, discrepancy, tvalue, convergence, \
-                     spectrum, pcf, variance, mask, plot or report (see 'qmckit --help')",
+                     integration-test, spectrum, pcf, variance, mask, plot or report (see 'qmckit --help')",
                 );
                 return 2;
             }
@@ -230,6 +234,7 @@ where
         Command::Points(args) => points::run(&args),
         Command::Discrepancy(args) => discrepancy::run(&args),
         Command::Convergence(args) => convergence::run(&args),
+        Command::IntegrationTest(args) => integration_test::run(&args),
         Command::Spectrum(args) => spectrum::run(&args),
         Command::Pcf(args) => pcf::run(&args),
         Command::Tvalue(args) => tvalue::run(&args),

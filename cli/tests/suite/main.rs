@@ -12,6 +12,7 @@ mod cli_analysis;
 mod cli_hostile;
 mod cli_reference;
 mod hostile;
+mod integration_test;
 mod lattice;
 mod mask;
 mod pcf;

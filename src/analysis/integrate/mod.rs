@@ -38,10 +38,16 @@
 //! # Ok::<(), qmckit::Error>(())
 //! ```
 
+mod benchmark;
+mod families;
 mod integrands;
 mod problems;
 mod student;
 
+pub use benchmark::{
+    BENCHMARK_RATE, BenchmarkCurve, BenchmarkOptions, Factory, MAX_INTEGRANDS, benchmark,
+};
+pub use families::{Family, GAUSSIAN_MAX_DIMS, HEAVISIDE_MAX_DIMS, RandomIntegrand};
 pub use integrands::{Integrand, integration_error};
 pub use problems::{GenzFamily, Market, Problem, ProblemKind, normal_quantile, test_suite};
 pub use student::{t_quantile, two_sided_cdf};
