@@ -65,13 +65,16 @@
 //! # Ok::<(), qmckit::Error>(())
 //! ```
 
+mod halton;
 mod image_sobol;
 mod independent;
 mod padded;
 pub mod pmj02bn;
 mod pmj_pixels;
+mod stratified;
 mod zsobol;
 
+pub use halton::{HALTON_PIXEL_DIMS, HaltonSampler};
 pub use image_sobol::{IMAGE_SOBOL_DIMS, ImageSobol, PBRT_SOBOL_DIMS};
 pub use independent::IndependentPixels;
 pub use padded::PaddedSobol;
@@ -79,6 +82,7 @@ pub use pmj_pixels::Pmj02Pixels;
 pub use pmj02bn::Pmj02BnPixels;
 #[cfg(feature = "std")]
 pub use pmj02bn::Pmj02BnTables;
+pub use stratified::StratifiedSampler;
 pub use zsobol::{ZSobol, ZSobolPixelDim};
 
 use crate::bits::reverse_bits;
@@ -322,6 +326,20 @@ pub trait PixelSampler {
     /// The 2D value at dimension `dim` (through `counter_dimension`): pbrt's `Get2D`.
     fn value_2d(&self, at: &PixelPoint, dim: usize) -> [u32; 2];
 
+    /// [`value_1d`](Self::value_1d) as pbrt's `f32`; the default converts with
+    /// [`pbrt_f32`]. [`HaltonSampler`] and [`StratifiedSampler`] compute their floats as pbrt
+    /// does (radical inverses and strata in `f32` arithmetic), which the 0.32 fraction does
+    /// not determine.
+    fn value_1d_f32(&self, at: &PixelPoint, dim: usize) -> f32 {
+        pbrt_f32(self.value_1d(at, dim))
+    }
+
+    /// [`value_2d`](Self::value_2d) as pbrt's `f32`s; the default converts with
+    /// [`pbrt_f32`].
+    fn value_2d_f32(&self, at: &PixelPoint, dim: usize) -> [f32; 2] {
+        self.value_2d(at, dim).map(pbrt_f32)
+    }
+
     /// The position in the pixel, `[0, 1)^2`, with the counter at `dim` (pbrt's
     /// `GetPixel2D`); the default is [`value_2d`](Self::value_2d).
     fn value_pixel_2d(&self, at: &PixelPoint, dim: usize) -> [u32; 2] {
@@ -383,6 +401,14 @@ macro_rules! forward_pixel_sampler {
             #[inline]
             fn value_2d(&self, at: &PixelPoint, dim: usize) -> [u32; 2] {
                 (**self).value_2d(at, dim)
+            }
+            #[inline]
+            fn value_1d_f32(&self, at: &PixelPoint, dim: usize) -> f32 {
+                (**self).value_1d_f32(at, dim)
+            }
+            #[inline]
+            fn value_2d_f32(&self, at: &PixelPoint, dim: usize) -> [f32; 2] {
+                (**self).value_2d_f32(at, dim)
             }
             fn value_pixel_2d(&self, at: &PixelPoint, dim: usize) -> [u32; 2] {
                 (**self).value_pixel_2d(at, dim)
@@ -512,13 +538,17 @@ impl<'a, S: PixelSampler + ?Sized> PixelSample<'a, S> {
     /// [`get_1d`](Self::get_1d) as pbrt's `f32` ([`pbrt_f32`]).
     #[inline]
     pub fn get_1d_f32(&mut self) -> f32 {
-        pbrt_f32(self.get_1d())
+        let d = self.sampler.counter_dimension(self.dim, 1);
+        self.dim = d.wrapping_add(1);
+        self.sampler.value_1d_f32(&self.at, d)
     }
 
     /// [`get_2d`](Self::get_2d) as pbrt's `f32`s.
     #[inline]
     pub fn get_2d_f32(&mut self) -> [f32; 2] {
-        self.get_2d().map(pbrt_f32)
+        let d = self.sampler.counter_dimension(self.dim, 2);
+        self.dim = d.wrapping_add(2);
+        self.sampler.value_2d_f32(&self.at, d)
     }
 
     /// [`get_pixel_2d`](Self::get_pixel_2d) as pbrt's `f32`s (for [`ImageSobol`], pbrt's

@@ -6,6 +6,8 @@
 // pbrt's check values are quoted as published, with 9 significant digits.
 #![allow(clippy::excessive_precision)]
 
+mod compiled;
+
 use crate::common::first_net_failure;
 use qmckit::Error;
 use qmckit::hash::pbrt::{hash2, hash4, mix_bits, permutation_element};
