@@ -102,7 +102,7 @@ impl StratifiedSampler {
             return Err(Error::ZeroPoints);
         }
         let mut div = spp.isqrt();
-        while spp % div != 0 {
+        while !spp.is_multiple_of(div) {
             div -= 1;
         }
         Self::new(width, height, spp / div, div, jitter, seed)
