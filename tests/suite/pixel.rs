@@ -9,6 +9,7 @@
 #![allow(clippy::excessive_precision)]
 
 mod compiled;
+mod halton_stratified;
 
 use crate::common::first_net_failure;
 use qmckit::Error;
