@@ -91,7 +91,7 @@ fn stratified_samples_fill_their_strata() {
                 for i in 0..12 {
                     let start = || s.start_pixel_sample(x, y, i).unwrap().with_dimension(d);
                     let v = start().get_1d();
-                    ones[(u64::from(v) * 12 >> 32) as usize] += 1;
+                    ones[((u64::from(v) * 12) >> 32) as usize] += 1;
                     let f = start().get_1d_f32();
                     assert!((f64::from(v) / 2f64.powi(32) - f64::from(f)).abs() < 1e-6);
                     let [a, b] = start().get_2d();
