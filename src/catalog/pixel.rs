@@ -265,9 +265,9 @@ mod built {
     }
 
     /// The pixel sampler `entry` names for `params`, randomized by `randomizer` (see
-    /// [`PixelKind::accepts`]: the Sobol' samplers `none`, `xor`, `fast-owen`, `owen`, halton
+    /// [`PixelKind::accepts`](super::PixelKind::accepts): the Sobol' samplers `none`, `xor`, `fast-owen`, `owen`, halton
     /// all but `fast-owen`, stratified `none` for the strata's centres; `None` is pbrt's
-    /// default, [`PixelKind::default_randomization`], and stratified jittered; the others
+    /// default, [`PixelKind::default_randomization`](super::PixelKind::default_randomization), and stratified jittered; the others
     /// take none). The same values as `qmckit pixel`.
     ///
     /// ```
