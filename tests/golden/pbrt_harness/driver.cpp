@@ -6,7 +6,8 @@
 // formatting, never reached on the paths exercised here).
 //
 // For every configuration (sampler, randomization, image, samples per pixel, seed) and
-// every pixel sample (x, y, i) of the whole image it prints one line of f32 bit patterns
+// every pixel sample (x, y, i) of the whole image (of the SPARSE pixels for a configuration
+// marked "sparse") it prints one line of f32 bit patterns
 // (8 hex digits each), in this order:
 //   random access, for each start dimension d in STARTS (a fresh StartPixelSample(p, i, d)
 //     before each call): Get1D; Get2D (x, y)
@@ -54,12 +55,25 @@ static void Draw(S &s, char c, std::string &line) {
     }
 }
 
+// The pixels of a "sparse" configuration (an image too large to print whole): corners,
+// both sides of Halton's 128-pixel period and the far corner.
+static const int SPARSE[][2] = {{0, 0}, {1, 0}, {127, 71}, {128, 0}, {129, 72},
+                                {255, 199}, {256, 128}, {299, 130}, {299, 199}};
+
 template <typename S>
-static void Emit(const char *id, S &s, int w, int h, int spp) {
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x)
+static void Emit(const char *id, S &s, int w, int h, int spp, bool sparse) {
+    std::vector<Point2i> pixels;
+    if (sparse) {
+        for (auto &p : SPARSE)
+            pixels.push_back(Point2i(p[0], p[1]));
+    } else {
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x)
+                pixels.push_back(Point2i(x, y));
+    }
+    for (Point2i p : pixels)
             for (int i = 0; i < spp; ++i) {
-                Point2i p(x, y);
+                int x = p.x, y = p.y;
                 std::string line = std::string(id) + " " + std::to_string(x) + " " +
                                    std::to_string(y) + " " + std::to_string(i);
                 for (int d : STARTS) {
@@ -96,6 +110,7 @@ struct Config {
     std::string sampler, randomization;
     int w, h, spp, seed;
     int xs, ys;  // stratified only
+    bool sparse = false;  // only the SPARSE pixels
 };
 
 static void Run(int n, const Config &c) {
@@ -104,24 +119,26 @@ static void Run(int n, const Config &c) {
                 c.randomization.c_str(), c.w, c.h, c.spp, c.seed);
     if (c.sampler == "stratified")
         std::printf(" %d %d", c.xs, c.ys);
+    if (c.sparse)
+        std::printf(" sparse");
     std::printf("\n");
     Point2i res(c.w, c.h);
     RandomizeStrategy r = Strategy(c.randomization);
     if (c.sampler == "zsobol") {
         ZSobolSampler s(c.spp, res, r, c.seed);
-        Emit(id.c_str(), s, c.w, c.h, c.spp);
+        Emit(id.c_str(), s, c.w, c.h, c.spp, c.sparse);
     } else if (c.sampler == "padded-sobol") {
         PaddedSobolSampler s(c.spp, r, c.seed);
-        Emit(id.c_str(), s, c.w, c.h, c.spp);
+        Emit(id.c_str(), s, c.w, c.h, c.spp, c.sparse);
     } else if (c.sampler == "image-sobol") {
         SobolSampler s(c.spp, res, r, c.seed);
-        Emit(id.c_str(), s, c.w, c.h, c.spp);
+        Emit(id.c_str(), s, c.w, c.h, c.spp, c.sparse);
     } else if (c.sampler == "halton") {
         HaltonSampler s(c.spp, res, r, c.seed);
-        Emit(id.c_str(), s, c.w, c.h, c.spp);
+        Emit(id.c_str(), s, c.w, c.h, c.spp, c.sparse);
     } else {
         StratifiedSampler s(c.xs, c.ys, c.randomization == "jitter", c.seed);
-        Emit(id.c_str(), s, c.w, c.h, c.xs * c.ys);
+        Emit(id.c_str(), s, c.w, c.h, c.xs * c.ys, c.sparse);
     }
 }
 
@@ -147,11 +164,22 @@ int main() {
     configs.push_back({"halton", "permutedigits", 4, 4, 2, 7, 0, 0});
     configs.push_back({"halton", "owen", 4, 4, 2, 7, 0, 0});
     configs.push_back({"stratified", "jitter", 4, 4, 2, 7, 2, 1});
-    // Set C: samples counts that are not powers of two, a larger odd seed.
-    configs.push_back({"halton", "permutedigits", 3, 5, 3, 12345, 0, 0});
-    configs.push_back({"stratified", "jitter", 3, 5, 3, 12345, 3, 1});
-    configs.push_back({"stratified", "none", 3, 5, 6, 12345, 2, 3});
-    configs.push_back({"zsobol", "owen", 3, 5, 8, 12345, 0, 0});
+    // Set C: a 3 x 3 image, sample counts that are not powers of two, a larger odd seed.
+    configs.push_back({"halton", "permutedigits", 3, 3, 3, 12345, 0, 0});
+    configs.push_back({"stratified", "jitter", 3, 3, 3, 12345, 3, 1});
+    configs.push_back({"stratified", "none", 3, 3, 6, 12345, 2, 3});
+    configs.push_back({"zsobol", "owen", 3, 3, 8, 12345, 0, 0});
+    // Set D: a 300 x 200 image, 2 samples a pixel, only the SPARSE pixels (Halton's 128-pixel period, Sobol'
+    // grids of side 512).
+    for (Config c : std::vector<Config>{{"zsobol", "fastowen", 300, 200, 2, 3, 0, 0},
+                                        {"padded-sobol", "owen", 300, 200, 2, 3, 0, 0},
+                                        {"image-sobol", "fastowen", 300, 200, 2, 3, 0, 0},
+                                        {"halton", "permutedigits", 300, 200, 2, 3, 0, 0},
+                                        {"halton", "owen", 300, 200, 2, 3, 0, 0},
+                                        {"stratified", "jitter", 300, 200, 2, 3, 2, 1}}) {
+        c.sparse = true;
+        configs.push_back(c);
+    }
     for (size_t n = 0; n < configs.size(); ++n)
         Run(int(n), configs[n]);
     return 0;

@@ -1,13 +1,15 @@
 //! Every draw of tests/golden/pbrt_samplers_compiled.txt: pbrt-v4's own `ZSobolSampler`,
 //! `PaddedSobolSampler`, `SobolSampler`, `HaltonSampler` and `StratifiedSampler`, compiled from
 //! pbrt's headers by tests/golden/pbrt_harness/build.sh (the commit is in the file's header),
-//! over whole images: random access (`Get1D`, `Get2D` after a start at each dimension of the
+//! over whole images (and 9 pixels of a 300 x 200 image, across Halton's 128-pixel period
+//! and the Sobol' samplers' 512 x 512 grid): random access (`Get1D`, `Get2D` after a start at each dimension of the
 //! header's `starts`, `GetPixel2D` after starts at 0 and 5) and two streams of mixed draws
 //! (the header's `pattern-a` from dimension 0, `pattern-b` from dimension 1). The f32 bit
 //! patterns are compared one by one; the test counts them, so a short line cannot pass.
 
 use qmckit::pixel::{
-    HaltonSampler, ImageSobol, PaddedSobol, PixelSampler, Randomization, StratifiedSampler, ZSobol,
+    HaltonSampler, IMAGE_SOBOL_DIMS, ImageSobol, PBRT_SOBOL_DIMS, PaddedSobol, PixelSampler,
+    Randomization, StratifiedSampler, ZSobol,
 };
 
 fn randomization(name: &str) -> Randomization {
@@ -118,7 +120,14 @@ fn every_draw_equals_compiled_pbrt() {
             .collect();
         let got = draws(s.as_ref(), x, y, i, &starts, a, b);
         assert_eq!(got.len(), want.len(), "{line}: draw count");
+        // Without the `sobol-dims-1024` feature ImageSobol wraps at its shorter table: the
+        // random access past it is not pbrt's (the streams stay below dimension 16).
+        let short =
+            names[words[0]].starts_with("image-sobol") && IMAGE_SOBOL_DIMS < PBRT_SOBOL_DIMS;
         for (k, (g, w)) in got.iter().zip(&want).enumerate() {
+            if short && k < 3 * starts.len() && starts[k / 3] + 2 > IMAGE_SOBOL_DIMS {
+                continue;
+            }
             checked += 1;
             if g != w {
                 mismatches.push(format!(
@@ -133,8 +142,13 @@ fn every_draw_equals_compiled_pbrt() {
         c.0 += 1;
         c.1 += want.len() as u64;
     }
-    // Every pixel sample of every image is in the file.
+    // Every pixel sample of every image is in the file (of the sparse ones, 9 pixels).
     for (id, words) in &names {
+        if words.ends_with("sparse") {
+            let spp: u64 = words.split_whitespace().nth(4).unwrap().parse().unwrap();
+            assert_eq!(covered[words].0, 9 * spp, "{id} {words}: pixel samples");
+            continue;
+        }
         let w: Vec<u64> = words
             .split_whitespace()
             .skip(2)
