@@ -11,7 +11,7 @@
 # HaltonSampler constructor cut out of src/pbrt/samplers.cpp (the rest of that file pulls in
 # cameras, media and OpenVDB), util/primes.cpp (the prime table), util/lowdiscrepancy.cpp
 # (ComputeRadicalInversePermutations), util/sobolmatrices.cpp and util/pstd.cpp (the
-# allocator). Stubbed (stubs.cpp): LogFatal, Warning and the two printf helpers of util/print.cpp,
+# allocator). Stubbed (stubs.cpp): LogFatal, Warning and the two printf functions of util/print.cpp,
 # which only error paths and ToString reach; they abort if called.
 set -eu
 PBRT=${1:?usage: build.sh PBRT_V4_DIR [OUT]}
