@@ -6,7 +6,7 @@ use std::io::{BufWriter, Write};
 
 use clap::{Args, ValueEnum};
 use qmckit::catalog::{self, CatalogError, PixelEntry, PixelParams, RandomizerEntry};
-use qmckit::pixel::{PixelSampler, pbrt_f32};
+use qmckit::pixel::PixelSampler;
 
 use super::{Failure, names};
 
@@ -16,14 +16,18 @@ One line per sample index i = 0..S-1 of the pixel: the global sample index (the 
 the Sobol' sequence for zsobol and sobol; '-' where the sampler has none), the 1D value at
 dimension D and the 2D value at dimension D: pbrt-v4's Get1D and Get2D called with the
 dimension counter at D (ZSobolSampler, SobolSampler, PaddedSobolSampler; bit-identical).
-independent is qmckit's hashed white noise, not pbrt's PCG stream; pmj02 is a seeded PMJ02
+halton is HaltonSampler and stratified is StratifiedSampler (bit-identical; their csv
+floats are pbrt's float arithmetic, not a rounding of the exact value); halton's 2D value at
+D is Get2D with the counter at max(D, 2), its pixel position is not printed. stratified splits
+S into xs x ys strata as pbrt does given a sample count. independent is qmckit's hashed white noise, not pbrt's PCG stream; pmj02 is a seeded PMJ02
 sequence per pixel and dimension through a hashed index permutation (pbrt's layout, without
 its tables and blue-noise shifts); pmj02bn is pbrt's PMJ02BNSampler layout on a generated
 65,536-point PMJ02BN table (seeded by --seed): the 2D value at D is Get2D with the counter at
 max(D, 2), and the pixel position (GetPixel2D, a tile of the table) is not printed.
 
 --randomize (zsobol, sobol, padded-sobol): none, xor (pbrt's PermuteDigits), fast-owen (the
-default), owen. --spp must be a power of two for zsobol. --seed is a u64; below 2^32 it is
+default), owen; halton: none, xor (the default), owen; stratified: none (the strata's
+centres; jittered without --randomize). --spp must be a power of two for zsobol. --seed is a u64; below 2^32 it is
 pbrt's int seed as 32 bits (bit-identical).
 
 Formats: decimal (default): 'index v1 x y', the values v / 2^32 exactly, as the shortest
@@ -63,7 +67,8 @@ pub struct PixelArgs {
     /// The dimension counter D.
     #[arg(long, default_value_t = 0)]
     pub dim: usize,
-    /// Randomization of the Sobol' samplers [default: fast-owen].
+    /// Randomization of the Sobol' samplers [default: fast-owen], of halton [default: xor],
+    /// none for stratified's strata centres [default: jittered].
     #[arg(long, value_parser = names::randomizers().only(
         |r| r.kind.pixel().is_some(),
         "the pixel samplers take none, xor, fast-owen and owen",
@@ -107,10 +112,21 @@ pub fn run(args: &PixelArgs) -> Result<(), Failure> {
     };
     let sampler =
         catalog::build_pixel(args.sampler, args.randomize, &params).map_err(|e| match e {
-            CatalogError::NotApplicable { sampler, .. } if args.randomize.is_some() => {
-                Failure::usage(format!(
-                    "--randomize does not apply to {sampler} (its randomness is its own)"
-                ))
+            CatalogError::NotApplicable {
+                randomizer,
+                sampler,
+                rule,
+                ..
+            } if args.randomize.is_some() => {
+                if args.sampler.kind.takes_randomizer() {
+                    Failure::usage(format!(
+                        "--randomize {randomizer} does not apply to {sampler}: it applies to {rule}"
+                    ))
+                } else {
+                    Failure::usage(format!(
+                        "--randomize does not apply to {sampler} (its randomness is its own)"
+                    ))
+                }
             }
             other => Failure::from(other),
         })?;
@@ -132,19 +148,16 @@ pub fn run(args: &PixelArgs) -> Result<(), Failure> {
         let (mut one, mut two) = (start, start); // both with the counter at D
         let v = one.get_1d();
         let [a, b] = two.get_2d();
+        // pbrt's floats, from the sampler (Halton's and Stratified's are float arithmetic).
+        let (mut one, mut two) = (start, start);
+        let (fv, [fa, fb]) = (one.get_1d_f32(), two.get_2d_f32());
         match args.format {
             PixelFormat::Decimal => {
                 use qmckit::bits::to_f64;
                 writeln!(out, "{index} {} {} {}", to_f64(v), to_f64(a), to_f64(b))?
             }
             PixelFormat::U32 => writeln!(out, "{index} {v} {a} {b}")?,
-            PixelFormat::Csv => writeln!(
-                out,
-                "{index},{},{},{}",
-                pbrt_f32(v),
-                pbrt_f32(a),
-                pbrt_f32(b)
-            )?,
+            PixelFormat::Csv => writeln!(out, "{index},{fv},{fa},{fb}")?,
         }
     }
     out.flush()?;

@@ -2,6 +2,7 @@
 //! dimension) and their builder.
 
 use super::{Entry, Param, alias, param};
+use crate::pixel::Randomization;
 
 /// A pixel sampler of [`PIXEL_SAMPLERS`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -18,16 +19,63 @@ pub enum PixelKind {
     Pmj02bn,
     /// Independent hashed values.
     Independent,
+    /// pbrt-v4's `HaltonSampler`.
+    Halton,
+    /// pbrt-v4's `StratifiedSampler`.
+    Stratified,
 }
 
 impl PixelKind {
-    /// Whether it takes a randomizer (`none`, `xor`, `fast-owen`, `owen`; default
-    /// `fast-owen`): the three Sobol' samplers. The others' randomness is their own.
+    /// Whether it takes a randomizer at all (see [`accepts`](Self::accepts) for which): the
+    /// three Sobol' samplers, halton and stratified. The others' randomness is their own.
     pub const fn takes_randomizer(self) -> bool {
         matches!(
             self,
-            PixelKind::Zsobol | PixelKind::ImageSobol | PixelKind::PaddedSobol
+            PixelKind::Zsobol
+                | PixelKind::ImageSobol
+                | PixelKind::PaddedSobol
+                | PixelKind::Halton
+                | PixelKind::Stratified
         )
+    }
+
+    /// Whether it takes the randomization `r`: the Sobol' samplers all four (`none`, `xor`,
+    /// `fast-owen`, `owen`), halton all but `fast-owen` (pbrt refuses it), stratified only
+    /// `none` (the strata's centres, pbrt's `jitter false`).
+    pub const fn accepts(self, r: Randomization) -> bool {
+        match self {
+            PixelKind::Zsobol | PixelKind::ImageSobol | PixelKind::PaddedSobol => true,
+            PixelKind::Halton => !matches!(r, Randomization::FastOwen),
+            PixelKind::Stratified => matches!(r, Randomization::None),
+            _ => false,
+        }
+    }
+
+    /// The randomization without one given, pbrt's default: `PermuteDigits` for halton,
+    /// `FastOwen` for the Sobol' samplers; stratified jitters (its own PCG32 stream).
+    pub const fn default_randomization(self) -> Randomization {
+        match self {
+            PixelKind::Halton => Randomization::PermuteDigits,
+            _ => Randomization::FastOwen,
+        }
+    }
+
+    /// The samplers a randomizer that `self` refuses applies to, in words (for
+    /// [`super::CatalogError::NotApplicable`]).
+    const fn rule(self) -> &'static str {
+        match self {
+            PixelKind::Halton => {
+                "the Sobol' pixel samplers (halton takes none, xor and owen, as pbrt's)"
+            }
+            PixelKind::Stratified => {
+                "the Sobol' and Halton pixel samplers (stratified takes none: the strata's \
+                 centres; it jitters without one)"
+            }
+            _ => {
+                "the Sobol' and Halton pixel samplers (zsobol, image-sobol, padded-sobol, \
+                 halton, and none for stratified)"
+            }
+        }
     }
 
     /// Whether `spp` must be a power of two (zsobol).
@@ -108,6 +156,50 @@ pub static PIXEL_SAMPLERS: &[PixelEntry] = &[
         item: "qmckit::pixel::PaddedSobol",
     },
     Entry {
+        kind: PixelKind::Halton,
+        name: "halton",
+        aliases: &[alias("halton-pixels", "qmckit::pixel::HaltonSampler")],
+        summary: "pbrt-v4 HaltonSampler: one Halton sequence over the image plane",
+        math: "the pixel's Halton indices o(p) + i 2^j 3^k (Chinese remainder of its base-2 and base-3 cells), radical inverses in the primes, digits permuted or Owen-scrambled (Pharr, Jakob & Humphreys 2023)",
+        params: &[
+            WIDTH,
+            HEIGHT,
+            SPP,
+            SEED,
+            param(
+                "randomizer",
+                "pbrt's RandomizeStrategy",
+                "xor",
+                "none, xor, owen",
+            ),
+        ],
+        item: "qmckit::pixel::HaltonSampler",
+    },
+    Entry {
+        kind: PixelKind::Stratified,
+        name: "stratified",
+        aliases: &[alias(
+            "stratified-pixels",
+            "qmckit::pixel::StratifiedSampler",
+        )],
+        summary: "pbrt-v4 StratifiedSampler: per pixel and dimension, the samples permuted \
+                  over the strata, jittered",
+        math: "stratum PermutationElement(i, n, Hash(p, d, seed)) plus a PCG32 jitter at 65536 i + d; spp split as pbrt does (xs = spp / div, ys = div)",
+        params: &[
+            WIDTH,
+            HEIGHT,
+            SPP,
+            SEED,
+            param(
+                "randomizer",
+                "none: the strata's centres (pbrt's jitter false)",
+                "jittered",
+                "none",
+            ),
+        ],
+        item: "qmckit::pixel::StratifiedSampler",
+    },
+    Entry {
         kind: PixelKind::Pmj02,
         name: "pmj02",
         aliases: &[alias("pmj02-pixels", "qmckit::pixel::Pmj02Pixels")],
@@ -154,8 +246,8 @@ mod built {
     use super::super::{CatalogError, RandomizerEntry};
     use super::{PixelEntry, PixelKind as P};
     use crate::pixel::{
-        ImageSobol, IndependentPixels, PaddedSobol, PixelGrid, PixelPoint, PixelSampler,
-        Pmj02BnTables, Pmj02Pixels, Randomization, ZSobol,
+        HaltonSampler, ImageSobol, IndependentPixels, PaddedSobol, PixelGrid, PixelPoint,
+        PixelSampler, Pmj02BnTables, Pmj02Pixels, StratifiedSampler, ZSobol,
     };
     use std::boxed::Box;
 
@@ -172,9 +264,11 @@ mod built {
         pub seed: u64,
     }
 
-    /// The pixel sampler `entry` names for `params`, randomized by `randomizer` (the
-    /// Sobol' samplers: `none`, `xor`, `fast-owen`, `owen`; `None` is `fast-owen`, pbrt's
-    /// default; the others take none). The same values as `qmckit pixel`.
+    /// The pixel sampler `entry` names for `params`, randomized by `randomizer` (see
+    /// [`PixelKind::accepts`](super::PixelKind::accepts): the Sobol' samplers `none`, `xor`, `fast-owen`, `owen`, halton
+    /// all but `fast-owen`, stratified `none` for the strata's centres; `None` is pbrt's
+    /// default, [`PixelKind::default_randomization`](super::PixelKind::default_randomization), and stratified jittered; the others
+    /// take none). The same values as `qmckit pixel`.
     ///
     /// ```
     /// use qmckit::catalog::{self, PixelParams};
@@ -201,23 +295,29 @@ mod built {
             spp,
             seed,
         } = *params;
-        let r = match (randomizer, entry.kind.takes_randomizer()) {
-            (None, _) => Randomization::FastOwen,
-            (Some(r), true) => r.kind.pixel().ok_or(CatalogError::NotApplicable {
-                randomizer: r.name,
-                sampler: entry.name,
-                base: None,
-                rule: "sampler sequences (the pixel samplers take none, xor, fast-owen \
-                       and owen)",
-            })?,
-            (Some(r), false) => {
-                return Err(CatalogError::NotApplicable {
-                    randomizer: r.name,
-                    sampler: entry.name,
-                    base: None,
-                    rule: "the Sobol' pixel samplers (zsobol, image-sobol, padded-sobol)",
-                });
-            }
+        let kind = entry.kind;
+        let r = match randomizer {
+            None => kind.default_randomization(),
+            Some(r) => match r.kind.pixel() {
+                Some(p) if kind.accepts(p) => p,
+                Some(_) => {
+                    return Err(CatalogError::NotApplicable {
+                        randomizer: r.name,
+                        sampler: entry.name,
+                        base: None,
+                        rule: kind.rule(),
+                    });
+                }
+                None => {
+                    return Err(CatalogError::NotApplicable {
+                        randomizer: r.name,
+                        sampler: entry.name,
+                        base: None,
+                        rule: "sampler sequences (the pixel samplers take none, xor, fast-owen \
+                               and owen)",
+                    });
+                }
+            },
         };
         Ok(match entry.kind {
             P::Zsobol => Box::new(ZSobol::new(w, h, spp, r, seed)?),
@@ -225,6 +325,15 @@ mod built {
             P::PaddedSobol => Box::new(PaddedSobol::new(w, h, spp, r, seed)?),
             P::Pmj02 => Box::new(Pmj02Pixels::new(w, h, spp, seed)?),
             P::Independent => Box::new(IndependentPixels::new(w, h, spp, seed)?),
+            P::Halton => Box::new(HaltonSampler::new(w, h, spp, r, seed)?),
+            // Jittered unless `none` was asked for.
+            P::Stratified => Box::new(StratifiedSampler::with_spp(
+                w,
+                h,
+                spp,
+                randomizer.is_none(),
+                seed,
+            )?),
             P::Pmj02bn => {
                 // Validates the image before the table is built.
                 PixelGrid::new(w, h, spp, false)?;

@@ -14,7 +14,9 @@
 //! dim)`). Every dimension is answered, as in pbrt: the samplers built on Sobol' dimensions
 //! (0, 1) "pad" (every request reuses those two dimensions under a fresh hash of `d`, whose
 //! low 32 bits are pbrt's `int` dimension), [`ImageSobol`] wraps to dimension 2 at the end of
-//! its table, [`Pmj02BnPixels`] and [`Pmj02Pixels`] hash `d` into a permutation.
+//! its table, [`HaltonSampler`] wraps to 2 past its last prime, [`StratifiedSampler`] hashes
+//! `d` and reads its PCG32 stream at `65536 i + d`, [`Pmj02BnPixels`] and [`Pmj02Pixels`]
+//! hash `d` into a permutation.
 //!
 //! Types: pixel coordinates and the per-pixel sample index are `u32` (the index is the point
 //! index, `< spp`), dimensions are `usize` (as [`crate::Sampler`]'s), seeds `u64` (below
@@ -29,9 +31,13 @@
 //! | [`PaddedSobol`] | per pixel and dimension: hashed index permutation and scramble of Sobol' (0, 1) | no | nothing | one MurmurHash, one permutation, the scramble |
 //! | [`Pmj02Pixels`] | a seeded PMJ02 sequence per pixel and dimension, index permuted (the layout of pbrt's `PMJ02BNSampler`, generated) | no | nothing | one MurmurHash, one permutation, `2 log2 spp` hashes |
 //! | [`Pmj02BnPixels`] | pbrt's `PMJ02BNSampler` layout: one PMJ02BN table bucketed into a pixel tile, permuted blocks plus blue-noise shifts for the other dimensions | no | the tile entry | one MurmurHash, one permutation, two mask reads |
+//! | [`HaltonSampler`] | pbrt's `HaltonSampler`: one Halton sequence over the image plane, the pixel's indices by the Chinese remainder theorem | yes | `j + k` digit steps | `~24 / log2 b` digit steps (a hash and a permutation each when randomized) |
+//! | [`StratifiedSampler`] | pbrt's `StratifiedSampler`: strata permuted per pixel and dimension, PCG32 jitter | no | the pixel hash | one MurmurHash, one permutation, a PCG32 jump |
 //! | [`IndependentPixels`] | independent uniform values from a hash of `(seed, pixel, index, dimension)` | no | the pixel hash | one `hash3` |
 //!
-//! [`pbrt_f32`] converts a 0.32 fraction as pbrt does (`min(float(v) * 2^-32, 1 - 2^-24)`);
+//! [`HaltonSampler`] and [`StratifiedSampler`] compute their floats as pbrt does, in `f32`
+//! arithmetic ([`PixelSampler::value_1d_f32`]); their 0.32 fractions are the exact values
+//! those floats round. [`pbrt_f32`] converts a 0.32 fraction as pbrt does (`min(float(v) * 2^-32, 1 - 2^-24)`);
 //! the `*_f32` draws return pbrt's floats. For ZSobol, [`ZSobol::pixel_dimension`] is the
 //! batch path of one pixel and one dimension over all its samples (the digits above the
 //! sample's and both scramble keys computed once; bit-identical).
@@ -65,13 +71,16 @@
 //! # Ok::<(), qmckit::Error>(())
 //! ```
 
+mod halton;
 mod image_sobol;
 mod independent;
 mod padded;
 pub mod pmj02bn;
 mod pmj_pixels;
+mod stratified;
 mod zsobol;
 
+pub use halton::{HALTON_PIXEL_DIMS, HaltonSampler};
 pub use image_sobol::{IMAGE_SOBOL_DIMS, ImageSobol, PBRT_SOBOL_DIMS};
 pub use independent::IndependentPixels;
 pub use padded::PaddedSobol;
@@ -79,6 +88,7 @@ pub use pmj_pixels::Pmj02Pixels;
 pub use pmj02bn::Pmj02BnPixels;
 #[cfg(feature = "std")]
 pub use pmj02bn::Pmj02BnTables;
+pub use stratified::StratifiedSampler;
 pub use zsobol::{ZSobol, ZSobolPixelDim};
 
 use crate::bits::reverse_bits;
@@ -308,8 +318,9 @@ pub trait PixelSampler {
     /// hashes ([`ZSobol`], [`PaddedSobol`], [`Pmj02Pixels`], [`IndependentPixels`]): every
     /// dimension is valid, the hashes read its low 32 bits (pbrt's `int`). [`ImageSobol`]
     /// reads a counter below 2 as 2 and wraps to 2 at the end of its Sobol' table
-    /// ([`IMAGE_SOBOL_DIMS`]); [`Pmj02BnPixels`] reads a counter below 2 as 2 (pbrt's
-    /// `max(2, dim)` in `StartPixelSample`).
+    /// ([`IMAGE_SOBOL_DIMS`]), [`HaltonSampler`] likewise at [`HALTON_PIXEL_DIMS`];
+    /// [`Pmj02BnPixels`] reads a counter below 2 as 2 (pbrt's `max(2, dim)` in
+    /// `StartPixelSample`).
     fn counter_dimension(&self, dim: usize, width: usize) -> usize {
         let _ = width;
         dim
@@ -321,6 +332,20 @@ pub trait PixelSampler {
 
     /// The 2D value at dimension `dim` (through `counter_dimension`): pbrt's `Get2D`.
     fn value_2d(&self, at: &PixelPoint, dim: usize) -> [u32; 2];
+
+    /// [`value_1d`](Self::value_1d) as pbrt's `f32`; the default converts with
+    /// [`pbrt_f32`]. [`HaltonSampler`] and [`StratifiedSampler`] compute their floats as pbrt
+    /// does (radical inverses and strata in `f32` arithmetic), which the 0.32 fraction does
+    /// not determine.
+    fn value_1d_f32(&self, at: &PixelPoint, dim: usize) -> f32 {
+        pbrt_f32(self.value_1d(at, dim))
+    }
+
+    /// [`value_2d`](Self::value_2d) as pbrt's `f32`s; the default converts with
+    /// [`pbrt_f32`].
+    fn value_2d_f32(&self, at: &PixelPoint, dim: usize) -> [f32; 2] {
+        self.value_2d(at, dim).map(pbrt_f32)
+    }
 
     /// The position in the pixel, `[0, 1)^2`, with the counter at `dim` (pbrt's
     /// `GetPixel2D`); the default is [`value_2d`](Self::value_2d).
@@ -335,7 +360,8 @@ pub trait PixelSampler {
     }
 
     /// Whether pbrt's `GetPixel2D` moves the dimension counter (by 2): true except for
-    /// [`ImageSobol`] and [`Pmj02BnPixels`], whose pixel positions are outside the counter.
+    /// [`ImageSobol`], [`HaltonSampler`] and [`Pmj02BnPixels`], whose pixel positions are
+    /// outside the counter.
     fn pixel_2d_moves_counter(&self) -> bool {
         true
     }
@@ -383,6 +409,14 @@ macro_rules! forward_pixel_sampler {
             #[inline]
             fn value_2d(&self, at: &PixelPoint, dim: usize) -> [u32; 2] {
                 (**self).value_2d(at, dim)
+            }
+            #[inline]
+            fn value_1d_f32(&self, at: &PixelPoint, dim: usize) -> f32 {
+                (**self).value_1d_f32(at, dim)
+            }
+            #[inline]
+            fn value_2d_f32(&self, at: &PixelPoint, dim: usize) -> [f32; 2] {
+                (**self).value_2d_f32(at, dim)
             }
             fn value_pixel_2d(&self, at: &PixelPoint, dim: usize) -> [u32; 2] {
                 (**self).value_pixel_2d(at, dim)
@@ -501,7 +535,8 @@ impl<'a, S: PixelSampler + ?Sized> PixelSample<'a, S> {
     }
 
     /// `GetPixel2D`: the position in the pixel (the counter moves by 2, as in pbrt, except
-    /// for [`ImageSobol`] and [`Pmj02BnPixels`], whose pixel positions are separate).
+    /// for [`ImageSobol`], [`HaltonSampler`] and [`Pmj02BnPixels`], whose pixel positions
+    /// are separate).
     #[inline]
     pub fn get_pixel_2d(&mut self) -> [u32; 2] {
         let v = self.sampler.value_pixel_2d(&self.at, self.dim);
@@ -512,13 +547,17 @@ impl<'a, S: PixelSampler + ?Sized> PixelSample<'a, S> {
     /// [`get_1d`](Self::get_1d) as pbrt's `f32` ([`pbrt_f32`]).
     #[inline]
     pub fn get_1d_f32(&mut self) -> f32 {
-        pbrt_f32(self.get_1d())
+        let d = self.sampler.counter_dimension(self.dim, 1);
+        self.dim = d.wrapping_add(1);
+        self.sampler.value_1d_f32(&self.at, d)
     }
 
     /// [`get_2d`](Self::get_2d) as pbrt's `f32`s.
     #[inline]
     pub fn get_2d_f32(&mut self) -> [f32; 2] {
-        self.get_2d().map(pbrt_f32)
+        let d = self.sampler.counter_dimension(self.dim, 2);
+        self.dim = d.wrapping_add(2);
+        self.sampler.value_2d_f32(&self.at, d)
     }
 
     /// [`get_pixel_2d`](Self::get_pixel_2d) as pbrt's `f32`s (for [`ImageSobol`], pbrt's

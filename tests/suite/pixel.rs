@@ -2,9 +2,14 @@
 //! file tests/golden/pbrt_samplers.txt (made by tests/golden/gen_pbrt_samplers.py, an
 //! independent Python reading of pbrt's code that brute-forces SobolIntervalToIndex), and
 //! the properties pbrt's own tests state (aligned, unique index blocks; per-pixel nets).
+//! `compiled` checks every draw of the goldens printed by pbrt-v4's own sampler classes
+//! (tests/golden/pbrt_samplers_compiled.txt, tests/golden/pbrt_harness/).
 
 // pbrt's check values are quoted as published, with 9 significant digits.
 #![allow(clippy::excessive_precision)]
+
+mod compiled;
+mod halton_stratified;
 
 use crate::common::first_net_failure;
 use qmckit::Error;

@@ -158,3 +158,89 @@ fn pixel_refuses_bad_input() {
         "--randomize",
     );
 }
+
+/// `qmckit pixel halton|stratified --format csv` prints pbrt-v4's own floats: the values at
+/// dimension 5 (random access, the 1D and the 2D draw) of compiled pbrt's goldens
+/// (tests/golden/pbrt_samplers_compiled.txt, 4x3 image, 4 samples, seed 0), bit for bit.
+#[test]
+fn halton_and_stratified_print_compiled_pbrt_floats() {
+    let path = format!(
+        "{}/../tests/golden/pbrt_samplers_compiled.txt",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let text = std::fs::read_to_string(&path).unwrap();
+    // Random access comes first: starts 0, 1, 2, 5, ...; three values each.
+    let starts: Vec<&str> = text
+        .lines()
+        .find_map(|l| l.strip_prefix("# starts "))
+        .unwrap()
+        .split(' ')
+        .collect();
+    let at = 3 * starts.iter().position(|&d| d == "5").unwrap();
+    for (config, golden, randomize) in [
+        ("halton permutedigits 4 3 4 0", "halton", None),
+        ("halton owen 4 3 4 0", "halton", Some("owen")),
+        ("stratified jitter 4 3 4 0 2 2", "stratified", None),
+        ("stratified none 4 3 4 0 2 2", "stratified", Some("none")),
+    ] {
+        let id = text
+            .lines()
+            .find_map(|l| l.strip_prefix("config ")?.strip_suffix(config))
+            .unwrap_or_else(|| panic!("no {config}"))
+            .trim()
+            .to_string();
+        let mut args = vec![
+            "pixel",
+            golden,
+            "--resolution",
+            "4x3",
+            "--spp",
+            "4",
+            "--pixel",
+            "2,1",
+            "--dim",
+            "5",
+            "--format",
+            "csv",
+        ];
+        if let Some(r) = randomize {
+            args.extend(["--randomize", r]);
+        }
+        let got = lines(&args);
+        assert_eq!(got.len(), 4);
+        for (i, line) in got.iter().enumerate() {
+            let prefix = format!("{id} 2 1 {i} ");
+            let want: Vec<u32> = text
+                .lines()
+                .find_map(|l| l.strip_prefix(&prefix))
+                .unwrap()
+                .split(' ')
+                .skip(at)
+                .take(3)
+                .map(|w| u32::from_str_radix(w, 16).unwrap())
+                .collect();
+            let ours: Vec<u32> = line
+                .split(',')
+                .skip(1)
+                .map(|v| v.parse::<f32>().unwrap().to_bits())
+                .collect();
+            assert_eq!(ours, want, "{config} i={i}: {line}");
+        }
+    }
+    assert_usage_error(
+        &[
+            "pixel",
+            "halton",
+            "--resolution",
+            "4x3",
+            "--spp",
+            "4",
+            "--pixel",
+            "0,0",
+            "--randomize",
+            "fast-owen",
+        ],
+        "",
+        "fast-owen does not apply to halton",
+    );
+}
