@@ -264,12 +264,13 @@ class Sobol(_NativeEngine):
         Post-processing, as SciPy's.
     randomizer : {"fast-owen", "owen", "lms", "xor"}, optional
         ``"fast-owen"`` (the default): hash-based Owen scrambling (Burley 2020, "Practical
-        hash-based Owen scrambling"): a nested scramble (each bit's flip depends only on
-        the bits above it, so nets stay nets and every point is uniform), keyed by a
-        32-bit hash of the seed and dimension, at a dozen integer operations a value;
-        not every nested scramble is reachable. ``"owen"``: exact nested uniform
-        scrambling (Owen 1995): an independent flip for every node of the bit tree, about
-        ten times slower (64-bit hashes of the tree nodes a point reaches).
+        hash-based Owen scrambling"): a nested, bijective scramble (each bit's flip
+        depends only on the bits above it, so nets stay nets), keyed by a 32-bit hash of
+        the seed and dimension, at a dozen integer operations a value; its flips come
+        from one keyed hash, not from independent coins, so not every nested scramble is
+        reachable. ``"owen"``: exact nested uniform scrambling (Owen 1995): an
+        independent flip for every node of the bit tree, about ten times slower (64-bit
+        hashes of the tree nodes a point reaches).
         ``"lms"``: SciPy's linear matrix scrambling plus digital shift, drawn from
         ``rng`` exactly as SciPy draws it (the same points as ``scipy.stats.qmc.Sobol``
         for the same ``rng``); ``"xor"``: a random digital shift.

@@ -156,6 +156,14 @@ impl PoissonDisk {
     /// (`true`; SciPy's `hypersphere="surface"`) or uniform in the shell `r <= |y - x| <
     /// 2r` (`false`, the default). Surface candidates pack the set more tightly (each new
     /// point touches its parent's disk).
+    ///
+    /// ```
+    /// use qmckit::blue_noise::PoissonDisk;
+    /// let shell = PoissonDisk::new(2, 0.05)?.seed(1).generate()?;
+    /// let surface = PoissonDisk::new(2, 0.05)?.surface(true).seed(1).generate()?;
+    /// assert!(surface.count() > shell.count());
+    /// # Ok::<(), qmckit::Error>(())
+    /// ```
     pub fn surface(mut self, surface: bool) -> Self {
         self.surface = surface;
         self
