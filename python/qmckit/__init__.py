@@ -18,13 +18,13 @@ from ._engines import (
     Faure,
     Halton,
     Kronecker,
-    LatinHypercube,
     Lattice,
     PMJ02,
     PMJ02BN,
     PoissonDisk,
     Sobol,
 )
+from ._lhs import LatinHypercube
 from ._discrepancy import discrepancy
 
 __all__ = [
