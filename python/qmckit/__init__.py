@@ -5,7 +5,7 @@ they drop into code written for ``scipy.stats.qmc`` (including
 ``scipy.integrate.qmc_quad``)::
 
     import qmckit
-    engine = qmckit.Sobol(d=8, rng=42)          # Owen-scrambled Sobol'
+    engine = qmckit.Sobol(d=8, rng=42)          # Owen-scrambled Sobol' (hash-based)
     x = engine.random_base2(16)
     qmckit.discrepancy(x, method="CD")
 
@@ -18,13 +18,13 @@ from ._engines import (
     Faure,
     Halton,
     Kronecker,
-    LatinHypercube,
     Lattice,
     PMJ02,
     PMJ02BN,
     PoissonDisk,
     Sobol,
 )
+from ._lhs import LatinHypercube
 from ._discrepancy import discrepancy
 
 __all__ = [

@@ -31,7 +31,6 @@ from . import _qmckit
 __all__ = [
     "Sobol",
     "Halton",
-    "LatinHypercube",
     "Lattice",
     "Kronecker",
     "Faure",
@@ -262,9 +261,15 @@ class Sobol(_NativeEngine):
         Source of the scramble.
     optimization : {None, "random-cd", "lloyd"}, optional
         Post-processing, as SciPy's.
-    randomizer : {"owen", "fast-owen", "lms", "xor"}, optional
-        ``"owen"``: exact nested uniform scrambling (Owen 1995), the default;
-        ``"fast-owen"``: hash-based Owen scrambling (Laine-Karras / Burley);
+    randomizer : {"fast-owen", "owen", "lms", "xor"}, optional
+        ``"fast-owen"`` (the default): hash-based Owen scrambling (Burley 2020, "Practical
+        hash-based Owen scrambling"): a nested, bijective scramble (each bit's flip
+        depends only on the bits above it, so nets stay nets), keyed by a 32-bit hash of
+        the seed and dimension, at a dozen integer operations a value; its flips come
+        from one keyed hash, not from independent coins, so not every nested scramble is
+        reachable. ``"owen"``: exact nested uniform scrambling (Owen 1995): an
+        independent flip for every node of the bit tree, about ten times slower (64-bit
+        hashes of the tree nodes a point reaches).
         ``"lms"``: SciPy's linear matrix scrambling plus digital shift, drawn from
         ``rng`` exactly as SciPy draws it (the same points as ``scipy.stats.qmc.Sobol``
         for the same ``rng``); ``"xor"``: a random digital shift.
@@ -273,7 +278,7 @@ class Sobol(_NativeEngine):
     """
 
     MAXDIM = _qmckit.SOBOL_MAX_DIMS
-    RANDOMIZERS = ("owen", "fast-owen", "lms", "xor")
+    RANDOMIZERS = ("fast-owen", "owen", "lms", "xor")
 
     @_transition_to_rng("seed", replace_doc=False)
     def __init__(
@@ -284,7 +289,7 @@ class Sobol(_NativeEngine):
         bits=None,
         rng=None,
         optimization=None,
-        randomizer="owen",
+        randomizer="fast-owen",
     ):
         self._init_quad = {
             "d": d,
@@ -413,54 +418,6 @@ class Halton(_NativeEngine):
         return self._make("halton", self.d, native, _draw_seed(self.rng))
 
 
-class LatinHypercube(_NativeEngine):
-    """Latin hypercube sampling, as :class:`scipy.stats.qmc.LatinHypercube` with
-    ``strength=1``: every call draws a new design of ``n`` points (one point in each of
-    the ``n`` slabs of every axis; centered in its cell when ``scramble=False``), from a
-    qmckit seed drawn from ``rng``. ``strength=2`` (orthogonal-array LHS) is not
-    available."""
-
-    @_transition_to_rng("seed", replace_doc=False)
-    def __init__(self, d, *, scramble=True, strength=1, optimization=None, rng=None):
-        self._init_quad = {
-            "d": d,
-            "scramble": True,
-            "strength": strength,
-            "optimization": optimization,
-        }
-        super()._initialize(d=d, rng=rng, optimization=optimization)
-        if strength != 1:
-            raise ValueError(
-                f"{strength!r} is not a valid strength. It must be one of {{1}} "
-                "(qmckit has no orthogonal-array LHS yet)"
-            )
-        self.scramble = scramble
-        self.strength = strength
-
-    def _check_n(self, n):
-        if n > _INDEX_LIMIT:
-            raise ValueError(f"At most 2**32 points a design (qmckit), got n={n}")
-
-    def _fill(self, out, workers):
-        n = out.shape[0]
-        if n == 0 or self.d == 0:
-            return out
-        native = _qmckit.latin_hypercube(n, self.d, _draw_seed(self.rng))
-        if self.scramble:
-            native.fill(0, out, workers)
-        else:
-            u = np.empty((n, self.d), dtype=np.uint32)
-            native.fill(0, u, workers)
-            slab = (u.astype(np.uint64) * np.uint64(n)) >> np.uint64(32)
-            np.divide(slab + 0.5, n, out=out)
-        return out
-
-    def fast_forward(self, n):
-        """As SciPy: draws (and discards) ``n`` points, advancing ``rng``."""
-        self.random(n)
-        return self
-
-
 class _ShiftedEngine(_NativeEngine):
     """Engines randomized by a random shift modulo 1 (Cranley-Patterson)."""
 
@@ -573,8 +530,13 @@ class PoissonDisk(_NativeEngine):
     ``fill_space``), from a seed drawn from ``rng`` at construction; ``random(n)`` then
     returns its next ``n`` points, or fewer once the set is used up, and ``reset`` starts
     it again. A box whose sides differ is cut from the set of a cube of the longest side,
-    so the spacing is the same everywhere. qmckit draws Bridson's candidates its own way:
-    ``hypersphere`` is checked as SciPy checks it, but both values give the same set.
+    so the spacing is the same everywhere.
+
+    ``hypersphere``: where Bridson's candidates are drawn around an active point.
+    ``"volume"`` (default): uniform in the shell ``radius <= |y - x| < 2 radius`` (SciPy
+    draws them in the ball of radius ``2 radius``; candidates inside the disk are
+    rejected anyway). ``"surface"``: uniform on the sphere of radius ``1.001 radius``, as
+    SciPy; the set is denser (every new point nearly touches its parent's disk).
     """
 
     @_transition_to_rng("seed", replace_doc=False)
@@ -624,7 +586,11 @@ class PoissonDisk(_NativeEngine):
                 sides = np.asarray(self.u_bounds - self.l_bounds, dtype=np.float64)
                 side = float(sides.max())
                 unit = _qmckit.poisson_disk(
-                    self.d, min(self.radius / side, 1.0), self.ncandidates, self._seed
+                    self.d,
+                    min(self.radius / side, 1.0),
+                    self.ncandidates,
+                    self._seed,
+                    self.hypersphere == "surface",
                 )
                 x = unit * side
                 keep = np.all(x < sides, axis=1)

@@ -49,7 +49,7 @@ class QMCKit(AbstractLDDiscreteDistribution):
         engine (str): ``"Sobol"``, ``"Halton"``, ``"Lattice"``, ``"Kronecker"`` or
             ``"Faure"``.
         randomize (bool): scramble (the engine's ``scramble``).
-        **engine_kwargs: passed to the engine (e.g. ``randomizer="fast-owen"``).
+        **engine_kwargs: passed to the engine (e.g. ``randomizer="owen"``, exact Owen).
     """
 
     def __init__(self, dimension=1, replications=None, seed=None, engine="Sobol",

@@ -9,20 +9,24 @@ use qmckit::blue_noise::PoissonDisk;
 use crate::error::to_py;
 
 /// The Poisson-disk set of `seed` in `[0, 1)^d` (1 <= d <= 8): Bridson's algorithm with
-/// `candidates` trials a point, run until no active point remains. `(n, d)` float64.
+/// `candidates` trials a point (on the sphere of radius `1.001 radius` when `surface`,
+/// else in the shell `radius .. 2 radius`), run until no active point remains. `(n, d)`
+/// float64.
 #[pyfunction]
-#[pyo3(signature = (d, radius, candidates = 30, seed = 0))]
+#[pyo3(signature = (d, radius, candidates = 30, seed = 0, surface = false))]
 pub fn poisson_disk<'py>(
     py: Python<'py>,
     d: usize,
     radius: f64,
     candidates: u32,
     seed: u64,
+    surface: bool,
 ) -> PyResult<Bound<'py, PyArray2<f64>>> {
     let builder = PoissonDisk::new(d, radius)
         .and_then(|p| p.candidates(candidates))
         .map_err(to_py)?
-        .seed(seed);
+        .seed(seed)
+        .surface(surface);
     let set = py.detach(move || builder.generate()).map_err(to_py)?;
     let n = set.count();
     PyArray1::from_vec(py, set.to_f64()).reshape([n, d])

@@ -232,7 +232,19 @@ impl Randomizer for AffineTable {
     }
 }
 
-impl<S: Base2Digital + ?Sized> Randomizes<S> for AffineTable {}
+/// Folded into Sobol's direction numbers by the sampler's affine fill (no per-value
+/// map application).
+impl<S: Base2Digital + ?Sized> Randomizes<S> for AffineTable {
+    #[inline]
+    fn affine_fill(
+        sampler: &S,
+        start: u32,
+        out: &mut [u32],
+        maps: &dyn Fn(usize) -> Option<Affine>,
+    ) -> Option<qmckit::Result<()>> {
+        sampler.fill_affine(start, out, maps)
+    }
+}
 
 fn affine_table(
     images: &PyReadonlyArray2<'_, u32>,

@@ -15,7 +15,7 @@ def engine_with(cls, **fixed):
 
 ALL_ENGINES = [
     qmckit.Sobol,
-    engine_with(qmckit.Sobol, randomizer="fast-owen"),
+    engine_with(qmckit.Sobol, randomizer="owen"),
     engine_with(qmckit.Sobol, randomizer="lms"),
     engine_with(qmckit.Sobol, randomizer="xor"),
     qmckit.Halton,

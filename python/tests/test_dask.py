@@ -71,3 +71,41 @@ def test_dask_distributed_local_cluster():
         x = qmckit.dask.random(e, 2**14, chunks=2**12)
         got = client.compute(x).result()
     assert_array_equal(got, qmckit.Sobol(4, randomizer="lms", rng=5).random(2**14))
+
+
+def _estimate(x):
+    """A QMC estimate of the integral of prod_j (1 + (x_j - 1/2)) over [0, 1]^d (exactly 1)."""
+    return (1.0 + (x - 0.5)).prod(axis=1).mean()
+
+
+def test_dask_estimate_identical_on_1_2_4_worker_processes():
+    """The same estimate, bit for bit, whether 1, 2 or 4 worker processes compute the
+    chunks (each worker rebuilds the scramble from the pickled engine): the default
+    randomizer, exact Owen and SciPy's LMS."""
+    distributed = pytest.importorskip("dask.distributed")
+    n, chunks = 2**15, 2**12
+    randomizers = ["fast-owen", "owen", "lms"]
+    got = {}
+    for workers in (1, 2, 4):
+        with distributed.LocalCluster(n_workers=workers, threads_per_worker=1,
+                                      processes=True, dashboard_address=None) as cluster, \
+                distributed.Client(cluster) as client:
+            assert len(client.scheduler_info()["workers"]) == workers
+            ests = [_estimate(qmckit.dask.random(qmckit.Sobol(5, randomizer=r, rng=11),
+                                                 n, chunks=chunks))
+                    for r in randomizers]
+            got[workers] = client.gather(client.compute(ests))
+    assert got[1] == got[2] == got[4]
+    for r, est in zip(randomizers, got[1]):
+        ref = _estimate(qmckit.Sobol(5, randomizer=r, rng=11).random(n))
+        assert abs(est - ref) < 1e-12
+        assert abs(est - 1.0) < 1e-3  # an estimate of the integral, not noise
+
+
+def test_dask_estimate_identical_with_the_process_scheduler():
+    """dask's multiprocessing scheduler with 1, 2 and 4 processes: the same value."""
+    e = qmckit.Halton(4, rng=3)
+    x = qmckit.dask.random(e, 2**14, chunks=2**11)
+    est = _estimate(x)
+    vals = [est.compute(scheduler="processes", num_workers=w) for w in (1, 2, 4)]
+    assert vals[0] == vals[1] == vals[2]

@@ -52,6 +52,57 @@ def test_native_fill_writes_caller_memory():
     assert_array_equal(base, qmc.Sobol(4, scramble=False, bits=32).random(16)[6:])
 
 
+# Allocation checks: NumPy reports its array buffers to tracemalloc, so a hidden copy of
+# an (n, d) array (or a temporary of its size) shows in the peak. Each test first shows
+# that a copy *is* seen (the check can fail), then that the call makes none.
+
+_BIG = (1 << 17, 8)  # 8 MiB of float64
+_BYTES = _BIG[0] * _BIG[1] * 8
+
+
+def _peak(fn):
+    import tracemalloc
+
+    tracemalloc.start()
+    try:
+        tracemalloc.reset_peak()
+        base = tracemalloc.get_traced_memory()[0]
+        fn()
+        return tracemalloc.get_traced_memory()[1] - base
+    finally:
+        tracemalloc.stop()
+
+
+def test_a_copy_shows_in_the_peak():
+    x = np.zeros(_BIG)
+    assert _peak(lambda: np.array(x, copy=True)) >= _BYTES
+
+
+@pytest.mark.parametrize("randomizer", ["owen", "fast-owen", "lms", "xor"])
+@pytest.mark.parametrize("dtype", [np.float64, np.uint32])
+def test_fill_allocates_no_array(randomizer, dtype):
+    out = np.zeros(_BIG, dtype=dtype)
+    ptr = out.__array_interface__["data"][0]
+    eng = qmckit.Sobol(_BIG[1], randomizer=randomizer, rng=2)
+    if dtype is np.float64:
+        peak = _peak(lambda: eng.random(_BIG[0], out=out))
+    else:
+        peak = _peak(lambda: eng.fill(out))
+    assert out.__array_interface__["data"][0] == ptr
+    assert peak < out.nbytes // 16
+    assert out.any()
+
+
+@pytest.mark.parametrize("method", ["CD", "L2-star"])
+def test_discrepancy_does_not_copy_a_c_contiguous_input(method):
+    x = qmckit.Sobol(_BIG[1], rng=1).random(1 << 12)
+    big = np.repeat(x, 8, axis=0)  # 2^15 x 8
+    assert _peak(lambda: qmckit.discrepancy(big[:64], method=method)) < 4096
+    # The check can fail: a Fortran-order input is converted (copied) first.
+    f = np.asfortranarray(big)
+    assert _peak(lambda: qmckit.discrepancy(f[:2048], method=method)) >= 2048 * 8 * 8
+    assert _peak(lambda: qmckit.discrepancy(big[:2048], method=method)) < 2048 * 8
+
 @pytest.mark.parametrize(
     "make",
     [
@@ -176,7 +227,7 @@ def test_finite_sets_refuse_past_their_end():
         (lambda: qmckit.Sobol(2, randomizer="nope"), "not a valid randomizer"),
         (lambda: qmckit.Halton(2, randomizer="nope"), "not a valid randomizer"),
         (lambda: qmckit.PMJ02(3), "two-dimensional"),
-        (lambda: qmckit.LatinHypercube(2, strength=2), "not a valid strength"),
+        (lambda: qmckit.LatinHypercube(2, strength=3), "not a valid strength"),
         (lambda: qmckit.Sobol(2, optimization="toto"), "not a valid optimization"),
         (lambda: _qmckit.sobol(0), "dimension"),
         (lambda: _qmckit.latin_hypercube(0, 2, 1), "point"),
@@ -279,15 +330,79 @@ def test_halton_many_dims_scipy_perm():
     assert x.shape == (4, 2000)
 
 
-def test_sobol_owen_fill_any_split():
-    """The batched exact Owen fill: one call, uneven chunks, several threads and 0.32
+@pytest.mark.filterwarnings("ignore:The balance properties")
+@pytest.mark.parametrize("randomizer", ["owen", "fast-owen", "lms", "xor"])
+def test_sobol_fill_any_split(randomizer):
+    """The batched Sobol' fills (exact Owen's tabled one; the others through the chunked
+    0.32 fill, masked and converted): one call, uneven chunks, several threads and 0.32
     integers give the same values, kept to ``bits`` bits."""
-    whole = qmckit.Sobol(5, rng=3).random(6000)
-    e = qmckit.Sobol(5, rng=3)
-    parts = np.vstack([e.random(k) for k in (1, 3, 2044, 3952)])
+    def make():
+        return qmckit.Sobol(5, rng=3, randomizer=randomizer)
+
+    whole = make().random(40000)
+    e = make()
+    parts = np.vstack([e.random(k) for k in (1, 3, 2044, 3952, 33000, 1000)])
     np.testing.assert_array_equal(whole, parts)
-    np.testing.assert_array_equal(whole, qmckit.Sobol(5, rng=3).random(6000, workers=3))
-    raw = np.empty((6000, 5), dtype=np.uint32)
-    qmckit.Sobol(5, rng=3).fill(raw)
+    np.testing.assert_array_equal(whole, make().random(40000, workers=3))
+    raw = np.empty((40000, 5), dtype=np.uint32)
+    make().fill(raw)
     np.testing.assert_array_equal(whole, raw / 2**32)
     assert np.all(raw % 4 == 0)  # bits=30
+
+
+# -- LatinHypercube(strength=2) and PoissonDisk(hypersphere="surface") ------------------
+
+
+@pytest.mark.parametrize("p, d", [(2, 3), (3, 4), (7, 8), (11, 5)])
+def test_oa_lhs_is_a_latin_hypercube_with_full_2d_projections(p, d):
+    n = p * p
+    x = qmckit.LatinHypercube(d, strength=2, rng=5).random(n)
+    assert x.shape == (n, d)
+    assert np.all((0 <= x) & (x < 1))
+    # Latin: every one of the n slabs of every axis holds one point.
+    for j in range(d):
+        assert sorted((x[:, j] * n).astype(int)) == list(range(n))
+    # Strength 2: every pair of axes puts one point in each of the p x p cells.
+    cells = (x * p).astype(int)
+    for i in range(d):
+        for j in range(i + 1, d):
+            assert len({(a, b) for a, b in cells[:, [i, j]]}) == n
+
+
+def test_oa_lhs_draws_new_designs_and_repeats_with_rng():
+    a = qmckit.LatinHypercube(3, strength=2, rng=1).random(25)
+    b = qmckit.LatinHypercube(3, strength=2, rng=1).random(25)
+    assert_array_equal(a, b)
+    e = qmckit.LatinHypercube(3, strength=2, rng=1)
+    e.random(25)
+    assert not np.array_equal(e.random(25), a)
+
+
+@pytest.mark.parametrize("n, d", [(16, 2), (5, 2), (9, 5), (0, 2)])
+def test_oa_lhs_refuses_what_scipy_refuses(n, d):
+    with pytest.raises(ValueError) as ours:
+        qmckit.LatinHypercube(d, strength=2, rng=1).random(n)
+    with pytest.raises(ValueError) as theirs:
+        qmc.LatinHypercube(d, strength=2, rng=1).random(n)
+    assert str(ours.value).split(".")[0] == str(theirs.value).split(".")[0]
+
+
+def test_poisson_surface_points_touch_their_neighbour():
+    """Surface candidates: every point but the first lies 1.001 r from the point it grew
+    from, so its nearest neighbour is within 1.001 r; none is closer than r. Volume
+    candidates leave most points farther from their nearest neighbour."""
+    from scipy.spatial import cKDTree
+
+    r = 0.03
+
+    def nn(hypersphere):
+        x = qmckit.PoissonDisk(2, radius=r, hypersphere=hypersphere, rng=4).fill_space()
+        dist, _ = cKDTree(x).query(x, k=2)
+        return dist[:, 1]
+
+    surface, volume = nn("surface"), nn("volume")
+    assert surface.min() >= r and volume.min() >= r
+    assert np.sum(surface > 1.001 * r + 1e-9) <= 1
+    assert np.mean(volume <= 1.001 * r + 1e-9) < 0.5
+    # Denser than the shell's set, as with SciPy's two methods.
+    assert len(surface) > len(volume)

@@ -98,8 +98,18 @@ OTHER_SOBOL_SCRAMBLE = (
 )
 
 
-class TestSobolOwen(QMCEngineTests):
+class TestSobol(QMCEngineTests):
+    """The default randomizer (``"fast-owen"``)."""
+
     qmce = qmckit.Sobol
+    can_scramble = True
+    unscramble_nd = SCIPY_SOBOL.unscramble_nd
+    scramble_nd = SCIPY_SOBOL.scramble_nd
+    test_sample = _xfail_scrambled_sample(OTHER_SOBOL_SCRAMBLE)
+
+
+class TestSobolOwen(QMCEngineTests):
+    qmce = engine_with(qmckit.Sobol, randomizer="owen")
     can_scramble = True
     unscramble_nd = SCIPY_SOBOL.unscramble_nd
     scramble_nd = SCIPY_SOBOL.scramble_nd
@@ -191,6 +201,28 @@ class TestLHS(QMCEngineTests):
     def test_optimizer_1d(self):
         SCIPY_LHS = scipy_tests.TestLHS
         SCIPY_LHS.test_optimizer_1d(self)
+
+
+class TestLHSScipyOwnTests:
+    """SciPy's ``TestLHS`` tests that construct ``qmc.LatinHypercube`` themselves
+    (strength 1 and 2, stratification and every 2-D projection of the orthogonal array,
+    the errors), run with ``qmc.LatinHypercube`` replaced by qmckit's."""
+
+    @pytest.fixture(autouse=True)
+    def _qmckit_lhs(self, monkeypatch):
+        monkeypatch.setattr(scipy_tests.qmc, "LatinHypercube", qmckit.LatinHypercube)
+
+    @pytest.mark.parametrize("strength", [1, 2])
+    @pytest.mark.parametrize("scramble", [False, True])
+    @pytest.mark.parametrize("optimization", [None, "random-CD"])
+    def test_sample_stratified(self, optimization, scramble, strength):
+        assert scipy_tests.qmc.LatinHypercube is qmckit.LatinHypercube
+        scipy_tests.TestLHS.test_sample_stratified(
+            scipy_tests.TestLHS(), optimization, scramble, strength
+        )
+
+    def test_raises(self):
+        scipy_tests.TestLHS.test_raises(scipy_tests.TestLHS())
 
 
 def _radical_inverse_2(i):

@@ -24,7 +24,8 @@ use crate::work::Budget;
 /// `r (1 + sqrt(d) 2^-21)` of a sample at the end.
 pub(crate) const FINEST: f64 = 1.0 / (1u64 << 20) as f64;
 
-/// Runs Bridson's algorithm with `k` candidates a step into `grid` (empty), checking the
+/// Runs Bridson's algorithm with `k` candidates a step (on the sphere of radius `1.001 r`
+/// when `surface`, else in the shell `r .. 2r`) into `grid` (empty), checking the
 /// deadline of the (started) `budget` about once every [`crate::work::PACER_INTERVAL`]
 /// neighbour-cell visits' worth of candidates.
 ///
@@ -33,13 +34,14 @@ pub(crate) const FINEST: f64 = 1.0 / (1u64 << 20) as f64;
 pub(crate) fn bridson<const D: usize>(
     grid: &mut Grid<D>,
     k: u32,
+    surface: bool,
     rng: &mut Rng,
     budget: &Budget,
 ) -> Result<()> {
     let mut pacer = budget.pacer("Poisson-disk sampling");
     let step_weight = k.saturating_mul(grid.test_weight());
     let torus = grid.torus;
-    let shell = Shell::<D>::new(grid.r * SCALE);
+    let shell = Shell::<D>::with_surface(grid.r * SCALE, surface);
     let mut first = [0u32; D];
     for v in first.iter_mut() {
         *v = rng.fraction();

@@ -69,6 +69,7 @@ pub struct PoissonDisk {
     seed: u64,
     candidates: u32,
     maximal: bool,
+    surface: bool,
 }
 
 /// The volume of the `d`-ball of radius `rho`: `pi^(d/2) rho^d / Gamma(d/2 + 1)`.
@@ -106,6 +107,7 @@ impl PoissonDisk {
             seed: 0,
             candidates: 30,
             maximal: false,
+            surface: false,
         };
         pd.max_points()?;
         Ok(pd)
@@ -134,6 +136,7 @@ impl PoissonDisk {
             seed: 0,
             candidates: 30,
             maximal: false,
+            surface: false,
         })
     }
 
@@ -146,6 +149,23 @@ impl PoissonDisk {
     /// The seed: equal seeds give equal sets.
     pub fn seed(mut self, seed: u64) -> Self {
         self.seed = seed;
+        self
+    }
+
+    /// Bridson's candidates on the sphere of radius `1.001 r` around the active point
+    /// (`true`; SciPy's `hypersphere="surface"`) or uniform in the shell `r <= |y - x| <
+    /// 2r` (`false`, the default). Surface candidates pack the set more tightly (each new
+    /// point touches its parent's disk).
+    ///
+    /// ```
+    /// use qmckit::blue_noise::PoissonDisk;
+    /// let shell = PoissonDisk::new(2, 0.05)?.seed(1).generate()?;
+    /// let surface = PoissonDisk::new(2, 0.05)?.surface(true).seed(1).generate()?;
+    /// assert!(surface.count() > shell.count());
+    /// # Ok::<(), qmckit::Error>(())
+    /// ```
+    pub fn surface(mut self, surface: bool) -> Self {
+        self.surface = surface;
         self
     }
 
@@ -308,22 +328,22 @@ impl PoissonDisk {
     /// In 2D the tiled, parallel loop grows the set ([`super::tiles`]) where the grid is
     /// large enough; elsewhere the sequential loop. Every loop checks `budget`'s deadline.
     fn run(&self, r: f64, budget: &Budget) -> Result<(PointSet, f64)> {
-        let k = self.candidates;
+        let (k, surface) = (self.candidates, self.surface);
         match self.dims {
-            1 => self.run_d::<1>(r, budget, |g, rng| bridson(g, k, rng, budget)),
+            1 => self.run_d::<1>(r, budget, |g, rng| bridson(g, k, surface, rng, budget)),
             2 => self.run_d::<2>(r, budget, |g, rng| {
-                if bridson_tiled(g, k, self.seed, budget)? {
+                if bridson_tiled(g, k, surface, self.seed, budget)? {
                     Ok(())
                 } else {
-                    bridson(g, k, rng, budget)
+                    bridson(g, k, surface, rng, budget)
                 }
             }),
-            3 => self.run_d::<3>(r, budget, |g, rng| bridson(g, k, rng, budget)),
-            4 => self.run_d::<4>(r, budget, |g, rng| bridson(g, k, rng, budget)),
-            5 => self.run_d::<5>(r, budget, |g, rng| bridson(g, k, rng, budget)),
-            6 => self.run_d::<6>(r, budget, |g, rng| bridson(g, k, rng, budget)),
-            7 => self.run_d::<7>(r, budget, |g, rng| bridson(g, k, rng, budget)),
-            _ => self.run_d::<8>(r, budget, |g, rng| bridson(g, k, rng, budget)),
+            3 => self.run_d::<3>(r, budget, |g, rng| bridson(g, k, surface, rng, budget)),
+            4 => self.run_d::<4>(r, budget, |g, rng| bridson(g, k, surface, rng, budget)),
+            5 => self.run_d::<5>(r, budget, |g, rng| bridson(g, k, surface, rng, budget)),
+            6 => self.run_d::<6>(r, budget, |g, rng| bridson(g, k, surface, rng, budget)),
+            7 => self.run_d::<7>(r, budget, |g, rng| bridson(g, k, surface, rng, budget)),
+            _ => self.run_d::<8>(r, budget, |g, rng| bridson(g, k, surface, rng, budget)),
         }
     }
 

@@ -12,8 +12,16 @@
 //!   `1/2` (1D) and `7 pi / 48` (3D) of the draws; 32 bits a coordinate.
 //! * **4D and up**: a normal vector for the direction and the radius
 //!   `r (1 + u (2^d - 1))^(1/d)`.
+//!
+//! On the **surface** instead ([`Shell::surface`], SciPy's `hypersphere="surface"`): the
+//! direction of the shell's draw, uniform on the sphere by symmetry, rescaled to the
+//! radius [`SURFACE_FACTOR`]` r`, just outside the disk so that the candidate is not
+//! rejected by its own centre; one square root more a candidate.
 
 use super::rng::Rng;
+
+/// The radius of a surface candidate, relative to `r` (SciPy's factor).
+pub(crate) const SURFACE_FACTOR: f64 = 1.001;
 
 /// Table bits of the 2D angle.
 pub(crate) const ANGLE_BITS: u32 = 10;
@@ -21,6 +29,8 @@ pub(crate) const ANGLE_BITS: u32 = 10;
 /// The candidate generator of one construction (radius fixed).
 pub(crate) struct Shell<const D: usize> {
     r: f64,
+    /// `Some(rho)`: candidates on the sphere of radius `rho` (see [`Shell::surface`]).
+    surface: Option<f64>,
     /// 2D: `(cos, sin)` at `2 pi j / 2^ANGLE_BITS`; empty otherwise.
     directions: Vec<[f64; 2]>,
 }
@@ -38,12 +48,38 @@ impl<const D: usize> Shell<D> {
         } else {
             Vec::new()
         };
-        Shell { r, directions }
+        Shell {
+            r,
+            surface: None,
+            directions,
+        }
     }
 
-    /// A uniform point of the shell.
+    /// The sphere of radius [`SURFACE_FACTOR`]` r` when `surface`, else the shell of
+    /// [`new`](Self::new).
+    pub(crate) fn with_surface(r: f64, surface: bool) -> Self {
+        let mut s = Self::new(r);
+        if surface {
+            s.surface = Some(r * SURFACE_FACTOR);
+        }
+        s
+    }
+
+    /// A uniform point of the shell (of the sphere, for a surface shell).
     #[inline]
     pub(crate) fn draw(&self, rng: &mut Rng) -> [f64; D] {
+        let y = self.draw_shell(rng);
+        let Some(rho) = self.surface else {
+            return y;
+        };
+        // |y| >= r > 0: the shell's draw is never the origin.
+        let s: f64 = y.iter().map(|v| v * v).sum();
+        let scale = if s > 0.0 { rho / s.sqrt() } else { 0.0 };
+        y.map(|v| v * scale)
+    }
+
+    #[inline]
+    fn draw_shell(&self, rng: &mut Rng) -> [f64; D] {
         if D == 2 {
             return self.draw_2d(rng);
         }

@@ -147,7 +147,8 @@ struct Context<'a> {
     budget: Budget,
 }
 
-/// Grows a Bridson set with `k` candidates into the empty 2D `grid` by tiles; `false`
+/// Grows a Bridson set with `k` candidates (on the sphere when `surface`, as
+/// [`super::bridson::bridson`]) into the empty 2D `grid` by tiles; `false`
 /// (and nothing done) when the grid is too small or the radius too large for tiles.
 /// Every tile checks the deadline of the (started) `budget` as it grows.
 ///
@@ -156,6 +157,7 @@ struct Context<'a> {
 pub(crate) fn bridson_tiled(
     grid: &mut Grid<2>,
     k: u32,
+    surface: bool,
     seed: u64,
     budget: &Budget,
 ) -> Result<bool> {
@@ -228,7 +230,7 @@ pub(crate) fn bridson_tiled(
                 layout,
                 k,
                 seed,
-                shell: Shell::<2>::new(grid.r * SCALE),
+                shell: Shell::<2>::with_surface(grid.r * SCALE, surface),
                 margin,
                 phase,
                 budget: *budget,

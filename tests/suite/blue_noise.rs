@@ -102,6 +102,59 @@ fn poisson_disk_pairs_are_at_least_r_apart() {
     }
 }
 
+/// Nearest-neighbour distance of every point (brute force; not toroidal).
+fn nn_distances(x: &[f64], d: usize) -> Vec<f64> {
+    let n = x.len() / d;
+    (0..n)
+        .map(|i| {
+            (0..n)
+                .filter(|&j| j != i)
+                .map(|j| dist2(&x[i * d..i * d + d], &x[j * d..j * d + d], false))
+                .fold(f64::INFINITY, f64::min)
+                .sqrt()
+        })
+        .collect()
+}
+
+/// Surface candidates (SciPy's `hypersphere="surface"`): every new point is placed at
+/// `1.001 r` from the active point it grew from, so (Bridson's first point aside, and
+/// each tile's first point in the tiled 2D loop) every point has a neighbour within
+/// `1.001 r` (plus the 2^-32 rounding of the coordinates), and none closer than `r`. Shell
+/// candidates (`r .. 2r`) leave most points without so close a neighbour. 1D, the tiled
+/// 2D loop (r = 0.006: 236 cells a side, 2 x 2 tiles), the sequential 2D loop, 3D, 5D.
+#[test]
+fn poisson_disk_surface_points_touch_a_neighbour() {
+    for (d, r) in [(1, 0.002), (2, 0.006), (2, 0.05), (3, 0.08), (5, 0.35)] {
+        let set = |surface: bool| {
+            let s = PoissonDisk::new(d, r)
+                .unwrap()
+                .surface(surface)
+                .seed(3)
+                .generate()
+                .unwrap();
+            coords(&s)
+        };
+        let (x, shell) = (set(true), set(false));
+        let n = x.len() / d;
+        let nn = nn_distances(&x, d);
+        let min = nn.iter().cloned().fold(f64::INFINITY, f64::min);
+        assert!(min >= r, "d {d} r {r}: min distance {min}");
+        let touching = |nn: &[f64]| nn.iter().filter(|&&v| v <= 1.001 * r + 1e-9).count();
+        let tiles = if d == 2 && r < 0.01 { 4 } else { 1 };
+        assert!(
+            touching(&nn) + tiles >= n,
+            "d {d} r {r}: {} of {n} points touch",
+            touching(&nn)
+        );
+        let shell_nn = nn_distances(&shell, d);
+        assert!(
+            2 * touching(&shell_nn) < shell_nn.len(),
+            "d {d} r {r}: shell candidates touch too"
+        );
+        assert!(x.iter().all(|v| (0.0..1.0).contains(v)));
+    }
+}
+
 /// The smallest pairwise distance in 2D by a sweep along x (toroidal or not): points
 /// sorted by x, each compared with those less than `r` further on (and, on the torus,
 /// with the first ones moved by +1).
