@@ -299,12 +299,7 @@ impl PixelSampler for HaltonSampler {
     }
 
     fn counter_dimension(&self, dim: usize, width: usize) -> usize {
-        let d = dim.max(2);
-        if d.saturating_add(width.saturating_sub(1)) >= HALTON_PIXEL_DIMS {
-            2
-        } else {
-            d
-        }
+        super::global_counter_dimension(dim, width, HALTON_PIXEL_DIMS)
     }
 
     fn value_1d(&self, at: &PixelPoint, dim: usize) -> u32 {

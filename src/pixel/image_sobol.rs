@@ -212,12 +212,7 @@ impl PixelSampler for ImageSobol {
     /// pbrt's counter rule: `max(dim, 2)`, and 2 when the request's last dimension,
     /// `dim + width - 1`, reaches [`IMAGE_SOBOL_DIMS`].
     fn counter_dimension(&self, dim: usize, width: usize) -> usize {
-        let d = dim.max(2);
-        if d.saturating_add(width.saturating_sub(1)) >= IMAGE_SOBOL_DIMS {
-            2
-        } else {
-            d
-        }
+        super::global_counter_dimension(dim, width, IMAGE_SOBOL_DIMS)
     }
 
     fn value_1d(&self, at: &PixelPoint, dim: usize) -> u32 {

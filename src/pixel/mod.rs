@@ -287,6 +287,19 @@ impl PixelPoint {
     }
 }
 
+/// pbrt's counter rule for the global samplers (its `SobolSampler` and `HaltonSampler`),
+/// whose first two dimensions place the sample in the pixel: a request of `width` values
+/// (1 for `Get1D`, 2 for `Get2D`) with the counter at `dim` reads `max(dim, 2)`, or 2 when
+/// its last dimension `max(dim, 2) + width - 1` reaches the table's `dims`. O(1).
+pub(crate) const fn global_counter_dimension(dim: usize, width: usize, dims: usize) -> usize {
+    let d = if dim < 2 { 2 } else { dim };
+    if d.saturating_add(width.saturating_sub(1)) >= dims {
+        2
+    } else {
+        d
+    }
+}
+
 /// The interface a pixel sampler implements: its grid, its per-pixel precomputation and its
 /// draws at a validated [`PixelPoint`]. Renderers use it through the handle
 /// [`PixelSample`], made by [`start_pixel_sample`](Self::start_pixel_sample) (see the

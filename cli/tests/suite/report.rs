@@ -103,7 +103,7 @@ fn a_terminated_report_leaves_no_staging_directory() {
     use std::time::{Duration, Instant};
     let dir = std::env::temp_dir().join(format!("qmckit-term-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
-    let mut child = Command::new(env!("CARGO_BIN_EXE_qmckit"))
+    let child = Command::new(env!("CARGO_BIN_EXE_qmckit"))
         .args(["report", "--quick", "--out", "out"])
         .current_dir(&dir)
         .stdout(Stdio::null())
