@@ -22,7 +22,7 @@ use crate::randomize::{FastOwen, FastOwenScrambler, OwenHash, Scrambled, dimensi
 use crate::sampler::{FULL_RANGE, Sampler, check};
 
 /// Dimensions served by the interleaved tables.
-const TABLE_DIMS: usize = 4;
+pub(super) const TABLE_DIMS: usize = 4;
 
 /// `REVERSED4[b][v][lane]`: the XOR of `reverse(V_(8b + k + 1))` of dimension `lane` over the
 /// set bits `k` of `v`. Built by the compiler from the direction numbers (4096 XORs).
@@ -66,6 +66,41 @@ const fn reversed4(index: u32) -> [u32; 4] {
         r0[2] ^ r1[2] ^ r2[2] ^ r3[2],
         r0[3] ^ r1[3] ^ r2[3] ^ r3[3],
     ]
+}
+
+/// The reversed coordinates of the first `dims <= TABLE_DIMS` dimensions of points
+/// `start, start + 1, ..` into the row-major `out` (whole rows; the caller checked the
+/// range): four table reads a point ([`Sobol`]'s [`Base2Digital::fill_reversed`]).
+///
+/// [`Base2Digital::fill_reversed`]: crate::Base2Digital::fill_reversed
+#[cfg(target_pointer_width = "64")]
+#[inline]
+pub(super) fn fill_reversed(dims: usize, start: u32, out: &mut [u32]) {
+    if dims == TABLE_DIMS {
+        // Four points (16 values) a store, then the rest point by point.
+        let (blocks, rest) = out.as_chunks_mut::<16>();
+        let mut i = start;
+        for block in blocks.iter_mut() {
+            let r = [
+                reversed4(i),
+                reversed4(i.wrapping_add(1)),
+                reversed4(i.wrapping_add(2)),
+                reversed4(i.wrapping_add(3)),
+            ];
+            *block = core::array::from_fn(|j| r[j / 4][j % 4]);
+            i = i.wrapping_add(4);
+        }
+        let (rows, _) = rest.as_chunks_mut::<TABLE_DIMS>();
+        for (k, row) in rows.iter_mut().enumerate() {
+            *row = reversed4(i.wrapping_add(k as u32));
+        }
+        return;
+    }
+    for (k, row) in out.chunks_exact_mut(dims.max(1)).enumerate() {
+        for (o, r) in row.iter_mut().zip(reversed4(start.wrapping_add(k as u32))) {
+            *o = r;
+        }
+    }
 }
 
 /// The Sobol' sequence with hash-based Owen scrambling ([`FastOwen`]): the same bits as
@@ -388,6 +423,61 @@ pub const fn owen_sobol_f32(index: u32, dim: usize, seed: u64) -> Result<f32> {
 #[cfg(all(test, feature = "std"))]
 mod tests {
     use super::*;
+
+    /// Sobol's reversed fill is its plain fill with every value bit-reversed (1 to 4
+    /// dimensions, lengths with a partial block of four points, the last indices of the
+    /// range), and `Scrambled<Sobol, FastOwen>`'s fills, which take it, equal sampling value
+    /// by value. Past the range it is an error; Gray order and five dimensions are not
+    /// served (`None`).
+    #[test]
+    fn reversed_fill_is_the_reversed_plain_fill() {
+        use crate::Base2Digital;
+        use crate::digital::sobol::Order;
+        for dims in 1..=4usize {
+            let sobol = Sobol::new(dims).unwrap();
+            let cases = [
+                (0u32, 0usize),
+                (0, 1),
+                (0, 16),
+                (5, 7),
+                (1000, 37),
+                (u32::MAX - 6, 7),
+            ];
+            for (start, n) in cases {
+                let mut plain = vec![0u32; n * dims];
+                sobol.fill(start, &mut plain).unwrap();
+                let mut rev = vec![0u32; n * dims];
+                sobol.fill_reversed(start, &mut rev).unwrap().unwrap();
+                let reversed: Vec<u32> = plain.iter().map(|x| x.reverse_bits()).collect();
+                assert_eq!(rev, reversed, "dims {dims} start {start} n {n}");
+                let sc = Scrambled::new(sobol, FastOwen::new(9));
+                let mut f = vec![0u32; n * dims];
+                sc.fill(start, &mut f).unwrap();
+                let mut g = vec![0f32; n * dims];
+                sc.fill_as(start, &mut g).unwrap();
+                for (k, (&x, &y)) in f.iter().zip(&g).enumerate() {
+                    let want = sc.sample(start + (k / dims) as u32, k % dims).unwrap();
+                    assert_eq!(x, want, "dims {dims} start {start} k {k}");
+                    assert_eq!(y.to_bits(), to_f32(want).to_bits());
+                }
+            }
+            let mut four = vec![0u32; 4 * dims];
+            assert!(
+                sobol
+                    .fill_reversed(u32::MAX - 2, &mut four)
+                    .unwrap()
+                    .is_err()
+            );
+        }
+        let gray = Sobol::with_order(2, Order::Gray).unwrap();
+        assert!(gray.fill_reversed(0, &mut [0; 4]).is_none());
+        assert!(
+            Sobol::new(5)
+                .unwrap()
+                .fill_reversed(0, &mut [0; 5])
+                .is_none()
+        );
+    }
 
     /// Every build the CPU runs, on lengths leaving 0 to 3 points past the blocks of four
     /// and on unequal lengths, for both hashes, against the scalar `sample4_f32`.
