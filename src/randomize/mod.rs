@@ -407,7 +407,10 @@ pub const fn dimension_seed(seed: u64, dim: usize) -> u32 {
 /// `sample` prepares one scrambler a call; `fill` (and so `fill_as`) runs the sampler's own
 /// fill, then prepares each dimension's scrambler once: up to [`ROW_LANES`] dimensions, the
 /// scramblers are laid over whole rows and applied element-wise (vectorized); above that,
-/// down each dimension's column.
+/// down each dimension's column. Scramblers that work on bit-reversed values
+/// ([`Scrambler::TAKES_REVERSED`]: the hash-based Owen scramble) take the sampler's
+/// reversed fill where it has one ([`Base2Digital::fill_reversed`]: Sobol' in up to four
+/// dimensions), which saves a reversal a value; the bits are the same.
 ///
 /// ```
 /// use qmckit::randomize::{ExactOwen, Scrambled};
