@@ -12,6 +12,10 @@
 //!   domain, `draw_sample_f32::<4>()` (its own per-pixel decorrelation).
 //!
 //! Each row writes a pixel's 64 values into a stack buffer and passes it to `black_box`.
+//!
+//! A second group times long fills (4096 points); a third, `fill_vs_memset_65536x4_f32`,
+//! times [`OwenSobol::fill_f32`] of 2^16 four-dimensional points (1 MiB of `f32`) next to a
+//! memset of the same bytes, with one seed and with a reseed every 16 points.
 //! Run: `cargo bench --bench render -- --measurement-time 2 --warm-up-time 1`.
 
 use std::hint::black_box;
@@ -125,6 +129,46 @@ fn render(c: &mut Criterion) {
             black_box(&scrambled)
                 .fill_as(0, &mut out)
                 .expect("in range");
+            black_box(&mut out);
+        })
+    });
+    group.finish();
+
+    // `OwenSobol::fill_f32` against a memset of the same bytes (2^16 points x 4 dimensions,
+    // 1 MiB of f32): one seed for all points, and a reseed every 16 points (a pixel's
+    // samples).
+    const N: usize = 1 << 16;
+    let mut group = c.benchmark_group("fill_vs_memset_65536x4_f32");
+    group.throughput(Throughput::Bytes((N * D * 4) as u64));
+    let seq: Vec<u32> = (0..N as u32).collect();
+    group.bench_function("memset", |bch| {
+        let mut out = vec![[0f32; D]; N];
+        bch.iter(|| {
+            black_box(&mut out[..]).fill(black_box([0.0; D]));
+            black_box(&mut out);
+        })
+    });
+    group.bench_function("owen_sobol_fill_f32_one_seed", |bch| {
+        let mut out = vec![[0f32; D]; N];
+        bch.iter(|| {
+            black_box(&seeded)
+                .fill_f32(black_box(&seq), &mut out)
+                .expect("lengths");
+            black_box(&mut out);
+        })
+    });
+    group.bench_function("owen_sobol_fill_f32_reseed_16", |bch| {
+        let mut out = vec![[0f32; D]; N];
+        bch.iter(|| {
+            let mut s = black_box(base);
+            for (p, (idx, o)) in black_box(&seq)
+                .chunks_exact(SPP)
+                .zip(out.chunks_exact_mut(SPP))
+                .enumerate()
+            {
+                s.reseed(pixel_seed(p as u32));
+                s.fill_f32(idx, o).expect("lengths");
+            }
             black_box(&mut out);
         })
     });

@@ -110,8 +110,9 @@ pub(crate) trait Kernel {
     fn run(self) -> Self::Output;
 }
 
-/// `k.run()` in the widest build that is at most `want` and that the CPU runs.
-#[inline]
+/// `k.run()` in the widest build that is at most `want` and that the CPU runs. Inlined
+/// into its caller, so the kernel's arguments are passed on without another copy.
+#[inline(always)]
 pub(crate) fn run_at<K: Kernel>(want: Level, k: K) -> K::Output {
     #[cfg(all(feature = "std", target_arch = "x86_64"))]
     let detected = level();

@@ -251,6 +251,23 @@ pub trait Base2Digital: Sampler {
         let _ = (start, out, maps);
         None
     }
+
+    /// [`fill`](Sampler::fill) with every value bit-reversed: `out[j] = reverse(x_j)`, the
+    /// base-2 radical-inverse domain, in which the hash-based Owen scramble works
+    /// ([`crate::randomize::FastOwenScrambler::scramble_reversed`]): `reverse` distributes
+    /// over XOR, so the reversed point is the GF(2) product of the reversed direction
+    /// numbers with the index. `Some` from constructions that produce reversed values
+    /// without a reversal a value (Sobol' in up to four dimensions, natural order, on 64-bit
+    /// targets: four byte-table reads a point); `None` (the default) otherwise, and `out`
+    /// is then untouched. [`crate::randomize::Scrambled`] calls it for scramblers that take
+    /// reversed input ([`crate::randomize::Scrambler::TAKES_REVERSED`]).
+    ///
+    /// # Errors
+    /// As [`fill`](Sampler::fill), inside the `Some`.
+    fn fill_reversed(&self, start: u32, out: &mut [u32]) -> Option<Result<()>> {
+        let _ = (start, out);
+        None
+    }
 }
 
 /// Forwards [`Base2Digital`] through a pointer type.
@@ -265,6 +282,9 @@ macro_rules! forward_base2 {
                 maps: &dyn Fn(usize) -> Option<crate::bits::Affine>,
             ) -> Option<Result<()>> {
                 (**self).fill_affine(start, out, maps)
+            }
+            fn fill_reversed(&self, start: u32, out: &mut [u32]) -> Option<Result<()>> {
+                (**self).fill_reversed(start, out)
             }
         }
     };

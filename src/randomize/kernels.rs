@@ -30,18 +30,24 @@ pub(crate) fn scramble_slice_at<S: Scrambler>(want: Level, s: S, xs: &mut [u32])
     dispatch::run_at(want, ScrambleSlice { s, xs });
 }
 
-/// Scramblers laid over a row-major buffer, then (optionally) converted.
+/// Scramblers laid over a row-major buffer (of bit-reversed values when `reversed`), then
+/// (optionally) converted.
 struct ScrambleLanes<'a, S, T> {
     lanes: &'a [S],
     xs: &'a mut [u32],
     out: &'a mut [T],
+    reversed: bool,
 }
 
 impl<S: Scrambler, T: FromFraction> Kernel for ScrambleLanes<'_, S, T> {
     type Output = ();
     #[inline(always)]
     fn run(self) {
-        S::scramble_lanes(self.lanes, self.xs);
+        if self.reversed {
+            S::scramble_lanes_reversed(self.lanes, self.xs);
+        } else {
+            S::scramble_lanes(self.lanes, self.xs);
+        }
         for (y, &x) in self.out.iter_mut().zip(self.xs.iter()) {
             *y = T::from_fraction(x);
         }
@@ -51,11 +57,25 @@ impl<S: Scrambler, T: FromFraction> Kernel for ScrambleLanes<'_, S, T> {
 /// `xs[j] = lanes[j % lanes.len()].scramble(xs[j])`: a row-major buffer whose rows hold one
 /// coordinate per lane pattern (`lanes` repeats the dimensions' scramblers a whole number of
 /// rows), each chunk of `lanes.len()` values scrambled element-wise, in the build `want` (or
-/// the widest narrower one the CPU runs): no gather or scatter.
+/// the widest narrower one the CPU runs): no gather or scatter. With `reversed`, `xs` holds
+/// bit-reversed values ([`Scrambler::scramble_lanes_reversed`]).
 #[inline]
-pub(crate) fn scramble_lanes_at<S: Scrambler>(want: Level, lanes: &[S], xs: &mut [u32]) {
+pub(crate) fn scramble_lanes_at<S: Scrambler>(
+    want: Level,
+    lanes: &[S],
+    xs: &mut [u32],
+    reversed: bool,
+) {
     let out: &mut [u32] = &mut [];
-    dispatch::run_at(want, ScrambleLanes { lanes, xs, out });
+    dispatch::run_at(
+        want,
+        ScrambleLanes {
+            lanes,
+            xs,
+            out,
+            reversed,
+        },
+    );
 }
 
 /// [`scramble_lanes_at`], then `out[j] = T::from_fraction(xs[j])` (the shorter length), in
@@ -66,8 +86,17 @@ pub(crate) fn scramble_lanes_into_at<S: Scrambler, T: FromFraction>(
     lanes: &[S],
     xs: &mut [u32],
     out: &mut [T],
+    reversed: bool,
 ) {
-    dispatch::run_at(want, ScrambleLanes { lanes, xs, out });
+    dispatch::run_at(
+        want,
+        ScrambleLanes {
+            lanes,
+            xs,
+            out,
+            reversed,
+        },
+    );
 }
 
 #[cfg(all(test, feature = "std"))]
@@ -128,11 +157,18 @@ mod tests {
             let xs: Vec<u32> = (0..1003u32).map(|k| k.wrapping_mul(0x85EB_CA6B)).collect();
             fn run<S: Scrambler>(levels: &[Level], name: &str, lanes: &[S], xs: &[u32]) {
                 for &lv in levels {
-                    let mut got = xs.to_vec();
-                    scramble_lanes_at(lv, lanes, &mut got);
-                    for (j, (&g, &x)) in got.iter().zip(xs).enumerate() {
-                        let want = lanes[j % lanes.len()].scramble(x);
-                        assert_eq!(g, want, "{name} {lv:?} width {} j {j}", lanes.len());
+                    // The plain input, and the same values bit-reversed (the reversed form).
+                    for reversed in [false, true] {
+                        let mut got: Vec<u32> = xs
+                            .iter()
+                            .map(|&x| if reversed { x.reverse_bits() } else { x })
+                            .collect();
+                        scramble_lanes_at(lv, lanes, &mut got, reversed);
+                        for (j, (&g, &x)) in got.iter().zip(xs).enumerate() {
+                            let want = lanes[j % lanes.len()].scramble(x);
+                            let w = lanes.len();
+                            assert_eq!(g, want, "{name} {lv:?} {reversed} width {w} j {j}");
+                        }
                     }
                 }
             }
@@ -168,7 +204,7 @@ mod tests {
                 for &lv in levels {
                     let mut got = xs.clone();
                     let mut f = vec![0f32; xs.len()];
-                    scramble_lanes_into_at(lv, &lanes, &mut got, &mut f);
+                    scramble_lanes_into_at(lv, &lanes, &mut got, &mut f, false);
                     for (j, (&y, &x)) in f.iter().zip(&xs).enumerate() {
                         let want = crate::bits::to_f32(lanes[j % width].scramble(x));
                         assert_eq!(y.to_bits(), want.to_bits(), "{lv:?} width {width} j {j}");

@@ -133,6 +133,23 @@ pub trait Scrambler: Copy {
             }
         }
     }
+
+    /// Whether [`scramble_lanes_reversed`](Self::scramble_lanes_reversed) saves work over
+    /// reversing the input first: scramblers that work on bit-reversed values (the
+    /// hash-based Owen scramble, `reverse(hash(reverse(x)))`). [`Scrambled`]'s fill then
+    /// asks the sampler for reversed values ([`Base2Digital::fill_reversed`]).
+    const TAKES_REVERSED: bool = false;
+
+    /// [`scramble_lanes`](Self::scramble_lanes) of bit-reversed input:
+    /// `xs[j] = lanes[j % lanes.len()].scramble(reverse(xs[j]))`. The default reverses, then
+    /// scrambles; must give the same values.
+    #[inline(always)]
+    fn scramble_lanes_reversed(lanes: &[Self], xs: &mut [u32]) {
+        for x in xs.iter_mut() {
+            *x = crate::bits::reverse_bits(*x);
+        }
+        Self::scramble_lanes(lanes, xs);
+    }
 }
 
 /// A randomization of the coordinates of a point set, keyed by a seed.
@@ -180,10 +197,26 @@ pub trait Randomizes<S: ?Sized>: Randomizer {
         let _ = (sampler, start, out, maps);
         None
     }
+
+    /// How [`Scrambled`]'s fill reaches the sampler's bit-reversed fill
+    /// ([`Base2Digital::fill_reversed`]): the base-2 digital randomizers forward to it; the
+    /// default answers `None` (`out` untouched). Only called when the scrambler
+    /// [`Scrambler::TAKES_REVERSED`].
+    ///
+    /// # Errors
+    /// As [`Sampler::fill`], inside the `Some`.
+    #[inline]
+    fn reversed_fill(sampler: &S, start: u32, out: &mut [u32]) -> Option<Result<()>>
+    where
+        Self: Sized,
+    {
+        let _ = (sampler, start, out);
+        None
+    }
 }
 
-/// The body of [`Randomizes::affine_fill`] for randomizers of [`Base2Digital`]
-/// constructions.
+/// The bodies of [`Randomizes::affine_fill`] and [`Randomizes::reversed_fill`] for
+/// randomizers of [`Base2Digital`] constructions.
 macro_rules! base2_affine_fill {
     () => {
         #[inline]
@@ -194,6 +227,14 @@ macro_rules! base2_affine_fill {
             maps: &dyn Fn(usize) -> Option<crate::randomize::Affine>,
         ) -> Option<crate::error::Result<()>> {
             sampler.fill_affine(start, out, maps)
+        }
+        #[inline]
+        fn reversed_fill(
+            sampler: &S,
+            start: u32,
+            out: &mut [u32],
+        ) -> Option<crate::error::Result<()>> {
+            sampler.fill_reversed(start, out)
         }
     };
 }
@@ -257,6 +298,10 @@ impl<S: ?Sized, R: Randomizes<S>> Randomizes<S> for &R {
         maps: &dyn Fn(usize) -> Option<Affine>,
     ) -> Option<Result<()>> {
         R::affine_fill(sampler, start, out, maps)
+    }
+    #[inline]
+    fn reversed_fill(sampler: &S, start: u32, out: &mut [u32]) -> Option<Result<()>> {
+        R::reversed_fill(sampler, start, out)
     }
 }
 
@@ -362,7 +407,10 @@ pub const fn dimension_seed(seed: u64, dim: usize) -> u32 {
 /// `sample` prepares one scrambler a call; `fill` (and so `fill_as`) runs the sampler's own
 /// fill, then prepares each dimension's scrambler once: up to [`ROW_LANES`] dimensions, the
 /// scramblers are laid over whole rows and applied element-wise (vectorized); above that,
-/// down each dimension's column.
+/// down each dimension's column. Scramblers that work on bit-reversed values
+/// ([`Scrambler::TAKES_REVERSED`]: the hash-based Owen scramble) take the sampler's
+/// reversed fill where it has one ([`Base2Digital::fill_reversed`]: Sobol' in up to four
+/// dimensions), which saves a reversal a value; the bits are the same.
 ///
 /// ```
 /// use qmckit::randomize::{ExactOwen, Scrambled};
@@ -401,19 +449,18 @@ impl<S, R> Scrambled<S, R> {
 }
 
 impl<S: Sampler, R: Randomizes<S>> Scrambled<S, R> {
-    /// The dimensions' scramblers repeated over `width <= W` lanes (a whole number of rows),
-    /// each prepared once.
-    #[inline]
-    fn lanes<const W: usize>(&self, width: usize) -> [R::Scrambler; W] {
+    /// Lays the dimensions' scramblers over `lanes` (a whole number of rows), each prepared
+    /// once; `lanes` starts as dimension 0's scrambler everywhere. In place: the array is
+    /// written once and read by the kernel where it is (no copy of it to wait on).
+    #[inline(always)]
+    fn spread_lanes(&self, lanes: &mut [R::Scrambler]) {
         let dims = self.dims().max(1);
-        let mut lanes = [self.randomizer.scrambler(0); W];
         for dim in 1..dims {
             let s = self.randomizer.scrambler(dim);
-            for lane in lanes.iter_mut().take(width).skip(dim).step_by(dims) {
+            for lane in lanes.iter_mut().skip(dim).step_by(dims) {
                 *lane = s;
             }
         }
-        lanes
     }
 
     /// The fill of points of at most [`ROW_LANES`] dimensions (`rows` validated): the
@@ -430,19 +477,21 @@ impl<S: Sampler, R: Randomizes<S>> Scrambled<S, R> {
         out: &mut [T],
         in_place: Option<&mut [u32]>,
     ) -> Result<()> {
-        let lanes = self.lanes::<W>(width);
-        let lanes = lanes.get(..width).unwrap_or(&[]);
+        let mut all = [self.randomizer.scrambler(0); W];
+        let lanes = all.get_mut(..width).unwrap_or(&mut []);
+        self.spread_lanes(lanes);
+        let lanes = &*lanes;
         if let Some(xs) = in_place {
-            self.sampler.fill(start, xs)?;
-            scramble_lanes_at(level, lanes, xs);
+            let reversed = self.fill_source(start, xs)?;
+            scramble_lanes_at(level, lanes, xs, reversed);
             return Ok(());
         }
         let dims = self.dims().max(1);
         if out.len() <= SMALL {
             let mut buf = [0u32; SMALL];
             let xs = buf.get_mut(..out.len()).unwrap_or(&mut []);
-            self.sampler.fill(start, xs)?;
-            scramble_lanes_into_at(level, lanes, xs, out);
+            let reversed = self.fill_source(start, xs)?;
+            scramble_lanes_into_at(level, lanes, xs, out, reversed);
             return Ok(());
         }
         // Whole lane patterns a chunk (width is a multiple of dims, so whole points too).
@@ -452,10 +501,24 @@ impl<S: Sampler, R: Randomizes<S>> Scrambled<S, R> {
         for (c, part) in out.chunks_mut(chunk).enumerate() {
             let xs = buf.get_mut(..part.len()).unwrap_or(&mut []);
             // c * per < rows, so the index is at most the last one the caller validated.
-            self.sampler.fill(start + (c * per) as u32, xs)?;
-            scramble_lanes_into_at(level, lanes, xs, part);
+            let reversed = self.fill_source(start + (c * per) as u32, xs)?;
+            scramble_lanes_into_at(level, lanes, xs, part, reversed);
         }
         Ok(())
+    }
+
+    /// The sampler's values for the scramblers: bit-reversed (`Ok(true)`) when the
+    /// scrambler takes reversed input and the sampler produces it
+    /// ([`Randomizes::reversed_fill`]), else the plain fill (`Ok(false)`).
+    #[inline(always)]
+    fn fill_source(&self, start: u32, xs: &mut [u32]) -> Result<bool> {
+        if <R::Scrambler as Scrambler>::TAKES_REVERSED
+            && let Some(done) = R::reversed_fill(&self.sampler, start, xs)
+        {
+            return done.map(|()| true);
+        }
+        self.sampler.fill(start, xs)?;
+        Ok(false)
     }
 
     /// [`fill_rows`](Self::fill_rows) with the lane width of this dimension count;

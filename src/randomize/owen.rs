@@ -105,9 +105,12 @@ impl<S: Base2Digital + ?Sized> Randomizes<S> for ExactOwen {
     super::base2_affine_fill!();
 }
 
-/// Which hash [`FastOwen`] uses.
+/// Which hash [`FastOwen`] uses. Word-sized (`repr(u32)`), so that a
+/// [`FastOwenScrambler`] is two whole words and copies of scramblers laid over lanes are
+/// single 8-byte moves (no store of a lone byte for a wider load to wait on).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
+#[repr(u32)]
 pub enum OwenHash {
     /// [`laine_karras`].
     LaineKarras,
@@ -233,49 +236,82 @@ impl Scrambler for FastOwenScrambler {
     /// over the lanes' keys, which vectorizes.
     #[inline(always)]
     fn scramble_lanes(lanes: &[Self], xs: &mut [u32]) {
-        let Some(first) = lanes.first() else {
-            return;
-        };
-        let mut keys = [0u32; super::ROW_LANES];
-        if lanes.len() > keys.len() || lanes.iter().any(|l| l.hash != first.hash) {
-            for chunk in xs.chunks_mut(lanes.len()) {
-                for (x, s) in chunk.iter_mut().zip(lanes) {
-                    *x = s.scramble(*x);
-                }
-            }
-            return;
-        }
-        for (k, l) in keys.iter_mut().zip(lanes) {
-            *k = l.key;
-        }
-        let keys = keys.get(..lanes.len()).unwrap_or(&[]);
-        match first.hash {
-            OwenHash::LaineKarras => scramble_keyed(keys, xs, laine_karras),
-            OwenHash::Vegdahl => scramble_keyed(keys, xs, vegdahl),
-        }
+        scramble_lanes_from::<false>(lanes, xs);
+    }
+
+    /// The hash works on reversed bits: reversed input saves one reversal a value.
+    const TAKES_REVERSED: bool = true;
+
+    /// `reverse(hash(x_rev, key))`: the scramble without its first reversal.
+    #[inline(always)]
+    fn scramble_lanes_reversed(lanes: &[Self], xs: &mut [u32]) {
+        scramble_lanes_from::<true>(lanes, xs);
     }
 }
 
-/// `xs[j] = reverse(hash(reverse(xs[j]), keys[j % keys.len()]))`. A pattern of 16 lanes
-/// (points of 1, 2, 4, 8 or 16 dimensions laid over rows) goes through fixed-size chunks,
-/// one vector of the widest build a chunk.
+/// [`FastOwenScrambler`]'s `scramble_lanes` (`REVERSED = false`) and
+/// `scramble_lanes_reversed` (`REVERSED = true`, the input already bit-reversed).
 #[inline(always)]
-fn scramble_keyed(keys: &[u32], xs: &mut [u32], hash: fn(u32, u32) -> u32) {
+fn scramble_lanes_from<const REVERSED: bool>(lanes: &[FastOwenScrambler], xs: &mut [u32]) {
+    let Some(first) = lanes.first() else {
+        return;
+    };
+    let input = |x: u32| if REVERSED { x } else { reverse_bits(x) };
+    // A pattern of 16 lanes (points of 1, 2, 4, 8 or 16 dimensions): the keys and the
+    // check of the hashes are fixed-size (no loop, no 64-key buffer).
+    if let Ok(l16) = <&[FastOwenScrambler; 16]>::try_from(lanes)
+        && l16.iter().all(|l| l.hash == first.hash)
+    {
+        let keys: [u32; 16] = core::array::from_fn(|j| l16[j].key);
+        match first.hash {
+            OwenHash::LaineKarras => scramble_keyed::<REVERSED>(&keys, xs, laine_karras),
+            OwenHash::Vegdahl => scramble_keyed::<REVERSED>(&keys, xs, vegdahl),
+        }
+        return;
+    }
+    let mut keys = [0u32; super::ROW_LANES];
+    if lanes.len() > keys.len() || lanes.iter().any(|l| l.hash != first.hash) {
+        for chunk in xs.chunks_mut(lanes.len()) {
+            for (x, s) in chunk.iter_mut().zip(lanes) {
+                *x = reverse_bits(s.scramble_reversed(input(*x)));
+            }
+        }
+        return;
+    }
+    for (k, l) in keys.iter_mut().zip(lanes) {
+        *k = l.key;
+    }
+    let keys = keys.get(..lanes.len()).unwrap_or(&[]);
+    match first.hash {
+        OwenHash::LaineKarras => scramble_keyed::<REVERSED>(keys, xs, laine_karras),
+        OwenHash::Vegdahl => scramble_keyed::<REVERSED>(keys, xs, vegdahl),
+    }
+}
+
+/// `xs[j] = reverse(hash(reverse(xs[j]), keys[j % keys.len()]))`, without the inner
+/// reversal when `REVERSED`. A pattern of 16 lanes (points of 1, 2, 4, 8 or 16 dimensions
+/// laid over rows) goes through fixed-size chunks, one vector of the widest build a chunk.
+#[inline(always)]
+fn scramble_keyed<const REVERSED: bool>(keys: &[u32], xs: &mut [u32], hash: fn(u32, u32) -> u32) {
+    let one = |x: u32, k: u32| {
+        let x = if REVERSED { x } else { reverse_bits(x) };
+        reverse_bits(hash(x, k))
+    };
     if let Ok(keys) = <&[u32; 16]>::try_from(keys) {
         let (full, rest) = xs.as_chunks_mut::<16>();
         for chunk in full {
             for (x, &k) in chunk.iter_mut().zip(keys) {
-                *x = reverse_bits(hash(reverse_bits(*x), k));
+                *x = one(*x, k);
             }
         }
         for (x, &k) in rest.iter_mut().zip(keys) {
-            *x = reverse_bits(hash(reverse_bits(*x), k));
+            *x = one(*x, k);
         }
         return;
     }
     for chunk in xs.chunks_mut(keys.len().max(1)) {
         for (x, &k) in chunk.iter_mut().zip(keys) {
-            *x = reverse_bits(hash(reverse_bits(*x), k));
+            *x = one(*x, k);
         }
     }
 }

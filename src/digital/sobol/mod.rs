@@ -450,4 +450,22 @@ impl Base2Digital for Sobol {
     ) -> Option<Result<()>> {
         self.fill_maps(start, out, Some(maps))
     }
+
+    /// Up to four dimensions in natural order on 64-bit targets: each point's reversed
+    /// coordinates are four reads of the interleaved byte tables of the reversed direction
+    /// numbers (the tables of [`OwenSobol`]), XORed, with no reversal a value. `None`
+    /// otherwise (wider points, Gray order, and 32-bit targets, which keep their flash free
+    /// of the 16 KiB of tables).
+    #[inline]
+    fn fill_reversed(&self, start: u32, out: &mut [u32]) -> Option<Result<()>> {
+        #[cfg(target_pointer_width = "64")]
+        if self.order == Order::Natural && self.dims <= owen::TABLE_DIMS {
+            return Some(
+                crate::sampler::check_fill(self, start, out.len())
+                    .map(|_| owen::fill_reversed(self.dims, start, out)),
+            );
+        }
+        let _ = (start, out);
+        None
+    }
 }

@@ -15,14 +15,14 @@
 //! hashes. Dimensions from 4 on are evaluated from the direction numbers (32 AND/XOR steps).
 
 use super::{SOBOL_DIRECTIONS, SOBOL_MAX_DIMS, Sobol, SobolDimension, byte_tables};
-use crate::bits::{reverse_bits, to_f32, to_f32_via_f64};
+use crate::bits::{reverse_bits, to_f32, to_f32_lanes};
 use crate::dispatch::{self, Kernel};
 use crate::error::{Error, Result};
 use crate::randomize::{FastOwen, FastOwenScrambler, OwenHash, Scrambled, dimension_seed};
 use crate::sampler::{FULL_RANGE, Sampler, check};
 
 /// Dimensions served by the interleaved tables.
-const TABLE_DIMS: usize = 4;
+pub(super) const TABLE_DIMS: usize = 4;
 
 /// `REVERSED4[b][v][lane]`: the XOR of `reverse(V_(8b + k + 1))` of dimension `lane` over the
 /// set bits `k` of `v`. Built by the compiler from the direction numbers (4096 XORs).
@@ -56,16 +56,83 @@ const fn interleaved_tables() -> [[[u32; TABLE_DIMS]; 256]; 4] {
 /// The four unscrambled, bit-reversed coordinates (dimensions 0..4) of point `index`.
 #[inline(always)]
 const fn reversed4(index: u32) -> [u32; 4] {
-    let r0 = &REVERSED4[0][(index & 0xFF) as usize];
+    reversed4_low(index, reversed4_high(index))
+}
+
+/// The part of [`reversed4`] from the three upper bytes of `index` (three table reads),
+/// shared by every index with the same `index >> 8`.
+#[inline(always)]
+const fn reversed4_high(index: u32) -> [u32; 4] {
     let r1 = &REVERSED4[1][((index >> 8) & 0xFF) as usize];
     let r2 = &REVERSED4[2][((index >> 16) & 0xFF) as usize];
     let r3 = &REVERSED4[3][(index >> 24) as usize];
     [
-        r0[0] ^ r1[0] ^ r2[0] ^ r3[0],
-        r0[1] ^ r1[1] ^ r2[1] ^ r3[1],
-        r0[2] ^ r1[2] ^ r2[2] ^ r3[2],
-        r0[3] ^ r1[3] ^ r2[3] ^ r3[3],
+        r1[0] ^ r2[0] ^ r3[0],
+        r1[1] ^ r2[1] ^ r3[1],
+        r1[2] ^ r2[2] ^ r3[2],
+        r1[3] ^ r2[3] ^ r3[3],
     ]
+}
+
+/// [`reversed4`] from its upper part `high` ([`reversed4_high`] of an index with the same
+/// upper three bytes): one table read.
+#[inline(always)]
+const fn reversed4_low(index: u32, high: [u32; 4]) -> [u32; 4] {
+    let r0 = &REVERSED4[0][(index & 0xFF) as usize];
+    [
+        r0[0] ^ high[0],
+        r0[1] ^ high[1],
+        r0[2] ^ high[2],
+        r0[3] ^ high[3],
+    ]
+}
+
+/// The reversed coordinates of the first `dims <= TABLE_DIMS` dimensions of points
+/// `start, start + 1, ..` into the row-major `out` (whole rows; the caller checked the
+/// range): four table reads a point ([`Sobol`]'s [`Base2Digital::fill_reversed`]).
+///
+/// [`Base2Digital::fill_reversed`]: crate::Base2Digital::fill_reversed
+#[cfg(target_pointer_width = "64")]
+#[inline]
+pub(super) fn fill_reversed(dims: usize, start: u32, out: &mut [u32]) {
+    if dims == TABLE_DIMS {
+        // Four points (16 values) a store, then the rest point by point.
+        let (blocks, rest) = out.as_chunks_mut::<16>();
+        let mut i = start;
+        for block in blocks.iter_mut() {
+            // Consecutive indices: when the four share their upper three bytes, so do their
+            // table reads.
+            let last = i.wrapping_add(3);
+            let r = if i >> 8 == last >> 8 {
+                let high = reversed4_high(i);
+                [
+                    reversed4_low(i, high),
+                    reversed4_low(i.wrapping_add(1), high),
+                    reversed4_low(i.wrapping_add(2), high),
+                    reversed4_low(last, high),
+                ]
+            } else {
+                [
+                    reversed4(i),
+                    reversed4(i.wrapping_add(1)),
+                    reversed4(i.wrapping_add(2)),
+                    reversed4(last),
+                ]
+            };
+            *block = core::array::from_fn(|j| r[j / 4][j % 4]);
+            i = i.wrapping_add(4);
+        }
+        let (rows, _) = rest.as_chunks_mut::<TABLE_DIMS>();
+        for (k, row) in rows.iter_mut().enumerate() {
+            *row = reversed4(i.wrapping_add(k as u32));
+        }
+        return;
+    }
+    for (k, row) in out.chunks_exact_mut(dims.max(1)).enumerate() {
+        for (o, r) in row.iter_mut().zip(reversed4(start.wrapping_add(k as u32))) {
+            *o = r;
+        }
+    }
 }
 
 /// The Sobol' sequence with hash-based Owen scrambling ([`FastOwen`]): the same bits as
@@ -197,7 +264,7 @@ impl OwenSobol {
     /// [`sample4`](Self::sample4) as `f32` in `[0, 1)`.
     #[inline(always)]
     pub fn sample4_f32(&self, index: u32) -> [f32; 4] {
-        self.sample4(index).map(to_f32_via_f64)
+        self.sample4(index).map(to_f32_lanes)
     }
 
     /// `out[k] = sample4_f32(indices[k])` for every `k`, four points (16 lanes) at a time.
@@ -305,16 +372,29 @@ fn fill_blocks(s: &OwenSobol, indices: &[u32], out: &mut [[f32; 4]]) {
 #[inline(always)]
 fn block_f32(s: &OwenSobol, idx: &[u32; 4], hash: impl Fn(u32, u32) -> u32) -> [[f32; 4]; 4] {
     let mut x = [0u32; 16];
-    for (p, &index) in idx.iter().enumerate() {
-        let rev = reversed4(index);
-        for lane in 0..4 {
-            x[(4 * p + lane) % 16] = rev[lane];
+    // Four indices with the same upper three bytes (consecutive ones, 63 blocks in 64)
+    // share those bytes' table reads: 7 reads for the block instead of 16.
+    let shared = idx[0] >> 8;
+    if idx.iter().all(|&i| i >> 8 == shared) {
+        let high = reversed4_high(idx[0]);
+        for (p, &index) in idx.iter().enumerate() {
+            let rev = reversed4_low(index, high);
+            for lane in 0..4 {
+                x[(4 * p + lane) % 16] = rev[lane];
+            }
+        }
+    } else {
+        for (p, &index) in idx.iter().enumerate() {
+            let rev = reversed4(index);
+            for lane in 0..4 {
+                x[(4 * p + lane) % 16] = rev[lane];
+            }
         }
     }
     let mut y = [0f32; 16];
     let keys: [u32; 16] = core::array::from_fn(|k| s.keys[k % 4]);
     for ((yk, &xk), &key) in y.iter_mut().zip(&x).zip(&keys) {
-        *yk = to_f32_via_f64(reverse_bits(hash(xk, key)));
+        *yk = to_f32_lanes(reverse_bits(hash(xk, key)));
     }
     core::array::from_fn(|p| core::array::from_fn(|lane| y[(4 * p + lane) % 16]))
 }
@@ -389,12 +469,71 @@ pub const fn owen_sobol_f32(index: u32, dim: usize, seed: u64) -> Result<f32> {
 mod tests {
     use super::*;
 
+    /// Sobol's reversed fill is its plain fill with every value bit-reversed (1 to 4
+    /// dimensions, lengths with a partial block of four points, the last indices of the
+    /// range), and `Scrambled<Sobol, FastOwen>`'s fills, which take it, equal sampling value
+    /// by value. Past the range it is an error; Gray order and five dimensions are not
+    /// served (`None`).
+    #[test]
+    fn reversed_fill_is_the_reversed_plain_fill() {
+        use crate::Base2Digital;
+        use crate::digital::sobol::Order;
+        for dims in 1..=4usize {
+            let sobol = Sobol::new(dims).unwrap();
+            let cases = [
+                (0u32, 0usize),
+                (0, 1),
+                (0, 16),
+                (254, 9),
+                (5, 7),
+                (1000, 37),
+                (u32::MAX - 6, 7),
+            ];
+            for (start, n) in cases {
+                let mut plain = vec![0u32; n * dims];
+                sobol.fill(start, &mut plain).unwrap();
+                let mut rev = vec![0u32; n * dims];
+                sobol.fill_reversed(start, &mut rev).unwrap().unwrap();
+                let reversed: Vec<u32> = plain.iter().map(|x| x.reverse_bits()).collect();
+                assert_eq!(rev, reversed, "dims {dims} start {start} n {n}");
+                let sc = Scrambled::new(sobol, FastOwen::new(9));
+                let mut f = vec![0u32; n * dims];
+                sc.fill(start, &mut f).unwrap();
+                let mut g = vec![0f32; n * dims];
+                sc.fill_as(start, &mut g).unwrap();
+                for (k, (&x, &y)) in f.iter().zip(&g).enumerate() {
+                    let want = sc.sample(start + (k / dims) as u32, k % dims).unwrap();
+                    assert_eq!(x, want, "dims {dims} start {start} k {k}");
+                    assert_eq!(y.to_bits(), to_f32(want).to_bits());
+                }
+            }
+            let mut four = vec![0u32; 4 * dims];
+            assert!(
+                sobol
+                    .fill_reversed(u32::MAX - 2, &mut four)
+                    .unwrap()
+                    .is_err()
+            );
+        }
+        let gray = Sobol::with_order(2, Order::Gray).unwrap();
+        assert!(gray.fill_reversed(0, &mut [0; 4]).is_none());
+        assert!(
+            Sobol::new(5)
+                .unwrap()
+                .fill_reversed(0, &mut [0; 5])
+                .is_none()
+        );
+    }
+
     /// Every build the CPU runs, on lengths leaving 0 to 3 points past the blocks of four
     /// and on unequal lengths, for both hashes, against the scalar `sample4_f32`.
     #[test]
     fn every_build_matches_the_scalar_path() {
-        let indices: Vec<u32> = (0..4099u32)
-            .map(|k| k.wrapping_mul(2_654_435_761) ^ (k >> 3))
+        // Consecutive runs (blocks sharing their upper bytes, and blocks across a 256
+        // boundary), then scattered indices.
+        let indices: Vec<u32> = (0..40u32)
+            .chain(250..262)
+            .chain((0..4099u32).map(|k| k.wrapping_mul(2_654_435_761) ^ (k >> 3)))
             .chain([0, 1, 255, 256, u32::MAX])
             .collect();
         for hash in [OwenHash::Vegdahl, OwenHash::LaineKarras] {
