@@ -79,6 +79,9 @@ fn cases() -> Vec<(&'static str, Params)> {
             },
         ),
         ("pmj02", p()),
+        ("cmj", Params::dims(3).with_points(64)),
+        ("cmj", p().with_points(10)),
+        ("hex", p().with_points(56)),
     ];
     if cfg!(feature = "analysis") {
         v.extend([
@@ -86,6 +89,9 @@ fn cases() -> Vec<(&'static str, Params)> {
             ("poisson", p().with_points(100)),
             ("best-candidate", p().with_points(64)),
             ("gaussian-blue-noise", p().with_points(32)),
+            ("lloyd", p().with_points(24)),
+            ("ccvt", Params::dims(3).with_points(16)),
+            ("sot", p().with_points(20)),
         ]);
     }
     v
@@ -360,6 +366,11 @@ fn bad_parameters_are_errors() {
             "korobov",
         ),
         ("pmj02", "none", dims(3), "two-dimensional"),
+        ("cmj", "none", dims(2), "points"),
+        ("cmj", "none", dims(2).with_points(0), "at least 1"),
+        ("hex", "none", Params::default().with_points(15), "even"),
+        ("hex", "none", dims(3).with_points(16), "two-dimensional"),
+        ("hex", "none", Params::default(), "points"),
         ("independent", "none", dims(0), "at least 1"),
         ("independent", "none", dims((1 << 27) + 1), "too large"),
         ("independent", "none", dims(usize::MAX), "too large"),
@@ -417,6 +428,26 @@ fn bad_parameters_are_errors() {
                 "two-dimensional",
             ),
             ("best-candidate", "none", Params::default(), "points"),
+            ("lloyd", "none", Params::default(), "points"),
+            ("lloyd", "none", dims(65).with_points(10), "dimension"),
+            (
+                "sot",
+                "none",
+                blue(catalog::BlueNoiseOptions {
+                    torus: true,
+                    ..Default::default()
+                }),
+                "torus does not apply",
+            ),
+            (
+                "ccvt",
+                "none",
+                Params {
+                    budget: qmckit::work::Budget::seconds(1e-6).unwrap(),
+                    ..Params::default().with_points(1 << 20)
+                },
+                "budget",
+            ),
         ]);
     }
     for (name, r, p, needle) in cases {

@@ -67,6 +67,9 @@ fn cases() -> Vec<(&'static str, Params)> {
             },
         ),
         ("pmj02", p()),
+        ("cmj", Params::dims(3).with_points(64)),
+        ("cmj", p().with_points(10)),
+        ("hex", p().with_points(56)),
     ];
     {
         v.extend([
@@ -74,6 +77,9 @@ fn cases() -> Vec<(&'static str, Params)> {
             ("poisson", p().with_points(100)),
             ("best-candidate", p().with_points(64)),
             ("gaussian-blue-noise", p().with_points(32)),
+            ("lloyd", p().with_points(24)),
+            ("ccvt", Params::dims(3).with_points(16)),
+            ("sot", p().with_points(20)),
         ]);
     }
     v
