@@ -63,8 +63,8 @@ fn packing_density(d: usize) -> Option<f64> {
 
 /// The volume of the unit ball of `R^d`, by `V_d = V_(d-2) 2 pi / d`.
 fn ball_volume(d: usize) -> f64 {
-    let mut v = if d % 2 == 0 { 1.0 } else { 2.0 };
-    let mut k = if d % 2 == 0 { 2 } else { 3 };
+    let mut v = if d.is_multiple_of(2) { 1.0 } else { 2.0 };
+    let mut k = if d.is_multiple_of(2) { 2 } else { 3 };
     while k <= d {
         v *= 2.0 * core::f64::consts::PI / k as f64;
         k += 2;
@@ -254,7 +254,7 @@ fn grid_pass(
                         continue 'offset;
                     }
                     g - 1
-                } else if j - 1 >= g {
+                } else if j > g {
                     if !toroidal {
                         continue 'offset;
                     }

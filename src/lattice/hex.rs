@@ -64,7 +64,7 @@ impl HexGrid {
         while a * a <= n {
             if n.is_multiple_of(a) {
                 for r in [a, n / a] {
-                    if r % 2 == 0 {
+                    if r.is_multiple_of(2) {
                         let d = distortion(r, n / r);
                         let better = match best {
                             None => true,
@@ -96,7 +96,7 @@ impl HexGrid {
     /// not divide `n`.
     pub fn with_rows(n: u64, rows: u64) -> Result<Self> {
         check_n(n)?;
-        if rows == 0 || rows % 2 != 0 || !n.is_multiple_of(rows) {
+        if rows == 0 || !rows.is_multiple_of(2) || !n.is_multiple_of(rows) {
             return Err(Error::InvalidParameter {
                 what: "hex grid rows must be even and divide N",
             });
@@ -166,7 +166,7 @@ fn check_n(n: u64) -> Result<()> {
             max: FULL_RANGE,
         });
     }
-    if n % 2 != 0 {
+    if !n.is_multiple_of(2) {
         return Err(Error::InvalidParameter {
             what: "a hex grid on the torus needs an even N (an even number of rows; N - 1 \
                    and N + 1 are the nearest)",

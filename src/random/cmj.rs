@@ -220,7 +220,7 @@ impl CorrelatedMultiJitter {
         }
         let p = self.pattern((dim / 2) as u64);
         let s = permute(index, self.n, p.wrapping_mul(SHUFFLE));
-        let pair = dim % 2 == 0 && dim + 1 < self.dims;
+        let pair = dim.is_multiple_of(2) && dim + 1 < self.dims;
         Ok(if pair {
             let sx = permute((s as u64 % self.m) as u32, self.m, p.wrapping_mul(COLUMNS));
             let sy = permute((s as u64 / self.m) as u32, self.rows, p.wrapping_mul(ROWS));
