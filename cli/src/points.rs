@@ -48,7 +48,16 @@ not apply):
   best-candidate       Mitchell best candidate on the torus, 2D: -n N, --candidates M
   gaussian-blue-noise  Ahmed-Ren-Wonka Gaussian blue noise on the torus, 2D: -n N,
                        --iterations I
-  --max-seconds S refuses, before starting, a set whose estimated time exceeds S.";
+  lloyd, ccvt          Lloyd relaxation / capacity-constrained Voronoi (dense sample of 64
+                       points a site), any -d to 64: -n N, --iterations I, --torus
+  sot                  sliced optimal transport in the cube, any -d to 64: -n N,
+                       --iterations I
+  --max-seconds S refuses, before starting, a set whose estimated time exceeds S
+  (also pmj02bn, lloyd, ccvt, sot).
+
+Other sets: cmj (Kensler's correlated multi-jitter, --total N, -d any, --seed);
+hex (hexagonal grid on the torus, 2D, --total N even; --scramble shift for a random
+shift).";
 
 /// A catalog sampler (`qmckit::catalog::SAMPLERS`).
 pub type SamplerName = &'static SamplerEntry;
@@ -150,8 +159,11 @@ pub struct Spec {
     pub vector: Option<std::path::PathBuf>,
     /// Lattice: a Korobov parameter.
     pub korobov: Option<u64>,
-    /// The time budget of sets built whole at super-linear cost (pmj02bn).
+    /// The time budget of sets built whole at super-linear cost (pmj02bn, lloyd, ccvt,
+    /// sot).
     pub budget: qmckit::work::Budget,
+    /// The options of the relaxed sets (lloyd, ccvt, sot: `--iterations`, `--torus`).
+    pub blue_noise: BlueNoiseOptions,
 }
 
 impl Spec {
@@ -177,6 +189,7 @@ impl Spec {
             vector: None,
             korobov: None,
             budget: qmckit::work::Budget::DEFAULT,
+            blue_noise: BlueNoiseOptions::default(),
         }
     }
 }
@@ -194,7 +207,10 @@ impl PointsArgs {
             )))
         };
         let kind = sampler.kind;
-        let randomized = matches!(kind, S::Independent | S::Latin | S::Pmj02 | S::Pmj02bn)
+        let randomized = matches!(
+            kind,
+            S::Independent | S::Latin | S::Pmj02 | S::Pmj02bn | S::Cmj
+        ) || is_relaxed(sampler)
             || blue_noise_kind(sampler).is_some()
             || (kind == S::Stratified && !self.centered)
             || self.scramble.kind != RandomizerKind::None;
@@ -246,8 +262,29 @@ impl PointsArgs {
             vector: self.vector.clone(),
             korobov: self.korobov,
             budget: self.blue.budget()?,
+            blue_noise: if is_relaxed(sampler) {
+                BlueNoiseOptions {
+                    radius: self.blue.radius,
+                    torus: self.blue.torus,
+                    maximal: self.blue.maximal,
+                    candidates: self.blue.candidates,
+                    iterations: self.blue.iterations,
+                }
+            } else {
+                BlueNoiseOptions::default()
+            },
         })
     }
+}
+
+/// `true` for the relaxed sets built whole through the catalog (lloyd, ccvt, sot), which
+/// take `--iterations`, `--max-seconds` and (lloyd, ccvt) `--torus`; the catalog refuses
+/// the other blue-noise options for them.
+pub fn is_relaxed(sampler: SamplerName) -> bool {
+    matches!(
+        sampler.kind,
+        SamplerKind::Lloyd | SamplerKind::Ccvt | SamplerKind::Sot
+    )
 }
 
 /// The blue-noise set `sampler` names, if any.
@@ -381,7 +418,7 @@ fn params(spec: &Spec) -> Result<Params, Failure> {
         korobov: spec.korobov,
         vector,
         budget: spec.budget,
-        blue_noise: BlueNoiseOptions::default(),
+        blue_noise: spec.blue_noise,
     })
 }
 
@@ -436,7 +473,9 @@ pub fn run(args: &PointsArgs) -> Result<(), Failure> {
         return args.run_blue_noise(kind);
     }
     let budgeted = args.sampler.kind == SamplerKind::Pmj02bn;
-    if let Some(option) = args.blue.first_given(budgeted) {
+    if let Some(option) = args.blue.first_given(budgeted)
+        && !is_relaxed(args.sampler)
+    {
         let to = if option == "--max-seconds" {
             "poisson, best-candidate, gaussian-blue-noise, pmj02bn"
         } else {

@@ -28,6 +28,7 @@ fn _qmckit(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(samplers::latin_hypercube, m)?)?;
     m.add_function(wrap_pyfunction!(samplers::pmj02, m)?)?;
     m.add_function(wrap_pyfunction!(samplers::pmj02bn, m)?)?;
+    m.add_function(wrap_pyfunction!(samplers::catalog_set, m)?)?;
     m.add_function(wrap_pyfunction!(poisson::poisson_disk, m)?)?;
     m.add_function(wrap_pyfunction!(discrepancy::discrepancy, m)?)?;
     Ok(())

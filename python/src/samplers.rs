@@ -471,3 +471,52 @@ pub fn pmj02bn(py: Python<'_>, n: usize, seed: u64) -> PyResult<NativeSampler> {
     let set = qmckit::blue_noise::PointSet::new(pts, 2).map_err(to_py)?;
     Ok(NativeSampler::points(boxed(set), u32::MAX, "PMJ02BN table"))
 }
+
+/// The `n`-point set of any finite catalog sampler (`qmckit::catalog::SAMPLERS` of size
+/// `Set` or `Whole`: stratified, latin, hammersley, lp, cmj, hex, pmj02bn, the blue-noise
+/// sets, lloyd, ccvt, sot), by name or alias, unrandomized, in `d` dimensions (the
+/// construction's default when `None`), with the construction's `seed`, and for the
+/// relaxed sets their `iterations` and `torus`: the same bits as `qmckit points NAME -n N`.
+#[pyfunction]
+#[pyo3(signature = (name, n, d=None, seed=0, iterations=None, torus=false))]
+pub fn catalog_set(
+    py: Python<'_>,
+    name: &str,
+    n: u64,
+    d: Option<usize>,
+    seed: u64,
+    iterations: Option<u32>,
+    torus: bool,
+) -> PyResult<NativeSampler> {
+    use qmckit::catalog::{self, BlueNoiseOptions, Params, Size};
+    let entry = catalog::sampler(name).map_err(|e| value_error(e.to_string()))?;
+    if !matches!(entry.kind.size(), Size::Set | Size::Whole) {
+        return Err(value_error(format!(
+            "{}: a sequence, not a finite set (use its own engine)",
+            entry.name
+        )));
+    }
+    let params = Params {
+        dims: d,
+        points: Some(n),
+        seed,
+        blue_noise: BlueNoiseOptions {
+            iterations,
+            torus,
+            ..BlueNoiseOptions::default()
+        },
+        ..Params::default()
+    };
+    let none = catalog::randomizer("none").map_err(|e| value_error(e.to_string()))?;
+    let (coords, dims) = py
+        .detach(move || -> Result<(Vec<u32>, usize), String> {
+            let s = catalog::build(entry, none, &params).map_err(|e| e.to_string())?;
+            let len = qmckit::size::coordinates(s.len(), s.dims()).map_err(|e| e.to_string())?;
+            let mut v = qmckit::size::vec_zeroed::<u32>(len).map_err(|e| e.to_string())?;
+            s.fill(0, &mut v).map_err(|e| e.to_string())?;
+            Ok((v, s.dims()))
+        })
+        .map_err(value_error)?;
+    let set = qmckit::blue_noise::PointSet::new(coords, dims).map_err(to_py)?;
+    Ok(NativeSampler::points(boxed(set), u32::MAX, entry.name))
+}

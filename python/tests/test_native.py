@@ -406,3 +406,28 @@ def test_poisson_surface_points_touch_their_neighbour():
     assert np.mean(volume <= 1.001 * r + 1e-9) < 0.5
     # Denser than the shell's set, as with SciPy's two methods.
     assert len(surface) > len(volume)
+def test_catalog_set_gives_the_command_s_finite_sets():
+    """Any finite catalog set by name: the command's bits (`qmckit points NAME -n N`),
+    its strata for cmj, and refusals for sequences and bad sizes."""
+    import numpy as np
+    import pytest
+
+    from qmckit import _qmckit as q
+
+    for name, d in [("cmj", 2), ("cmj", 3), ("hex", 2), ("lloyd", 2), ("ccvt", 3), ("sot", 2)]:
+        s = q.catalog_set(name, 16, d=d, seed=3)
+        assert (s.len, s.dims) == (16, d)
+        out = np.empty((16, d), dtype=np.uint32)
+        s.fill(0, out)
+        again = np.empty((16, d), dtype=np.uint32)
+        q.catalog_set(name, 16, d=d, seed=3).fill(0, again)
+        assert (out == again).all()
+    # CMJ of 16 points: one point in each of the 16 columns and rows.
+    s = q.catalog_set("cmj", 16, seed=9)
+    x = np.empty((16, 2), dtype=np.uint32)
+    s.fill(0, x)
+    cells = (x.astype(np.uint64) * 16) >> 32
+    assert sorted(cells[:, 0]) == list(range(16)) and sorted(cells[:, 1]) == list(range(16))
+    for bad in [("sobol", 16), ("hex", 15), ("lloyd", 0)]:
+        with pytest.raises(ValueError):
+            q.catalog_set(*bad)

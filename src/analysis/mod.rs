@@ -10,6 +10,7 @@
 //! | [`star`] | star discrepancy: exact (1D closed form, 2D sweep, d-D by the Dobkin–Eppstein–Mitchell decomposition in [`star::dem`]), guaranteed bounds ([`star::thiemard`], threshold accepting), extreme discrepancy in 2D |
 //! | [`tvalue`] | t-values of point sets and of blocks of base-`b` digital sequences, by counting points in elementary intervals (the rank test on generator matrices is [`crate::digital::rank`]) |
 //! | [`distance`] | minimum distance, optionally on the torus |
+//! | [`spacing`] | minimum distance through a grid, within a budget, and normalized by the packing bound (the relative radius) |
 //! | [`integrate`] | integration error on test integrands with closed-form integrals (Genz's Gaussian peak and oscillatory, ball and half-space indicators), and integration with an error estimate (replicated randomized QMC, Student-t intervals) on a suite of test problems |
 //! | [`spectrum`] | Fourier power spectrum of 2D point sets (periodogram by direct sums or a type-1 NUFFT), mean over sets, radial average and anisotropy |
 //! | [`variance`] | integration variance predicted from a mean spectrum (torus-shifted samplers, disk and Gaussian integrands) and measured beside it |
@@ -23,6 +24,7 @@ pub mod l2;
 pub mod pcf;
 pub mod pointfile;
 pub mod screen_error;
+pub mod spacing;
 pub mod spectrum;
 pub mod star;
 pub mod tvalue;

@@ -5,6 +5,9 @@
 //!   by radius or by an approximate count, optionally maximal.
 //! * [`BestCandidate`] — Mitchell's best-candidate sampling on the torus (progressive).
 //! * [`GaussianBlueNoise`] — Ahmed, Ren & Wonka's Gaussian blue noise on the torus.
+//! * [`Lloyd`] — Lloyd relaxation and capacity-constrained Voronoi tessellations (CCVT,
+//!   Balzer, Schlömer & Deussen 2009) in any dimension, in the cube or on the torus.
+//! * [`Sot`] — sliced optimal transport sampling (Paulin et al. 2020) in the cube.
 //! * [`VoidAndCluster`] — Ulichney's void-and-cluster rank masks, toroidal, up to 2048².
 //! * [`mask64`] — a 64×64 void-and-cluster rank mask as a static table, in `no_std` too.
 //!
@@ -25,6 +28,10 @@ pub mod gaussian;
 #[cfg(feature = "analysis")]
 mod grid;
 #[cfg(feature = "analysis")]
+mod kdtree;
+#[cfg(feature = "analysis")]
+pub mod lloyd;
+#[cfg(feature = "analysis")]
 mod point_set;
 #[cfg(feature = "analysis")]
 pub mod poisson;
@@ -34,6 +41,8 @@ mod poisson_cost;
 mod rng;
 #[cfg(feature = "analysis")]
 mod shell;
+#[cfg(feature = "analysis")]
+pub mod sot;
 #[cfg(feature = "analysis")]
 mod tiles;
 #[cfg(feature = "analysis")]
@@ -46,8 +55,12 @@ pub use best_candidate::BestCandidate;
 #[cfg(feature = "analysis")]
 pub use gaussian::GaussianBlueNoise;
 #[cfg(feature = "analysis")]
+pub use lloyd::{Lloyd, LloydTrace};
+#[cfg(feature = "analysis")]
 pub use point_set::PointSet;
 #[cfg(feature = "analysis")]
 pub use poisson::PoissonDisk;
+#[cfg(feature = "analysis")]
+pub use sot::Sot;
 #[cfg(feature = "analysis")]
 pub use void_and_cluster::{RankMask, VoidAndCluster};

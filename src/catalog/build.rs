@@ -8,9 +8,11 @@ use std::vec::Vec;
 // The constructions, by path: the one place to update when library modules move.
 use crate::digital::sobol::Order;
 use crate::digital::{DigitalNetB, MAX_BASE, is_prime};
+use crate::lattice::hex::HexGrid;
 use crate::lattice::kronecker::Kronecker;
 use crate::lattice::{KUO_33002, Rank1Lattice, korobov, parse_lattice};
 use crate::pmj::Pmj02;
+use crate::random::cmj::CorrelatedMultiJitter;
 use crate::randomize::digits::DigitScramble;
 use crate::randomize::shuffle::Shuffled;
 use crate::randomize::{
@@ -197,6 +199,7 @@ pub fn build(
         S::Lattice => return shifted(lattice(params, d)?, r, seed),
         S::Kronecker => return shifted(Kronecker::r_d(d)?, r, seed),
         S::Faure => return faure(params.base, d, r, seed),
+        S::Hex => return shifted(HexGrid::new(needed(sampler, params)?)?, r, seed),
         _ => {}
     }
     let takes_digits = matches!(kind, S::Halton | S::Hammersley)
@@ -362,6 +365,7 @@ fn construct(
         S::Hammersley => Box::new(Hammersley::with_scramble(needed(sampler, p)?, d, digits)?),
         S::Latin => Box::new(LatinHypercube::new(needed(sampler, p)?, d, seed)?),
         S::Stratified => Box::new(stratified(sampler, p, d)?),
+        S::Cmj => Box::new(CorrelatedMultiJitter::new(needed(sampler, p)?, d, seed)?),
         #[cfg(feature = "analysis")]
         S::Pmj02bn => Box::new(super::whole::pmj02bn(needed(sampler, p)?, seed, &p.budget)?),
         #[cfg(feature = "analysis")]
@@ -374,11 +378,26 @@ fn construct(
             seed,
             &p.budget,
         )?),
+        #[cfg(feature = "analysis")]
+        S::Lloyd | S::Ccvt | S::Sot => Box::new(super::whole::relaxed(
+            sampler.kind,
+            &p.blue_noise,
+            needed(sampler, p)?,
+            d,
+            seed,
+            &p.budget,
+        )?),
         #[cfg(not(feature = "analysis"))]
-        S::Pmj02bn | S::Poisson | S::BestCandidate | S::GaussianBlueNoise => {
+        S::Pmj02bn
+        | S::Poisson
+        | S::BestCandidate
+        | S::GaussianBlueNoise
+        | S::Lloyd
+        | S::Ccvt
+        | S::Sot => {
             return Err(super::whole::unavailable(sampler.name));
         }
-        S::Lattice | S::Kronecker | S::Faure => {
+        S::Lattice | S::Kronecker | S::Faure | S::Hex => {
             return Err(CatalogError::Unused {
                 entry: sampler.name,
                 param: "the construction",

@@ -83,6 +83,9 @@ pub fn examples() -> Vec<(&'static SamplerEntry, Params)> {
             },
         ),
         ("pmj02", p()),
+        ("cmj", Params::dims(3).with_points(64)),
+        ("cmj", p().with_points(10)),
+        ("hex", p().with_points(56)),
     ];
     #[cfg(feature = "analysis")]
     v.extend([
@@ -90,6 +93,9 @@ pub fn examples() -> Vec<(&'static SamplerEntry, Params)> {
         ("poisson", p().with_points(100)),
         ("best-candidate", p().with_points(64)),
         ("gaussian-blue-noise", p().with_points(32)),
+        ("lloyd", p().with_points(24)),
+        ("ccvt", Params::dims(3).with_points(16)),
+        ("sot", p().with_points(20)),
     ]);
     v.into_iter()
         .filter_map(|(name, params)| {

@@ -35,6 +35,8 @@ pub enum MeasureKind {
     MinDistance,
     /// Mean nearest-neighbour distance.
     MeanMinDistance,
+    /// Minimum distance over the packing bound `d_max(N, d)`.
+    NormalizedMinDistance,
     /// Fourier power spectrum (periodogram) of 2D points.
     Spectrum,
     /// Radial average and anisotropy of the spectrum.
@@ -118,7 +120,8 @@ pub type MeasureEntry = Entry<MeasureKind>;
 impl Entry<MeasureKind> {
     /// The value of a scalar measure of `points`, within `budget` (estimated first where
     /// the measure has an estimate; the deadline bounds the rest): star (exact), extreme
-    /// (2D), the eight L2 measures, min-distance and mean-min-distance (in the cube).
+    /// (2D), the eight L2 measures, min-distance, mean-min-distance and
+    /// normalized-min-distance (in the cube).
     ///
     /// ```
     /// use qmckit::{analysis::Points, catalog, work::Budget};
@@ -147,6 +150,9 @@ impl Entry<MeasureKind> {
             MeasureKind::Extreme => star::extreme_2d_within(points, budget)?,
             MeasureKind::MinDistance => distance::min_distance(points, false),
             MeasureKind::MeanMinDistance => distance::mean_min_distance(points, false),
+            MeasureKind::NormalizedMinDistance => {
+                crate::analysis::spacing::normalized_min_distance_within(points, false, budget)?
+            }
             _ => {
                 return Err(super::CatalogError::Unused {
                     entry: self.name,
@@ -325,6 +331,22 @@ pub static MEASURES: &[MeasureEntry] = &[
         math: "(1/N) sum_i min_(j != i) |x_i - x_j|",
         params: &[param("toroidal", "distance on the torus", "false", "bool")],
         item: "qmckit::analysis::distance::mean_min_distance",
+    },
+    Entry {
+        kind: MeasureKind::NormalizedMinDistance,
+        name: "normalized-min-distance",
+        aliases: &[
+            alias("relative-radius", "Lagae & Dutré 2008's rho"),
+            alias("min-distance-ratio", "what it is"),
+        ],
+        summary: "minimum distance over the packing bound d_max(N, d) (1 for the hexagonal \
+                  grid tiling the torus), grid search, 1 to 8 dimensions",
+        math: "min_(i != j) |x_i - x_j| / d_max, d_max = 2 (Delta_d / (N V_d))^(1/d), in 2D sqrt(2 / (sqrt(3) N)) (Lagae & Dutré 2008)",
+        params: &[
+            param("toroidal", "distance on the torus", "false", "bool"),
+            BUDGET,
+        ],
+        item: "qmckit::analysis::spacing::normalized_min_distance_within",
     },
     Entry {
         kind: MeasureKind::Spectrum,

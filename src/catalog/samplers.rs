@@ -38,6 +38,16 @@ pub enum SamplerKind {
     Pmj02,
     /// PMJ02 with blue noise, built whole.
     Pmj02bn,
+    /// Correlated multi-jittered sampling.
+    Cmj,
+    /// Hexagonal grid on the torus.
+    Hex,
+    /// Lloyd relaxation, built whole.
+    Lloyd,
+    /// Capacity-constrained Voronoi tessellation, built whole.
+    Ccvt,
+    /// Sliced optimal transport sampling, built whole.
+    Sot,
 }
 
 /// What a construction is, as far as randomizers care ([`super::applies`]).
@@ -54,9 +64,10 @@ pub enum Family {
     /// Lattice rules and Kronecker sequences: random shifts modulo 1.
     Lattice,
     /// Random constructions whose randomness is their own (independent, stratified,
-    /// latin, pmj02, pmj02bn).
+    /// latin, pmj02, pmj02bn, cmj).
     Random,
-    /// Blue-noise sets built whole (poisson, best-candidate, gaussian-blue-noise).
+    /// Blue-noise sets built whole (poisson, best-candidate, gaussian-blue-noise, lloyd,
+    /// ccvt, sot).
     BlueNoise,
 }
 
@@ -67,11 +78,13 @@ impl Family {
             Family::Base2Digital => "base-2 digital constructions (sobol, lp, vdc base 2)",
             Family::RadicalInverse => "radical inverses (halton, hammersley, vdc base b)",
             Family::BaseBNet => "base-b digital nets (faure)",
-            Family::Lattice => "lattices (lattice, kronecker)",
+            Family::Lattice => "lattices (lattice, kronecker, hex)",
             Family::Random => {
-                "random constructions (independent, stratified, latin, pmj02, pmj02bn)"
+                "random constructions (independent, stratified, latin, pmj02, pmj02bn, cmj)"
             }
-            Family::BlueNoise => "blue-noise sets (poisson, best-candidate, gaussian-blue-noise)",
+            Family::BlueNoise => {
+                "blue-noise sets (poisson, best-candidate, gaussian-blue-noise, lloyd, ccvt, sot)"
+            }
         }
     }
 }
@@ -103,15 +116,19 @@ impl SamplerKind {
             },
             SamplerKind::Halton | SamplerKind::Hammersley => Family::RadicalInverse,
             SamplerKind::Faure => Family::BaseBNet,
-            SamplerKind::Lattice | SamplerKind::Kronecker => Family::Lattice,
+            SamplerKind::Lattice | SamplerKind::Kronecker | SamplerKind::Hex => Family::Lattice,
             SamplerKind::Independent
             | SamplerKind::Stratified
             | SamplerKind::Latin
             | SamplerKind::Pmj02
-            | SamplerKind::Pmj02bn => Family::Random,
-            SamplerKind::Poisson | SamplerKind::BestCandidate | SamplerKind::GaussianBlueNoise => {
-                Family::BlueNoise
-            }
+            | SamplerKind::Pmj02bn
+            | SamplerKind::Cmj => Family::Random,
+            SamplerKind::Poisson
+            | SamplerKind::BestCandidate
+            | SamplerKind::GaussianBlueNoise
+            | SamplerKind::Lloyd
+            | SamplerKind::Ccvt
+            | SamplerKind::Sot => Family::BlueNoise,
         }
     }
 
@@ -121,12 +138,17 @@ impl SamplerKind {
             SamplerKind::Stratified
             | SamplerKind::Latin
             | SamplerKind::Hammersley
-            | SamplerKind::Lp => Size::Set,
+            | SamplerKind::Lp
+            | SamplerKind::Cmj
+            | SamplerKind::Hex => Size::Set,
             SamplerKind::Lattice => Size::Rule,
             SamplerKind::Pmj02bn
             | SamplerKind::Poisson
             | SamplerKind::BestCandidate
-            | SamplerKind::GaussianBlueNoise => Size::Whole,
+            | SamplerKind::GaussianBlueNoise
+            | SamplerKind::Lloyd
+            | SamplerKind::Ccvt
+            | SamplerKind::Sot => Size::Whole,
             _ => Size::Sequence,
         }
     }
@@ -140,7 +162,7 @@ impl SamplerKind {
     }
 
     /// The only dimension count the construction has, if it has one (vdc 1; lp, pmj02,
-    /// pmj02bn, best-candidate and gaussian-blue-noise 2).
+    /// pmj02bn, best-candidate, gaussian-blue-noise and hex 2).
     pub const fn fixed_dims(self) -> Option<usize> {
         match self {
             SamplerKind::Vdc => Some(1),
@@ -148,7 +170,8 @@ impl SamplerKind {
             | SamplerKind::Pmj02
             | SamplerKind::Pmj02bn
             | SamplerKind::BestCandidate
-            | SamplerKind::GaussianBlueNoise => Some(2),
+            | SamplerKind::GaussianBlueNoise
+            | SamplerKind::Hex => Some(2),
             _ => None,
         }
     }
@@ -494,5 +517,115 @@ pub static SAMPLERS: &[SamplerEntry] = &[
             ),
         ],
         item: "qmckit::pmj::bn",
+    },
+    Entry {
+        kind: SamplerKind::Cmj,
+        name: "cmj",
+        aliases: &[
+            alias("correlated-multi-jittered", "Kensler 2013's title"),
+            alias("multi-jittered", "the family (Chiu, Shirley & Wang 1994)"),
+        ],
+        summary: "correlated multi-jittered: N-rooks and m x n strata at once, random access; \
+                  pairs of dimensions are independent 2D patterns, an odd last one a 1D stratified draw",
+        math: "x = (sx + (sy + jx)/n)/m, y = (s + jy)/N, sx, sy one shared permutation of columns and of rows (Kensler 2013)",
+        params: &[DIMS, POINTS, SEED],
+        item: "qmckit::random::cmj::CorrelatedMultiJitter",
+    },
+    Entry {
+        kind: SamplerKind::Hex,
+        name: "hex",
+        aliases: &[
+            alias("hexagonal", "the lattice's name"),
+            alias("hexagonal-grid", "the full name"),
+        ],
+        summary: "hexagonal grid on the torus, 2D, N even (rows r even, r/c nearest 2/sqrt 3); \
+                  random shift by the shift randomizer",
+        math: "x = (4j + 1 + 2 (i mod 2))/(4c), y = (2i + 1)/(2r): the densest packing of the plane (Thue 1910)",
+        params: &[
+            DIMS_2,
+            param(
+                "points",
+                "the size N = r c of the grid",
+                "none: needed",
+                "even, 2 to 2^32",
+            ),
+        ],
+        item: "qmckit::lattice::hex::HexGrid",
+    },
+    Entry {
+        kind: SamplerKind::Lloyd,
+        name: "lloyd",
+        aliases: &[
+            alias("cvt", "centroidal Voronoi tessellation"),
+            alias("lloyd-relaxation", "the algorithm's usual name"),
+        ],
+        summary: "Lloyd relaxation, any dimension, cube or torus, cells estimated on a dense sample, built whole",
+        math: "s_i <- centroid of the sample points nearest s_i; E = mean min_i |y - s_i|^2 never increases (Lloyd 1982)",
+        params: &[
+            param("dims", "coordinates of each point", "2", "1 to 64"),
+            POINTS,
+            SEED,
+            param("iterations", "relaxation iterations", "30", "0 to 10^5"),
+            param("torus", "periodic distances", "false", "bool"),
+            param(
+                "budget",
+                "time budget of the construction",
+                "10 s",
+                "positive seconds",
+            ),
+        ],
+        item: "qmckit::blue_noise::Lloyd",
+    },
+    Entry {
+        kind: SamplerKind::Ccvt,
+        name: "ccvt",
+        aliases: &[alias(
+            "capacity-constrained",
+            "Balzer, Schlömer & Deussen 2009's title",
+        )],
+        summary: "capacity-constrained Voronoi tessellation: Lloyd with equal cell capacities, by site swaps, built whole",
+        math: "each site owns 64 sample points; swap pairs while h_i + h_j > 0, then centroids (Balzer, Schlömer & Deussen 2009)",
+        params: &[
+            param("dims", "coordinates of each point", "2", "1 to 64"),
+            POINTS,
+            SEED,
+            param("iterations", "swap-and-move iterations", "30", "0 to 10^5"),
+            param("torus", "periodic distances", "false", "bool"),
+            param(
+                "budget",
+                "time budget of the construction",
+                "10 s",
+                "positive seconds",
+            ),
+        ],
+        item: "qmckit::blue_noise::Lloyd::capacity_constrained",
+    },
+    Entry {
+        kind: SamplerKind::Sot,
+        name: "sot",
+        aliases: &[alias(
+            "sliced-optimal-transport",
+            "Paulin et al. 2020's title",
+        )],
+        summary: "sliced optimal transport sampling in the cube, any dimension to 64, built whole",
+        math: "x_i += mean over L directions of (t_rank(i) - <theta, x_i>) theta, t the projected cube's quantile blocks (Paulin et al. 2020)",
+        params: &[
+            param("dims", "coordinates of each point", "2", "1 to 64"),
+            POINTS,
+            SEED,
+            param(
+                "iterations",
+                "iterations of 16 directions",
+                "100",
+                "0 to 10^5",
+            ),
+            param(
+                "budget",
+                "time budget of the construction",
+                "10 s",
+                "positive seconds",
+            ),
+        ],
+        item: "qmckit::blue_noise::Sot",
     },
 ];

@@ -9,25 +9,31 @@ use super::{CatalogError, SamplerKind};
 pub struct BlueNoiseOptions {
     /// poisson: the disk radius, instead of `points`.
     pub radius: Option<f64>,
-    /// poisson: toroidal distance.
+    /// poisson, lloyd, ccvt: toroidal distance.
     pub torus: bool,
     /// poisson: fill until no further disk fits.
     pub maximal: bool,
     /// poisson: candidates per step (default 30); best-candidate: the multiplier `m`
     /// (default 10).
     pub candidates: Option<u32>,
-    /// gaussian-blue-noise: gradient-descent iterations (default 500).
+    /// gaussian-blue-noise: gradient-descent iterations (default 500); lloyd, ccvt
+    /// (default 30), sot (default 100): their iterations.
     pub iterations: Option<u32>,
 }
 
 impl BlueNoiseOptions {
     /// The first option given that `kind` does not take, with why.
     pub(super) fn unused(&self, kind: SamplerKind) -> Option<(&'static str, &'static str)> {
-        let poisson = kind == SamplerKind::Poisson;
+        use SamplerKind as S;
+        let poisson = kind == S::Poisson;
         let only_poisson = "only poisson takes it";
         [
             ("radius", self.radius.is_some() && !poisson, only_poisson),
-            ("torus", self.torus && !poisson, only_poisson),
+            (
+                "torus",
+                self.torus && !matches!(kind, S::Poisson | S::Lloyd | S::Ccvt),
+                "only poisson, lloyd and ccvt take it",
+            ),
             ("maximal", self.maximal && !poisson, only_poisson),
             (
                 "candidates",
@@ -37,8 +43,9 @@ impl BlueNoiseOptions {
             ),
             (
                 "iterations",
-                self.iterations.is_some() && kind != SamplerKind::GaussianBlueNoise,
-                "only gaussian-blue-noise takes it",
+                self.iterations.is_some()
+                    && !matches!(kind, S::GaussianBlueNoise | S::Lloyd | S::Ccvt | S::Sot),
+                "only gaussian-blue-noise, lloyd, ccvt and sot take it",
             ),
         ]
         .into_iter()
@@ -48,7 +55,7 @@ impl BlueNoiseOptions {
 }
 
 #[cfg(feature = "analysis")]
-pub(super) use built::{blue_noise, pmj02bn};
+pub(super) use built::{blue_noise, pmj02bn, relaxed};
 
 #[cfg(feature = "analysis")]
 mod built {
@@ -120,6 +127,37 @@ mod built {
                 }
                 g.generate_within(&budget)?
             }
+        })
+    }
+
+    /// The relaxed sets: lloyd, ccvt (on the torus if `opts.torus`) and sot, `n`
+    /// points of `dims`, their iterations from `opts` (else their defaults), within
+    /// `budget`.
+    pub(in crate::catalog) fn relaxed(
+        kind: SamplerKind,
+        opts: &BlueNoiseOptions,
+        n: u64,
+        dims: usize,
+        seed: u64,
+        budget: &Budget,
+    ) -> Result<PointSet, CatalogError> {
+        use crate::blue_noise::{Lloyd, Sot};
+        let budget = budget.started();
+        Ok(if kind == SamplerKind::Sot {
+            let mut s = Sot::new(n, dims)?.seed(seed);
+            if let Some(i) = opts.iterations {
+                s = s.iterations(i)?;
+            }
+            s.generate_within(&budget)?
+        } else {
+            let mut l = Lloyd::new(n, dims)?
+                .seed(seed)
+                .torus(opts.torus)
+                .capacity_constrained(kind == SamplerKind::Ccvt);
+            if let Some(i) = opts.iterations {
+                l = l.iterations(i)?;
+            }
+            l.generate_within(&budget)?
         })
     }
 

@@ -51,6 +51,7 @@
 //! # Ok::<(), qmckit::Error>(())
 //! ```
 
+pub mod hex;
 pub mod kronecker;
 mod kuo;
 mod vectors;

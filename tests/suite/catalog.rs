@@ -297,6 +297,11 @@ fn bad_parameters_are_errors() {
             "korobov",
         ),
         ("pmj02", "none", dims(3), "two-dimensional"),
+        ("cmj", "none", dims(2), "points"),
+        ("cmj", "none", dims(2).with_points(0), "at least 1"),
+        ("hex", "none", Params::default().with_points(15), "even"),
+        ("hex", "none", dims(3).with_points(16), "two-dimensional"),
+        ("hex", "none", Params::default(), "points"),
         ("independent", "none", dims(0), "at least 1"),
         ("independent", "none", dims((1 << 27) + 1), "too large"),
         ("independent", "none", dims(usize::MAX), "too large"),
@@ -354,6 +359,26 @@ fn bad_parameters_are_errors() {
                 "two-dimensional",
             ),
             ("best-candidate", "none", Params::default(), "points"),
+            ("lloyd", "none", Params::default(), "points"),
+            ("lloyd", "none", dims(65).with_points(10), "dimension"),
+            (
+                "sot",
+                "none",
+                blue(catalog::BlueNoiseOptions {
+                    torus: true,
+                    ..Default::default()
+                }),
+                "torus does not apply",
+            ),
+            (
+                "ccvt",
+                "none",
+                Params {
+                    budget: qmckit::work::Budget::seconds(1e-6).unwrap(),
+                    ..Params::default().with_points(1 << 20)
+                },
+                "budget",
+            ),
         ]);
     }
     for (name, r, p, needle) in cases {

@@ -6,6 +6,7 @@ mod common;
 
 mod blue_noise;
 mod catalog;
+mod cmj;
 mod conversions;
 #[cfg(feature = "analysis")]
 mod digital;
@@ -24,6 +25,8 @@ mod peers;
 mod pixel;
 mod pmj;
 mod randomize;
+#[cfg(feature = "analysis")]
+mod relaxation;
 mod samplers;
 mod spectrum;
 mod star_discrepancy;
