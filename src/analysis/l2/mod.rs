@@ -111,10 +111,10 @@ mod tests;
 mod tree;
 
 pub use measures::{
-    centered, diaphony, generalized, l2_star, l2_star_direct, mixture, symmetric, unanchored,
-    wrap_around,
+    centered, diaphony, generalized, l2_star, l2_star_direct, l2_star_fast, mixture, symmetric,
+    unanchored, wrap_around,
 };
-pub use tree::{TREE_MAX_D, l2_star_fast};
+pub use tree::TREE_MAX_D;
 
 use super::Points;
 use crate::Result;

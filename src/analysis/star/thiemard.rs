@@ -69,7 +69,7 @@
 
 use super::cost::THIEMARD_RATE;
 use super::thiemard_cost::{
-    chain_step_cost, estimate, region_cost, root_chain_lower_bound, split_factor,
+    chain_step_cost, estimate, region_cost, root_chain_lower_bound, split, vol,
 };
 use crate::analysis::Points;
 use crate::work::Budget;
@@ -249,35 +249,6 @@ fn cap(steps: f64) -> u64 {
         u64::MAX
     } else {
         steps as u64
-    }
-}
-
-/// Product of the coordinates.
-fn vol(c: &[f64]) -> f64 {
-    c.iter().product()
-}
-
-/// Thiémard's split of the region `[a, b]` with the first `m` coordinates fixed: writes the
-/// lower corner `γ` of its bracket into `g`. Requires `vol(b) > delta`. The free part of `γ`
-/// always moves below `b` in coordinate `m`, so the loop along child `m` ends.
-pub(super) fn split(a: &[f64], b: &[f64], m: usize, delta: f64, g: &mut [f64]) {
-    let fixed = vol(a.get(..m).unwrap_or(&[]));
-    let free = vol(b.get(m..).unwrap_or(&[]));
-    let ratio = (vol(b) - delta) / (fixed * free);
-    let s = split_factor(ratio, b.len() - m);
-    for (j, gj) in g.iter_mut().enumerate() {
-        *gj = if j < m {
-            a.get(j).copied().unwrap_or(0.0)
-        } else {
-            s * b.get(j).copied().unwrap_or(0.0)
-        };
-    }
-    // In exact arithmetic s < 1 (vol(b) - vol_fixed(a) vol_free(b) < delta holds for every
-    // region of the decomposition); after rounding, force progress.
-    if let (Some(gm), Some(&bm)) = (g.get_mut(m), b.get(m))
-        && *gm >= bm
-    {
-        *gm = bm.next_down().max(0.0);
     }
 }
 
