@@ -20,10 +20,13 @@
 //! command. Without `std` there is no clock: the deadline checks always pass, and only the
 //! estimate bounds the work.
 //!
-//! Rates are measured single-machine throughputs (two cores, release build) and are meant to
-//! be conservative: an estimate errs on the long side, so a refused request would really
-//! have taken about as long as the message says, and an accepted one seldom runs much
-//! longer than the budget.
+//! Rates are measured throughputs of a release build. The analysis rates are **per core**:
+//! measured as the CPU time of one thread (the least of repeated runs, so that other work on
+//! the machine does not slow them down), and a loop that rayon splits over its threads is
+//! estimated at [`CORES`] times its rate ([`Cost::parallel`]): the two cores of the machine
+//! the rates were measured on. The goal is an estimate within a factor of two of the
+//! measured time on that machine, idle (`docs/budgets.md` lists the measurements); a busier
+//! or smaller machine runs longer than estimated, and the deadline bounds it.
 //!
 //! ```
 //! use qmckit::work::{Budget, Cost, Rate};
@@ -44,6 +47,13 @@ pub use stop::Stop;
 /// How far past its budget a started computation may run before its deadline stops it:
 /// the deadline is `start + GRACE * seconds`.
 pub const GRACE: f64 = 1.25;
+
+/// The speed-up of a loop split over rayon's threads that [`Cost::parallel`] assumes: the
+/// two cores of the machine the per-core rates were measured on. Fixed, not the number of
+/// threads of the running machine, so that a request is admitted or refused alike
+/// everywhere: with more cores a run ends sooner than estimated, with one core it takes up
+/// to twice the estimate (and the deadline bounds it).
+pub const CORES: f64 = 2.0;
 
 /// How many [`Pacer::tick`] steps pass between two readings of the clock.
 pub const PACER_INTERVAL: u32 = 4096;
@@ -296,6 +306,28 @@ impl Cost {
                 f64::INFINITY
             } else {
                 seconds
+            },
+        }
+    }
+
+    /// `steps` steps of a loop split over rayon's threads, running at `rate` on each of
+    /// [`CORES`] cores: `steps / (CORES rate)` seconds (NaN counts as infinitely long).
+    ///
+    /// ```
+    /// use qmckit::work::{Cost, Rate};
+    /// assert_eq!(Cost::parallel(4e9, Rate::per_second(1e9)).seconds(), 2.0);
+    /// ```
+    pub fn parallel(steps: f64, rate: Rate) -> Self {
+        Cost::steps(steps / CORES, rate)
+    }
+
+    /// A cost of `seconds` seconds (negative and NaN count as infinitely long).
+    pub fn from_seconds(seconds: f64) -> Self {
+        Cost {
+            seconds: if seconds >= 0.0 {
+                seconds
+            } else {
+                f64::INFINITY
             },
         }
     }
