@@ -31,8 +31,8 @@ block is preceded by a '# set K' line (K from 1).
 Conventions:
   star      star discrepancy D*, exact (1D closed form; 2D sweep; d-D by
             Dobkin-Eppstein-Mitchell). Refused with an error when the estimated time
-            exceeds --max-seconds (default 10: N <= 54772 in 2D, 48989 at d = 3, 478 at
-            d = 6; 600 admits 1542 at d = 6). A bar shows the progress on a terminal.
+            exceeds --max-seconds (default 10: N <= 114016 in 2D, 64517 at d = 3, 557 at
+            d = 6; 600 admits 1893 at d = 6). A bar shows the progress on a terminal.
   star-bounds  guaranteed bounds on D* for sets too large for the exact value: two lines,
             'star-lower' (the best of Thiemard's cover and threshold accepting: a value
             D* reaches) and 'star-upper' (Thiemard's cover: at most D* + delta); --delta
@@ -228,8 +228,7 @@ fn measure(
     };
     let value = match kind {
         MeasureKind::Star => {
-            let estimate =
-                star::cost::work_estimate(p.len(), p.dims()) / star::STAR_RATE.steps_per_second();
+            let estimate = star::star_cost(p.len(), p.dims()).seconds();
             let limit = format!(" within --max-seconds {}", args.budget.max_seconds);
             with_progress(&name, |progress| {
                 star::star_exact_within(p, budget, progress)

@@ -262,18 +262,19 @@ fn refuses_infeasible_requests() {
         star_2d(p),
         Err(qmckit::Error::TooManyPoints { .. })
     ));
-    // One 2D limit for every exact entry point: the largest N with N^2 <= 3e9
-    // (54772^2 = 2_999_971_984, 54773^2 = 3_000_081_529).
-    let data = vec![0.5; 54_773 * 2];
+    // One 2D limit for every exact entry point: the largest N with (N + 1)^2 cells within
+    // ten seconds at 6.5e8 cells a second on each of two cores, 1.3e10 cells
+    // (114017^2 = 12_999_876_289, 114018^2 = 13_000_104_324).
+    let data = vec![0.5; 114_017 * 2];
     let p = Points::new(&data, 2).unwrap();
     let refused = qmckit::Error::TooManyPoints {
-        requested: 54_773,
-        max: 54_772,
+        requested: 114_017,
+        max: 114_016,
     };
     assert_eq!(star_2d(p), Err(refused));
     assert_eq!(star(p), Err(refused));
     assert_eq!(star_exact(p), Err(refused));
-    assert_eq!(qmckit::analysis::star::STAR_2D_MAX_POINTS, 54_772);
+    assert_eq!(qmckit::analysis::star::STAR_2D_MAX_POINTS, 114_016);
     let data = vec![0.25; 100_000 * 6];
     let mut rng = Rng(5);
     let data: Vec<f64> = data.iter().map(|_| rng.uniform()).collect();
@@ -482,15 +483,19 @@ fn dem_on_nets_matches_brute_force() {
 
 #[test]
 fn dem_refuses_beyond_its_budget() {
-    use qmckit::analysis::star::STAR_RATE;
     use qmckit::analysis::star::dem::{max_points, work_estimate};
-    // The default budget: ten seconds at STAR_RATE, 3e9 steps.
-    let steps = 3e9;
-    assert_eq!(STAR_RATE.steps_per_second() * 10.0, steps);
+    use qmckit::analysis::star::{STAR_RATE, star_cost};
+    use qmckit::work::CORES;
+    // The default budget: ten seconds on two cores, 2e10 nanoseconds of one core (the
+    // units of work_estimate, STAR_RATE 1e9 of them a second).
+    let steps = 2e10;
+    assert_eq!(STAR_RATE.steps_per_second() * CORES * 10.0, steps);
     for d in 3..=8 {
         let max = max_points(d) as usize;
         assert!(work_estimate(max, d) <= steps);
         assert!(work_estimate(max + 1, d) > steps);
+        // The estimate in seconds is the same model.
+        assert!(star_cost(max, d).seconds() <= 10.0 && star_cost(max + 1, d).seconds() > 10.0);
         let data = vec![0.5; (max + 1) * d];
         let err = star_dem(Points::new(&data, d).unwrap()).unwrap_err();
         assert_eq!(
@@ -510,10 +515,12 @@ fn dem_within_a_budget_reports_progress() {
     use qmckit::analysis::star::{STAR_RATE, star_exact_within};
     use qmckit::work::{Budget, no_progress};
     use std::sync::Mutex;
-    // Budgets in steps at STAR_RATE.
-    let within = |steps: f64| Budget::seconds(steps / STAR_RATE.steps_per_second()).unwrap();
+    // Budgets in steps of work_estimate: STAR_RATE on each of two cores.
+    let within = |steps: f64| {
+        Budget::seconds(steps / (STAR_RATE.steps_per_second() * qmckit::work::CORES)).unwrap()
+    };
     // A larger budget admits more points; the refusal names the largest N within it.
-    for (d, steps) in [(3, 1e4), (4, 3e10), (6, 1.8e11)] {
+    for (d, steps) in [(3, 1e5), (4, 2e11), (6, 1.2e12)] {
         let budget = within(steps);
         let max = max_points_within(d, &budget) as usize;
         assert!(work_estimate(max, d) <= steps && work_estimate(max + 1, d) > steps);
@@ -532,14 +539,15 @@ fn dem_within_a_budget_reports_progress() {
             err
         );
     }
-    // 120 3D Sobol' points: more than the budget 1e4 admits (89: 1.25 N^2 <= 1e4); with a budget, the value
-    // is brute force's, and every slab of the first cut is reported once.
+    // 120 3D Sobol' points: more than the budget of 1e5 steps admits (88: 25.3 N^1.85 <=
+    // 1e5); with a budget, the value is brute force's, and every slab of the first cut is
+    // reported once.
     let sobol = qmckit::Sobol::new(3).unwrap();
     let mut u = vec![0u32; 120 * 3];
     qmckit::Sampler::fill(&sobol, 0, &mut u).unwrap();
     let data = Points::from_u32(&u);
     let p = Points::new(&data, 3).unwrap();
-    assert!(star_dem_within(p, &within(1e4), &no_progress).is_err());
+    assert!(star_dem_within(p, &within(1e5), &no_progress).is_err());
     let calls = Mutex::new(Vec::new());
     // Admitted with room to spare: the deadline (1.25 times the budget) must not end a run
     // slowed by a loaded machine; this part checks the value and the progress reports.
@@ -650,19 +658,16 @@ fn two_points_in_huge_dimensions_are_refused_at_once() {
         let data = vec![0.5; 2 * d];
         let p = Points::new(&data, d).unwrap();
         let start = std::time::Instant::now();
-        assert_eq!(
-            star_exact(p),
-            Err(qmckit::Error::TooManyPoints {
-                requested: 2,
-                max: 1
-            })
-        );
-        // Without a budget, the decomposition's dimension limit.
+        // Two points cost little in any dimension (the estimate admits them), but past
+        // the decomposition's dimension limit they are refused, with or without a budget.
+        let refused = qmckit::Error::TooLarge {
+            what: "dimensions for the exact star discrepancy of two or more points",
+            requested: d as u64,
+            max: 255,
+        };
+        assert_eq!(star_exact(p), Err(refused));
         let unlimited = star_exact_within(p, &Budget::UNLIMITED, &no_progress);
-        assert!(
-            matches!(unlimited, Err(qmckit::Error::TooLarge { max: 255, .. })),
-            "{unlimited:?}"
-        );
+        assert_eq!(unlimited, Err(refused));
         assert!(start.elapsed().as_secs_f64() < 1.0);
     }
 }
@@ -691,16 +696,18 @@ fn decomposition_at_its_dimension_limit_runs_on_a_small_stack() {
 fn exact_refusals_report_the_largest_set_within_the_budget() {
     use qmckit::analysis::star::max_points_within;
     use qmckit::work::Budget;
-    // 2D: floor(sqrt(3e8 s)) for s seconds.
-    assert_eq!(max_points_within(2, &Budget::DEFAULT), 54_772);
+    // 2D: floor(sqrt(1.3e9 s)) - 1 for s seconds ((N + 1)^2 cells at 6.5e8 a second on
+    // each of two cores).
+    assert_eq!(max_points_within(2, &Budget::DEFAULT), 114_016);
     assert_eq!(
         max_points_within(2, &Budget::seconds(0.01).unwrap()),
-        1732 // sqrt(3e6) = 1732.05
+        3604 // sqrt(1.3e7) = 3605.55
     );
     assert_eq!(max_points_within(1, &Budget::DEFAULT), u64::MAX);
     assert_eq!(max_points_within(2, &Budget::UNLIMITED), u64::MAX);
-    // d >= 3: 1.25 N^2 <= 3e9 in 3D (N = 48989, as the CLI documents).
-    assert_eq!(max_points_within(3, &Budget::DEFAULT), 48_989);
+    // d >= 3: 25.3 N^1.85 nanoseconds of one core, within 2e10 in 3D (N = 64517, as the
+    // CLI documents).
+    assert_eq!(max_points_within(3, &Budget::DEFAULT), 64_517);
 }
 
 #[test]
@@ -802,7 +809,7 @@ mod deadlines {
 
     #[test]
     fn one_started_budget_bounds_a_chain_of_computations() {
-        // Each exact 2D discrepancy of 3000 points is admitted (0.03 s estimated) under a
+        // Each exact 2D discrepancy of 3000 points is admitted (0.007 s estimated) under a
         // budget of 0.2 s; repeated, the shared deadline (0.25 s) stops the chain.
         let b = Budget::seconds(0.2).unwrap().started();
         let s = Rng(6).set(3000, 2, None);

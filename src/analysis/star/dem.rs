@@ -58,8 +58,8 @@
 //! coordinate's trade of volume against counted points is bounded on its own). Only then
 //! are the knapsacks brought up to date. On 6D Sobol' points (`N` = 450) the second check
 //! leaves 92701 of 77.9 million cells; the knapsacks did 9.5e9 multiply-compares before it,
-//! 2.5e6 with it. The cost left is the walk over the cells, which grows about `sqrt N`
-//! slower than `N^(1 + d/2)` on the sizes measured (see [`work_estimate`]).
+//! 2.5e6 with it. The cost left is the walk over the cells, which grows a little more than
+//! `sqrt N` slower than `N^(1 + d/2)` on the sizes measured (see [`work_estimate`]).
 //!
 //! The per-coordinate tables and the knapsack prefixes are updated incrementally along the
 //! last coordinate, and the sorted lists of a cut are merged from the previous sibling's,
@@ -74,8 +74,10 @@
 //! (1026 s); without the table bounds the time grows like `N^4` (1000 points: 285 s).
 //! Other dimensions: `d = 3`: 40000 in 5.3 s; `d = 4`: 6000
 //! in 10.5 s; `d = 5`: 1300 in 9.0 s; `d = 7`: 260 in 10.9 s; `d = 8`: 150 in 8.5 s;
-//! `d = 10`: 70 in 8.2 s. [`work_estimate`] is fitted to these; [`star_dem_within`] takes
-//! another budget than [`star_dem`]'s ten seconds.
+//! `d = 10`: 70 in 8.2 s. [`work_estimate`] is fitted to the CPU time of one thread
+//! (`examples/time_costs.rs`, 3 to 24 dimensions; the table in `docs/budgets.md`), and the
+//! estimate assumes two cores; [`star_dem_within`] takes another budget than
+//! [`star_dem`]'s ten seconds.
 
 use super::cells::{
     SortedPrefix, closed_slack, convolve_max, convolve_min, merge_sorted, open_slack,
@@ -91,9 +93,9 @@ use std::sync::atomic::{AtomicU64, Ordering};
 
 /// The most dimensions the decomposition runs in for two or more counted points: its walk
 /// nests one level per coordinate and a slab point records its coordinate in a byte, so
-/// both stay bounded. The bound is never reached in practice: two points in 256 dimensions
-/// are estimated at more than `10^36` steps ([`work_estimate`]). A set with at most one
-/// counted point has a closed form (see [`star_dem_within`]) and no dimension limit.
+/// both stay bounded: a set with two or more counted points in more dimensions is
+/// [`Error::TooLarge`]. A set with at most one counted point has a closed form (see
+/// [`star_dem_within`]) and no dimension limit.
 pub const DEM_MAX_DIMS: usize = 255;
 
 /// Exact star discrepancy `D*_N` of `points` (any `d >= 1`) by the Dobkin–Eppstein–Mitchell
@@ -121,7 +123,8 @@ pub fn star_dem(points: Points<'_>) -> Result<f64> {
 }
 
 /// [`star_dem`] within the time budget `budget` ([`work_estimate`] steps at
-/// [`STAR_RATE`](super::STAR_RATE), checked in `O(1)` before anything is allocated) with a progress report:
+/// [`STAR_RATE`](super::STAR_RATE) on two cores, checked in `O(1)` before anything is
+/// allocated) with a progress report:
 /// `progress(done, PROGRESS_STEPS)` is called, from any thread, each time one of the slabs
 /// of the first cut is finished (and once at the end with `done = PROGRESS_STEPS`). A slab
 /// counts as its estimated share of the work (those with more points take longer): `done`

@@ -38,8 +38,8 @@
 //! | function | cost | limit |
 //! |---|---|---|
 //! | [`star_1d`] | `O(N log N)` | none |
-//! | [`star_2d`] | `O(N^2)` time, `O(N)` memory, parallel over columns | `N^2` steps at [`STAR_RATE`] within the budget: `N <= 54_772` in ten seconds |
-//! | [`star_exact`] | `O(N^2)` in 2D; `O(N^(1 + d/2))` for `d >= 3` (Dobkin–Eppstein–Mitchell, [`dem`]), pruned | ≈ `3e9` steps, about ten seconds: `N <= 48989, 5650, 1338, 478` for `d = 3, 4, 5, 6`; [`star_exact_within`] takes a budget |
+//! | [`star_2d`] | `O(N^2)` time, `O(N)` memory, parallel over columns | `(N + 1)^2` cells at [`SWEEP_RATE`] on two cores ([`star_cost`]) within the budget: `N <= 114_016` in ten seconds |
+//! | [`star_exact`] | `O(N^2)` in 2D; `O(N^(1 + d/2))` for `d >= 3` (Dobkin–Eppstein–Mitchell, [`dem`]), pruned: measured about `N^((d + 1)/2 - 0.15)` | [`star_cost`] within ten seconds: `N <= 64517, 6391, 1483, 557` for `d = 3, 4, 5, 6`; [`star_exact_within`] takes a budget |
 //! | [`extreme_2d`] | `O(N^3)` | `N <= 1200`; [`extreme_2d_within`] takes a budget, at [`EXTREME_RATE`] |
 //! | [`star_lower_bound`] | `O(iterations · (N + 32) d)` ([`lower_bound_steps`]) | none; [`star_lower_bound_within`] takes a budget, at [`LOWER_BOUND_RATE`] |
 //! | [`star_upper_bound`] | Thiémard's cover ([`thiemard`]): about `Σ_R (N vol(b_R) + 16)(d + k_R) + 2 d (k_R - 1)` over its regions, parallel | ten seconds at [`THIEMARD_RATE`], estimated first; [`thiemard::bounds_within`] takes a budget |
@@ -57,7 +57,7 @@ mod sweep;
 pub mod thiemard;
 mod thiemard_cost;
 
-pub use cost::{LOWER_BOUND_RATE, STAR_RATE, THIEMARD_RATE};
+pub use cost::{LOWER_BOUND_RATE, SORT_RATE, STAR_RATE, SWEEP_RATE, THIEMARD_RATE, star_cost};
 pub use extreme::{EXTREME_2D_MAX_POINTS, EXTREME_RATE, extreme_2d, extreme_2d_within};
 pub use lower_bound::{lower_bound_steps, star_lower_bound, star_lower_bound_within};
 
@@ -67,17 +67,18 @@ use crate::work::{Budget, Progress, no_progress};
 use crate::{Error, Result};
 
 /// Largest `N` [`star_2d`] (and [`star`], [`star_exact`] in 2D) accepts within
-/// [`Budget::DEFAULT`]: the largest `N` with `N^2` steps at [`STAR_RATE`] within ten
-/// seconds (`N = 2^14` takes about one).
-pub const STAR_2D_MAX_POINTS: u64 = 54_772;
+/// [`Budget::DEFAULT`]: the largest `N` whose `(N + 1)^2` cells at [`SWEEP_RATE`] on
+/// [`CORES`](crate::work::CORES) cores take at most ten seconds ([`star_cost`]).
+pub const STAR_2D_MAX_POINTS: u64 = 114_016;
 
 // The 2D limit is the default budget's: one rule for every exact entry point.
 const _: () = {
-    let steps = STAR_RATE.steps_per_second() * crate::work::DEFAULT_SECONDS;
-    assert!(
-        (STAR_2D_MAX_POINTS * STAR_2D_MAX_POINTS) as f64 <= steps
-            && ((STAR_2D_MAX_POINTS + 1) * (STAR_2D_MAX_POINTS + 1)) as f64 > steps
+    let cells = SWEEP_RATE.steps_per_second() * crate::work::CORES * crate::work::DEFAULT_SECONDS;
+    let (n, next) = (
+        (STAR_2D_MAX_POINTS + 1) as f64,
+        (STAR_2D_MAX_POINTS + 2) as f64,
     );
+    assert!(n * n <= cells && next * next > cells);
 };
 
 /// Star discrepancy of `points`, exact: [`star_1d`] in 1D, [`star_2d`] in 2D,
@@ -139,8 +140,8 @@ pub fn star_1d(points: Points<'_>) -> Result<f64> {
 /// over the ranks of the distinct `y`s holds the points left of `a`, and one pass over it
 /// evaluates `a b - open/N` and `closed/N - a b` at every critical `b`. Cost
 /// `O(N · M)` with `M <= N + 1` distinct `y`s, so `O(N^2)` time and `O(N)` memory; the
-/// columns are split over rayon's threads. Measured: 1.0 s for `N = 2^14` (LP net or
-/// Sobol') on a shared 2-core machine.
+/// columns are split over rayon's threads. Estimated `(N + 1)^2` cells at [`SWEEP_RATE`]
+/// (6.5e8 a second and core) on two cores ([`star_cost`]): 20000 Sobol' points, 0.31 s.
 ///
 /// # Errors
 /// [`Error::Unsupported`] unless `points.dims() == 2`; [`Error::TooManyPoints`] above
@@ -172,15 +173,15 @@ pub fn star_2d(points: Points<'_>) -> Result<f64> {
 ///
 /// The value is `max over the critical grid of max(vol - open/N, closed/N - vol)`, points
 /// with a coordinate equal to 1 never counted (see the module documentation). Measured on
-/// the shared 2-core machine (two threads, load about 1.5, Sobol' points), about ten
-/// seconds: `d = 3`: 40000 points in 5.3 s; `d = 4`: 6000 in 10.5 s; `d = 5`: 1300 in 9.0 s;
-/// `d = 6`: 500 in 8.4 s (details in [`dem`]); enumerating the critical grid takes ten
-/// seconds at about 1900, 365, 140 and 70 points.
+/// one thread (CPU time, Sobol' points; `docs/budgets.md`): `d = 3`: 40000 points in 8.4 s;
+/// `d = 4`: 8000 in 33 s; `d = 5`: 2000 in 45 s; `d = 6`: 600 in 25 s, two threads taking
+/// about half (details in [`dem`]); enumerating the critical grid takes ten seconds at
+/// about 1900, 365, 140 and 70 points.
 /// Beyond that use [`star_lower_bound`] / [`star_upper_bound`].
 ///
 /// # Errors
-/// [`Error::TooManyPoints`] when the estimated time exceeds [`Budget::DEFAULT`] (`N^2`
-/// steps in 2D, [`dem::work_estimate`] for `d >= 3`, at [`STAR_RATE`]); `max` is the largest
+/// [`Error::TooManyPoints`] when the estimated time, [`star_cost`], exceeds
+/// [`Budget::DEFAULT`]; `max` is the largest
 /// `N` within it for this `d` ([`max_points_within`]). [`Error::TooLarge`] for two or more
 /// counted points in more than [`dem::DEM_MAX_DIMS`] dimensions.
 ///
@@ -195,12 +196,12 @@ pub fn star_exact(points: Points<'_>) -> Result<f64> {
     star_exact_within(points, &Budget::DEFAULT, &no_progress)
 }
 
-/// [`star_exact`] within the time budget `budget` (estimated steps at [`STAR_RATE`]: `N^2`
-/// in 2D, [`dem::work_estimate`] for `d >= 3`), with a progress report for `d >= 3` (see
+/// [`star_exact`] within the time budget `budget` (the estimate [`star_cost`]: the 2D
+/// sweep's cells at [`SWEEP_RATE`], [`dem::work_estimate`] for `d >= 3` at [`STAR_RATE`],
+/// both on two cores), with a progress report for `d >= 3` (see
 /// [`dem::star_dem_within`]). The estimate is computed in `O(1)` before anything is
-/// allocated. With a budget of ten minutes `d = 6` takes up to 1542 points; 1000 Sobol'
-/// points took 86 s and 2000 took 17 minutes on two cores (the estimate is conservative for
-/// large sets, see [`dem::work_estimate`]).
+/// allocated. With a budget of ten minutes `d = 6` takes up to 1893 points (estimated 71 s
+/// for 1000 Sobol' points, which took 86 s on two cores at a load of 1.5).
 ///
 /// # Errors
 /// [`Error::TooManyPoints`] when the estimated time exceeds `budget` (`max`: the largest
@@ -227,8 +228,10 @@ pub fn star_exact_within(
     match points.dims() {
         1 => star_1d(points),
         2 => {
-            let nf = n as f64;
-            if nf * nf > budget.steps(STAR_RATE) {
+            if budget
+                .check("the exact star discrepancy", star_cost(n, 2))
+                .is_err()
+            {
                 return Err(Error::TooManyPoints {
                     requested: n as u64,
                     max: max_points_within(2, budget),
@@ -240,34 +243,21 @@ pub fn star_exact_within(
     }
 }
 
-/// The largest `N` whose exact star discrepancy in `d` dimensions is estimated within
-/// `budget`: unlimited (`u64::MAX`) for `d <= 1`, `floor(sqrt(steps))` in 2D (`steps` the
-/// budget's steps at [`STAR_RATE`]), [`dem::max_points_within`] for `d >= 3`. `O(1)` for
-/// `d <= 2`, a binary search of 40 estimates otherwise.
+/// The largest `N` whose exact star discrepancy in `d` dimensions is estimated
+/// ([`star_cost`]) within `budget`: unlimited (`u64::MAX`) for `d <= 1`, the largest `N`
+/// with `(N + 1)^2 <= cells` in 2D (`cells` the budget's cells at [`SWEEP_RATE`] on two
+/// cores), [`dem::max_points_within`] for `d >= 3`. `O(1)` for `d <= 2`, a binary search of
+/// 40 estimates otherwise.
 ///
 /// ```
 /// use qmckit::{work::Budget, analysis::star::max_points_within};
-/// assert_eq!(max_points_within(2, &Budget::DEFAULT), 54_772);
-/// assert_eq!(max_points_within(6, &Budget::DEFAULT), 478);
+/// assert_eq!(max_points_within(2, &Budget::DEFAULT), 114_016);
+/// assert_eq!(max_points_within(6, &Budget::DEFAULT), 557);
 /// ```
 pub fn max_points_within(d: usize, budget: &Budget) -> u64 {
     match d {
         0 | 1 => u64::MAX,
-        2 => {
-            let steps = budget.steps(STAR_RATE);
-            if steps >= (u64::MAX as f64) * (u64::MAX as f64) {
-                return u64::MAX;
-            }
-            let mut r = steps.sqrt().floor() as u64;
-            // Correct the rounding of the square root.
-            while r > 0 && (r as f64) * (r as f64) > steps {
-                r -= 1;
-            }
-            while ((r + 1) as f64) * ((r + 1) as f64) <= steps {
-                r += 1;
-            }
-            r
-        }
+        2 => cost::max_points_2d(budget),
         _ => dem::max_points_within(d, budget),
     }
 }
