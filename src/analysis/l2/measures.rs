@@ -166,7 +166,8 @@ pub(super) fn l2_star_direct_with(p: Points<'_>, build: Build, t: &mut Ticker<'_
 /// from the point count where it measured faster than the pair sum (4096 points for
 /// `d = 3`, 24576 for `d = 4`, 196608 for `d = 5`, never from `d = 6` on). Above
 /// [`TREE_MAX_D`](super::TREE_MAX_D) dimensions, where the recursion would only be deeper
-/// and slower, this function returns [`l2_star_direct`]'s pair sum instead.
+/// and slower, this function returns [`l2_star_direct`]'s pair sum instead. Estimated by
+/// [`cost::tree_rows`](super::cost::tree_rows) at [`TREE_RATE`](super::cost::TREE_RATE).
 /// All sums are compensated and every term is non-negative, so the value agrees with
 /// [`l2_star_direct`] up to the rounding of the products (about 1e-14 relative for
 /// random sets of up to `2^16` points).
