@@ -44,13 +44,18 @@
 //! ([`crate::digital::DigitalNetB`]) from its exact coordinates.
 
 mod block;
+mod cost;
 mod count;
 
 pub use block::t_value_block;
+pub use cost::{
+    COUNT_RATE, OTHER_BASE_FACTOR, UNBALANCED_SHARE, count_steps, failures_cost, level_steps,
+    t_value_cost,
+};
 pub use count::{
-    COUNT_RATE, IntervalFailure, count_steps, elementary_interval_failures,
-    elementary_interval_failures_u32, elementary_interval_failures_u32_within, t_value_points,
-    t_value_points_within, t_value_u32, t_value_u32_within,
+    IntervalFailure, elementary_interval_failures, elementary_interval_failures_u32,
+    elementary_interval_failures_u32_within, t_value_points, t_value_points_within, t_value_u32,
+    t_value_u32_expecting, t_value_u32_within,
 };
 
 #[cfg(test)]
