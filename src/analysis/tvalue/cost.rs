@@ -15,6 +15,16 @@ pub const COUNT_RATE: Rate = Rate::per_second(1.2e9);
 /// `b^(m - d)` instead of a shift), in the units of [`level_steps`].
 pub const OTHER_BASE_FACTOR: f64 = 4.0;
 
+/// The size of the cell counts (4 bytes a cell, one array per thread) from which a point's
+/// increment misses the level-2 cache: 2 MiB, the cache of a core of the calibration
+/// machine (`b^rho >= 2^19` cells in base 2).
+pub const COUNTS_CACHE_BYTES: f64 = 2.0 * 1024.0 * 1024.0;
+
+/// The extra steps of a point's increment into counts past [`COUNTS_CACHE_BYTES`]: 7
+/// (measured 4 to 6 ns, 2^21 points in 2D at `rho` = 19, 20 and 21; below 2 MiB of counts
+/// the levels run at the model's speed).
+pub const INCREMENT_MISS: f64 = 7.0;
+
 /// The share of an unbalanced level's work the search does before it stops (each task stops
 /// at its first unbalanced shape): 0.15. Measured 0 to 0.25 (Owen-scrambled Sobol' points:
 /// 3D, `2^16` points, t = 1: about 0; 4D, `2^16`, t = 3: 0.25; 6D, `2^12`, t = 5: 0.10);
@@ -28,13 +38,20 @@ fn shapes(s: usize, rho: u32) -> f64 {
 }
 
 /// The steps of counting `n` points of `s` coordinates in base `base` into the cells of
-/// every shape of size `rho`: `C(rho + s - 1, s - 1) (n (s + 1) f + 2 b^rho)`, one pass over
-/// the `n s` digits per shape (and an increment per point), then the `b^rho` cells cleared
-/// and compared, `f = 1` in base 2 and [`OTHER_BASE_FACTOR`] otherwise. `O(s)`.
+/// every shape of size `rho`: `C(rho + s - 1, s - 1) (n ((s + 1) f + c) + 2 b^rho)`, one
+/// pass over the `n s` digits per shape (and an increment per point), then the `b^rho`
+/// cells cleared and compared; `f = 1` in base 2 and [`OTHER_BASE_FACTOR`] otherwise,
+/// `c` = [`INCREMENT_MISS`] when the `4 b^rho` bytes of counts reach
+/// [`COUNTS_CACHE_BYTES`], else 0. `O(s)`.
 pub fn level_steps(n: u64, s: usize, rho: u32, base: u32) -> f64 {
     let f = if base == 2 { 1.0 } else { OTHER_BASE_FACTOR };
     let cells = f64::from(base.max(2)).powi(rho.min(1024) as i32);
-    shapes(s, rho) * (n as f64 * (s as f64 + 1.0) * f + 2.0 * cells)
+    let miss = if 4.0 * cells >= COUNTS_CACHE_BYTES {
+        INCREMENT_MISS
+    } else {
+        0.0
+    };
+    shapes(s, rho) * (n as f64 * ((s as f64 + 1.0) * f + miss) + 2.0 * cells)
 }
 
 /// The levels `(rho, balanced)` the binary search of the counting t-value visits for `b^m`
@@ -150,17 +167,31 @@ mod tests {
         // One level: C(rho + s - 1, s - 1) shapes of n (s + 1) steps and 2 b^rho cells.
         assert_eq!(level_steps(1 << 10, 3, 4, 2), 15.0 * (4096.0 + 32.0));
         assert_eq!(level_steps(125, 2, 3, 5), 4.0 * (125.0 * 3.0 * 4.0 + 250.0));
+        // Past 2 MiB of counts (2^19 cells) each point's increment misses the cache.
+        let n = 1u64 << 21;
+        assert_eq!(
+            level_steps(n, 2, 18, 2),
+            19.0 * (n as f64 * 3.0 + 2.0 * 262144.0)
+        );
+        assert_eq!(
+            level_steps(n, 2, 19, 2),
+            20.0 * (n as f64 * (3.0 + INCREMENT_MISS) + 2.0 * 524288.0)
+        );
     }
 
     /// The model against the least CPU time of one thread (`examples/time_costs.rs`, on the
-    /// first `2^m` Owen-scrambled Sobol' points): every shape of one level, and whole
-    /// searches of sets with t = 0, 1, 3 and 5. Within 0.6 to 1.6 of the measured time.
+    /// first `2^m` Owen-scrambled Sobol' points): every shape of one level (counts in and
+    /// past the cache), and whole searches of sets with t = 0, 1, 3 and 5. Within 0.6 to
+    /// 1.6 of the measured time.
     #[test]
     fn the_model_follows_the_measured_times() {
         let per_core = |steps: f64| steps / COUNT_RATE.steps_per_second();
         // (s, m, rho, seconds): one level.
         for (s, m, rho, seconds) in [
             (2usize, 16u32, 12u32, 0.0020),
+            (2, 21, 18, 0.1220),
+            (2, 21, 20, 0.4120),
+            (4, 20, 16, 3.2999),
             (4, 16, 8, 0.0462),
             (4, 16, 12, 0.1293),
             (4, 16, 13, 0.1507),

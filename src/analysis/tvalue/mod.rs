@@ -49,8 +49,8 @@ mod count;
 
 pub use block::t_value_block;
 pub use cost::{
-    COUNT_RATE, OTHER_BASE_FACTOR, UNBALANCED_SHARE, count_steps, failures_cost, level_steps,
-    t_value_cost,
+    COUNT_RATE, COUNTS_CACHE_BYTES, INCREMENT_MISS, OTHER_BASE_FACTOR, UNBALANCED_SHARE,
+    count_steps, failures_cost, level_steps, t_value_cost,
 };
 pub use count::{
     IntervalFailure, elementary_interval_failures, elementary_interval_failures_u32,
