@@ -142,7 +142,7 @@ impl Ctx {
         if self.quick { quick } else { full }
     }
 
-    /// The exact star discrepancy of 2D points, refused past the budget (`N^2` steps).
+    /// The exact star discrepancy of 2D points, refused past the budget (`star_cost`).
     pub fn star(&self, p: &[[f64; 2]]) -> Result<f64, Failure> {
         let data = flat(p);
         let points = qmckit::analysis::Points::new(&data, 2)?;
