@@ -23,9 +23,9 @@ use qmckit::analysis::Points;
 use qmckit::analysis::l2::L2Metric;
 use qmckit::analysis::star;
 use qmckit::analysis::tvalue::{
-    elementary_interval_failures_u32_within, failures_cost, t_value_cost, t_value_u32_within,
+    elementary_interval_failures_u32, failures_cost, t_value_cost, t_value_u32,
 };
-use qmckit::work::{Budget, CORES, no_progress};
+use qmckit::work::{Budget, CORES};
 use qmckit::{OwenSobol, Sampler, Sobol};
 use std::time::Instant;
 
@@ -93,7 +93,7 @@ fn main() -> Result<(), Error> {
                 let p = Points::new(&data, d)?;
                 let cpu = pool.install(|| {
                     least_cpu(reps, || {
-                        let _ = star::star_exact_within(p, &Budget::UNLIMITED, &no_progress);
+                        let _ = star::star_exact(p, &Budget::UNLIMITED);
                     })
                 });
                 row("star", d, n, cpu, star::star_cost(n, d).seconds() * CORES);
@@ -146,8 +146,7 @@ fn main() -> Result<(), Error> {
                     let mut t = 0;
                     let cpu = pool.install(|| {
                         least_cpu(reps, || {
-                            t = t_value_u32_within(pts, d, m, &Budget::UNLIMITED)
-                                .unwrap_or(u32::MAX);
+                            t = t_value_u32(pts, d, m, &Budget::UNLIMITED).unwrap_or(u32::MAX);
                         })
                     });
                     row(&format!("tvalue-{kind}-t{t}"), d, n, cpu, estimate);
@@ -168,7 +167,7 @@ fn main() -> Result<(), Error> {
                 let mut found = 0;
                 let cpu = pool.install(|| {
                     least_cpu(reps, || {
-                        found = elementary_interval_failures_u32_within(
+                        found = elementary_interval_failures_u32(
                             &owen,
                             d,
                             m,

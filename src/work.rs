@@ -202,6 +202,93 @@ impl Default for Budget {
     }
 }
 
+/// The one limits argument of a budgeted computation: its [`Budget`] and a [`Progress`]
+/// callback (none by default).
+///
+/// Every budgeted analysis entry point takes `limits: impl Into<Limits<'a>>`, so a caller
+/// passes a budget as it is, `&Budget::DEFAULT` or `&budget`, and adds a progress report
+/// with [`Limits::with_progress`]:
+///
+/// ```
+/// use qmckit::work::{Budget, Limits};
+/// let budget = Budget::seconds(2.0)?;
+/// let plain: Limits = (&budget).into();
+/// assert_eq!(plain.budget(), &budget);
+/// let report = |done: usize, total: usize| assert!(done <= total);
+/// let with = Limits::new(budget).with_progress(&report);
+/// (with.progress())(1, 2);
+/// assert_eq!(Limits::DEFAULT.budget(), &Budget::DEFAULT);
+/// # Ok::<(), qmckit::Error>(())
+/// ```
+#[derive(Clone, Copy)]
+pub struct Limits<'a> {
+    budget: Budget,
+    progress: Progress<'a>,
+}
+
+impl Limits<'static> {
+    /// [`Budget::DEFAULT`] without progress reports.
+    pub const DEFAULT: Limits<'static> = Limits::new(Budget::DEFAULT);
+
+    /// [`Budget::UNLIMITED`] without progress reports.
+    pub const UNLIMITED: Limits<'static> = Limits::new(Budget::UNLIMITED);
+
+    /// `budget` without progress reports.
+    pub const fn new(budget: Budget) -> Limits<'static> {
+        Limits {
+            budget,
+            progress: &no_progress,
+        }
+    }
+}
+
+impl<'a> Limits<'a> {
+    /// These limits, reporting progress to `progress`.
+    #[must_use]
+    pub fn with_progress<'b>(self, progress: Progress<'b>) -> Limits<'b> {
+        Limits {
+            budget: self.budget,
+            progress,
+        }
+    }
+
+    /// The budget.
+    pub fn budget(&self) -> &Budget {
+        &self.budget
+    }
+
+    /// The progress callback ([`no_progress`] unless one was given).
+    pub fn progress(&self) -> Progress<'a> {
+        self.progress
+    }
+}
+
+impl Default for Limits<'static> {
+    fn default() -> Self {
+        Limits::DEFAULT
+    }
+}
+
+impl From<Budget> for Limits<'static> {
+    fn from(budget: Budget) -> Self {
+        Limits::new(budget)
+    }
+}
+
+impl From<&Budget> for Limits<'static> {
+    fn from(budget: &Budget) -> Self {
+        Limits::new(*budget)
+    }
+}
+
+impl core::fmt::Debug for Limits<'_> {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("Limits")
+            .field("budget", &self.budget)
+            .finish_non_exhaustive()
+    }
+}
+
 /// `seconds` in whole milliseconds, saturated (NaN counts as too long).
 fn millis(seconds: f64) -> u64 {
     let ms = seconds * 1000.0;

@@ -8,7 +8,7 @@ use qmckit::analysis::l2::L2Metric;
 use qmckit::analysis::pointfile::PointSet;
 use qmckit::analysis::star;
 use qmckit::analysis::star::thiemard;
-use qmckit::work::Budget;
+use qmckit::work::{Budget, Limits};
 
 use super::Failure;
 use super::budget::{BudgetArgs, over_budget};
@@ -232,7 +232,7 @@ fn measure(
             let estimate = star::star_cost(p.len(), p.dims()).seconds();
             let limit = format!(" within --max-seconds {}", args.budget.max_seconds);
             with_progress(&name, |progress| {
-                star::star_exact_within(p, budget, progress)
+                star::star_exact(p, Limits::new(*budget).with_progress(progress))
             })
             .map_err(|e| match e {
                 qmckit::Error::TooManyPoints { .. } => format!(
@@ -243,15 +243,16 @@ fn measure(
             })
         }
         MeasureKind::StarBounds => {
-            let b = with_spinner(&name, || thiemard::bounds_within(p, args.delta, budget))
-                .map_err(|e| match e {
+            let b = with_spinner(&name, || thiemard::bounds(p, args.delta, budget)).map_err(
+                |e| match e {
                     qmckit::Error::TooManyPoints { max: 0, .. } => format!(
                         "star-bounds: Thiemard's cover at --delta {} takes longer than \
                          --max-seconds {} for {} dimensions; take a larger delta",
                         args.delta, args.budget.max_seconds, set.dims
                     ),
                     e => refusal(e, "star-bounds", set, ""),
-                })?;
+                },
+            )?;
             let ta = with_spinner(&name, || {
                 star::star_lower_bound_within(p, 0, lower_bound_iterations(p), budget)
             })

@@ -6,12 +6,12 @@ use std::io::Write;
 
 use clap::Args;
 use qmckit::analysis::tvalue::{
-    IntervalFailure, elementary_interval_failures_u32_within, failures_cost, t_value_cost,
+    IntervalFailure, elementary_interval_failures_u32, failures_cost, t_value_cost,
     t_value_u32_expecting,
 };
 use qmckit::digital::DigitalNet2;
-use qmckit::digital::rank::t_value_within;
-use qmckit::work::{Budget, Cost, no_progress};
+use qmckit::digital::rank::t_value;
+use qmckit::work::{Budget, Cost, Limits};
 
 use super::Failure;
 use super::budget::BudgetArgs;
@@ -253,7 +253,7 @@ fn expected_t(net: Option<&DigitalNet2>, scramble: ScrambleName) -> Option<u32> 
         return Some(net.m().saturating_sub(1));
     }
     let quick = Budget::seconds(PREDICT_SECONDS).ok()?;
-    t_value_within(net, &quick, &no_progress).ok()
+    t_value(net, &quick).ok()
 }
 
 /// Runs `qmckit tvalue`.
@@ -332,7 +332,7 @@ pub fn run(args: &TvalueArgs) -> Result<(), Failure> {
             .as_ref()
             .ok_or_else(|| Failure::usage("unreachable: no generator matrices"))?;
         let t = with_progress("t-value (rank test)", |progress| {
-            t_value_within(net, &budget, progress)
+            t_value(net, Limits::new(budget).with_progress(progress))
         })?;
         (t, None)
     };
@@ -351,7 +351,7 @@ pub fn run(args: &TvalueArgs) -> Result<(), Failure> {
             },
         };
         let failures: Vec<IntervalFailure> = with_spinner("elementary intervals", || {
-            elementary_interval_failures_u32_within(&samples, d, m, t - 1, EXPLAIN_LIMIT, &budget)
+            elementary_interval_failures_u32(&samples, d, m, t - 1, EXPLAIN_LIMIT, &budget)
         })?;
         for f in failures {
             writeln!(out, "fail {f}")?;
@@ -413,7 +413,7 @@ fn run_file(args: &TvalueArgs, file: &str, budget: &Budget) -> Result<(), Failur
     }
     let d = points.dims();
     let t = with_spinner("t-value (counting)", || {
-        qmckit::analysis::tvalue::t_value_points_within(points, base, m, budget)
+        qmckit::analysis::tvalue::t_value_points(points, base, m, budget)
     })?;
     let mut out = std::io::stdout().lock();
     writeln!(

@@ -8,6 +8,7 @@ use qmckit::analysis::star::dem::star_dem;
 use qmckit::analysis::star::{
     extreme_2d, star, star_1d, star_2d, star_exact, star_lower_bound, star_upper_bound,
 };
+use qmckit::work::{Budget, Limits};
 use qmckit::{Hammersley, Independent, Jitter, LarcherPillichshammer, Sampler, Sobol, Stratified};
 
 use crate::common;
@@ -114,7 +115,7 @@ fn larcher_pillichshammer_exact_dyadic() {
         let p = Points::new(&data, 2).unwrap();
         assert_eq!(star_2d(p).unwrap(), want, "m = {m}");
         assert_eq!(star(p).unwrap(), want, "m = {m}");
-        assert_eq!(star_exact(p).unwrap(), want, "m = {m}");
+        assert_eq!(star_exact(p, &Budget::DEFAULT).unwrap(), want, "m = {m}");
     }
 }
 
@@ -150,7 +151,7 @@ fn one_dimension_closed_form_matches_brute_force() {
         let (got, want) = (star_1d(p).unwrap(), brute_star(&data, 1));
         assert!((got - want).abs() < 1e-14, "{data:?}: {got} vs {want}");
         assert_eq!(star(p).unwrap(), got);
-        assert_eq!(star_exact(p).unwrap(), got);
+        assert_eq!(star_exact(p, &Budget::DEFAULT).unwrap(), got);
     }
     // Hand-derived: the centered grid has the minimum 1/(2N); all points at 0 have D* = 1
     // (the closed [0, 0] holds them all), all at 1 have D* = 1 (no box holds them).
@@ -174,7 +175,7 @@ fn two_dimensions_match_brute_force_with_ties_and_boundaries() {
         let p = Points::new(&data, 2).unwrap();
         let (got, want) = (star_2d(p).unwrap(), brute_star(&data, 2));
         assert!((got - want).abs() < 1e-14, "{data:?}: {got} vs {want}");
-        let exact = star_exact(p).unwrap();
+        let exact = star_exact(p, &Budget::DEFAULT).unwrap();
         assert!((exact - want).abs() < 1e-14, "{data:?}: {exact} vs {want}");
     }
 }
@@ -187,7 +188,7 @@ fn points_on_the_upper_boundary_are_never_counted() {
     let data = [1.0, 0.0, 1.0, 0.0, 0.0, 0.0];
     let p = Points::new(&data, 2).unwrap();
     assert!((star_2d(p).unwrap() - 2.0 / 3.0).abs() < 1e-15);
-    assert!((star_exact(p).unwrap() - 2.0 / 3.0).abs() < 1e-15);
+    assert!((star_exact(p, &Budget::DEFAULT).unwrap() - 2.0 / 3.0).abs() < 1e-15);
     // One point at the origin: the closed [0, 0]^2 holds it, 1 - 0; D* = 1.
     assert_eq!(star_2d(Points::new(&[0.0, 0.0], 2).unwrap()).unwrap(), 1.0);
 }
@@ -205,7 +206,10 @@ fn higher_dimensions_match_brute_force() {
             };
             let data = rng.set(n, d, q);
             let p = Points::new(&data, d).unwrap();
-            let (got, want) = (star_exact(p).unwrap(), brute_star(&data, d));
+            let (got, want) = (
+                star_exact(p, &Budget::DEFAULT).unwrap(),
+                brute_star(&data, d),
+            );
             assert!(
                 (got - want).abs() < 1e-14,
                 "d = {d}, {data:?}: {got} vs {want}"
@@ -221,7 +225,10 @@ fn star_exact_agrees_with_star_2d_on_larger_sets() {
     for n in [50, 200, 500] {
         let data = rng.set(n, 2, None);
         let p = Points::new(&data, 2).unwrap();
-        assert_eq!(star_exact(p).unwrap(), star_2d(p).unwrap());
+        assert_eq!(
+            star_exact(p, &Budget::DEFAULT).unwrap(),
+            star_2d(p).unwrap()
+        );
     }
     // A 3D set whose last coordinate is 0 for every point: boxes with y_3 = 1 are the 2D
     // boxes (D*_2 of the first two coordinates), and the closed boxes with y_3 = 0 have
@@ -230,7 +237,7 @@ fn star_exact_agrees_with_star_2d_on_larger_sets() {
     let data3: Vec<f64> = data2.chunks(2).flat_map(|p| [p[0], p[1], 0.0]).collect();
     let d2 = star_2d(Points::new(&data2, 2).unwrap()).unwrap();
     let inside = data2.chunks(2).filter(|p| p[0] < 1.0 && p[1] < 1.0).count() as f64 / 300.0;
-    let d3 = star_exact(Points::new(&data3, 3).unwrap()).unwrap();
+    let d3 = star_exact(Points::new(&data3, 3).unwrap(), &Budget::DEFAULT).unwrap();
     assert_eq!(d3, d2.max(inside));
 }
 
@@ -273,13 +280,13 @@ fn refuses_infeasible_requests() {
     };
     assert_eq!(star_2d(p), Err(refused));
     assert_eq!(star(p), Err(refused));
-    assert_eq!(star_exact(p), Err(refused));
+    assert_eq!(star_exact(p, &Budget::DEFAULT), Err(refused));
     assert_eq!(qmckit::analysis::star::STAR_2D_MAX_POINTS, 114_016);
     let data = vec![0.25; 100_000 * 6];
     let mut rng = Rng(5);
     let data: Vec<f64> = data.iter().map(|_| rng.uniform()).collect();
     let p = Points::new(&data, 6).unwrap();
-    assert!(star_exact(p).is_err());
+    assert!(star_exact(p, &Budget::DEFAULT).is_err());
     assert!(star_1d(p).is_err());
     assert!(star_2d(p).is_err());
 }
@@ -364,7 +371,7 @@ fn dem_matches_brute_force() {
             };
             let data = rng.set(n, d, q);
             let p = Points::new(&data, d).unwrap();
-            let (got, want) = (star_dem(p).unwrap(), brute_star(&data, d));
+            let (got, want) = (star_dem(p, &Budget::DEFAULT).unwrap(), brute_star(&data, d));
             assert!(
                 (got - want).abs() < 1e-14,
                 "d = {d}, {data:?}: {got} vs {want}"
@@ -390,12 +397,12 @@ fn dem_matches_brute_force_on_large_coarse_sets() {
         for _ in 0..2 {
             let data = rng.set(n, d, Some(q));
             let p = Points::new(&data, d).unwrap();
-            let (got, want) = (star_dem(p).unwrap(), brute_star(&data, d));
+            let (got, want) = (star_dem(p, &Budget::DEFAULT).unwrap(), brute_star(&data, d));
             assert!(
                 (got - want).abs() < 1e-14,
                 "d = {d}, q = {q}: {got} vs {want}"
             );
-            assert_eq!(star_exact(p).unwrap(), got);
+            assert_eq!(star_exact(p, &Budget::DEFAULT).unwrap(), got);
         }
     }
 }
@@ -417,12 +424,12 @@ fn dem_one_point_by_hand() {
                 let prod: f64 = x.iter().product();
                 (1.0 - prod).max(x.iter().copied().fold(0.0, f64::max))
             };
-            let got = star_dem(Points::new(&x, d).unwrap()).unwrap();
+            let got = star_dem(Points::new(&x, d).unwrap(), &Budget::DEFAULT).unwrap();
             assert_eq!(got, want, "{x:?}");
         }
     }
     assert_eq!(
-        star_exact(Points::new(&[0.5; 3], 3).unwrap()).unwrap(),
+        star_exact(Points::new(&[0.5; 3], 3).unwrap(), &Budget::DEFAULT).unwrap(),
         0.875
     );
 }
@@ -451,7 +458,7 @@ fn dem_padded_with_zero_coordinates_reduces_to_2d() {
                     .chain(std::iter::repeat_n(0.0, d - 2))
             })
             .collect();
-        let got = star_dem(Points::new(&padded, d).unwrap()).unwrap();
+        let got = star_dem(Points::new(&padded, d).unwrap(), &Budget::DEFAULT).unwrap();
         assert_eq!(got, d2.max(inside / n as f64), "d = {d}");
     }
 }
@@ -465,7 +472,7 @@ fn dem_on_nets_matches_brute_force() {
         let hammersley = sampler_points(&Hammersley::with_m(m, d).unwrap(), 1 << m);
         for data in [sobol, hammersley] {
             let p = Points::new(&data, d).unwrap();
-            let (got, want) = (star_dem(p).unwrap(), brute_star(&data, d));
+            let (got, want) = (star_dem(p, &Budget::DEFAULT).unwrap(), brute_star(&data, d));
             assert!(
                 (got - want).abs() < 1e-14,
                 "d = {d}, m = {m}: {got} vs {want}"
@@ -478,7 +485,10 @@ fn dem_on_nets_matches_brute_force() {
     // the origin have some side 0: 1/2 - 0.
     let s = sampler_points(&Sobol::new(3).unwrap(), 2);
     assert_eq!(s, [0.0, 0.0, 0.0, 0.5, 0.5, 0.5]);
-    assert_eq!(star_dem(Points::new(&s, 3).unwrap()).unwrap(), 0.875);
+    assert_eq!(
+        star_dem(Points::new(&s, 3).unwrap(), &Budget::DEFAULT).unwrap(),
+        0.875
+    );
 }
 
 #[test]
@@ -497,7 +507,7 @@ fn dem_refuses_beyond_its_budget() {
         // The estimate in seconds is the same model.
         assert!(star_cost(max, d).seconds() <= 10.0 && star_cost(max + 1, d).seconds() > 10.0);
         let data = vec![0.5; (max + 1) * d];
-        let err = star_dem(Points::new(&data, d).unwrap()).unwrap_err();
+        let err = star_dem(Points::new(&data, d).unwrap(), &Budget::DEFAULT).unwrap_err();
         assert_eq!(
             err,
             qmckit::Error::TooManyPoints {
@@ -505,15 +515,18 @@ fn dem_refuses_beyond_its_budget() {
                 max: max as u64
             }
         );
-        assert_eq!(star_exact(Points::new(&data, d).unwrap()).unwrap_err(), err);
+        assert_eq!(
+            star_exact(Points::new(&data, d).unwrap(), &Budget::DEFAULT).unwrap_err(),
+            err
+        );
     }
 }
 
 #[test]
 fn dem_within_a_budget_reports_progress() {
-    use qmckit::analysis::star::dem::{max_points_within, star_dem_within, work_estimate};
-    use qmckit::analysis::star::{STAR_RATE, star_exact_within};
-    use qmckit::work::{Budget, no_progress};
+    use qmckit::analysis::star::dem::{max_points_within, star_dem, work_estimate};
+    use qmckit::analysis::star::{STAR_RATE, star_exact};
+    use qmckit::work::Budget;
     use std::sync::Mutex;
     // Budgets in steps of work_estimate: STAR_RATE on each of two cores.
     let within = |steps: f64| {
@@ -526,7 +539,7 @@ fn dem_within_a_budget_reports_progress() {
         assert!(work_estimate(max, d) <= steps && work_estimate(max + 1, d) > steps);
         let data = vec![0.25; (max + 1) * d];
         let p = Points::new(&data, d).unwrap();
-        let err = star_dem_within(p, &budget, &no_progress).unwrap_err();
+        let err = star_dem(p, &budget).unwrap_err();
         assert_eq!(
             err,
             qmckit::Error::TooManyPoints {
@@ -534,10 +547,7 @@ fn dem_within_a_budget_reports_progress() {
                 max: max as u64
             }
         );
-        assert_eq!(
-            star_exact_within(p, &budget, &no_progress).unwrap_err(),
-            err
-        );
+        assert_eq!(star_exact(p, &budget).unwrap_err(), err);
     }
     // 120 3D Sobol' points: more than the budget of 1e5 steps admits (88: 25.3 N^1.85 <=
     // 1e5); with a budget, the value is brute force's, and every slab of the first cut is
@@ -547,13 +557,15 @@ fn dem_within_a_budget_reports_progress() {
     qmckit::Sampler::fill(&sobol, 0, &mut u).unwrap();
     let data = Points::from_u32(&u);
     let p = Points::new(&data, 3).unwrap();
-    assert!(star_dem_within(p, &within(1e5), &no_progress).is_err());
+    assert!(star_dem(p, &within(1e5)).is_err());
     let calls = Mutex::new(Vec::new());
     // Admitted with room to spare: the deadline (1.25 times the budget) must not end a run
     // slowed by a loaded machine; this part checks the value and the progress reports.
-    let got = star_dem_within(p, &Budget::seconds(60.0).unwrap(), &|done, total| {
-        calls.lock().unwrap().push((done, total))
-    })
+    let got = star_dem(
+        p,
+        Limits::new(Budget::seconds(60.0).unwrap())
+            .with_progress(&|done, total| calls.lock().unwrap().push((done, total))),
+    )
     .unwrap();
     let want = brute_star(&data, 3);
     assert!((got - want).abs() < 1e-14, "{got} vs {want}");
@@ -585,8 +597,8 @@ fn on_small_stack<T: Send + 'static>(f: impl FnOnce() -> T + Send + 'static) -> 
 #[test]
 fn star_of_one_point_in_huge_dimensions_needs_no_deep_stack() {
     use qmckit::analysis::star::dem::DEM_MAX_DIMS;
-    use qmckit::analysis::star::star_exact_within;
-    use qmckit::work::{Budget, no_progress};
+    use qmckit::analysis::star::star_exact;
+    use qmckit::work::Budget;
     for d in [DEM_MAX_DIMS + 1, 10_000, 21_201] {
         let got = on_small_stack(move || {
             // Three points, two with a coordinate 1 (never counted); the third is 1/2 in
@@ -599,9 +611,9 @@ fn star_of_one_point_in_huge_dimensions_needs_no_deep_stack() {
             data[3 * d - 1] = 1.0;
             // (The default budget counts all three points: 0.005 * 3^((d + 3) / 2) steps.)
             let p = Points::new(&data, d).unwrap();
-            let three = star_exact_within(p, &Budget::UNLIMITED, &no_progress).unwrap();
+            let three = star_exact(p, &Budget::UNLIMITED).unwrap();
             // The counted point alone: 1 - 0.8 / 2^(d - 1), i.e. 1 in f64.
-            let one = star_exact(Points::new(&data[..d], d).unwrap()).unwrap();
+            let one = star_exact(Points::new(&data[..d], d).unwrap(), &Budget::DEFAULT).unwrap();
             (three, one)
         });
         assert!((got.0 - 0.8).abs() < 1e-15, "d = {d}: {got:?}");
@@ -613,7 +625,7 @@ fn star_of_one_point_in_huge_dimensions_needs_no_deep_stack() {
                 data[i * d + i] = 1.0;
             }
             let p = Points::new(&data, d).unwrap();
-            star_exact_within(p, &Budget::UNLIMITED, &no_progress).unwrap()
+            star_exact(p, &Budget::UNLIMITED).unwrap()
         });
         assert_eq!(none, 1.0);
     }
@@ -629,8 +641,8 @@ fn single_point_closed_form_agrees_with_the_decomposition() {
         let vol: f64 = x.iter().product();
         (n - 1.0).max(n * largest).max(1.0 - n * vol) / n
     };
-    use qmckit::analysis::star::star_exact_within;
-    use qmckit::work::{Budget, no_progress};
+    use qmckit::analysis::star::star_exact;
+    use qmckit::work::Budget;
     let mut rng = Rng(17);
     for d in [3usize, 7, 40, 200, 255, 256, 600] {
         for extra in 0..3 {
@@ -643,7 +655,7 @@ fn single_point_closed_form_agrees_with_the_decomposition() {
                 data.extend((0..d).map(|k| if k == 1 { 1.0 } else { 0.1 }));
             }
             let p = Points::new(&data, d).unwrap();
-            let got = star_exact_within(p, &Budget::UNLIMITED, &no_progress).unwrap();
+            let got = star_exact(p, &Budget::UNLIMITED).unwrap();
             let want = formula(&x, (1 + extra) as f64);
             assert!((got - want).abs() < 1e-14, "d = {d}: {got} vs {want}");
         }
@@ -652,8 +664,8 @@ fn single_point_closed_form_agrees_with_the_decomposition() {
 
 #[test]
 fn two_points_in_huge_dimensions_are_refused_at_once() {
-    use qmckit::analysis::star::star_exact_within;
-    use qmckit::work::{Budget, no_progress};
+    use qmckit::analysis::star::star_exact;
+    use qmckit::work::Budget;
     for d in [1000usize, 10_000, 21_201] {
         let data = vec![0.5; 2 * d];
         let p = Points::new(&data, d).unwrap();
@@ -665,8 +677,8 @@ fn two_points_in_huge_dimensions_are_refused_at_once() {
             requested: d as u64,
             max: 255,
         };
-        assert_eq!(star_exact(p), Err(refused));
-        let unlimited = star_exact_within(p, &Budget::UNLIMITED, &no_progress);
+        assert_eq!(star_exact(p, &Budget::DEFAULT), Err(refused));
+        let unlimited = star_exact(p, &Budget::UNLIMITED);
         assert_eq!(unlimited, Err(refused));
         assert!(start.elapsed().as_secs_f64() < 1.0);
     }
@@ -674,20 +686,15 @@ fn two_points_in_huge_dimensions_are_refused_at_once() {
 
 #[test]
 fn decomposition_at_its_dimension_limit_runs_on_a_small_stack() {
-    use qmckit::analysis::star::dem::{DEM_MAX_DIMS, star_dem_within};
-    use qmckit::work::{Budget, no_progress};
+    use qmckit::analysis::star::dem::{DEM_MAX_DIMS, star_dem};
+    use qmckit::work::Budget;
     let got = on_small_stack(|| {
         // Two points: the origin and (1/2, .., 1/2). The closed box [0, 1/2]^d holds both
         // (1 - 2^-d); a box holding only the origin has some side at most 1/2.
         let d = DEM_MAX_DIMS;
         let mut data = vec![0.0; d];
         data.extend(vec![0.5; d]);
-        star_dem_within(
-            Points::new(&data, d).unwrap(),
-            &Budget::UNLIMITED,
-            &no_progress,
-        )
-        .unwrap()
+        star_dem(Points::new(&data, d).unwrap(), &Budget::UNLIMITED).unwrap()
     });
     assert_eq!(got, 1.0 - 0.5f64.powi(DEM_MAX_DIMS as i32));
 }
@@ -742,8 +749,7 @@ mod deadlines {
     use qmckit::analysis::Points;
     use qmckit::analysis::l2::L2Metric;
     use qmckit::analysis::star::{
-        extreme_2d_within, star_exact, star_exact_within, star_lower_bound,
-        star_lower_bound_within, thiemard,
+        extreme_2d_within, star_exact, star_lower_bound, star_lower_bound_within, thiemard,
     };
     use qmckit::work::{Budget, no_progress};
     use std::time::{Duration, Instant};
@@ -766,14 +772,14 @@ mod deadlines {
         let b = expired(0.02);
         let s2 = Rng(1).set(1000, 2, None);
         let p2 = Points::new(&s2, 2).unwrap();
-        assert!(out_of_time(star_exact_within(p2, &b, &no_progress)));
+        assert!(out_of_time(star_exact(p2, &b)));
         let s3 = Rng(2).set(300, 3, None);
         let p3 = Points::new(&s3, 3).unwrap();
-        assert!(out_of_time(star_exact_within(p3, &b, &no_progress)));
+        assert!(out_of_time(star_exact(p3, &b)));
         let small = Points::new(&s2[..200], 2).unwrap();
         assert!(out_of_time(extreme_2d_within(small, &b)));
         assert!(out_of_time(star_lower_bound_within(small, 1, 1000, &b)));
-        assert!(out_of_time(thiemard::bounds_within(p2, 0.1, &b)));
+        assert!(out_of_time(thiemard::bounds(p2, 0.1, &b)));
         let s8 = Rng(3).set(600, 8, None);
         let p8 = Points::new(&s8, 8).unwrap();
         assert!(out_of_time(L2Metric::Centered.eval_within(
@@ -797,8 +803,8 @@ mod deadlines {
         let s3 = Rng(5).set(200, 3, None);
         let p3 = Points::new(&s3, 3).unwrap();
         assert_eq!(
-            star_exact_within(p3, &b, &no_progress).unwrap().to_bits(),
-            star_exact(p3).unwrap().to_bits()
+            star_exact(p3, &b).unwrap().to_bits(),
+            star_exact(p3, &Budget::DEFAULT).unwrap().to_bits()
         );
         let p2 = Points::new(&s3[..300], 3).unwrap();
         assert_eq!(
@@ -816,7 +822,7 @@ mod deadlines {
         let p = Points::new(&s, 2).unwrap();
         let clock = Instant::now();
         let err = loop {
-            if let Err(e) = star_exact_within(p, &b, &no_progress) {
+            if let Err(e) = star_exact(p, &b) {
                 break e;
             }
             assert!(clock.elapsed().as_secs_f64() < 30.0, "never stopped");

@@ -146,11 +146,7 @@ impl Ctx {
     pub fn star(&self, p: &[[f64; 2]]) -> Result<f64, Failure> {
         let data = flat(p);
         let points = qmckit::analysis::Points::new(&data, 2)?;
-        Ok(qmckit::analysis::star::star_exact_within(
-            points,
-            &self.budget,
-            &qmckit::work::no_progress,
-        )?)
+        Ok(qmckit::analysis::star::star_exact(points, &self.budget)?)
     }
 
     /// Renders `fig` into `DIR/name` (format from the extension) and returns its [`Fig`].

@@ -192,12 +192,7 @@ fn max_seconds_sets_the_star_budget() {
     let p = qmckit::analysis::Points::new(&coords, 12).unwrap();
     let lower = qmckit::analysis::star::star_lower_bound(p, 1, 20_000);
     assert!(lower <= got + 1e-12 && got < lower + 0.01, "{lower} {got}");
-    let want = qmckit::analysis::star::star_exact_within(
-        p,
-        &qmckit::work::Budget::UNLIMITED,
-        &qmckit::work::no_progress,
-    )
-    .unwrap();
+    let want = qmckit::analysis::star::star_exact(p, &qmckit::work::Budget::UNLIMITED).unwrap();
     assert_eq!(got, want);
 }
 

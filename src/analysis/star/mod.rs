@@ -39,10 +39,10 @@
 //! |---|---|---|
 //! | [`star_1d`] | `O(N log N)` | none |
 //! | [`star_2d`] | `O(N^2)` time, `O(N)` memory, parallel over columns | `(N + 1)^2` cells at [`SWEEP_RATE`] on two cores ([`star_cost`]) within the budget: `N <= 114_016` in ten seconds |
-//! | [`star_exact`] | `O(N^2)` in 2D; `O(N^(1 + d/2))` for `d >= 3` (Dobkin–Eppstein–Mitchell, [`dem`]), pruned: measured about `N^((d + 1)/2 - 0.15)` | [`star_cost`] within ten seconds: `N <= 64517, 6391, 1483, 557` for `d = 3, 4, 5, 6`; [`star_exact_within`] takes a budget |
+//! | [`star_exact`] | `O(N^2)` in 2D; `O(N^(1 + d/2))` for `d >= 3` (Dobkin–Eppstein–Mitchell, [`dem`]), pruned: measured about `N^((d + 1)/2 - 0.15)` | [`star_cost`] within ten seconds: `N <= 64517, 6391, 1483, 557` for `d = 3, 4, 5, 6`; its second argument is the budget |
 //! | [`extreme_2d`] | `O(N^3)` | `N <= 1200`; [`extreme_2d_within`] takes a budget, at [`EXTREME_RATE`] |
 //! | [`star_lower_bound`] | `O(iterations · (N + 32) d)` ([`lower_bound_steps`]) | none; [`star_lower_bound_within`] takes a budget, at [`LOWER_BOUND_RATE`] |
-//! | [`star_upper_bound`] | Thiémard's cover ([`thiemard`]): about `Σ_R (N vol(b_R) + 16)(d + k_R) + 2 d (k_R - 1)` over its regions, parallel | ten seconds at [`THIEMARD_RATE`], estimated first; [`thiemard::bounds_within`] takes a budget |
+//! | [`star_upper_bound`] | Thiémard's cover ([`thiemard`]): about `Σ_R (N vol(b_R) + 16)(d + k_R) + 2 d (k_R - 1)` over its regions, parallel | ten seconds at [`THIEMARD_RATE`], estimated first; [`thiemard::bounds`] takes a budget |
 //!
 //! Every budgeted function estimates its cost before it allocates anything that grows with
 //! the input, and none recurses deeper than a constant: the searches keep their state on the
@@ -63,7 +63,7 @@ pub use lower_bound::{lower_bound_steps, star_lower_bound, star_lower_bound_with
 
 use super::Points;
 use crate::work::Stop;
-use crate::work::{Budget, Progress, no_progress};
+use crate::work::{Budget, Limits};
 use crate::{Error, Result};
 
 /// Largest `N` [`star_2d`] (and [`star`], [`star_exact`] in 2D) accepts within
@@ -97,7 +97,7 @@ const _: () = {
 /// # Ok::<(), qmckit::Error>(())
 /// ```
 pub fn star(points: Points<'_>) -> Result<f64> {
-    star_exact(points)
+    star_exact(points, &Budget::DEFAULT)
 }
 
 /// Exact 1D star discrepancy by the closed form (Niederreiter 1992, Thm. 2.6):
@@ -162,7 +162,7 @@ pub fn star_2d(points: Points<'_>) -> Result<f64> {
             what: "star_2d of points that are not 2-dimensional",
         });
     }
-    star_exact(points)
+    star_exact(points, &Budget::DEFAULT)
 }
 
 /// Exact star discrepancy in any dimension: [`star_1d`] in 1D, the `O(N^2)` sweep of
@@ -179,51 +179,34 @@ pub fn star_2d(points: Points<'_>) -> Result<f64> {
 /// about 1900, 365, 140 and 70 points.
 /// Beyond that use [`star_lower_bound`] / [`star_upper_bound`].
 ///
+/// The limits: the time budget (`&Budget::DEFAULT`, ten seconds, for the usual
+/// requests), checked against the estimate [`star_cost`] (the 2D sweep's cells at
+/// [`SWEEP_RATE`], [`dem::work_estimate`] for `d >= 3` at [`STAR_RATE`], both on two cores)
+/// in `O(1)` before anything is allocated, and a progress report for `d >= 3` (see
+/// [`dem::star_dem`]). With a budget of ten minutes `d = 6` takes up to 1893 points
+/// (estimated 71 s for 1000 Sobol' points, which took 86 s on two cores at a load of 1.5).
+///
 /// # Errors
-/// [`Error::TooManyPoints`] when the estimated time, [`star_cost`], exceeds
-/// [`Budget::DEFAULT`]; `max` is the largest
-/// `N` within it for this `d` ([`max_points_within`]). [`Error::TooLarge`] for two or more
-/// counted points in more than [`dem::DEM_MAX_DIMS`] dimensions.
+/// [`Error::TooManyPoints`] when the estimated time exceeds the budget (`max`: the largest
+/// `N` within it, [`max_points_within`]); [`Error::TooLarge`] for two or more counted points
+/// in more than [`dem::DEM_MAX_DIMS`] dimensions; [`Error::OutOfTime`] when the run passes
+/// the deadline of the budget (started here if the caller did not: `1.25 x` its seconds),
+/// checked once per column of the 2D sweep and every few cells of the decomposition.
 ///
 /// ```
+/// use qmckit::work::Budget;
 /// use qmckit::analysis::{Points, star::star_exact};
 /// // One point at the center of the cube: the closed box [0, 1/2]^3 holds it,
 /// // 1 - 1/8 = 7/8; every box missing it has volume at most 1/2.
-/// assert_eq!(star_exact(Points::new(&[0.5, 0.5, 0.5], 3)?)?, 0.875);
-/// # Ok::<(), qmckit::Error>(())
-/// ```
-pub fn star_exact(points: Points<'_>) -> Result<f64> {
-    star_exact_within(points, &Budget::DEFAULT, &no_progress)
-}
-
-/// [`star_exact`] within the time budget `budget` (the estimate [`star_cost`]: the 2D
-/// sweep's cells at [`SWEEP_RATE`], [`dem::work_estimate`] for `d >= 3` at [`STAR_RATE`],
-/// both on two cores), with a progress report for `d >= 3` (see
-/// [`dem::star_dem_within`]). The estimate is computed in `O(1)` before anything is
-/// allocated. With a budget of ten minutes `d = 6` takes up to 1893 points (estimated 71 s
-/// for 1000 Sobol' points, which took 86 s on two cores at a load of 1.5).
-///
-/// # Errors
-/// [`Error::TooManyPoints`] when the estimated time exceeds `budget` (`max`: the largest
-/// `N` within it, [`max_points_within`]); [`Error::TooLarge`] for two or more counted points
-/// in more than [`dem::DEM_MAX_DIMS`] dimensions; [`Error::OutOfTime`] when the run passes
-/// the deadline of `budget` (started here if the caller did not: `1.25 x` its seconds), checked
-/// once per column of the 2D sweep and every few cells of the decomposition.
-///
-/// ```
-/// use qmckit::work::{Budget, no_progress};
-/// use qmckit::analysis::{Points, star::star_exact_within};
 /// let p = Points::new(&[0.5, 0.5, 0.5], 3)?;
-/// assert_eq!(star_exact_within(p, &Budget::DEFAULT, &no_progress)?, 0.875);
+/// assert_eq!(star_exact(p, &Budget::DEFAULT)?, 0.875);
 /// let tiny = Budget::seconds(1e-12)?;
-/// assert!(star_exact_within(p, &tiny, &no_progress).is_err()); // past the budget
+/// assert!(star_exact(p, &tiny).is_err()); // past the budget
 /// # Ok::<(), qmckit::Error>(())
 /// ```
-pub fn star_exact_within(
-    points: Points<'_>,
-    budget: &Budget,
-    progress: Progress<'_>,
-) -> Result<f64> {
+pub fn star_exact<'a>(points: Points<'_>, limits: impl Into<Limits<'a>>) -> Result<f64> {
+    let limits = limits.into();
+    let budget = limits.budget();
     let n = points.len();
     match points.dims() {
         1 => star_1d(points),
@@ -239,7 +222,7 @@ pub fn star_exact_within(
             }
             sweep::sweep_2d(points, &Stop::new(budget, "the exact star discrepancy"))
         }
-        _ => dem::star_dem_within(points, budget, progress),
+        _ => dem::star_dem(points, limits),
     }
 }
 
@@ -280,7 +263,7 @@ pub fn max_points_within(d: usize, budget: &Budget) -> u64 {
 /// # Errors
 /// Those of [`thiemard::bounds`]: [`Error::Unsupported`] for `δ`
 /// not in `(0, 1]`; [`Error::TooManyPoints`] when the estimated time exceeds
-/// [`Budget::DEFAULT`] (take a larger `δ`; [`thiemard::bounds_within`] takes a budget).
+/// [`Budget::DEFAULT`] (take a larger `δ`; [`thiemard::bounds`] takes a budget).
 ///
 /// ```
 /// use qmckit::analysis::{Points, star::star_upper_bound};
@@ -290,5 +273,5 @@ pub fn max_points_within(d: usize, budget: &Budget) -> u64 {
 /// # Ok::<(), qmckit::Error>(())
 /// ```
 pub fn star_upper_bound(points: Points<'_>, delta: f64) -> Result<f64> {
-    thiemard::bounds(points, delta).map(|b| b.upper)
+    thiemard::bounds(points, delta, &Budget::DEFAULT).map(|b| b.upper)
 }

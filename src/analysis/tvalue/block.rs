@@ -2,7 +2,7 @@
 //! intervals with the exact coordinates.
 
 use crate::analysis::Points;
-use crate::analysis::tvalue::{t_value_cost, t_value_points_within};
+use crate::analysis::tvalue::{t_value_cost, t_value_points};
 use crate::digital::DigitalNetB;
 use crate::error::{Error, Result};
 use crate::work::Budget;
@@ -58,5 +58,5 @@ pub fn t_value_block<M: AsRef<[u16]>>(
             *slot = (cell as f64 + 0.5) / cells;
         }
     }
-    t_value_points_within(Points::new(&x, s)?, net.base(), m, budget)
+    t_value_points(Points::new(&x, s)?, net.base(), m, budget)
 }

@@ -5,8 +5,7 @@
 use super::cost::{COUNT_RATE, count_steps};
 use super::cost::{failures_cost, t_value_cost};
 use crate::analysis::Points;
-use crate::work::Budget;
-use crate::work::Stop;
+use crate::work::{Limits, Stop};
 use crate::{Error, Result};
 use core::fmt;
 use rayon::prelude::*;
@@ -364,52 +363,45 @@ fn digits_f64(points: Points, base: u32, m: u32) -> Result<Digits> {
 ///
 /// # Errors
 /// [`Error::ZeroDimensions`], [`Error::MTooLarge`] for `m > 32`, [`Error::BufferLength`]
-/// unless `samples.len() == 2^m dims`; [`Error::OverBudget`] when [`t_value_cost`] exceeds
-/// [`Budget::DEFAULT`] (see [`t_value_u32_within`]).
+/// unless `samples.len() == 2^m dims`; [`Error::OverBudget`] when [`t_value_cost`] without
+/// an expected t-value (every level of the search counted whole) exceeds the budget of
+/// `limits` (`&Budget::DEFAULT`: ten seconds), checked before the digits are made;
+/// [`Error::OutOfTime`] past its deadline.
 ///
 /// ```
 /// use qmckit::analysis::tvalue::t_value_u32;
+/// use qmckit::work::Budget;
 /// use qmckit::{LarcherPillichshammer, Sampler};
 /// let lp = LarcherPillichshammer::new(4)?;
 /// let mut pts = vec![0u32; 2 * 16];
 /// lp.fill(0, &mut pts)?;
-/// assert_eq!(t_value_u32(&pts, 2, 4)?, 0); // LP is a (0, m, 2)-net
+/// assert_eq!(t_value_u32(&pts, 2, 4, &Budget::DEFAULT)?, 0); // LP is a (0, m, 2)-net
 /// pts.swap(1, 17); // swap two y values: (0, 15/16), (1/2, 0)
-/// assert!(t_value_u32(&pts, 2, 4)? > 0);
-/// # Ok::<(), qmckit::Error>(())
-/// ```
-pub fn t_value_u32(samples: &[u32], dims: usize, m: u32) -> Result<u32> {
-    t_value_u32_within(samples, dims, m, &Budget::DEFAULT)
-}
-
-/// [`t_value_u32`] within the time budget `budget`: [`t_value_cost`] without an expected
-/// t-value (every level of the search counted whole), checked before the digits are made.
-///
-/// # Errors
-/// As [`t_value_u32`], [`Error::OverBudget`] past `budget`.
-///
-/// ```
-/// use qmckit::work::Budget;
-/// use qmckit::analysis::tvalue::t_value_u32_within;
+/// assert!(t_value_u32(&pts, 2, 4, &Budget::DEFAULT)? > 0);
 /// let pts = vec![0u32; 4 << 10]; // 2^10 points at the origin in 4D
-/// assert_eq!(t_value_u32_within(&pts, 4, 10, &Budget::DEFAULT)?, 10);
+/// assert_eq!(t_value_u32(&pts, 4, 10, &Budget::DEFAULT)?, 10);
 /// let tiny = Budget::seconds(1e-6)?;
-/// assert!(t_value_u32_within(&pts, 4, 10, &tiny).is_err());
+/// assert!(t_value_u32(&pts, 4, 10, &tiny).is_err());
 /// # Ok::<(), qmckit::Error>(())
 /// ```
-pub fn t_value_u32_within(samples: &[u32], dims: usize, m: u32, budget: &Budget) -> Result<u32> {
-    t_value_u32_expecting(samples, dims, m, None, budget)
+pub fn t_value_u32<'a>(
+    samples: &[u32],
+    dims: usize,
+    m: u32,
+    limits: impl Into<Limits<'a>>,
+) -> Result<u32> {
+    t_value_u32_expecting(samples, dims, m, None, limits)
 }
 
-/// [`t_value_u32_within`] for a set whose t-value is expected to be `expected_t` (e.g. a
+/// [`t_value_u32`] for a set whose t-value is expected to be `expected_t` (e.g. a
 /// scrambled net: Owen scrambling, digital shifts and linear matrix scrambles keep the
 /// t-value of the net, which the rank test gives): the estimate, [`t_value_cost`], follows
 /// the search such a set takes, so it is about the real time instead of the most any set
 /// takes. The result does not depend on `expected_t`; a wrong guess only makes the estimate
-/// wrong, and the deadline of `budget` (started here if it was not) bounds the run.
+/// wrong, and the deadline of the budget (started here if it was not) bounds the run.
 ///
 /// # Errors
-/// As [`t_value_u32_within`]; [`Error::OutOfTime`] past the deadline (read once per shape).
+/// As [`t_value_u32`]; [`Error::OutOfTime`] past the deadline (read once per shape).
 ///
 /// ```
 /// use qmckit::work::Budget;
@@ -418,13 +410,15 @@ pub fn t_value_u32_within(samples: &[u32], dims: usize, m: u32, budget: &Budget)
 /// assert_eq!(t_value_u32_expecting(&pts, 2, 12, Some(12), &Budget::DEFAULT)?, 12);
 /// # Ok::<(), qmckit::Error>(())
 /// ```
-pub fn t_value_u32_expecting(
+pub fn t_value_u32_expecting<'a>(
     samples: &[u32],
     dims: usize,
     m: u32,
     expected_t: Option<u32>,
-    budget: &Budget,
+    limits: impl Into<Limits<'a>>,
 ) -> Result<u32> {
+    let limits = limits.into();
+    let budget = limits.budget();
     check_u32(samples, dims, m)?;
     budget.check(COUNTING, t_value_cost(1u64 << m, dims, m, 2, expected_t))?;
     let d = digits_u32(samples, dims, m)?;
@@ -446,32 +440,33 @@ pub fn t_value_u32_expecting(
 /// [`Error::BaseTooSmall`], [`Error::MTooLarge`] (beyond `b^m <= 2^53` or `m > 32`),
 /// [`Error::BufferLength`] unless there are exactly `b^m` points, and
 /// [`Error::CoordinateOutOfRange`] for a coordinate equal to 1 (it lies in no elementary
-/// interval).
+/// interval); [`Error::OverBudget`] past the budget of `limits` (`&Budget::DEFAULT`: ten
+/// seconds; checked before counting), [`Error::OutOfTime`] past its deadline (read once per
+/// shape counted).
 ///
 /// ```
 /// use qmckit::analysis::{Points, tvalue::t_value_points};
+/// use qmckit::work::Budget;
 /// // The 3 x 3 grid of cell centres is a (0, 2, 2)-net in base 3? No: t = 1
 /// // (the interval [0, 1/9) x [0, 1) is empty); the 9 points (i/9 + 1/18, phi_3(i) + 1/18)
 /// // of Hammersley in base 3 are a (0, 2, 2)-net.
 /// let grid: Vec<f64> = (0..9).flat_map(|i| [(i / 3) as f64 / 3.0 + 1.0 / 6.0,
 ///                                           (i % 3) as f64 / 3.0 + 1.0 / 6.0]).collect();
-/// assert_eq!(t_value_points(Points::new(&grid, 2)?, 3, 2)?, 1);
+/// assert_eq!(t_value_points(Points::new(&grid, 2)?, 3, 2, &Budget::DEFAULT)?, 1);
 /// let ham: Vec<f64> = (0..9).flat_map(|i| [i as f64 / 9.0 + 1.0 / 18.0,
 ///                                          ((i % 3) * 3 + i / 3) as f64 / 9.0 + 1.0 / 18.0])
 ///                           .collect();
-/// assert_eq!(t_value_points(Points::new(&ham, 2)?, 3, 2)?, 0);
+/// assert_eq!(t_value_points(Points::new(&ham, 2)?, 3, 2, &Budget::DEFAULT)?, 0);
 /// # Ok::<(), qmckit::Error>(())
 /// ```
-pub fn t_value_points(points: Points, base: u32, m: u32) -> Result<u32> {
-    t_value_points_within(points, base, m, &Budget::DEFAULT)
-}
-
-/// As [`t_value_points`], [`Error::OverBudget`] past `budget` (checked before counting),
-/// [`Error::OutOfTime`] past its deadline (read once per shape counted).
-///
-/// # Errors
-/// As [`t_value_points`].
-pub fn t_value_points_within(points: Points, base: u32, m: u32, budget: &Budget) -> Result<u32> {
+pub fn t_value_points<'a>(
+    points: Points,
+    base: u32,
+    m: u32,
+    limits: impl Into<Limits<'a>>,
+) -> Result<u32> {
+    let limits = limits.into();
+    let budget = limits.budget();
     let d = digits_f64(points, base, m)?;
     let n = d.pow.last().copied().unwrap_or(1);
     budget.check(COUNTING, t_value_cost(n, d.dims, m, base, None))?;
@@ -486,42 +481,30 @@ pub fn t_value_points_within(points: Points, base: u32, m: u32, budget: &Budget)
 /// Cost: every shape of size `m - t`, `O(N s + 2^(m - t))` each (see [`t_value_u32`]).
 ///
 /// # Errors
-/// As [`t_value_u32`] (one level, [`failures_cost`], within [`Budget::DEFAULT`]; see
-/// [`elementary_interval_failures_u32_within`]), and [`Error::MTooLarge`] for `t > m`
-/// (reported as `m: t, max: m`).
+/// As [`t_value_u32`] (one level, [`failures_cost`], within the budget of `limits`, checked
+/// before the digits are made), and [`Error::MTooLarge`] for `t > m` (reported as
+/// `m: t, max: m`).
 ///
 /// ```
 /// use qmckit::analysis::tvalue::elementary_interval_failures_u32;
+/// use qmckit::work::Budget;
 /// // Four points all in [0, 1/2) x [0, 1/2): not a (0, 2, 2)-net, nor a (1, 2, 2)-net.
 /// let pts = [0u32, 0, 1 << 29, 1 << 30, 1 << 30, 1 << 29, 3 << 29, 3 << 29];
-/// let f = elementary_interval_failures_u32(&pts, 2, 2, 1, 10)?;
+/// let f = elementary_interval_failures_u32(&pts, 2, 2, 1, 10, &Budget::DEFAULT)?;
 /// assert_eq!((f[0].shape.clone(), f[0].cell.clone(), f[0].count, f[0].expected),
 ///            (vec![0, 1], vec![0, 0], 4, 2));
 /// # Ok::<(), qmckit::Error>(())
 /// ```
-pub fn elementary_interval_failures_u32(
+pub fn elementary_interval_failures_u32<'a>(
     samples: &[u32],
     dims: usize,
     m: u32,
     t: u32,
     limit: usize,
+    limits: impl Into<Limits<'a>>,
 ) -> Result<Vec<IntervalFailure>> {
-    elementary_interval_failures_u32_within(samples, dims, m, t, limit, &Budget::DEFAULT)
-}
-
-/// [`elementary_interval_failures_u32`] within the time budget `budget` (one level of
-/// [`failures_cost`], checked before the digits are made).
-///
-/// # Errors
-/// As [`elementary_interval_failures_u32`], [`Error::OverBudget`] past `budget`.
-pub fn elementary_interval_failures_u32_within(
-    samples: &[u32],
-    dims: usize,
-    m: u32,
-    t: u32,
-    limit: usize,
-    budget: &Budget,
-) -> Result<Vec<IntervalFailure>> {
+    let limits = limits.into();
+    let budget = limits.budget();
     check_u32(samples, dims, m)?;
     if t > m {
         return Err(Error::MTooLarge { m: t, max: m });
@@ -537,21 +520,25 @@ pub fn elementary_interval_failures_u32_within(
 /// (digits as in [`t_value_points`]).
 ///
 /// # Errors
-/// As [`t_value_points`], and [`Error::MTooLarge`] for `t > m`.
-pub fn elementary_interval_failures(
+/// As [`t_value_points`] (one level, [`failures_cost`], within the budget of `limits`), and
+/// [`Error::MTooLarge`] for `t > m`.
+pub fn elementary_interval_failures<'a>(
     points: Points,
     base: u32,
     m: u32,
     t: u32,
     limit: usize,
+    limits: impl Into<Limits<'a>>,
 ) -> Result<Vec<IntervalFailure>> {
+    let limits = limits.into();
+    let budget = limits.budget();
     let d = digits_f64(points, base, m)?;
     if t > m {
         return Err(Error::MTooLarge { m: t, max: m });
     }
     let n = d.pow.last().copied().unwrap_or(1);
-    Budget::DEFAULT.check(COUNTING, failures_cost(n, d.dims, m - t, base))?;
-    let stop = Stop::new(&Budget::DEFAULT, COUNTING);
+    budget.check(COUNTING, failures_cost(n, d.dims, m - t, base))?;
+    let stop = Stop::new(budget, COUNTING);
     let found = d.failures(m - t, limit, &stop);
     stop.finish(found)
 }
