@@ -206,8 +206,8 @@ impl Default for Budget {
 /// callback (none by default).
 ///
 /// Every budgeted analysis entry point takes `limits: impl Into<Limits<'a>>`, so a caller
-/// passes a budget as it is, `&Budget::DEFAULT` or `&budget`, and adds a progress report
-/// with [`Limits::with_progress`]:
+/// passes a reference to a budget, `&Budget::DEFAULT` or `&budget`, or limits with a
+/// progress report from [`Limits::with_progress`]:
 ///
 /// ```
 /// use qmckit::work::{Budget, Limits};
@@ -266,12 +266,6 @@ impl<'a> Limits<'a> {
 impl Default for Limits<'static> {
     fn default() -> Self {
         Limits::DEFAULT
-    }
-}
-
-impl From<Budget> for Limits<'static> {
-    fn from(budget: Budget) -> Self {
-        Limits::new(budget)
     }
 }
 
