@@ -116,7 +116,7 @@ fn main() -> Result<(), Error> {
                 let p = Points::new(&data, d)?;
                 let cpu = pool.install(|| {
                     least_cpu(reps, || {
-                        let _ = metric.eval(p);
+                        let _ = metric.eval(p, &Budget::UNLIMITED);
                     })
                 });
                 row(name, d, n, cpu, metric.cost(n, d).seconds() * CORES);

@@ -219,8 +219,10 @@ fn measure(
 ) -> Result<Vec<(String, f64)>, String> {
     let name = metric.name().to_owned();
     if let Some(l2) = metric.l2() {
-        let value = with_progress(&name, |progress| l2.eval_within(p, budget, progress))
-            .map_err(over_budget)?;
+        let value = with_progress(&name, |progress| {
+            l2.eval(p, Limits::new(*budget).with_progress(progress))
+        })
+        .map_err(over_budget)?;
         return Ok(vec![(name.clone(), value)]);
     }
     let kind = match metric {

@@ -138,9 +138,8 @@ impl Entry<MeasureKind> {
         budget: &crate::work::Budget,
     ) -> Result<f64, super::CatalogError> {
         use crate::analysis::{distance, star};
-        use crate::work::no_progress;
         if let Some(l2) = self.kind.l2() {
-            return Ok(l2.eval_within(points, budget, &no_progress)?);
+            return Ok(l2.eval(points, budget)?);
         }
         Ok(match self.kind {
             MeasureKind::Star => star::star_exact(points, budget)?,

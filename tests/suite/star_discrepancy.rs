@@ -751,7 +751,7 @@ mod deadlines {
     use qmckit::analysis::star::{
         extreme_2d_within, star_exact, star_lower_bound, star_lower_bound_within, thiemard,
     };
-    use qmckit::work::{Budget, no_progress};
+    use qmckit::work::Budget;
     use std::time::{Duration, Instant};
 
     use crate::common::Rng;
@@ -782,19 +782,11 @@ mod deadlines {
         assert!(out_of_time(thiemard::bounds(p2, 0.1, &b)));
         let s8 = Rng(3).set(600, 8, None);
         let p8 = Points::new(&s8, 8).unwrap();
-        assert!(out_of_time(L2Metric::Centered.eval_within(
-            p8,
-            &b,
-            &no_progress
-        )));
+        assert!(out_of_time(L2Metric::Centered.eval(p8, &b)));
         // The divide and conquer of L2-star (3D, past its crossover).
         let s3b = Rng(4).set(8192, 3, None);
         let p3b = Points::new(&s3b, 3).unwrap();
-        assert!(out_of_time(L2Metric::L2Star.eval_within(
-            p3b,
-            &expired(0.3),
-            &no_progress
-        )));
+        assert!(out_of_time(L2Metric::L2Star.eval(p3b, &expired(0.3))));
     }
 
     #[test]

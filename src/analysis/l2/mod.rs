@@ -23,8 +23,8 @@
 //! | [`generalized`] | `gl2` | `D` (square root taken) | UTK `GL2Discrepancy` |
 //! | [`diaphony`] | `diaphony` | `F` (square root taken) | UTK `Diaphony` (Zinterhof) |
 //!
-//! The functions run without a time limit; [`L2Metric::eval_within`] estimates the cost
-//! first ([`L2Metric::cost`], the models of [`cost`]), refuses what exceeds a [`Budget`],
+//! The functions run without a time limit; [`L2Metric::eval`] estimates the cost
+//! first ([`L2Metric::cost`], the models of [`cost`]), refuses what exceeds a [`Budget`](crate::work::Budget),
 //! and reports progress.
 //!
 //! ## The pair sum
@@ -121,7 +121,7 @@ pub use tree::TREE_MAX_D;
 use super::Points;
 use crate::Result;
 use crate::work::Stop;
-use crate::work::{Budget, Cost, Progress, no_progress};
+use crate::work::{Cost, Limits};
 use kernel::{Build, Ticker};
 
 /// The eight measures of this module, by name.
@@ -201,7 +201,7 @@ impl L2Metric {
         }
     }
 
-    /// The estimated time of [`eval_within`](Self::eval_within) on `n` points in `d`
+    /// The estimated time of [`eval`](Self::eval) on `n` points in `d`
     /// dimensions, on [`CORES`](crate::work::CORES) cores: the model of the path that runs
     /// (module [`l2::cost`](crate::analysis::l2::cost)): the pairs at this measure's
     /// [`pair_cost`](Self::pair_cost), or the features streamed from memory, or the
@@ -219,45 +219,34 @@ impl L2Metric {
         cost::cost(self, n, d)
     }
 
-    /// Evaluates the measure on `p`, without a time limit (the free function of the same
-    /// name, e.g. [`centered`]). For a bounded running time use
-    /// [`eval_within`](Self::eval_within).
-    ///
-    /// # Errors
-    /// [`Error::NotRepresentable`](crate::Error::NotRepresentable) for a value outside
-    /// the normal range of `f64` (module documentation, "Range").
-    pub fn eval(self, p: Points<'_>) -> Result<f64> {
-        self.eval_within(p, &Budget::UNLIMITED, &no_progress)
-    }
-
     /// Evaluates the measure on `p` if its estimated cost ([`cost`](Self::cost)) fits in
-    /// `budget`, reporting `progress(rows done, n)` about a hundred times during the pair
-    /// sum (from `(0, n)` to `(n, n)`; only those two for the divide and conquer).
+    /// the budget of `limits` (`&Budget::UNLIMITED`: no limit, as the free function of the
+    /// same name, e.g. [`centered`]), reporting `progress(rows done, n)` to the progress
+    /// callback of `limits` about a hundred times during the pair sum (from `(0, n)` to
+    /// `(n, n)`; only those two for the divide and conquer).
     ///
     /// ```
-    /// use qmckit::{work::{Budget, no_progress}, analysis::{Points, l2::L2Metric}};
+    /// use qmckit::{work::Budget, analysis::{Points, l2::L2Metric}};
     /// let data: Vec<f64> = (0..300).map(|i| (i as f64 * 0.618_033_988_749_895).fract()).collect();
     /// let p = Points::new(&data, 3)?;
     /// let budget = Budget::seconds(1.0)?;
-    /// let cd = L2Metric::Centered.eval_within(p, &budget, &no_progress)?;
-    /// assert_eq!(cd, L2Metric::Centered.eval(p)?);
+    /// let cd = L2Metric::Centered.eval(p, &budget)?;
+    /// assert_eq!(cd, L2Metric::Centered.eval(p, &Budget::UNLIMITED)?);
     /// // 10^6 points in 10 dimensions: 5e11 pairs, about nine minutes, refused at once.
     /// assert!(L2Metric::Centered.cost(1_000_000, 10).seconds() > 1.0);
     /// # Ok::<(), qmckit::Error>(())
     /// ```
     ///
     /// # Errors
-    /// [`Error::OverBudget`](crate::Error::OverBudget) when the estimate exceeds
-    /// `budget` (before any work); [`Error::NotRepresentable`](crate::Error::NotRepresentable)
-    /// as [`eval`](Self::eval); [`Error::OutOfTime`](crate::Error::OutOfTime) past the
-    /// deadline of `budget` (started here if it was not), read once per task of the pair
-    /// sum (`O(n d)` work) and once per node of at least 256 rows of the divide and conquer.
-    pub fn eval_within(
-        self,
-        p: Points<'_>,
-        budget: &Budget,
-        progress: Progress<'_>,
-    ) -> Result<f64> {
+    /// [`Error::OverBudget`](crate::Error::OverBudget) when the estimate exceeds the budget
+    /// (before any work); [`Error::NotRepresentable`](crate::Error::NotRepresentable) for a
+    /// value outside the normal range of `f64` (module documentation, "Range");
+    /// [`Error::OutOfTime`](crate::Error::OutOfTime) past the deadline of the budget
+    /// (started here if it was not), read once per task of the pair sum (`O(n d)` work) and
+    /// once per node of at least 256 rows of the divide and conquer.
+    pub fn eval<'a>(self, p: Points<'_>, limits: impl Into<Limits<'a>>) -> Result<f64> {
+        let limits = limits.into();
+        let (budget, progress) = (limits.budget(), limits.progress());
         budget.check(self.what(), self.cost(p.len(), p.dims()))?;
         let stop = Stop::new(budget, self.what());
         let t = &mut Ticker::with_stop(progress, p.len(), &stop);
