@@ -1,4 +1,4 @@
-//! Times the exact star discrepancy (`star::dem::star_dem_within`) on the first `N` Sobol' points
+//! Times the exact star discrepancy (`star::dem::star_dem`) on the first `N` Sobol' points
 //! in `d` dimensions, with no work limit, for the measured rows of `qmckit::analysis::star::dem`.
 //!
 //! Usage: `cargo run --release --features analysis --example time_dem -- DIMS N...`
@@ -6,8 +6,8 @@
 //! For each `N` prints `d N D* seconds`.
 
 use qmckit::analysis::Points;
-use qmckit::analysis::star::dem::star_dem_within;
-use qmckit::work::{Budget, no_progress};
+use qmckit::analysis::star::dem::star_dem;
+use qmckit::work::Budget;
 use qmckit::{Sampler, Sobol};
 use std::time::Instant;
 
@@ -25,7 +25,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         sobol.fill_as(0, &mut values)?;
         let points = Points::new(&values, d)?;
         let start = Instant::now();
-        let value = star_dem_within(points, &Budget::UNLIMITED, &no_progress)?;
+        let value = star_dem(points, &Budget::UNLIMITED)?;
         println!("{d} {n} {value} {:.2}", start.elapsed().as_secs_f64());
     }
     Ok(())

@@ -46,7 +46,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             let mut value = Ok(f64::NAN);
             for _ in 0..reps {
                 let start = Instant::now();
-                value = m.eval(p);
+                value = m.eval(p, &qmckit::work::Budget::UNLIMITED);
                 best = best.min(start.elapsed().as_secs_f64());
             }
             (best, value)

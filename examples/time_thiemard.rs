@@ -1,4 +1,4 @@
-//! Times Thiémard's bounds (`star::thiemard::bounds_within`, no time limit) on the first `N`
+//! Times Thiémard's bounds (`star::thiemard::bounds`, no time limit) on the first `N`
 //! Sobol' points or `N` uniform random points in `d` dimensions, and whether the default
 //! budget accepts them, for calibrating `star::THIEMARD_RATE`.
 //!
@@ -7,7 +7,7 @@
 //! For each `N` prints `d N delta lower upper seconds accepted-by-default`.
 
 use qmckit::analysis::Points;
-use qmckit::analysis::star::thiemard::bounds_within;
+use qmckit::analysis::star::thiemard::bounds;
 use qmckit::work::Budget;
 use qmckit::{Independent, Sampler, Sobol};
 use std::time::Instant;
@@ -27,9 +27,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             _ => Independent::new(d, 1)?.fill_as(0, &mut values)?,
         }
         let points = Points::new(&values, d)?;
-        let accepted = bounds_within(points, delta, &Budget::DEFAULT).is_ok();
+        let accepted = bounds(points, delta, &Budget::DEFAULT).is_ok();
         let start = Instant::now();
-        let b = bounds_within(points, delta, &Budget::UNLIMITED)?;
+        let b = bounds(points, delta, &Budget::UNLIMITED)?;
         println!(
             "{d} {n} {delta} {:.6} {:.6} {:.2} {accepted}",
             b.lower,

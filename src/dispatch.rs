@@ -164,27 +164,42 @@ pub(crate) enum FloatBuild {
     Avx512,
 }
 
-/// `k.run()` in the build `want`, or the widest narrower one this CPU runs.
+/// The build [`run_float`] runs for `want`: `want`, or the widest narrower one this CPU
+/// runs (the cost models of the analysis ask it too).
 #[cfg(feature = "analysis")]
 #[inline]
-pub(crate) fn run_float<K: Kernel>(want: FloatBuild, k: K) -> K::Output {
+pub(crate) fn float_build(want: FloatBuild) -> FloatBuild {
     #[cfg(all(feature = "std", target_arch = "x86_64"))]
     {
         use std::arch::is_x86_feature_detected as has;
         let avx2 = has!("avx2") && has!("fma");
         if want == FloatBuild::Avx512 && avx2 && has!("avx512f") && has!("avx512vl") {
-            // SAFETY: `run_avx512` requires AVX-512F, AVX-512VL, AVX2 and FMA, all
-            // detected on this CPU just above; the kernel itself is safe code.
-            return unsafe { run_avx512(k) };
+            return FloatBuild::Avx512;
         }
         if want != FloatBuild::Portable && avx2 {
-            // SAFETY: `run_avx2` requires AVX2 and FMA, both detected on this CPU just
-            // above; the kernel itself is safe code.
-            return unsafe { run_avx2(k) };
+            return FloatBuild::Avx2;
         }
     }
     let _ = want;
-    k.run()
+    FloatBuild::Portable
+}
+
+/// `k.run()` in the build `want`, or the widest narrower one this CPU runs
+/// ([`float_build`]).
+#[cfg(feature = "analysis")]
+#[inline]
+pub(crate) fn run_float<K: Kernel>(want: FloatBuild, k: K) -> K::Output {
+    match float_build(want) {
+        // SAFETY: `float_build` answers `Avx512` only after detecting AVX-512F, AVX-512VL,
+        // AVX2 and FMA on this CPU, which `run_avx512` requires; the kernel is safe code.
+        #[cfg(all(feature = "std", target_arch = "x86_64"))]
+        FloatBuild::Avx512 => unsafe { run_avx512(k) },
+        // SAFETY: `float_build` answers `Avx2` only after detecting AVX2 and FMA on this
+        // CPU, which `run_avx2` requires; the kernel is safe code.
+        #[cfg(all(feature = "std", target_arch = "x86_64"))]
+        FloatBuild::Avx2 => unsafe { run_avx2(k) },
+        _ => k.run(),
+    }
 }
 
 #[cfg(all(feature = "analysis", target_arch = "x86_64"))]

@@ -212,10 +212,13 @@ impl fmt::Display for Error {
     }
 }
 
-/// `ms` milliseconds as seconds with one decimal (`12.3 s`), or `more than 10^15 s`.
+/// `ms` milliseconds as seconds: with one decimal from a second up (`12.3 s`), to the
+/// millisecond below (`0.308 s`), or `more than 10^15 s`.
 fn write_seconds(f: &mut fmt::Formatter<'_>, ms: u64) -> fmt::Result {
     if ms == u64::MAX {
         write!(f, "more than 10^15 s")
+    } else if ms < 1000 {
+        write!(f, "0.{ms:03} s")
     } else {
         write!(f, "{}.{} s", ms / 1000, (ms % 1000) / 100)
     }

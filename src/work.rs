@@ -20,10 +20,13 @@
 //! command. Without `std` there is no clock: the deadline checks always pass, and only the
 //! estimate bounds the work.
 //!
-//! Rates are measured single-machine throughputs (two cores, release build) and are meant to
-//! be conservative: an estimate errs on the long side, so a refused request would really
-//! have taken about as long as the message says, and an accepted one seldom runs much
-//! longer than the budget.
+//! Rates are measured throughputs of a release build. The analysis rates are **per core**:
+//! measured as the CPU time of one thread (the least of repeated runs, so that other work on
+//! the machine does not slow them down), and a loop that rayon splits over its threads is
+//! estimated at [`CORES`] times its rate ([`Cost::parallel`]): the two cores of the machine
+//! the rates were measured on. The goal is an estimate within a factor of two of the
+//! measured time on that machine, idle (`docs/budgets.md` lists the measurements); a busier
+//! or smaller machine runs longer than estimated, and the deadline bounds it.
 //!
 //! ```
 //! use qmckit::work::{Budget, Cost, Rate};
@@ -44,6 +47,13 @@ pub use stop::Stop;
 /// How far past its budget a started computation may run before its deadline stops it:
 /// the deadline is `start + GRACE * seconds`.
 pub const GRACE: f64 = 1.25;
+
+/// The speed-up of a loop split over rayon's threads that [`Cost::parallel`] assumes: the
+/// two cores of the machine the per-core rates were measured on. Fixed, not the number of
+/// threads of the running machine, so that a request is admitted or refused alike
+/// everywhere: with more cores a run ends sooner than estimated, with one core it takes up
+/// to twice the estimate (and the deadline bounds it).
+pub const CORES: f64 = 2.0;
 
 /// How many [`Pacer::tick`] steps pass between two readings of the clock.
 pub const PACER_INTERVAL: u32 = 4096;
@@ -192,6 +202,87 @@ impl Default for Budget {
     }
 }
 
+/// The one limits argument of a budgeted computation: its [`Budget`] and a [`Progress`]
+/// callback (none by default).
+///
+/// Every budgeted analysis entry point takes `limits: impl Into<Limits<'a>>`, so a caller
+/// passes a reference to a budget, `&Budget::DEFAULT` or `&budget`, or limits with a
+/// progress report from [`Limits::with_progress`]:
+///
+/// ```
+/// use qmckit::work::{Budget, Limits};
+/// let budget = Budget::seconds(2.0)?;
+/// let plain: Limits = (&budget).into();
+/// assert_eq!(plain.budget(), &budget);
+/// let report = |done: usize, total: usize| assert!(done <= total);
+/// let with = Limits::new(budget).with_progress(&report);
+/// (with.progress())(1, 2);
+/// assert_eq!(Limits::DEFAULT.budget(), &Budget::DEFAULT);
+/// # Ok::<(), qmckit::Error>(())
+/// ```
+#[derive(Clone, Copy)]
+pub struct Limits<'a> {
+    budget: Budget,
+    progress: Progress<'a>,
+}
+
+impl Limits<'static> {
+    /// [`Budget::DEFAULT`] without progress reports.
+    pub const DEFAULT: Limits<'static> = Limits::new(Budget::DEFAULT);
+
+    /// [`Budget::UNLIMITED`] without progress reports.
+    pub const UNLIMITED: Limits<'static> = Limits::new(Budget::UNLIMITED);
+
+    /// `budget` without progress reports.
+    pub const fn new(budget: Budget) -> Limits<'static> {
+        Limits {
+            budget,
+            progress: &no_progress,
+        }
+    }
+}
+
+impl<'a> Limits<'a> {
+    /// These limits, reporting progress to `progress`.
+    #[must_use]
+    pub fn with_progress<'b>(self, progress: Progress<'b>) -> Limits<'b> {
+        Limits {
+            budget: self.budget,
+            progress,
+        }
+    }
+
+    /// The budget.
+    pub fn budget(&self) -> &Budget {
+        &self.budget
+    }
+
+    /// The progress callback ([`no_progress`] unless one was given).
+    pub fn progress(&self) -> Progress<'a> {
+        self.progress
+    }
+}
+
+impl Default for Limits<'static> {
+    fn default() -> Self {
+        Limits::DEFAULT
+    }
+}
+
+impl From<&Budget> for Limits<'static> {
+    fn from(budget: &Budget) -> Self {
+        Limits::new(*budget)
+    }
+}
+
+impl core::fmt::Debug for Limits<'_> {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("Limits")
+            .field("budget", &self.budget)
+            .finish_non_exhaustive()
+    }
+}
+
 /// `seconds` in whole milliseconds, saturated (NaN counts as too long).
 fn millis(seconds: f64) -> u64 {
     let ms = seconds * 1000.0;
@@ -296,6 +387,28 @@ impl Cost {
                 f64::INFINITY
             } else {
                 seconds
+            },
+        }
+    }
+
+    /// `steps` steps of a loop split over rayon's threads, running at `rate` on each of
+    /// [`CORES`] cores: `steps / (CORES rate)` seconds (NaN counts as infinitely long).
+    ///
+    /// ```
+    /// use qmckit::work::{Cost, Rate};
+    /// assert_eq!(Cost::parallel(4e9, Rate::per_second(1e9)).seconds(), 2.0);
+    /// ```
+    pub fn parallel(steps: f64, rate: Rate) -> Self {
+        Cost::steps(steps / CORES, rate)
+    }
+
+    /// A cost of `seconds` seconds (negative and NaN count as infinitely long).
+    pub fn from_seconds(seconds: f64) -> Self {
+        Cost {
+            seconds: if seconds >= 0.0 {
+                seconds
+            } else {
+                f64::INFINITY
             },
         }
     }

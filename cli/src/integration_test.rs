@@ -8,6 +8,7 @@ use clap::Args;
 use qmckit::analysis::integrate::{BenchmarkOptions, Family, benchmark};
 use qmckit::catalog::{self, Params, RandomizerEntry, SamplerEntry, Size};
 use qmckit::sampler::Sampler;
+use qmckit::work::Limits;
 
 use super::Failure;
 use super::budget::BudgetArgs;
@@ -151,7 +152,7 @@ pub fn run(args: &IntegrationTestArgs) -> Result<(), Failure> {
         };
         let title = format!("{} on {}", family.name(), label);
         let curve = with_progress(&title, |progress| {
-            benchmark(&make, &opts, &budget, progress)
+            benchmark(&make, &opts, Limits::new(budget).with_progress(progress))
         })?;
         blocks.push((label.clone(), curve));
     }

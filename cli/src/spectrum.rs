@@ -6,7 +6,7 @@ use std::io::{BufWriter, Write};
 use clap::{Args, ValueEnum};
 use qmckit::analysis::spectrum::{
     DEFAULT_TOLERANCE, Method, NUFFT_MIN_TOLERANCE, SPECTRUM_MAX_K, Spectrum, SpectrumMean,
-    choose_method, estimated_cost, periodogram_2d, spectrum_2d_within,
+    choose_method, estimated_cost, periodogram_2d, spectrum_2d,
 };
 use qmckit::work::Budget;
 
@@ -162,7 +162,7 @@ pub fn run(args: &SpectrumArgs) -> Result<(), Failure> {
     Ok(())
 }
 
-/// One periodogram by `method` (direct sums through [`spectrum_2d_within`], whose refusal
+/// One periodogram by `method` (direct sums through [`spectrum_2d`], whose refusal
 /// names the most points the budget admits).
 fn compute(
     p: qmckit::analysis::Points<'_>,
@@ -171,7 +171,7 @@ fn compute(
     budget: &Budget,
 ) -> qmckit::Result<Spectrum> {
     match method {
-        Method::Direct => spectrum_2d_within(p, args.k_max, budget),
+        Method::Direct => spectrum_2d(p, args.k_max, budget),
         m => periodogram_2d(p, args.k_max, m, args.tolerance, budget),
     }
 }

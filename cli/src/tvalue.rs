@@ -6,12 +6,12 @@ use std::io::Write;
 
 use clap::Args;
 use qmckit::analysis::tvalue::{
-    COUNT_RATE, IntervalFailure, count_steps, elementary_interval_failures_u32_within,
-    t_value_u32_within,
+    IntervalFailure, elementary_interval_failures_u32, failures_cost, t_value_cost,
+    t_value_u32_expecting,
 };
 use qmckit::digital::DigitalNet2;
-use qmckit::digital::rank::t_value_within;
-use qmckit::work::{Budget, Cost};
+use qmckit::digital::rank::t_value;
+use qmckit::work::{Budget, Cost, Limits};
 
 use super::Failure;
 use super::budget::BudgetArgs;
@@ -39,10 +39,13 @@ Method: without --scramble, the rank test on the generator matrices (exact, m <=
 cost grows like C(m - t + 1 + d, d), fast for small d; estimated first and refused when the
 estimate exceeds --max-seconds, e.g. -m 32 -d 50 or -m 20 -d 1000). With --scramble KIND
 (any kind `qmckit points` accepts for the sampler), the 2^m points are generated and counted
-in elementary intervals (exact; m <= 21 and 2^m * d <= 2^25, and an estimated
-log2(m) C(m + d - 1, d - 1) 2^m (d + 1) steps at 1e8 a second within --max-seconds: e.g.
-m <= 21 in 2D, m <= 15 in 4D by default; larger requests are refused). --explain counts
-too, so it has the same limits.
+in elementary intervals (exact; m <= 21 and 2^m * d <= 2^25, and an estimate within
+--max-seconds: the levels rho of the binary search for t, each C(rho + d - 1, d - 1) 2^m
+(d + 1) steps at 1.2e9 a second on each of two cores, following the search for the
+t-value of the unscrambled net, which every scramble but rotate keeps (a rotated set is
+estimated as no net, t = m - 1); e.g. m <= 21 in 2D,
+m <= 20 in 4D by default; larger requests are refused). --explain counts one level too,
+so it has the same limits.
 
 Output, one 'key value' line each:
   sampler NAME
@@ -197,8 +200,15 @@ fn net(sampler: SamplerName, m: u32, d: usize) -> Result<DigitalNet2, Failure> {
     })
 }
 
-/// Refuses point counts too large to generate and count in reasonable time and memory.
-fn check_countable(m: u32, d: usize, why: &str, budget: &Budget) -> Result<(), Failure> {
+/// Refuses point counts too large to generate and count in reasonable time and memory, and
+/// counts whose estimated time (`cost`) exceeds the budget.
+fn check_countable(
+    m: u32,
+    d: usize,
+    why: &str,
+    cost: Cost,
+    budget: &Budget,
+) -> Result<(), Failure> {
     let values = (1u64 << m).saturating_mul(d as u64);
     if m > COUNT_MAX_M || values > COUNT_MAX_VALUES {
         return Err(Failure::usage(format!(
@@ -206,8 +216,6 @@ fn check_countable(m: u32, d: usize, why: &str, budget: &Budget) -> Result<(), F
              (m <= {COUNT_MAX_M} and 2^m * d <= 2^25)"
         )));
     }
-    let levels = u32::BITS - m.leading_zeros();
-    let cost = Cost::steps(count_steps(1u64 << m, d, m, levels), COUNT_RATE);
     if let Err(e) = budget.check("counting", cost) {
         return Err(Failure::usage(format!(
             "{why} counts points: 2^{m} points of {d} dimensions take too long to count \
@@ -215,6 +223,37 @@ fn check_countable(m: u32, d: usize, why: &str, budget: &Budget) -> Result<(), F
         )));
     }
     Ok(())
+}
+
+/// Does `scramble` keep the t-value of a base-2 digital net? Every digital scramble does
+/// (digital shifts, Owen's nested scrambles, linear matrix scrambles, digit permutations,
+/// the nested index shuffle); a rotation modulo 1 does not.
+fn keeps_nets(scramble: ScrambleName) -> bool {
+    !matches!(
+        scramble.kind,
+        RandomizerKind::Rotate | RandomizerKind::Shift | RandomizerKind::ShiftTent
+    )
+}
+
+/// The budget of the rank test that predicts the t-value of a scrambled net: one second (it
+/// usually takes milliseconds, but its own estimate errs on the long side).
+const PREDICT_SECONDS: f64 = 1.0;
+
+/// The t-value the scrambled points are expected to have, for the estimate of the count:
+/// the unscrambled net's by the rank test when the scramble keeps it (none when the rank
+/// test does not fit in [`PREDICT_SECONDS`]: then the estimate assumes a net, the most a
+/// count takes). A rotation breaks the digital structure: the set is expected to be no net
+/// at all, `t = m - 1` (measured t = 15 for 2^16 rotated Sobol' points in 2D and 4D, and
+/// for Larcher–Pillichshammer; Hammersley keeps t = 3 and van der Corput t = 0, whose
+/// counts in one and two dimensions take milliseconds whatever the estimate). The
+/// (0,2)-sequences (no generator matrices, `net` none) are estimated as nets.
+fn expected_t(net: Option<&DigitalNet2>, scramble: ScrambleName) -> Option<u32> {
+    let net = net?;
+    if !keeps_nets(scramble) {
+        return Some(net.m().saturating_sub(1));
+    }
+    let quick = Budget::seconds(PREDICT_SECONDS).ok()?;
+    t_value(net, &quick).ok()
 }
 
 /// Runs `qmckit tvalue`.
@@ -267,15 +306,25 @@ pub fn run(args: &TvalueArgs) -> Result<(), Failure> {
         Some(net(sampler, m, d)?)
     };
     let counting = generated || args.scramble.kind != RandomizerKind::None;
-    if args.explain {
-        check_countable(m, d, "--explain", &budget)?;
+    let n = 1u64 << m;
+    if args.explain && !counting {
+        // The size here; the level's count, `m - t + 1`, is estimated once t is known.
+        check_countable(m, d, "--explain", Cost::from_seconds(0.0), &budget)?;
     }
     let (t, samples) = if counting {
-        check_countable(m, d, "--scramble", &budget)?;
+        // The estimate follows the search for the t-value expected (see
+        // `t_value_u32_expecting`); --explain counts one level more, `m - t + 1`.
+        let expected = expected_t(net.as_ref(), args.scramble);
+        let mut cost = t_value_cost(n, d, m, 2, expected);
+        if args.explain {
+            let level = expected.map_or(m, |t| (m + 1).saturating_sub(t).min(m));
+            cost = cost.plus(failures_cost(n, d, level, 2));
+        }
+        check_countable(m, d, "--scramble", cost, &budget)?;
         let spec = Spec::base2(sampler, 1u64 << m, d, args.scramble, args.seed);
         let (samples, dims) = samples_u32(&spec)?;
         let t = with_spinner("t-value (counting)", || {
-            t_value_u32_within(&samples, dims, m, &Budget::UNLIMITED)
+            t_value_u32_expecting(&samples, dims, m, expected, &budget)
         })?;
         (t, Some(samples))
     } else {
@@ -283,7 +332,7 @@ pub fn run(args: &TvalueArgs) -> Result<(), Failure> {
             .as_ref()
             .ok_or_else(|| Failure::usage("unreachable: no generator matrices"))?;
         let t = with_progress("t-value (rank test)", |progress| {
-            t_value_within(net, &budget, progress)
+            t_value(net, Limits::new(budget).with_progress(progress))
         })?;
         (t, None)
     };
@@ -302,14 +351,7 @@ pub fn run(args: &TvalueArgs) -> Result<(), Failure> {
             },
         };
         let failures: Vec<IntervalFailure> = with_spinner("elementary intervals", || {
-            elementary_interval_failures_u32_within(
-                &samples,
-                d,
-                m,
-                t - 1,
-                EXPLAIN_LIMIT,
-                &Budget::UNLIMITED,
-            )
+            elementary_interval_failures_u32(&samples, d, m, t - 1, EXPLAIN_LIMIT, &budget)
         })?;
         for f in failures {
             writeln!(out, "fail {f}")?;
@@ -371,7 +413,7 @@ fn run_file(args: &TvalueArgs, file: &str, budget: &Budget) -> Result<(), Failur
     }
     let d = points.dims();
     let t = with_spinner("t-value (counting)", || {
-        qmckit::analysis::tvalue::t_value_points_within(points, base, m, budget)
+        qmckit::analysis::tvalue::t_value_points(points, base, m, budget)
     })?;
     let mut out = std::io::stdout().lock();
     writeln!(

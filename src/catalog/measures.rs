@@ -141,12 +141,11 @@ impl Entry<MeasureKind> {
         budget: &crate::work::Budget,
     ) -> Result<f64, super::CatalogError> {
         use crate::analysis::{distance, star};
-        use crate::work::no_progress;
         if let Some(l2) = self.kind.l2() {
-            return Ok(l2.eval_within(points, budget, &no_progress)?);
+            return Ok(l2.eval(points, budget)?);
         }
         Ok(match self.kind {
-            MeasureKind::Star => star::star_exact_within(points, budget, &no_progress)?,
+            MeasureKind::Star => star::star_exact(points, budget)?,
             MeasureKind::Extreme => star::extreme_2d_within(points, budget)?,
             MeasureKind::MinDistance => distance::min_distance(points, false),
             MeasureKind::MeanMinDistance => distance::mean_min_distance(points, false),
@@ -183,7 +182,7 @@ pub static MEASURES: &[MeasureEntry] = &[
         summary: "star discrepancy D*, exact (1D closed form, 2D sweep, d-D decomposition)",
         math: "D* = sup_y |#{x_i in [0, y)}/N - vol[0, y)| (Niederreiter 1992; Dobkin, Eppstein & Mitchell 1996)",
         params: &[BUDGET],
-        item: "qmckit::analysis::star::star_exact_within",
+        item: "qmckit::analysis::star::star_exact",
     },
     Entry {
         kind: MeasureKind::StarBounds,
@@ -195,7 +194,7 @@ pub static MEASURES: &[MeasureEntry] = &[
             param("delta", "gap of the bounds", "0.05", "(0, 1]"),
             BUDGET,
         ],
-        item: "qmckit::analysis::star::thiemard::bounds_within",
+        item: "qmckit::analysis::star::thiemard::bounds",
     },
     Entry {
         kind: MeasureKind::Extreme,
@@ -312,7 +311,7 @@ pub static MEASURES: &[MeasureEntry] = &[
             ),
             BUDGET,
         ],
-        item: "qmckit::analysis::tvalue::t_value_within",
+        item: "qmckit::analysis::tvalue::t_value",
     },
     Entry {
         kind: MeasureKind::MinDistance,

@@ -18,7 +18,7 @@ use crate::{Error, Result};
 /// // Hammersley in 2D with 2^4 points: (i / 16, phi_2(i)), a (0, 4, 2)-net.
 /// let h = DigitalNet2::hammersley(4)?;
 /// assert_eq!(h.point(3), vec![3 << 28, 0xC000_0000]); // (3/16, 3/4)
-/// assert_eq!(t_value(&h)?, 0);
+/// assert_eq!(t_value(&h, &qmckit::work::Budget::DEFAULT)?, 0);
 /// # Ok::<(), qmckit::Error>(())
 /// ```
 #[derive(Clone, Debug, PartialEq, Eq)]

@@ -9,7 +9,7 @@
 
 use super::DigitalNet2;
 use crate::Result;
-use crate::work::{Budget, Cost, Progress, Rate, Stop, no_progress};
+use crate::work::{Budget, Cost, Limits, Progress, Rate, Stop, no_progress};
 
 /// Steps per second of the rank test's search: a step is one row inserted into the
 /// elimination (at most `m` XORs) or one search node entered (a 128-byte copy). Measured
@@ -48,7 +48,9 @@ impl Basis {
 }
 
 /// The exact t-value of a base-2 digital net by the rank test (see the [module docs](self)),
-/// within [`Budget::DEFAULT`].
+/// within the budget of `limits` (`&Budget::DEFAULT`: ten seconds), reporting
+/// `progress(done, PROGRESS_STEPS)` now and then (from the calling thread) when `limits`
+/// has a progress callback.
 ///
 /// Searches the shapes `(d_1, .., d_s)` depth-first, dimension by dimension, adding the
 /// rows of each `C_j` one at a time to an incremental Gaussian elimination (rows are `m`-bit
@@ -57,27 +59,8 @@ impl Basis {
 /// shape found so far are pruned. The result is `m + 1 - (size of the smallest dependent
 /// shape)`, or 0 when every shape of size `m` is independent.
 ///
-/// Cost: see [`t_value_within`]; microseconds for `s = 2, 3` and `m <= 32`, about 20 000
-/// nodes for `s = 5, m = 16`. Memory `O(s)` (an explicit stack, no recursion).
-///
-/// # Errors
-/// As [`t_value_within`].
-///
-/// ```
-/// use qmckit::digital::{DigitalNet2, rank::t_value};
-/// // Larcher–Pillichshammer and Hammersley are (0, m, 2)-nets; 2D Sobol' too.
-/// assert_eq!(t_value(&DigitalNet2::larcher_pillichshammer(4)?)?, 0);
-/// assert_eq!(t_value(&DigitalNet2::from_sobol(2, 10)?)?, 0);
-/// // Joe–Kuo Sobol' in 3D has t = 1 for m >= 2.
-/// assert_eq!(t_value(&DigitalNet2::from_sobol(3, 10)?)?, 1);
-/// # Ok::<(), qmckit::Error>(())
-/// ```
-pub fn t_value(net: &DigitalNet2) -> Result<u32> {
-    t_value_within(net, &Budget::DEFAULT, &no_progress)
-}
-
-/// [`t_value`] within the time budget `budget`, reporting `progress(done, PROGRESS_STEPS)`
-/// now and then (from the calling thread).
+/// Microseconds for `s = 2, 3` and `m <= 32`, about 20 000 nodes for `s = 5, m = 16`.
+/// Memory `O(s)` (an explicit stack, no recursion).
 ///
 /// # Cost
 /// The search visits a node `(j, (d_1, .., d_j))` only while its size can still grow below
@@ -94,22 +77,27 @@ pub fn t_value(net: &DigitalNet2) -> Result<u32> {
 /// refused in milliseconds (more than `10^15` steps).
 ///
 /// # Errors
-/// [`crate::Error::OverBudget`] when the estimate exceeds `budget`; [`crate::Error::TooLarge`] when the
+/// [`crate::Error::OverBudget`] when the estimate exceeds the budget; [`crate::Error::TooLarge`] when the
 /// search's rows (`4 m s` bytes) or stack (`140 s` bytes) would pass
 /// [`crate::size::MAX_ALLOC_BYTES`]; [`crate::Error::OutOfTime`] past the deadline of
-/// `budget` (started here if it was not), read every 4096 steps of the search.
+/// the budget (started here if it was not), read every 4096 steps of the search.
 ///
 /// ```
-/// use qmckit::work::{Budget, no_progress};
-/// use qmckit::digital::{DigitalNet2, rank::t_value_within};
+/// use qmckit::work::Budget;
+/// use qmckit::digital::{DigitalNet2, rank::t_value};
+/// // Larcher–Pillichshammer and Hammersley are (0, m, 2)-nets; 2D Sobol' too.
+/// assert_eq!(t_value(&DigitalNet2::larcher_pillichshammer(4)?, &Budget::DEFAULT)?, 0);
+/// assert_eq!(t_value(&DigitalNet2::from_sobol(2, 10)?, &Budget::DEFAULT)?, 0);
+/// // Joe–Kuo Sobol' in 3D has t = 1 for m >= 2.
 /// let net = DigitalNet2::from_sobol(3, 10)?;
-/// assert_eq!(t_value_within(&net, &Budget::DEFAULT, &no_progress)?, 1);
+/// assert_eq!(t_value(&net, &Budget::DEFAULT)?, 1);
 /// let big = DigitalNet2::from_sobol(50, 32)?;
-/// assert!(t_value_within(&big, &Budget::DEFAULT, &no_progress).is_err()); // at once
+/// assert!(t_value(&big, &Budget::DEFAULT).is_err()); // at once
 /// # Ok::<(), qmckit::Error>(())
 /// ```
-pub fn t_value_within(net: &DigitalNet2, budget: &Budget, progress: Progress<'_>) -> Result<u32> {
-    let search = dependent_search(net, budget, progress)?;
+pub fn t_value<'a>(net: &DigitalNet2, limits: impl Into<Limits<'a>>) -> Result<u32> {
+    let limits = limits.into();
+    let search = dependent_search(net, limits.budget(), limits.progress())?;
     Ok(net.m() + 1 - search.best)
 }
 
@@ -123,26 +111,18 @@ pub fn t_value_within(net: &DigitalNet2, budget: &Budget, progress: Progress<'_>
 ///
 /// ```
 /// use qmckit::digital::{DigitalNet2, rank::dependent_shape};
-/// assert_eq!(dependent_shape(&DigitalNet2::hammersley(6)?)?, None);
-/// let s = dependent_shape(&DigitalNet2::from_sobol(3, 6)?)?.unwrap();
+/// use qmckit::work::Budget;
+/// assert_eq!(dependent_shape(&DigitalNet2::hammersley(6)?, &Budget::DEFAULT)?, None);
+/// let s = dependent_shape(&DigitalNet2::from_sobol(3, 6)?, &Budget::DEFAULT)?.unwrap();
 /// assert_eq!(s.iter().sum::<u32>(), 6); // t = 1: a shape of size m - t + 1 = 6
 /// # Ok::<(), qmckit::Error>(())
 /// ```
-pub fn dependent_shape(net: &DigitalNet2) -> Result<Option<Vec<u32>>> {
-    dependent_shape_within(net, &Budget::DEFAULT, &no_progress)
-}
-
-/// [`dependent_shape`] within the time budget `budget`, reporting progress as
-/// [`t_value_within`] does.
-///
-/// # Errors
-/// As [`t_value_within`].
-pub fn dependent_shape_within(
+pub fn dependent_shape<'a>(
     net: &DigitalNet2,
-    budget: &Budget,
-    progress: Progress<'_>,
+    limits: impl Into<Limits<'a>>,
 ) -> Result<Option<Vec<u32>>> {
-    Ok(dependent_search(net, budget, progress)?.shape)
+    let limits = limits.into();
+    Ok(dependent_search(net, limits.budget(), limits.progress())?.shape)
 }
 
 /// An upper bound on the steps of the search over `s` dimensions of `m` rows when it only
@@ -180,7 +160,7 @@ fn rows_of(net: &DigitalNet2) -> Result<Vec<Vec<u32>>> {
         .collect())
 }
 
-/// The bounded search of [`t_value_within`]: seeds from the first dimensions, a first
+/// The bounded search of [`t_value`]: seeds from the first dimensions, a first
 /// slice of the full search, the estimate of the rest, then the rest.
 fn dependent_search(net: &DigitalNet2, budget: &Budget, progress: Progress<'_>) -> Result<Found> {
     let m = net.m();

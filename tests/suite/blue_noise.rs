@@ -57,7 +57,7 @@ fn nn_stats(x: &[f64]) -> (f64, f64) {
 fn low_power(x: &[f64]) -> f64 {
     let n = x.len() / 2;
     let kmax = (0.5 * (n as f64).sqrt()).ceil() as usize;
-    let s = spectrum_2d(Points::new(x, 2).unwrap(), kmax).unwrap();
+    let s = spectrum_2d(Points::new(x, 2).unwrap(), kmax, &Budget::DEFAULT).unwrap();
     let lim2 = 0.25 * n as f64;
     let (sum, count) = s
         .iter()

@@ -482,7 +482,10 @@ fn fast_l2_star_two_to_the_twenty_points() {
         "{d:e}"
     );
     // The same set through the module's dispatch list.
-    assert_eq!(L2Metric::L2Star.eval(p), Ok(d));
+    assert_eq!(
+        L2Metric::L2Star.eval(p, &qmckit::work::Budget::UNLIMITED),
+        Ok(d)
+    );
 }
 
 #[test]
@@ -500,7 +503,7 @@ fn metric_list_dispatches_to_the_functions() {
         l2::diaphony,
     ];
     for (m, f) in L2Metric::ALL.iter().zip(fns) {
-        let v = m.eval(p).unwrap();
+        let v = m.eval(p, &qmckit::work::Budget::UNLIMITED).unwrap();
         assert_eq!(v, f(p).unwrap(), "{}", m.name());
         assert!(v.is_finite() && v > 0.0, "{}: {v}", m.name());
     }
@@ -584,7 +587,7 @@ fn high_dimensions_match_extended_precision_reference() {
         }
         let p = Points::new(&data, d).unwrap();
         let m = *L2Metric::ALL.iter().find(|m| m.name() == f[0]).unwrap();
-        let got = m.eval(p);
+        let got = m.eval(p, &qmckit::work::Budget::UNLIMITED);
         if f[1] == "not-representable" {
             refused += 1;
             if !matches!(got, Err(qmckit::Error::NotRepresentable { .. })) {
@@ -613,31 +616,28 @@ fn high_dimensions_match_extended_precision_reference() {
 
 #[test]
 fn budgets_refuse_before_working_and_progress_ends_at_n() {
-    use qmckit::work::{Budget, no_progress};
+    use qmckit::work::{Budget, Limits};
     use std::sync::Mutex;
     let pts = uniform(3 * 500, 21);
     let p = Points::new(&pts, 3).unwrap();
     let tiny = Budget::seconds(1e-9).unwrap();
     for m in L2Metric::ALL {
         assert!(
-            matches!(
-                m.eval_within(p, &tiny, &no_progress),
-                Err(qmckit::Error::OverBudget { .. })
-            ),
+            matches!(m.eval(p, &tiny), Err(qmckit::Error::OverBudget { .. })),
             "{}",
             m.name()
         );
         let reports = Mutex::new(Vec::new());
         let record = |done: usize, total: usize| reports.lock().unwrap().push((done, total));
-        let v = m.eval_within(p, &Budget::DEFAULT, &record).unwrap();
-        assert_eq!(v, m.eval(p).unwrap(), "{}", m.name());
+        let v = m.eval(p, Limits::DEFAULT.with_progress(&record)).unwrap();
+        assert_eq!(v, m.eval(p, &Budget::UNLIMITED).unwrap(), "{}", m.name());
         let mut r = reports.into_inner().unwrap();
         assert!(r.len() >= 2, "{}: {r:?}", m.name());
         assert_eq!(r[0], (0, 500));
         r.sort();
         assert_eq!(*r.last().unwrap(), (500, 500), "{}", m.name());
     }
-    // 10^6 points in 10 dimensions: hours of pair sums, refused by the default budget.
+    // 10^6 points in 10 dimensions: minutes of pair sums, refused by the default budget.
     let est = L2Metric::WrapAround.cost(1_000_000, 10).seconds();
     assert!(est > 100.0, "{est}");
 }

@@ -5,6 +5,7 @@
 use qmckit::Sampler;
 use qmckit::analysis::integrate::{Options, Problem, integrate, t_quantile, test_suite};
 use qmckit::randomize::{CranleyPatterson, FastOwen, Scrambled};
+use qmckit::work::Budget;
 use qmckit::{Sobol, lattice::Rank1Lattice};
 use rayon::prelude::*;
 
@@ -64,7 +65,14 @@ fn covers(p: &Problem, seed: u64, n: u64, r: u32) -> bool {
         seed,
         ..Options::default()
     };
-    let est = integrate(|x| p.eval(x), p.dims, owen_sobol(p.dims), &opts).unwrap();
+    let est = integrate(
+        |x| p.eval(x),
+        p.dims,
+        owen_sobol(p.dims),
+        &opts,
+        &Budget::UNLIMITED,
+    )
+    .unwrap();
     assert_eq!(est.n, n);
     let (lo, hi) = est.interval();
     lo <= p.exact() && p.exact() <= hi
@@ -136,9 +144,15 @@ fn tolerance_stops_within_twice_the_needed_points() {
                         seed: 1_000_000 + 2 * k,
                         ..Options::default()
                     };
-                    integrate(|x| p.eval(x), p.dims, owen_sobol(p.dims), &opts)
-                        .unwrap()
-                        .value
+                    integrate(
+                        |x| p.eval(x),
+                        p.dims,
+                        owen_sobol(p.dims),
+                        &opts,
+                        &Budget::UNLIMITED,
+                    )
+                    .unwrap()
+                    .value
                 })
                 .collect();
             // Each value is the mean of 2 replications: its variance is sigma_n^2 / 2.
@@ -160,7 +174,14 @@ fn tolerance_stops_within_twice_the_needed_points() {
                     seed: 7 + 100 * k,
                     ..Options::default()
                 };
-                let est = integrate(|x| p.eval(x), p.dims, owen_sobol(p.dims), &opts).unwrap();
+                let est = integrate(
+                    |x| p.eval(x),
+                    p.dims,
+                    owen_sobol(p.dims),
+                    &opts,
+                    &Budget::UNLIMITED,
+                )
+                .unwrap();
                 est.converged && est.n <= 2 * n_oracle
             })
             .count();
@@ -185,7 +206,7 @@ fn works_with_shifted_lattices_and_reports_the_budget() {
         abs_tol: 1e-6,
         ..Options::default()
     };
-    let est = integrate(|x| p.eval(x), p.dims, make, &opts).unwrap();
+    let est = integrate(|x| p.eval(x), p.dims, make, &opts, &Budget::UNLIMITED).unwrap();
     assert!(est.converged, "{est:?}");
     assert!((est.value - p.exact()).abs() < 1e-5);
     assert_eq!(est.points, est.n * 16);
@@ -195,7 +216,7 @@ fn works_with_shifted_lattices_and_reports_the_budget() {
         max_points: 1 << 16,
         ..Options::default()
     };
-    let est = integrate(|x| p.eval(x), p.dims, make, &opts).unwrap();
+    let est = integrate(|x| p.eval(x), p.dims, make, &opts, &Budget::UNLIMITED).unwrap();
     assert!(!est.converged && est.points <= 1 << 16);
 }
 
@@ -223,12 +244,15 @@ fn bad_options_are_refused() {
             ..ok
         },
     ] {
-        assert!(integrate(f, 1, owen_sobol(1), &bad).is_err(), "{bad:?}");
+        assert!(
+            integrate(f, 1, owen_sobol(1), &bad, &Budget::UNLIMITED).is_err(),
+            "{bad:?}"
+        );
     }
-    assert!(integrate(f, 2, owen_sobol(1), &ok).is_err()); // wrong dimension
-    assert!(integrate(|_| f64::NAN, 1, owen_sobol(1), &ok).is_err());
+    assert!(integrate(f, 2, owen_sobol(1), &ok, &Budget::UNLIMITED).is_err()); // wrong dimension
+    assert!(integrate(|_| f64::NAN, 1, owen_sobol(1), &ok, &Budget::UNLIMITED).is_err());
     let small = |_| Rank1Lattice::linear([1u32], 16);
-    assert!(integrate(f, 1, small, &ok).is_err()); // fewer points than n_start
+    assert!(integrate(f, 1, small, &ok, &Budget::UNLIMITED).is_err()); // fewer points than n_start
     let _ = Sobol::new(1).unwrap().len();
 }
 
@@ -255,7 +279,14 @@ fn points_used_against_qmcpy() {
                     seed: 500 + 100 * k,
                     ..Options::default()
                 };
-                let est = integrate(|x| p.eval(x), p.dims, owen_sobol(p.dims), &opts).unwrap();
+                let est = integrate(
+                    |x| p.eval(x),
+                    p.dims,
+                    owen_sobol(p.dims),
+                    &opts,
+                    &Budget::UNLIMITED,
+                )
+                .unwrap();
                 assert!(est.converged, "{name}");
                 est.points
             })
@@ -271,7 +302,7 @@ fn points_used_against_qmcpy() {
 mod checks {
     use qmckit::Error;
     use qmckit::Sobol;
-    use qmckit::analysis::integrate::{Options, integrate, integrate_within};
+    use qmckit::analysis::integrate::{Options, integrate};
     use qmckit::randomize::{CranleyPatterson, Scrambled};
     use qmckit::work::Budget;
 
@@ -282,7 +313,7 @@ mod checks {
     #[test]
     fn overflowing_sums_are_not_representable() {
         for v in [1e308, -1e308, f64::MAX] {
-            let r = integrate(|_| v, 2, make, &Options::default());
+            let r = integrate(|_| v, 2, make, &Options::default(), &Budget::UNLIMITED);
             assert!(
                 matches!(r, Err(Error::NotRepresentable { .. })),
                 "{v}: {r:?}"
@@ -298,7 +329,7 @@ mod checks {
             ..Options::default()
         };
         assert!(matches!(
-            integrate(|_| 1.0, 2, make, &o),
+            integrate(|_| 1.0, 2, make, &o, &Budget::UNLIMITED),
             Err(Error::InvalidParameter { .. })
         ));
     }
@@ -307,7 +338,7 @@ mod checks {
     fn an_expired_deadline_stops_the_loop() {
         let b = Budget::seconds(0.01).unwrap().started();
         std::thread::sleep(std::time::Duration::from_millis(20));
-        let r = integrate_within(|x| x[0], 2, make, &Options::default(), &b);
+        let r = integrate(|x| x[0], 2, make, &Options::default(), &b);
         assert!(matches!(r, Err(Error::OutOfTime { .. })), "{r:?}");
     }
 }

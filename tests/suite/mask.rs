@@ -8,6 +8,7 @@ use qmckit::analysis::Points;
 use qmckit::analysis::spectrum::spectrum_2d;
 use qmckit::blue_noise::mask64::{MASK64, rank, threshold};
 use qmckit::blue_noise::{RankMask, VoidAndCluster};
+use qmckit::work::Budget;
 use qmckit::{Error, Independent};
 
 fn is_permutation(ranks: &[u32]) -> bool {
@@ -37,7 +38,12 @@ fn pattern_points(on: &[bool], w: usize, h: usize) -> Vec<f64> {
 /// pixels out of `n` (sampling without replacement: `E P = (n - m) / (n - 1)`).
 fn relative_low_power(x: &[f64], n: usize, k_lim: f64) -> f64 {
     let m = x.len() / 2;
-    let s = spectrum_2d(Points::new(x, 2).unwrap(), k_lim.ceil() as usize).unwrap();
+    let s = spectrum_2d(
+        Points::new(x, 2).unwrap(),
+        k_lim.ceil() as usize,
+        &Budget::DEFAULT,
+    )
+    .unwrap();
     let (sum, count) = s
         .iter()
         .filter(|&(kx, ky, _)| {

@@ -6,6 +6,7 @@
 
 use qmckit::analysis::Points;
 use qmckit::analysis::spectrum::{SPECTRUM_MAX_K, spectrum_2d};
+use qmckit::work::Budget;
 use qmckit::{Independent, Jitter, Stratified};
 
 use crate::common;
@@ -27,7 +28,7 @@ fn matches_numpy_on_random_points() {
         }
     }
     assert_eq!((pts.len(), want.len()), (100, 225));
-    let s = spectrum_2d(Points::new(&pts, 2).unwrap(), 7).unwrap();
+    let s = spectrum_2d(Points::new(&pts, 2).unwrap(), 7, &Budget::DEFAULT).unwrap();
     for (kx, ky, p) in want {
         let got = s.get(kx, ky).unwrap();
         // Sums of 50 unit phasors: numpy's and ours round differently, by ~1e-14 of N.
@@ -37,11 +38,21 @@ fn matches_numpy_on_random_points() {
 
 #[test]
 fn one_point_is_flat_and_two_points_are_a_cosine() {
-    let s = spectrum_2d(Points::new(&[0.123, 0.987], 2).unwrap(), 9).unwrap();
+    let s = spectrum_2d(
+        Points::new(&[0.123, 0.987], 2).unwrap(),
+        9,
+        &Budget::DEFAULT,
+    )
+    .unwrap();
     assert!(s.iter().all(|(_, _, p)| (p - 1.0).abs() < 1e-12));
     // |e^(-i a) + e^(-i b)|^2 / 2 = 1 + cos(a - b), a - b = 2 pi k . (x1 - x2).
     let (x1, x2) = ([0.1, 0.35], [0.72, 0.05]);
-    let s = spectrum_2d(Points::new(&[x1[0], x1[1], x2[0], x2[1]], 2).unwrap(), 11).unwrap();
+    let s = spectrum_2d(
+        Points::new(&[x1[0], x1[1], x2[0], x2[1]], 2).unwrap(),
+        11,
+        &Budget::DEFAULT,
+    )
+    .unwrap();
     assert_eq!(s.iter().count(), 23 * 23);
     for (kx, ky, p) in s.iter() {
         let dot = kx as f64 * (x1[0] - x2[0]) + ky as f64 * (x1[1] - x2[1]);
@@ -67,7 +78,7 @@ fn a_grid_has_power_on_its_dual_lattice_only() {
             ]
         })
         .collect();
-    let s = spectrum_2d(Points::new(&pts, 2).unwrap(), 20).unwrap();
+    let s = spectrum_2d(Points::new(&pts, 2).unwrap(), 20, &Budget::DEFAULT).unwrap();
     for (kx, ky, p) in s.iter() {
         let on = kx % n as i64 == 0 && ky % n as i64 == 0;
         let want = if on { (n * n) as f64 } else { 0.0 };
@@ -89,7 +100,7 @@ fn white_noise_is_flat_and_jittered_sampling_is_blue() {
     let mut aniso = vec![0.0; k_max];
     for seed in 0..seeds {
         let pts = sampler_points(&Independent::new(2, seed).unwrap(), 1024);
-        let s = spectrum_2d(Points::new(&pts, 2).unwrap(), k_max).unwrap();
+        let s = spectrum_2d(Points::new(&pts, 2).unwrap(), k_max, &Budget::DEFAULT).unwrap();
         for (r, b) in s.radial().iter().enumerate() {
             mean[r] += b.mean / seeds as f64;
             aniso[r] += b.anisotropy / seeds as f64;
@@ -127,7 +138,7 @@ fn white_noise_is_flat_and_jittered_sampling_is_blue() {
             &Stratified::uniform(32, 2, Jitter::Random(seed)).unwrap(),
             1024,
         );
-        let s = spectrum_2d(Points::new(&pts, 2).unwrap(), k_max).unwrap();
+        let s = spectrum_2d(Points::new(&pts, 2).unwrap(), k_max, &Budget::DEFAULT).unwrap();
         for (r, b) in s.radial().iter().enumerate() {
             got[r] += b.mean / 8.0;
         }
@@ -157,24 +168,28 @@ fn white_noise_is_flat_and_jittered_sampling_is_blue() {
 fn refuses_what_it_cannot_do() {
     let p3 = Points::new(&[0.5, 0.5, 0.5], 3).unwrap();
     assert!(matches!(
-        spectrum_2d(p3, 4),
+        spectrum_2d(p3, 4, &Budget::DEFAULT),
         Err(qmckit::Error::Unsupported { .. })
     ));
     let p = Points::new(&[0.5, 0.5], 2).unwrap();
     assert!(matches!(
-        spectrum_2d(p, SPECTRUM_MAX_K + 1),
+        spectrum_2d(p, SPECTRUM_MAX_K + 1, &Budget::DEFAULT),
         Err(qmckit::Error::Unsupported { .. })
     ));
     // 1e10 multiply-adds: K = 2048 allows 1e10 / (2049 * 4097) = 1191 points.
     let many = vec![0.25; 2 * 1192];
     assert_eq!(
-        spectrum_2d(Points::new(&many, 2).unwrap(), SPECTRUM_MAX_K),
+        spectrum_2d(
+            Points::new(&many, 2).unwrap(),
+            SPECTRUM_MAX_K,
+            &Budget::DEFAULT
+        ),
         Err(qmckit::Error::TooManyPoints {
             requested: 1192,
             max: 1191
         })
     );
-    let s = spectrum_2d(p, 0).unwrap();
+    let s = spectrum_2d(p, 0, &Budget::DEFAULT).unwrap();
     assert_eq!((s.k_max(), s.points(), s.get(0, 0)), (0, 1, Some(1.0)));
     assert!(s.radial().is_empty());
 }
@@ -252,7 +267,7 @@ fn nufft_matches_the_direct_sum_everywhere_on_small_sets() {
     let pts = [0.0, 1.0, 1.0, 0.0, 0.5, 0.999_999, 0.123, 0.456, 0.75, 0.25];
     let p = Points::new(&pts, 2).unwrap();
     for k in [0, 1, 2, 5, 17] {
-        let exact = spectrum_2d(p, k).unwrap();
+        let exact = spectrum_2d(p, k, &Budget::DEFAULT).unwrap();
         let fast = periodogram_2d(p, k, Method::Nufft, 1e-10, &Budget::DEFAULT).unwrap();
         for ((kx, ky, a), (_, _, b)) in exact.iter().zip(fast.iter()) {
             assert!(
@@ -279,7 +294,7 @@ fn nufft_matches_the_direct_sum_everywhere_on_small_sets() {
 mod deadlines {
     use qmckit::Error;
     use qmckit::analysis::Points;
-    use qmckit::analysis::spectrum::{Method, estimated_cost, periodogram_2d, spectrum_2d_within};
+    use qmckit::analysis::spectrum::{Method, estimated_cost, periodogram_2d, spectrum_2d};
     use qmckit::work::Budget;
     use std::time::{Duration, Instant};
 
@@ -296,7 +311,7 @@ mod deadlines {
             .collect();
         let p = Points::new(&data, 2).unwrap();
         let b = expired(0.05);
-        let direct = spectrum_2d_within(Points::new(&data[..400], 2).unwrap(), 16, &b);
+        let direct = spectrum_2d(Points::new(&data[..400], 2).unwrap(), 16, &b);
         assert!(matches!(direct, Err(Error::OutOfTime { .. })), "{direct:?}");
         let fast = periodogram_2d(p, 64, Method::Nufft, 1e-9, &b);
         assert!(matches!(fast, Err(Error::OutOfTime { .. })), "{fast:?}");

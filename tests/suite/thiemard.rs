@@ -7,6 +7,7 @@
 use qmckit::analysis::Points;
 use qmckit::analysis::star::thiemard::bounds;
 use qmckit::analysis::star::{star, star_upper_bound};
+use qmckit::work::Budget;
 use qmckit::{Error, LarcherPillichshammer};
 
 use crate::common;
@@ -16,7 +17,7 @@ use common::Rng;
 /// `star_upper_bound` returns the same upper bound.
 fn check(data: &[f64], d: usize, delta: f64, exact: f64) {
     let p = Points::new(data, d).unwrap();
-    let b = bounds(p, delta).unwrap();
+    let b = bounds(p, delta, &Budget::DEFAULT).unwrap();
     assert!(
         b.lower <= exact,
         "d = {d}, delta = {delta}: lower {} > exact {exact}",
@@ -104,7 +105,7 @@ fn one_point_at_the_center() {
                 continue;
             }
             check(&data, d, delta, exact);
-            let b = bounds(Points::new(&data, d).unwrap(), delta).unwrap();
+            let b = bounds(Points::new(&data, d).unwrap(), delta, &Budget::DEFAULT).unwrap();
             assert!((b.lower - exact).abs() < 1e-14, "d = {d}: {}", b.lower);
         }
     }
@@ -114,7 +115,7 @@ fn one_point_at_the_center() {
 fn whole_cube_as_one_bracket() {
     // delta = 1: the single bracket [0, 1]^d gives max(A/N - 0, 1 - 0) = 1.
     let data = [0.25, 0.75, 0.5, 0.5];
-    let b = bounds(Points::new(&data, 2).unwrap(), 1.0).unwrap();
+    let b = bounds(Points::new(&data, 2).unwrap(), 1.0, &Budget::DEFAULT).unwrap();
     assert_eq!(b.brackets, 1);
     assert!((1.0..1.0 + 1e-14).contains(&b.upper));
 }
@@ -125,7 +126,10 @@ fn bad_delta_and_too_much_work() {
     let p = Points::new(&data, 2).unwrap();
     for delta in [0.0, -0.1, 1.5, f64::NAN, f64::INFINITY] {
         assert!(
-            matches!(bounds(p, delta), Err(Error::Unsupported { .. })),
+            matches!(
+                bounds(p, delta, &Budget::DEFAULT),
+                Err(Error::Unsupported { .. })
+            ),
             "{delta}"
         );
         assert!(star_upper_bound(p, delta).is_err());
@@ -134,7 +138,7 @@ fn bad_delta_and_too_much_work() {
     let ten = vec![0.5; 10];
     let p = Points::new(&ten, 10).unwrap();
     assert!(matches!(
-        bounds(p, 0.01),
+        bounds(p, 0.01, &Budget::DEFAULT),
         Err(Error::TooManyPoints { requested: 1, .. })
     ));
 }
@@ -161,7 +165,7 @@ fn huge_dimensions_are_refused_at_once_without_allocating() {
             let start = std::time::Instant::now();
             let got = on_small_stack(move || {
                 let data = vec![0.5; n * d];
-                bounds(Points::new(&data, d).unwrap(), delta)
+                bounds(Points::new(&data, d).unwrap(), delta, &Budget::DEFAULT)
             });
             let secs = start.elapsed().as_secs_f64();
             assert!(
@@ -175,7 +179,7 @@ fn huge_dimensions_are_refused_at_once_without_allocating() {
         // the whole cube, gives the lower bound 0 (within delta of D*).
         let b = on_small_stack(move || {
             let data = vec![0.5; n * d];
-            bounds(Points::new(&data, d).unwrap(), 1.0).unwrap()
+            bounds(Points::new(&data, d).unwrap(), 1.0, &Budget::DEFAULT).unwrap()
         });
         assert_eq!((b.lower, b.upper, b.brackets), (0.0, 1.0, 1));
     }
@@ -183,7 +187,7 @@ fn huge_dimensions_are_refused_at_once_without_allocating() {
 
 #[test]
 fn bounds_stay_in_the_unit_interval_and_in_order() {
-    use qmckit::analysis::star::thiemard::bounds_within;
+    use qmckit::analysis::star::thiemard::bounds;
     use qmckit::work::Budget;
     // The whole-cube bracket is worth exactly 1, the largest possible D*: the rounding
     // margin must not lift the bound above it.
@@ -194,7 +198,7 @@ fn bounds_stay_in_the_unit_interval_and_in_order() {
     ] {
         let p = Points::new(&data, d).unwrap();
         for delta in [1.0, 0.5, 0.1] {
-            let b = bounds(p, delta).unwrap();
+            let b = bounds(p, delta, &Budget::DEFAULT).unwrap();
             assert!(
                 0.0 <= b.lower && b.lower <= b.upper && b.upper <= 1.0,
                 "{data:?} {delta}: {b:?}"
@@ -205,14 +209,14 @@ fn bounds_stay_in_the_unit_interval_and_in_order() {
     }
     // A point at the origin: D* = 1 (the closed box [0, 0] holds it with volume 0).
     let origin = [0.0, 0.0];
-    let b = bounds_within(Points::new(&origin, 2).unwrap(), 0.3, &Budget::DEFAULT).unwrap();
+    let b = bounds(Points::new(&origin, 2).unwrap(), 0.3, &Budget::DEFAULT).unwrap();
     assert_eq!(b.upper, 1.0);
     assert!(star_upper_bound(Points::new(&origin, 2).unwrap(), 1.0).unwrap() <= 1.0);
 }
 
 #[test]
 fn a_smaller_budget_refuses_sooner() {
-    use qmckit::analysis::star::thiemard::bounds_within;
+    use qmckit::analysis::star::thiemard::bounds;
     use qmckit::work::Budget;
     // 1000 points in 5D at delta = 0.08 are accepted within ten seconds; a hundredth of a
     // second is far too little, and the refusal is immediate.
@@ -223,7 +227,7 @@ fn a_smaller_budget_refuses_sooner() {
     let start = std::time::Instant::now();
     let tiny = Budget::seconds(0.01).unwrap();
     assert!(matches!(
-        bounds_within(p, 0.08, &tiny),
+        bounds(p, 0.08, &tiny),
         Err(Error::TooManyPoints { .. })
     ));
     assert!(start.elapsed().as_secs_f64() < 0.5);

@@ -12,6 +12,7 @@ use qmckit::digital::rank::{dependent_shape, t_value};
 use qmckit::randomize::{
     CranleyPatterson, DigitalShift, ExactOwen, FastOwen, Lms, OwenHash, Randomizer, Scrambled,
 };
+use qmckit::work::{Budget, Limits};
 use qmckit::{Base2Digital, Error, Hammersley, Independent, LarcherPillichshammer, Sampler, Sobol};
 
 /// Points `start .. start + 2^m` of a sampler, row-major.
@@ -37,8 +38,8 @@ fn sobol_2d_is_a_0m2_net_for_every_m_up_to_20() {
     // (0, 2)-sequence in base 2: every 2^m prefix is a (0, m, 2)-net.
     for m in 0..=20 {
         let net = DigitalNet2::from_sobol(2, m).unwrap();
-        assert_eq!(t_value(&net).unwrap(), 0, "m = {m}");
-        assert_eq!(dependent_shape(&net).unwrap(), None);
+        assert_eq!(t_value(&net, &Budget::DEFAULT).unwrap(), 0, "m = {m}");
+        assert_eq!(dependent_shape(&net, &Budget::DEFAULT).unwrap(), None);
     }
 }
 
@@ -48,11 +49,14 @@ fn sobol_3d_joe_kuo_has_t_1_from_m_2() {
     // polynomials x, x + 1, x^2 + x + 1), so every 2^m prefix has t <= 1; with Joe & Kuo's
     // initial numbers it is exactly 1 for m >= 2 (t = 0 for m = 1: each first row is
     // nonzero). The counting test below checks the same values independently.
-    assert_eq!(t_value(&DigitalNet2::from_sobol(3, 1).unwrap()).unwrap(), 0);
+    assert_eq!(
+        t_value(&DigitalNet2::from_sobol(3, 1).unwrap(), &Budget::DEFAULT).unwrap(),
+        0
+    );
     for m in 2..=20 {
         let net = DigitalNet2::from_sobol(3, m).unwrap();
-        assert_eq!(t_value(&net).unwrap(), 1, "m = {m}");
-        let shape = dependent_shape(&net).unwrap().unwrap();
+        assert_eq!(t_value(&net, &Budget::DEFAULT).unwrap(), 1, "m = {m}");
+        let shape = dependent_shape(&net, &Budget::DEFAULT).unwrap().unwrap();
         assert_eq!(shape.iter().sum::<u32>(), m, "m = {m}: shape {shape:?}");
     }
 }
@@ -61,23 +65,31 @@ fn sobol_3d_joe_kuo_has_t_1_from_m_2() {
 fn lp_hammersley_and_van_der_corput_have_t_0_up_to_m_20() {
     for m in 1..=20 {
         assert_eq!(
-            t_value(&DigitalNet2::larcher_pillichshammer(m).unwrap()).unwrap(),
+            t_value(
+                &DigitalNet2::larcher_pillichshammer(m).unwrap(),
+                &Budget::DEFAULT
+            )
+            .unwrap(),
             0,
             "LP m = {m}"
         );
         assert_eq!(
-            t_value(&DigitalNet2::hammersley(m).unwrap()).unwrap(),
+            t_value(&DigitalNet2::hammersley(m).unwrap(), &Budget::DEFAULT).unwrap(),
             0,
             "Hammersley m = {m}"
         );
         assert_eq!(
-            t_value(&DigitalNet2::van_der_corput(m).unwrap()).unwrap(),
+            t_value(&DigitalNet2::van_der_corput(m).unwrap(), &Budget::DEFAULT).unwrap(),
             0
         );
     }
     // m = 32, the full range.
     assert_eq!(
-        t_value(&DigitalNet2::larcher_pillichshammer(32).unwrap()).unwrap(),
+        t_value(
+            &DigitalNet2::larcher_pillichshammer(32).unwrap(),
+            &Budget::DEFAULT
+        )
+        .unwrap(),
         0
     );
 }
@@ -89,17 +101,20 @@ fn the_rank_test_can_fail() {
     // balanced, so t = m - 1 for m >= 2 (and t = 0 for m = 1: (0, 0), (1/2, 1/2)).
     let c = *qmckit::digital::sobol::directions(1).unwrap();
     assert_eq!(
-        t_value(&DigitalNet2::new(1, vec![c, c]).unwrap()).unwrap(),
+        t_value(&DigitalNet2::new(1, vec![c, c]).unwrap(), &Budget::DEFAULT).unwrap(),
         0
     );
     for m in 2..=12 {
         let net = DigitalNet2::new(m, vec![c, c]).unwrap();
-        assert_eq!(t_value(&net).unwrap(), m - 1, "m = {m}");
-        assert_eq!(dependent_shape(&net).unwrap(), Some(vec![1, 1]));
+        assert_eq!(t_value(&net, &Budget::DEFAULT).unwrap(), m - 1, "m = {m}");
+        assert_eq!(
+            dependent_shape(&net, &Budget::DEFAULT).unwrap(),
+            Some(vec![1, 1])
+        );
     }
     // A zero matrix: no point leaves [0, 1/2), t = m.
     let net = DigitalNet2::new(5, vec![[0; 32]]).unwrap();
-    assert_eq!(t_value(&net).unwrap(), 5);
+    assert_eq!(t_value(&net, &Budget::DEFAULT).unwrap(), 5);
 }
 
 #[test]
@@ -135,7 +150,11 @@ fn sobol_2d_blocks_are_0m2_nets_by_counting() {
     for m in [1, 4, 8, 11, 14] {
         for k in [0u32, 1, 2, 7, 37, 200] {
             let pts = block(&s, k << m, m);
-            assert_eq!(t_value_u32(&pts, 2, m).unwrap(), 0, "m = {m}, block {k}");
+            assert_eq!(
+                t_value_u32(&pts, 2, m, &Budget::DEFAULT).unwrap(),
+                0,
+                "m = {m}, block {k}"
+            );
         }
     }
 }
@@ -144,13 +163,20 @@ fn sobol_2d_blocks_are_0m2_nets_by_counting() {
 fn sobol_3d_counting_agrees_with_the_rank_test_up_to_m_12() {
     let s = Sobol::new(3).unwrap();
     for m in 1..=12 {
-        let want = t_value(&DigitalNet2::from_sobol(3, m).unwrap()).unwrap();
+        let want = t_value(&DigitalNet2::from_sobol(3, m).unwrap(), &Budget::DEFAULT).unwrap();
         assert_eq!(want, u32::from(m >= 2), "published t, m = {m}");
         let pts = block(&s, 0, m);
-        assert_eq!(t_value_u32(&pts, 3, m).unwrap(), want, "m = {m}");
+        assert_eq!(
+            t_value_u32(&pts, 3, m, &Budget::DEFAULT).unwrap(),
+            want,
+            "m = {m}"
+        );
         // And a later aligned block ((1, 3)-sequence: t <= 1 there too).
         let later = block(&s, 5 << m, m);
-        assert!(t_value_u32(&later, 3, m).unwrap() <= 1, "m = {m}");
+        assert!(
+            t_value_u32(&later, 3, m, &Budget::DEFAULT).unwrap() <= 1,
+            "m = {m}"
+        );
     }
 }
 
@@ -158,9 +184,17 @@ fn sobol_3d_counting_agrees_with_the_rank_test_up_to_m_12() {
 fn lp_and_hammersley_have_t_0_by_counting_up_to_m_14() {
     for m in 1..=14 {
         let lp = block(&LarcherPillichshammer::new(m).unwrap(), 0, m);
-        assert_eq!(t_value_u32(&lp, 2, m).unwrap(), 0, "LP m = {m}");
+        assert_eq!(
+            t_value_u32(&lp, 2, m, &Budget::DEFAULT).unwrap(),
+            0,
+            "LP m = {m}"
+        );
         let h = block(&Hammersley::with_m(m, 2).unwrap(), 0, m);
-        assert_eq!(t_value_u32(&h, 2, m).unwrap(), 0, "Hammersley m = {m}");
+        assert_eq!(
+            t_value_u32(&h, 2, m, &Budget::DEFAULT).unwrap(),
+            0,
+            "Hammersley m = {m}"
+        );
     }
 }
 
@@ -172,8 +206,8 @@ fn the_f64_counter_agrees_with_the_u32_counter() {
         let f = Points::from_u32(&pts);
         let p = Points::new(&f, 4).unwrap();
         assert_eq!(
-            t_value_points(p, 2, m).unwrap(),
-            t_value_u32(&pts, 4, m).unwrap()
+            t_value_points(p, 2, m, &Budget::DEFAULT).unwrap(),
+            t_value_u32(&pts, 4, m, &Budget::DEFAULT).unwrap()
         );
     }
 }
@@ -195,9 +229,13 @@ fn base_3_hammersley_is_a_0m2_net() {
             data.push(rev as f64 / n as f64 + half);
         }
         let p = Points::new(&data, 2).unwrap();
-        assert_eq!(t_value_points(p, 3, m).unwrap(), 0, "m = {m}");
+        assert_eq!(
+            t_value_points(p, 3, m, &Budget::DEFAULT).unwrap(),
+            0,
+            "m = {m}"
+        );
         // In base 2 the set is not even the right size.
-        assert!(t_value_points(p, 2, m).is_err());
+        assert!(t_value_points(p, 2, m, &Budget::DEFAULT).is_err());
     }
 }
 
@@ -205,7 +243,7 @@ fn base_3_hammersley_is_a_0m2_net() {
 
 fn scrambled_t(sampler: &dyn Base2Digital, r: &dyn Randomizer, m: u32) -> u32 {
     let s = Scrambled::new(sampler, r);
-    t_value_u32(&block(&s, 0, m), s.dims(), m).unwrap()
+    t_value_u32(&block(&s, 0, m), s.dims(), m, &Budget::DEFAULT).unwrap()
 }
 
 #[test]
@@ -270,9 +308,10 @@ fn assert_is_a_real_failure(pts: &[u32], dims: usize, m: u32, f: &IntervalFailur
 fn independent_points_are_not_a_net_and_the_interval_is_named() {
     let m = 10;
     let pts = block(&Independent::new(2, 7).unwrap(), 0, m);
-    let t = t_value_u32(&pts, 2, m).unwrap();
+    let t = t_value_u32(&pts, 2, m, &Budget::DEFAULT).unwrap();
     assert!(t >= 5, "t = {t}"); // random points are far from a net
-    let failures = elementary_interval_failures_u32(&pts, 2, m, t - 1, 5).unwrap();
+    let failures =
+        elementary_interval_failures_u32(&pts, 2, m, t - 1, 5, &Budget::DEFAULT).unwrap();
     // m - t + 1 may be as small as 1 (shapes (1, 0), (0, 1): at most 4 cells).
     assert!(!failures.is_empty() && failures.len() <= 5);
     for f in &failures {
@@ -280,7 +319,7 @@ fn independent_points_are_not_a_net_and_the_interval_is_named() {
         assert_is_a_real_failure(&pts, 2, m, f);
     }
     assert!(
-        elementary_interval_failures_u32(&pts, 2, m, t, 5)
+        elementary_interval_failures_u32(&pts, 2, m, t, 5, &Budget::DEFAULT)
             .unwrap()
             .is_empty()
     );
@@ -296,8 +335,8 @@ fn sobol_with_one_point_moved_is_not_a_0m2_net() {
     let old = u64::from(pts[10] >> 24);
     pts[10] ^= 1 << 24;
     let new = u64::from(pts[10] >> 24);
-    assert_eq!(t_value_u32(&pts, 2, m).unwrap(), 1);
-    let failures = elementary_interval_failures_u32(&pts, 2, m, 0, 100).unwrap();
+    assert_eq!(t_value_u32(&pts, 2, m, &Budget::DEFAULT).unwrap(), 1);
+    let failures = elementary_interval_failures_u32(&pts, 2, m, 0, 100, &Budget::DEFAULT).unwrap();
     for f in &failures {
         assert_is_a_real_failure(&pts, 2, m, f);
     }
@@ -315,7 +354,7 @@ fn sobol_with_one_point_moved_is_not_a_0m2_net() {
     let f = Points::from_u32(&pts);
     let p = Points::new(&f, 2).unwrap();
     assert_eq!(
-        elementary_interval_failures(p, 2, m, 0, 100).unwrap(),
+        elementary_interval_failures(p, 2, m, 0, 100, &Budget::DEFAULT).unwrap(),
         failures
     );
 }
@@ -337,10 +376,10 @@ fn rank_test_agrees_with_counting_on_sobol_projections_and_random_matrices() {
     for dims in &sets {
         for m in [1, 4, 7, 10] {
             let net = DigitalNet2::from_sobol_dimensions(dims, m).unwrap();
-            let t = t_value(&net).unwrap();
+            let t = t_value(&net, &Budget::DEFAULT).unwrap();
             let pts = net.points().unwrap();
             assert_eq!(
-                t_value_u32(&pts, dims.len(), m).unwrap(),
+                t_value_u32(&pts, dims.len(), m, &Budget::DEFAULT).unwrap(),
                 t,
                 "{dims:?} m {m}"
             );
@@ -355,17 +394,19 @@ fn rank_test_agrees_with_counting_on_sobol_projections_and_random_matrices() {
             .map(|j| core::array::from_fn(|k| mix(seed * 1000 + j as u64 * 40 + k as u64) as u32))
             .collect();
         let net = DigitalNet2::new(m, columns).unwrap();
-        let t = t_value(&net).unwrap();
+        let t = t_value(&net, &Budget::DEFAULT).unwrap();
         let pts = net.points().unwrap();
         assert_eq!(
-            t_value_u32(&pts, s, m).unwrap(),
+            t_value_u32(&pts, s, m, &Budget::DEFAULT).unwrap(),
             t,
             "seed {seed} s {s} m {m}"
         );
         checked_positive_t += usize::from(t > 0);
         // The dependent shape is among the intervals that break t - 1.
-        if let Some(shape) = dependent_shape(&net).unwrap() {
-            let failures = elementary_interval_failures_u32(&pts, s, m, t - 1, usize::MAX).unwrap();
+        if let Some(shape) = dependent_shape(&net, &Budget::DEFAULT).unwrap() {
+            let failures =
+                elementary_interval_failures_u32(&pts, s, m, t - 1, usize::MAX, &Budget::DEFAULT)
+                    .unwrap();
             assert!(failures.iter().any(|f| f.shape == shape), "seed {seed}");
         } else {
             assert_eq!(t, 0);
@@ -388,26 +429,29 @@ fn invalid_requests_are_errors() {
         Err(Error::DimensionOutOfRange { .. })
     ));
     assert_eq!(
-        t_value_u32(&[0; 6], 2, 2),
+        t_value_u32(&[0; 6], 2, 2, &Budget::DEFAULT),
         Err(Error::BufferLength {
             expected: 8,
             got: 6
         })
     );
-    assert_eq!(t_value_u32(&[0; 8], 0, 2), Err(Error::ZeroDimensions));
     assert_eq!(
-        t_value_u32(&[0; 8], 2, 40),
+        t_value_u32(&[0; 8], 0, 2, &Budget::DEFAULT),
+        Err(Error::ZeroDimensions)
+    );
+    assert_eq!(
+        t_value_u32(&[0; 8], 2, 40, &Budget::DEFAULT),
         Err(Error::MTooLarge { m: 40, max: 32 })
     );
-    assert!(elementary_interval_failures_u32(&[0; 8], 2, 2, 3, 1).is_err());
+    assert!(elementary_interval_failures_u32(&[0; 8], 2, 2, 3, 1, &Budget::DEFAULT).is_err());
     let d = [0.25, 0.75];
     let p = Points::new(&d, 1).unwrap();
     assert_eq!(
-        t_value_points(p, 0, 1),
+        t_value_points(p, 0, 1, &Budget::DEFAULT),
         Err(Error::BaseTooSmall { base: 0 })
     );
-    assert_eq!(t_value_points(p, 2, 1), Ok(0));
-    assert!(t_value_points(p, 2, 60).is_err());
+    assert_eq!(t_value_points(p, 2, 1, &Budget::DEFAULT), Ok(0));
+    assert!(t_value_points(p, 2, 60, &Budget::DEFAULT).is_err());
 }
 
 /// Runs `f` on a thread with a 256 KiB stack: recursion that grew with the input would
@@ -426,7 +470,11 @@ fn rank_test_in_thousands_of_dimensions_needs_no_deep_stack() {
     for d in [10_000usize, 10_057, 21_201] {
         let (t, shape, net) = on_small_stack(move || {
             let net = DigitalNet2::from_sobol(d, 2).unwrap();
-            (t_value(&net).unwrap(), dependent_shape(&net).unwrap(), net)
+            (
+                t_value(&net, &Budget::DEFAULT).unwrap(),
+                dependent_shape(&net, &Budget::DEFAULT).unwrap(),
+                net,
+            )
         });
         // With m = 2 a dimension's first row is one of three non-zero 2-bit vectors (no
         // generator matrix of a Sobol' dimension has a zero first row, checked here on the
@@ -447,7 +495,7 @@ fn rank_test_in_thousands_of_dimensions_needs_no_deep_stack() {
             .flat_map(|i| [pts[i * d + dims[0]], pts[i * d + dims[1]]])
             .collect();
         assert!(
-            !elementary_interval_failures_u32(&proj, 2, 2, 0, 1)
+            !elementary_interval_failures_u32(&proj, 2, 2, 0, 1, &Budget::DEFAULT)
                 .unwrap()
                 .is_empty()
         );
@@ -456,12 +504,12 @@ fn rank_test_in_thousands_of_dimensions_needs_no_deep_stack() {
 
 #[test]
 fn rank_tests_past_the_budget_are_refused_at_once() {
-    use qmckit::digital::rank::t_value_within;
-    use qmckit::work::{Budget, no_progress};
+    use qmckit::digital::rank::t_value;
+    use qmckit::work::Budget;
     for (d, m) in [(50usize, 32u32), (1000, 20), (16, 32)] {
         let net = DigitalNet2::from_sobol(d, m).unwrap();
         let start = std::time::Instant::now();
-        let got = t_value(&net);
+        let got = t_value(&net, &Budget::DEFAULT);
         let secs = start.elapsed().as_secs_f64();
         assert!(
             matches!(got, Err(Error::OverBudget { .. })),
@@ -470,22 +518,20 @@ fn rank_tests_past_the_budget_are_refused_at_once() {
         assert!(secs < 1.0, "d = {d}, m = {m}: {secs} s");
         // A smaller budget refuses at least as soon.
         let tiny = Budget::seconds(0.001).unwrap();
-        assert!(t_value_within(&net, &tiny, &no_progress).is_err());
+        assert!(t_value(&net, &tiny).is_err());
     }
     // Within the budget, with progress: the same t as counting the points (an independent
     // algorithm) on 5D Sobol' with m = 12.
-    use qmckit::analysis::tvalue::t_value_u32_within;
+    use qmckit::analysis::tvalue::t_value_u32;
     let net = DigitalNet2::from_sobol(5, 12).unwrap();
     let reports = std::sync::Mutex::new(Vec::new());
-    let t = t_value_within(&net, &Budget::DEFAULT, &|done, total| {
-        reports.lock().unwrap().push((done, total))
-    })
+    let t = t_value(
+        &net,
+        Limits::DEFAULT.with_progress(&|done, total| reports.lock().unwrap().push((done, total))),
+    )
     .unwrap();
     let pts = net.points().unwrap();
-    assert_eq!(
-        t,
-        t_value_u32_within(&pts, 5, 12, &Budget::UNLIMITED).unwrap()
-    );
+    assert_eq!(t, t_value_u32(&pts, 5, 12, &Budget::UNLIMITED).unwrap());
     let reports = reports.into_inner().unwrap();
     assert_eq!(reports.last(), Some(&(1000, 1000)));
     assert!(reports.iter().all(|&(d, t)| d <= t));
@@ -493,7 +539,7 @@ fn rank_tests_past_the_budget_are_refused_at_once() {
 
 #[test]
 fn generated_points_and_counting_are_checked_in_size_and_time() {
-    use qmckit::analysis::tvalue::t_value_u32_within;
+    use qmckit::analysis::tvalue::t_value_u32;
     use qmckit::work::Budget;
     // 2^32 points in 2D are 32 GiB: an error, not an allocation.
     let net = DigitalNet2::from_sobol(2, 32).unwrap();
@@ -515,22 +561,19 @@ fn generated_points_and_counting_are_checked_in_size_and_time() {
     let pts = DigitalNet2::from_sobol(8, 16).unwrap().points().unwrap();
     let start = std::time::Instant::now();
     assert!(matches!(
-        t_value_u32(&pts, 8, 16),
+        t_value_u32(&pts, 8, 16, &Budget::DEFAULT),
         Err(Error::OverBudget { .. })
     ));
     assert!(start.elapsed().as_secs_f64() < 0.5);
     let small = DigitalNet2::from_sobol(3, 8).unwrap();
-    let want = t_value(&small).unwrap();
+    let want = t_value(&small, &Budget::DEFAULT).unwrap();
     let pts = small.points().unwrap();
-    assert_eq!(
-        t_value_u32_within(&pts, 3, 8, &Budget::UNLIMITED).unwrap(),
-        want
-    );
+    assert_eq!(t_value_u32(&pts, 3, 8, &Budget::UNLIMITED).unwrap(), want);
 }
 
 /// The deadline stops the counting search.
 mod deadlines {
-    use qmckit::analysis::tvalue::t_value_u32_within;
+    use qmckit::analysis::tvalue::t_value_u32;
     use qmckit::work::Budget;
     use qmckit::{Error, Sampler, Sobol};
 
@@ -541,11 +584,8 @@ mod deadlines {
         s.fill(0, &mut pts).unwrap();
         let b = Budget::seconds(0.5).unwrap().started();
         std::thread::sleep(std::time::Duration::from_millis(700));
-        let r = t_value_u32_within(&pts, 4, 10, &b);
+        let r = t_value_u32(&pts, 4, 10, &b);
         assert!(matches!(r, Err(Error::OutOfTime { .. })), "{r:?}");
-        assert_eq!(
-            t_value_u32_within(&pts, 4, 10, &Budget::DEFAULT).ok(),
-            Some(2)
-        );
+        assert_eq!(t_value_u32(&pts, 4, 10, &Budget::DEFAULT).ok(), Some(2));
     }
 }

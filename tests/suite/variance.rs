@@ -110,7 +110,7 @@ fn prediction_from_a_measured_mean_spectrum_matches_the_closed_form() {
         assert!((got / want - 1.0).abs() < 0.03, "{f:?}: {got} vs {want}");
     }
     // One point's spectrum is flat: the prediction is then the white-noise variance.
-    let one = spectrum_2d(Points::new(&[0.2, 0.9], 2).unwrap(), 8).unwrap();
+    let one = spectrum_2d(Points::new(&[0.2, 0.9], 2).unwrap(), 8, &Budget::DEFAULT).unwrap();
     let p = predicted_variance(&one, &gauss);
     assert!((p.variance - gauss.white_noise_variance()).abs() < 1e-15);
     assert!(p.tail > 0.0 && p.tail < p.variance);

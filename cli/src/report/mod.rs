@@ -142,15 +142,11 @@ impl Ctx {
         if self.quick { quick } else { full }
     }
 
-    /// The exact star discrepancy of 2D points, refused past the budget (`N^2` steps).
+    /// The exact star discrepancy of 2D points, refused past the budget (`star_cost`).
     pub fn star(&self, p: &[[f64; 2]]) -> Result<f64, Failure> {
         let data = flat(p);
         let points = qmckit::analysis::Points::new(&data, 2)?;
-        Ok(qmckit::analysis::star::star_exact_within(
-            points,
-            &self.budget,
-            &qmckit::work::no_progress,
-        )?)
+        Ok(qmckit::analysis::star::star_exact(points, &self.budget)?)
     }
 
     /// Renders `fig` into `DIR/name` (format from the extension) and returns its [`Fig`].

@@ -29,7 +29,7 @@ fn raw(s: &impl Sampler, start: u32, n: u32) -> Result<Vec<u32>, Failure> {
 fn intervals(ctx: &Ctx) -> Result<Section, Failure> {
     let sobol = Sobol::new(2)?;
     let p = pts2(&sobol, 32, (0, 1))?;
-    let t = t_value_u32(&raw(&sobol, 0, 32)?, 2, 5)?;
+    let t = t_value_u32(&raw(&sobol, 0, 32)?, 2, 5, &Budget::DEFAULT)?;
     let mut s = Section::new(
         "elementary-intervals",
         "32 2D Sobol' points and their elementary intervals (1x32 ... 32x1)",
@@ -105,7 +105,7 @@ fn zero_two(ctx: &Ctx) -> Result<Section, Failure> {
         )?,
     );
     for k in 0..runs {
-        let t = t_value_u32(&raw(&sobol, k * len, len)?, 2, 4)?;
+        let t = t_value_u32(&raw(&sobol, k * len, len)?, 2, 4, &Budget::DEFAULT)?;
         nets += usize::from(t == 0);
         s.rows.push(row(
             format!("t-value of points {}..{}", k * len, (k + 1) * len - 1),
@@ -113,7 +113,7 @@ fn zero_two(ctx: &Ctx) -> Result<Section, Failure> {
             "0",
         ));
     }
-    let t64 = t_value_u32(&raw(&sobol, 0, 64)?, 2, 6)?;
+    let t64 = t_value_u32(&raw(&sobol, 0, 64)?, 2, 6, &Budget::DEFAULT)?;
     s.rows
         .push(row("t-value of the first 64 points", t64.to_string(), "0"));
     s.note = format!(

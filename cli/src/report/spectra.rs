@@ -3,7 +3,7 @@
 
 use crate::plot::{ImageFigure, PointsFigure, RadialFigure, SpectrumFigure};
 use qmckit::analysis::Points;
-use qmckit::analysis::spectrum::{Spectrum, SpectrumMean, spectrum_2d_within};
+use qmckit::analysis::spectrum::{Spectrum, SpectrumMean, spectrum_2d};
 use qmckit::analysis::variance::{Measured, TorusIntegrand, predicted_variance, shifted_error};
 use qmckit::blue_noise::{BestCandidate, GaussianBlueNoise, PoissonDisk, VoidAndCluster};
 use qmckit::random::stratified::{Jitter, Stratified};
@@ -59,7 +59,7 @@ fn sampler_set(s: &impl Sampler, n: u32) -> Result<Set, Failure> {
 fn mean_spectrum(sets: &[Set], k: usize, ctx: &Ctx) -> Result<Spectrum, Failure> {
     let mut mean = SpectrumMean::new();
     for s in sets {
-        mean.add(&spectrum_2d_within(Points::new(s, 2)?, k, &ctx.budget)?)?;
+        mean.add(&spectrum_2d(Points::new(s, 2)?, k, &ctx.budget)?)?;
     }
     Ok(mean.mean()?)
 }
@@ -397,7 +397,7 @@ fn variance(ctx: &Ctx) -> Result<Section, Failure> {
         let mut mean = SpectrumMean::new();
         let mut pred = 0.0;
         for g in &group {
-            let one = spectrum_2d_within(Points::new(g, 2)?, k, &ctx.budget)?;
+            let one = spectrum_2d(Points::new(g, 2)?, k, &ctx.budget)?;
             pred += predicted_variance(&one, &f).variance / group.len() as f64;
             mean.add(&one)?;
         }

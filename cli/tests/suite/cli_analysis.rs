@@ -143,13 +143,13 @@ fn max_seconds_sets_the_star_budget() {
             "",
         )
     };
-    // 2000 3D points are within the default budget (48989) but not within a hundredth of a
-    // second: 1.25 N^2 <= 3e6 up to N = 1549 (2.4e6^0.5 = 1549.2).
+    // 2000 3D points are within the default budget (64517) but not within a hundredth of a
+    // second: 25.3 N^1.85 nanoseconds of one core, within 2e7 on two cores up to N = 1541.
     let small = csv_of("2000", "3");
     assert_usage_error(
         &["discrepancy", "--metric", "star", "--max-seconds", "0.01"],
         &small,
-        "(at most 1549 within --max-seconds 0.01)",
+        "(at most 1541 within --max-seconds 0.01)",
     );
     // 'inf' is no limit; zero, negatives and NaN are refused.
     assert_eq!(
@@ -172,13 +172,13 @@ fn max_seconds_sets_the_star_budget() {
             "--max-seconds must be a positive number of seconds",
         );
     }
-    // 40 12D points: refused by default (0.005 N^7.5 <= 3e9 up to N = 37, 6e11^(1/7.5) =
-    // 37.2), computed with 20 seconds (0.005 40^7.5 = 5.2e9 <= 6e9; about 3 s here).
-    let large = csv_of("40", "12");
+    // 42 12D points: refused within a second (0.0123 N^7 nanoseconds of one core, within
+    // 2e9 on two cores up to N = 40), computed with 20 seconds (about 1.4 s estimated).
+    let large = csv_of("42", "12");
     assert_usage_error(
-        &["discrepancy", "--metric", "star"],
+        &["discrepancy", "--metric", "star", "--max-seconds", "1"],
         &large,
-        "(at most 37 within --max-seconds 10)",
+        "(at most 40 within --max-seconds 1)",
     );
     let text = stdout(
         &["discrepancy", "--metric", "star", "--max-seconds", "20"],
@@ -192,12 +192,7 @@ fn max_seconds_sets_the_star_budget() {
     let p = qmckit::analysis::Points::new(&coords, 12).unwrap();
     let lower = qmckit::analysis::star::star_lower_bound(p, 1, 20_000);
     assert!(lower <= got + 1e-12 && got < lower + 0.01, "{lower} {got}");
-    let want = qmckit::analysis::star::star_exact_within(
-        p,
-        &qmckit::work::Budget::UNLIMITED,
-        &qmckit::work::no_progress,
-    )
-    .unwrap();
+    let want = qmckit::analysis::star::star_exact(p, &qmckit::work::Budget::UNLIMITED).unwrap();
     assert_eq!(got, want);
 }
 
@@ -576,14 +571,14 @@ fn tvalue_in_huge_dimensions_and_past_the_budget() {
         "",
         "--max-seconds must be a positive number of seconds",
     );
-    // A larger budget admits what the default refuses (counting 2^16 points in 4D, about
-    // 16 s by the estimate).
+    // A larger budget admits what the default refuses (counting 2^21 points in 4D, about
+    // 18 s by the estimate for t = 3, the t-value of the unscrambled net).
     assert_usage_error(
         &[
             "tvalue",
             "sobol",
             "-m",
-            "16",
+            "21",
             "-d",
             "4",
             "--scramble",

@@ -31,7 +31,7 @@ use rayon::prelude::*;
 use super::families::{Family, RandomIntegrand};
 use crate::error::{Error, Result};
 use crate::sampler::Sampler;
-use crate::work::{Budget, Cost, Progress, Rate};
+use crate::work::{Cost, Limits, Rate};
 
 /// The estimate's rate: coordinates generated and integrated a second on one core (a
 /// conservative figure for the sequences; the blue-noise sets' construction is bounded by
@@ -69,19 +69,19 @@ pub struct BenchmarkCurve {
 /// A sampler factory: `make(n, seed)` builds the sampler for `n` points with `seed`.
 pub type Factory<'a> = &'a (dyn Fn(u64, u64) -> Result<Box<dyn Sampler>> + Sync);
 
-/// Runs the benchmark for the sampler that `make` builds (see the module's documentation).
-/// `progress(done, total)` counts sampler builds.
+/// Runs the benchmark for the sampler that `make` builds (see the module's documentation),
+/// within `limits` (a budget, and a progress report that counts sampler builds).
 ///
 /// # Errors
 /// [`Error::InvalidParameter`] for no sizes, a size of 0, sizes not increasing, no
 /// integrands or more than [`MAX_INTEGRANDS`], dimensions out of the family's range;
-/// [`Error::TooLarge`]-style refusals of `budget` ([`Budget::check`]) before starting and
+/// the budget's refusal ([`Budget::check`](crate::work::Budget::check)) before starting and
 /// [`Error::OutOfTime`] past its deadline; the factory's errors.
 ///
 /// ```
 /// use qmckit::analysis::integrate::{BenchmarkOptions, Family, benchmark};
 /// use qmckit::randomize::{FastOwen, Scrambled};
-/// use qmckit::work::{Budget, no_progress};
+/// use qmckit::work::Budget;
 /// use qmckit::{Sampler, Sobol};
 /// let opts = BenchmarkOptions {
 ///     family: Family::Gaussian, dims: 2, sizes: vec![64, 256, 1024], integrands: 64, seed: 1,
@@ -89,17 +89,18 @@ pub type Factory<'a> = &'a (dyn Fn(u64, u64) -> Result<Box<dyn Sampler>> + Sync)
 /// let make = |_n: u64, seed: u64| -> qmckit::Result<Box<dyn Sampler>> {
 ///     Ok(Box::new(Scrambled::new(Sobol::new(2)?, FastOwen::new(seed))))
 /// };
-/// let curve = benchmark(&make, &opts, &Budget::DEFAULT, &no_progress)?;
+/// let curve = benchmark(&make, &opts, &Budget::DEFAULT)?;
 /// // Owen-scrambled Sobol' on smooth integrands: close to N^-1.5.
 /// assert!(curve.slope.unwrap() < -1.2);
 /// # Ok::<(), qmckit::Error>(())
 /// ```
-pub fn benchmark(
+pub fn benchmark<'a>(
     make: Factory<'_>,
     opts: &BenchmarkOptions,
-    budget: &Budget,
-    progress: Progress<'_>,
+    limits: impl Into<Limits<'a>>,
 ) -> Result<BenchmarkCurve> {
+    let limits = limits.into();
+    let progress = limits.progress();
     let bad = |what| Err(Error::InvalidParameter { what });
     if opts.sizes.is_empty() || opts.sizes[0] == 0 {
         return bad("benchmark sizes: at least one, each at least 1");
@@ -112,7 +113,7 @@ pub fn benchmark(
     }
     // Refuses bad dimensions before anything runs.
     RandomIntegrand::draw(opts.family, opts.dims, opts.seed)?;
-    let budget = budget.started();
+    let budget = limits.budget().started();
     let coords: f64 = opts.sizes.iter().map(|&n| n as f64).sum::<f64>()
         * opts.dims as f64
         * opts.integrands as f64;

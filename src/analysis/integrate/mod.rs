@@ -29,11 +29,12 @@
 //! use qmckit::analysis::integrate::{Options, integrate};
 //! use qmckit::lattice::Rank1Lattice;
 //! use qmckit::randomize::{CranleyPatterson, Scrambled};
+//! use qmckit::work::Budget;
 //! // The integral of x y over the unit square is 1/4.
 //! let opts = Options { abs_tol: 1e-6, ..Options::default() };
 //! let est = integrate(|x| x[0] * x[1], 2, |seed| {
 //!     Ok(Scrambled::new(Rank1Lattice::kuo(2)?, CranleyPatterson::new(seed)))
-//! }, &opts)?;
+//! }, &opts, &Budget::UNLIMITED)?;
 //! assert!(est.converged && (est.value - 0.25).abs() < 1e-5);
 //! # Ok::<(), qmckit::Error>(())
 //! ```
@@ -54,7 +55,7 @@ pub use student::{t_quantile, two_sided_cdf};
 
 use crate::error::{Error, Result};
 use crate::sampler::Sampler;
-use crate::work::Budget;
+use crate::work::Limits;
 
 /// The most replications [`integrate`] takes (`2^20`: one sampler and one running sum
 /// each are held at once).
@@ -166,40 +167,31 @@ fn check_options(opts: &Options) -> Result<()> {
 /// randomized QMC with doubling (see the [module docs](self)). `make(seed)` builds one
 /// randomization (its `dims()` must be `dims`).
 ///
+/// The limits: a budget whose deadline (started here if it was not) is read once per batch
+/// of [`BATCH`] points; pass `&Budget::UNLIMITED` for none. The work is bounded by
+/// `opts.max_points` evaluations of `f` (and the construction's length); the deadline
+/// bounds its time whatever `f` costs.
+///
 /// # Errors
 /// [`Error::InvalidParameter`] for bad options (among them more than
 /// [`MAX_REPLICATIONS`]), a sampler of another dimension, or a non-finite value of `f`;
 /// [`Error::NotRepresentable`] when the running sums, the estimate or its half-width
 /// overflow `f64` (values of `f` near `1e308`: an error, never `inf ± NaN`); errors of
-/// `make` and of the samplers.
-pub fn integrate<S, M, F>(f: F, dims: usize, make: M, opts: &Options) -> Result<Estimate>
-where
-    S: Sampler,
-    M: Fn(u64) -> Result<S>,
-    F: Fn(&[f64]) -> f64,
-{
-    integrate_within(f, dims, make, opts, &Budget::UNLIMITED)
-}
-
-/// [`integrate`] under the deadline of `budget` (started here if it was not; read once
-/// per batch of [`BATCH`] points). Its work is bounded by `opts.max_points` evaluations
-/// of `f` (and the construction's length); the deadline bounds its time whatever `f`
-/// costs.
-///
-/// # Errors
-/// As [`integrate`]; [`Error::OutOfTime`] past the deadline.
-pub fn integrate_within<S, M, F>(
+/// `make` and of the samplers; [`Error::OutOfTime`] past the deadline.
+pub fn integrate<'a, S, M, F>(
     f: F,
     dims: usize,
     make: M,
     opts: &Options,
-    budget: &Budget,
+    limits: impl Into<Limits<'a>>,
 ) -> Result<Estimate>
 where
     S: Sampler,
     M: Fn(u64) -> Result<S>,
     F: Fn(&[f64]) -> f64,
 {
+    let limits = limits.into();
+    let budget = limits.budget();
     check_options(opts)?;
     let budget = budget.started();
     if dims == 0 {

@@ -23,8 +23,9 @@
 //! | [`generalized`] | `gl2` | `D` (square root taken) | UTK `GL2Discrepancy` |
 //! | [`diaphony`] | `diaphony` | `F` (square root taken) | UTK `Diaphony` (Zinterhof) |
 //!
-//! The functions run without a time limit; [`L2Metric::eval_within`] estimates the cost
-//! first ([`L2Metric::cost`]), refuses what exceeds a [`Budget`], and reports progress.
+//! The functions run without a time limit; [`L2Metric::eval`] estimates the cost
+//! first ([`L2Metric::cost`], the models of [`cost`]), refuses what exceeds a [`Budget`](crate::work::Budget),
+//! and reports progress.
 //!
 //! ## The pair sum
 //!
@@ -103,6 +104,7 @@
 //! assembly when changing a factor.
 
 mod arith;
+pub mod cost;
 mod kernel;
 mod measures;
 mod sums;
@@ -111,39 +113,16 @@ mod tests;
 mod tree;
 
 pub use measures::{
-    centered, diaphony, generalized, l2_star, l2_star_direct, mixture, symmetric, unanchored,
-    wrap_around,
+    centered, diaphony, generalized, l2_star, l2_star_direct, l2_star_fast, mixture, symmetric,
+    unanchored, wrap_around,
 };
-pub use tree::{TREE_MAX_D, l2_star_fast};
+pub use tree::TREE_MAX_D;
 
 use super::Points;
 use crate::Result;
 use crate::work::Stop;
-use crate::work::{Budget, Cost, Progress, Rate, no_progress};
+use crate::work::{Cost, Limits};
 use kernel::{Build, Ticker};
-
-/// The throughput of the pair sum in the plain `f64` path, in pair steps of
-/// [`L2Metric::cost`] (one pair `(i, j)` and one coordinate, plus two per pair for its
-/// accumulation): 1e9 a second. Measured on one thread of an x86-64 CPU with AVX-512,
-/// the slowest of the eight measures is the mixture discrepancy of 1024 points in 500
-/// dimensions: 2.6e8 steps in 0.10 s (2.6e9 a second) on an idle machine, 0.23 s
-/// (1.15e9) on one loaded by other work; in 2 to 40 dimensions 4e9 to 2e10 (e.g. the
-/// wrap-around discrepancy of 4096 points in 8D, 8.4e7 steps in 9.1 ms). So the
-/// estimate errs on the long side on a loaded machine and by 2-5x on an idle one with
-/// two threads. The portable build of the measures with fused multiply-adds
-/// (wrap-around, mixture, diaphony), used on x86-64 CPUs without FMA, runs 4-8x slower.
-pub const PAIR_RATE: Rate = Rate::per_second(1.0e9);
-
-/// [`PAIR_RATE`] for the wide path (tracked exponents) used in high dimension: 5e8 steps
-/// a second. Measured on one thread, 1024 points in 1000 dimensions (5.2e8 steps): the
-/// slowest measures (unanchored, mixture) at 2.1e9 a second idle, 6.7e8 loaded.
-pub const WIDE_PAIR_RATE: Rate = Rate::per_second(5.0e8);
-
-/// The throughput of [`l2_star_fast`]'s divide and conquer in row operations of its cost
-/// model (`n log2 n` in one and two dimensions, `n (log2 n)^(d-1) / (d-1)!` from three):
-/// 1e7 a second, below the measured 4.8e7 (2^20 points in 2D, 0.44 s on two threads),
-/// 2.5e7 (2^18 points in 3D, 1.7 s on one) and 1.5e7 (2^16 points in 5D, 11.8 s on one).
-pub const TREE_RATE: Rate = Rate::per_second(1.0e7);
 
 /// The eight measures of this module, by name.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -214,7 +193,7 @@ impl L2Metric {
     }
 
     /// The path's dimension limit (plain `f64` up to it, tracked exponents above).
-    fn fast_d(self) -> usize {
+    pub(crate) fn fast_d(self) -> usize {
         match self {
             L2Metric::Unanchored => measures::UNANCHORED_FAST_D,
             L2Metric::Diaphony => measures::DIAPHONY_FAST_D,
@@ -222,71 +201,52 @@ impl L2Metric {
         }
     }
 
-    /// The estimated cost of [`eval`](Self::eval) on `n` points in `d` dimensions: the
-    /// pair sum's `n (n - 1) / 2 * (d + 2) + 2 n d` steps at [`PAIR_RATE`] (at
-    /// [`WIDE_PAIR_RATE`] above the plain path's dimension limit), or, for the L2-star
-    /// discrepancy where it takes the divide and conquer, that algorithm's row operations
-    /// at [`TREE_RATE`]. For example 4096 points in 8 dimensions: 8.4e7 steps, 0.084 s
-    /// estimated (measured: 0.02-0.04 s on one thread); 10^5 points in 10 dimensions:
-    /// 6e10 steps, 60 s. `O(d)` time.
-    pub fn cost(self, n: usize, d: usize) -> Cost {
-        let (nf, df) = (n as f64, d as f64);
-        if self == L2Metric::L2Star && tree::tree_pays_off(d, n) {
-            let lg = nf.max(2.0).log2();
-            let mut rows = nf * lg;
-            for k in 2..d {
-                rows *= lg / k as f64;
-            }
-            return Cost::steps(rows, TREE_RATE);
-        }
-        let steps = nf * (nf - 1.0) / 2.0 * (df + 2.0) + 2.0 * nf * df;
-        let rate = if d > self.fast_d() {
-            WIDE_PAIR_RATE
-        } else {
-            PAIR_RATE
-        };
-        Cost::steps(steps, rate)
-    }
-
-    /// Evaluates the measure on `p`, without a time limit (the free function of the same
-    /// name, e.g. [`centered`]). For a bounded running time use
-    /// [`eval_within`](Self::eval_within).
+    /// The estimated time of [`eval`](Self::eval) on `n` points in `d`
+    /// dimensions, on [`CORES`](crate::work::CORES) cores: the model of the path that runs
+    /// (module [`l2::cost`](crate::analysis::l2::cost)): the pairs at this measure's
+    /// [`pair_cost`](Self::pair_cost), or the features streamed from memory, or the
+    /// L2-star divide and conquer's row operations. For example 30000 points in 8D: 0.38 s
+    /// for the centered discrepancy, 0.22 s for the L2-star. `O(d)`.
     ///
-    /// # Errors
-    /// [`Error::NotRepresentable`](crate::Error::NotRepresentable) for a value outside
-    /// the normal range of `f64` (module documentation, "Range").
-    pub fn eval(self, p: Points<'_>) -> Result<f64> {
-        self.eval_within(p, &Budget::UNLIMITED, &no_progress)
+    /// ```
+    /// use qmckit::analysis::l2::L2Metric;
+    /// let cd = L2Metric::Centered.cost(30_000, 8).seconds();
+    /// assert!((0.3..0.5).contains(&cd));
+    /// // 10^6 points in 10 dimensions: 5e11 pairs, about nine minutes.
+    /// assert!(L2Metric::Centered.cost(1_000_000, 10).seconds() > 100.0);
+    /// ```
+    pub fn cost(self, n: usize, d: usize) -> Cost {
+        cost::cost(self, n, d)
     }
 
     /// Evaluates the measure on `p` if its estimated cost ([`cost`](Self::cost)) fits in
-    /// `budget`, reporting `progress(rows done, n)` about a hundred times during the pair
-    /// sum (from `(0, n)` to `(n, n)`; only those two for the divide and conquer).
+    /// the budget of `limits` (`&Budget::UNLIMITED`: no limit, as the free function of the
+    /// same name, e.g. [`centered`]), reporting `progress(rows done, n)` to the progress
+    /// callback of `limits` about a hundred times during the pair sum (from `(0, n)` to
+    /// `(n, n)`; only those two for the divide and conquer).
     ///
     /// ```
-    /// use qmckit::{work::{Budget, no_progress}, analysis::{Points, l2::L2Metric}};
+    /// use qmckit::{work::Budget, analysis::{Points, l2::L2Metric}};
     /// let data: Vec<f64> = (0..300).map(|i| (i as f64 * 0.618_033_988_749_895).fract()).collect();
     /// let p = Points::new(&data, 3)?;
     /// let budget = Budget::seconds(1.0)?;
-    /// let cd = L2Metric::Centered.eval_within(p, &budget, &no_progress)?;
-    /// assert_eq!(cd, L2Metric::Centered.eval(p)?);
-    /// // 10^6 points in 10 dimensions: about 6e12 steps (hours), refused at once.
+    /// let cd = L2Metric::Centered.eval(p, &budget)?;
+    /// assert_eq!(cd, L2Metric::Centered.eval(p, &Budget::UNLIMITED)?);
+    /// // 10^6 points in 10 dimensions: 5e11 pairs, about nine minutes, refused at once.
     /// assert!(L2Metric::Centered.cost(1_000_000, 10).seconds() > 1.0);
     /// # Ok::<(), qmckit::Error>(())
     /// ```
     ///
     /// # Errors
-    /// [`Error::OverBudget`](crate::Error::OverBudget) when the estimate exceeds
-    /// `budget` (before any work); [`Error::NotRepresentable`](crate::Error::NotRepresentable)
-    /// as [`eval`](Self::eval); [`Error::OutOfTime`](crate::Error::OutOfTime) past the
-    /// deadline of `budget` (started here if it was not), read once per task of the pair
-    /// sum (`O(n d)` work) and once per node of at least 256 rows of the divide and conquer.
-    pub fn eval_within(
-        self,
-        p: Points<'_>,
-        budget: &Budget,
-        progress: Progress<'_>,
-    ) -> Result<f64> {
+    /// [`Error::OverBudget`](crate::Error::OverBudget) when the estimate exceeds the budget
+    /// (before any work); [`Error::NotRepresentable`](crate::Error::NotRepresentable) for a
+    /// value outside the normal range of `f64` (module documentation, "Range");
+    /// [`Error::OutOfTime`](crate::Error::OutOfTime) past the deadline of the budget
+    /// (started here if it was not), read once per task of the pair sum (`O(n d)` work) and
+    /// once per node of at least 256 rows of the divide and conquer.
+    pub fn eval<'a>(self, p: Points<'_>, limits: impl Into<Limits<'a>>) -> Result<f64> {
+        let limits = limits.into();
+        let (budget, progress) = (limits.budget(), limits.progress());
         budget.check(self.what(), self.cost(p.len(), p.dims()))?;
         let stop = Stop::new(budget, self.what());
         let t = &mut Ticker::with_stop(progress, p.len(), &stop);

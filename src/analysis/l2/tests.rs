@@ -265,3 +265,90 @@ fn wide_path_equals_plain_path_where_both_run() {
 fn min2(a: f64, b: f64) -> f64 {
     a.min(b)
 }
+
+// ---------------------------------------------------------------------------------------
+// The divide and conquer of the L2-star discrepancy against the pair sum.
+// ---------------------------------------------------------------------------------------
+
+/// A stop that never fires.
+static NEVER: crate::work::Stop = crate::work::Stop::never("test");
+
+/// SplitMix64 uniforms in `[0, 1)`.
+fn uniform(len: usize, seed: u64) -> Vec<f64> {
+    let mut s = seed;
+    (0..len)
+        .map(|_| {
+            s = s.wrapping_add(0x9E37_79B9_7F4A_7C15);
+            let mut z = s;
+            z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+            z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+            z ^= z >> 31;
+            (z >> 11) as f64 / (1u64 << 53) as f64
+        })
+        .collect()
+}
+
+/// `|a - b| / |b|`.
+fn rel(a: f64, b: f64) -> f64 {
+    (a - b).abs() / b.abs()
+}
+
+#[test]
+fn general_path_matches_pair_sum_d1_to_6() {
+    for d in 1..=6 {
+        for (n, seed) in [(1usize, 1u64), (50, 2), (700, 3), (2500, 4)] {
+            let x = uniform(n * d, seed * 100 + d as u64);
+            let p = Points::new(&x, d).unwrap();
+            let (tree, direct) = (
+                super::tree::l2_star_fast_with(p, false, &NEVER),
+                l2_star_direct(p).unwrap(),
+            );
+            assert!(
+                rel(tree, direct) <= 1e-13,
+                "d={d} n={n}: {tree:e} vs {direct:e}"
+            );
+            if d <= 2 {
+                let plane = super::tree::l2_star_fast_with(p, true, &NEVER);
+                assert!(rel(tree, plane) <= 1e-13, "d={d} n={n}");
+            }
+        }
+    }
+}
+
+#[test]
+fn general_path_with_ties_zeros_and_ones() {
+    // Coordinates on the grid k/8 (so many exactly 0 and 1, repeated points), and sets
+    // where one coordinate is constant 0 or 1.
+    for d in 3..=6 {
+        let x: Vec<f64> = uniform(1500 * d, 7 + d as u64)
+            .iter()
+            .map(|&t| (t * 9.0).floor().min(8.0) / 8.0)
+            .collect();
+        let p = Points::new(&x, d).unwrap();
+        let (tree, direct) = (l2_star_fast(p).unwrap(), l2_star_direct(p).unwrap());
+        assert!(
+            rel(tree, direct) <= 1e-13,
+            "grid d={d}: {tree:e} vs {direct:e}"
+        );
+        for c in [0.0, 1.0] {
+            let mut y = uniform(900 * d, 11 + d as u64);
+            y.chunks_exact_mut(d).for_each(|r| r[1] = c);
+            let p = Points::new(&y, d).unwrap();
+            let (tree, direct) = (l2_star_fast(p).unwrap(), l2_star_direct(p).unwrap());
+            assert!(rel(tree, direct) <= 1e-13, "const {c} d={d}");
+        }
+    }
+    // All points at (1, ..., 1): D^2 = 3^-d exactly in the formula.
+    let ones = vec![1.0; 300 * 4];
+    let p = Points::new(&ones, 4).unwrap();
+    assert!(rel(l2_star_fast(p).unwrap(), (1.0f64 / 81.0).sqrt()) <= 1e-15);
+}
+
+#[test]
+fn parallel_recursion_matches_pair_sum() {
+    // Above TREE_PARALLEL points, where the sub-problems are joined.
+    let d = 3;
+    let x = uniform(3 * super::tree::TREE_PARALLEL * d, 5);
+    let p = Points::new(&x, d).unwrap();
+    assert!(rel(l2_star_fast(p).unwrap(), l2_star_direct(p).unwrap()) <= 1e-13);
+}

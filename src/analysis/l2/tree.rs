@@ -1,93 +1,27 @@
 //! L2-star discrepancy by Warnock's formula with the pair sum replaced by an exact divide
-//! and conquer (Heinrich 1996).
+//! and conquer (Heinrich 1996): the algorithm of [`l2_star_fast`](super::l2_star_fast),
+//! whose entry point (with its fallback to the pair sum) is in `measures`; this module
+//! depends on no measure.
 
 use super::Points;
 use super::arith::{Acc, Dd, two_prod};
-#[cfg(doc)]
-use super::l2_star_direct;
-use super::sums::{KernelSums, checked, combine, pow2, root};
-use crate::Result;
+use super::sums::{KernelSums, combine, pow2, root};
 use crate::work::Stop;
 use rayon::prelude::*;
-
-/// [`l2_star`](super::l2_star) by exact divide and conquer, in `O(n log^(d-1) n)` time
-/// (`O(n log n)` in one and two dimensions) instead of the `O(n^2 d)` pair sum.
-///
-/// Warnock's formula needs `S = sum_{i,j} prod_k min(u_ik, u_jk)` with `u = 1 - x`
-/// (`1 - max(x, y) = min(1 - x, 1 - y)`). This is a dominance sum, computed as in
-/// S. Heinrich, "Efficient algorithms for computing the L2-discrepancy", Math. Comp. 65
-/// (1996), and K. Frank & S. Heinrich, "Computing discrepancies of Smolyak quadrature
-/// rules", J. Complexity 12 (1996). After sorting by `u_1`, the pairs across a split into
-/// halves have `min(u_i1, u_j1)` equal to the lower half's `u_j1`, which becomes a weight:
-/// those pairs are a weighted problem between two colours (lower and upper half) on the
-/// other `d - 1` coordinates. That one is split the same way on its first coordinate
-/// (within each half: the same problem; across: two such problems in one dimension less)
-/// down to one coordinate, where a sweep in ascending order with running sums of `|w| u`
-/// costs `O(n)`. Every recursion is a merge sort: it gets its rows sorted by its first
-/// coordinate and returns them sorted by its second, so the halves merged by the second
-/// coordinate are the cross problems already sorted by their first (no sort or median
-/// search inside the recursion). Small sub-problems are summed pair by pair; large ones
-/// run in parallel.
-///
-/// In one and two dimensions the same idea is a single merge sort: with `u = 1 - x`,
-/// `v = 1 - y`,
-///
-/// ```text
-/// sum_{i,j} min(u_i, u_j) min(v_i, v_j)
-///   = sum_i u_i v_i + 2 sum_{i, j: u_j <= u_i, j before i} u_j min(v_i, v_j)
-/// ```
-///
-/// (in one dimension `v = 1`). After sorting by `u`, a merge sort on `v` adds for every
-/// `i` of the right half, with the `j` of the left half,
-/// `sum_{v_j <= v_i} u_j v_j + v_i sum_{v_j > v_i} u_j` from running sums.
-///
-/// Cost: `O(n log^(d-1) n)` work, about `n (log2 n)^(d-1) / (d-1)!` row operations, and
-/// `O(n d^2)` memory; the factor grows quickly with `d`, so [`l2_star`](super::l2_star)
-/// only takes this path from the point count where it measured faster than the pair sum
-/// (4096 points for `d = 3`, 24576 for `d = 4`, 196608 for `d = 5`, never from `d = 6`
-/// on). Above [`TREE_MAX_D`] dimensions, where the recursion would only be deeper and
-/// slower, this function returns [`l2_star_direct`]'s pair sum instead.
-/// All sums are compensated and every term is non-negative, so the value agrees with
-/// [`l2_star_direct`] up to the rounding of the products (about 1e-14 relative for
-/// random sets of up to `2^16` points).
-///
-/// ```
-/// use qmckit::analysis::{l2::{l2_star_direct, l2_star_fast}, Points};
-/// // 300 points of a 3D lattice-like set.
-/// let data: Vec<f64> = (0..900).map(|i| (i as f64 * 0.618_033_988_749_895).fract()).collect();
-/// let p = Points::new(&data, 3)?;
-/// let (fast, direct) = (l2_star_fast(p)?, l2_star_direct(p)?);
-/// assert!((fast - direct).abs() <= 1e-13 * direct);
-/// # Ok::<(), qmckit::Error>(())
-/// ```
-///
-/// # Errors
-/// [`Error::NotRepresentable`](crate::Error::NotRepresentable) as
-/// [`l2_star`](super::l2_star).
-pub fn l2_star_fast(p: Points<'_>) -> Result<f64> {
-    if p.dims() > TREE_MAX_D {
-        return super::l2_star_direct(p);
-    }
-    let stop = Stop::new(&crate::work::Budget::UNLIMITED, super::measures::L2_STAR);
-    checked(
-        l2_star_fast_with(p, p.dims() <= 2, &stop),
-        super::measures::L2_STAR,
-    )
-}
 
 /// Nodes of the recursions with at least this many rows read the deadline (each does
 /// `Ω(rows)` work, so the readings cost well under a percent).
 const CHECK_ROWS: usize = 256;
 
-/// The largest dimension in which [`l2_star_fast`] runs the divide and conquer: the
-/// recursion is `d` levels deep over the coordinates, and from 6 dimensions on it is
-/// slower than the pair sum for every feasible point count anyway.
+/// The largest dimension in which [`l2_star_fast`](super::l2_star_fast) runs the divide and
+/// conquer: the recursion is `d` levels deep over the coordinates, and from 6 dimensions on
+/// it is slower than the pair sum for every feasible point count anyway.
 pub const TREE_MAX_D: usize = 16;
 
-/// Point count from which [`l2_star`](super::l2_star) uses [`l2_star_fast`] in `d`
-/// dimensions: about where the two ran equally fast on one thread on uniform random points
-/// (`examples/time_l2_star.rs`, best of repeated runs on an x86-64 machine with
-/// AVX2 for the pair sum). Measured, in seconds (tree / pair sum): `d = 3`: `2^12` points
+/// Point count from which [`l2_star`](super::l2_star) uses
+/// [`l2_star_fast`](super::l2_star_fast) in `d` dimensions: about where the two ran equally
+/// fast on one thread on uniform random points (`examples/time_l2_star.rs`, best of
+/// repeated runs on an x86-64 machine with AVX2 for the pair sum). Measured, in seconds (tree / pair sum): `d = 3`: `2^12` points
 /// 0.0089 / 0.0084, `2^13` 0.029 / 0.051, `2^18` 1.7 / 82; `d = 4`: `2^14` 0.35 / 0.24,
 /// `2^15` 0.81 / 1.02, `2^16` 3.4 / 6.5; `d = 5`: `2^15` 2.8 / 0.83, `2^16` 11.8 / 6.5, and
 /// the ratio shrinks like `log^4 n / n`, to 1 near `2^17.4`. From `d = 6` on the same
@@ -103,13 +37,14 @@ pub(super) fn crossover(d: usize) -> Option<usize> {
     }
 }
 
-/// Does [`l2_star_fast`] beat the pair sum for `n` points in `d` dimensions?
+/// Does [`l2_star_fast`](super::l2_star_fast) beat the pair sum for `n` points in `d`
+/// dimensions?
 pub(super) fn tree_pays_off(d: usize, n: usize) -> bool {
     crossover(d).is_some_and(|c| n >= c)
 }
 
-/// [`l2_star_fast`] by the merge sort of one and two dimensions (`plane`, only for
-/// `d <= 2`) or by the general recursion.
+/// [`l2_star_fast`](super::l2_star_fast) by the merge sort of one and two dimensions
+/// (`plane`, only for `d <= 2`) or by the general recursion.
 pub(super) fn l2_star_fast_with(p: Points<'_>, plane: bool, stop: &Stop) -> f64 {
     let d = p.dims();
     let mut s1 = Acc::default();
@@ -234,7 +169,7 @@ const MONO_LEAF: usize = 32;
 /// Up to this many points a two-colour problem is summed pair by pair.
 const BI_LEAF: usize = 24;
 /// From this many points the sub-problems run in parallel.
-const TREE_PARALLEL: usize = 1 << 12;
+pub(super) const TREE_PARALLEL: usize = 1 << 12;
 
 /// `sum_{i < j} prod_k min(u_ik, u_jk)` over all `n (n - 1) / 2` pairs, for any `d >= 1`.
 fn tree_off_diagonal(u: &[f64], d: usize, stop: &Stop) -> Acc {
@@ -533,7 +468,6 @@ mod tests {
         Stop::new(&crate::work::Budget::UNLIMITED, "test")
     }
 
-    use super::super::l2_star_direct;
     use super::*;
 
     /// SplitMix64 uniforms in `[0, 1)`.
@@ -549,10 +483,6 @@ mod tests {
                 (z >> 11) as f64 / (1u64 << 53) as f64
             })
             .collect()
-    }
-
-    fn rel(a: f64, b: f64) -> f64 {
-        (a - b).abs() / b.abs()
     }
 
     /// `S - diag` by the definition, pair by pair, in a plain loop.
@@ -589,66 +519,6 @@ mod tests {
                 }
             }
         }
-    }
-
-    #[test]
-    fn general_path_matches_pair_sum_d1_to_6() {
-        for d in 1..=6 {
-            for (n, seed) in [(1usize, 1u64), (50, 2), (700, 3), (2500, 4)] {
-                let x = uniform(n * d, seed * 100 + d as u64);
-                let p = Points::new(&x, d).unwrap();
-                let (tree, direct) = (
-                    l2_star_fast_with(p, false, &never()),
-                    l2_star_direct(p).unwrap(),
-                );
-                assert!(
-                    rel(tree, direct) <= 1e-13,
-                    "d={d} n={n}: {tree:e} vs {direct:e}"
-                );
-                if d <= 2 {
-                    let plane = l2_star_fast_with(p, true, &never());
-                    assert!(rel(tree, plane) <= 1e-13, "d={d} n={n}");
-                }
-            }
-        }
-    }
-
-    #[test]
-    fn general_path_with_ties_zeros_and_ones() {
-        // Coordinates on the grid k/8 (so many exactly 0 and 1, repeated points), and sets
-        // where one coordinate is constant 0 or 1.
-        for d in 3..=6 {
-            let x: Vec<f64> = uniform(1500 * d, 7 + d as u64)
-                .iter()
-                .map(|&t| (t * 9.0).floor().min(8.0) / 8.0)
-                .collect();
-            let p = Points::new(&x, d).unwrap();
-            let (tree, direct) = (l2_star_fast(p).unwrap(), l2_star_direct(p).unwrap());
-            assert!(
-                rel(tree, direct) <= 1e-13,
-                "grid d={d}: {tree:e} vs {direct:e}"
-            );
-            for c in [0.0, 1.0] {
-                let mut y = uniform(900 * d, 11 + d as u64);
-                y.chunks_exact_mut(d).for_each(|r| r[1] = c);
-                let p = Points::new(&y, d).unwrap();
-                let (tree, direct) = (l2_star_fast(p).unwrap(), l2_star_direct(p).unwrap());
-                assert!(rel(tree, direct) <= 1e-13, "const {c} d={d}");
-            }
-        }
-        // All points at (1, ..., 1): D^2 = 3^-d exactly in the formula.
-        let ones = vec![1.0; 300 * 4];
-        let p = Points::new(&ones, 4).unwrap();
-        assert!(rel(l2_star_fast(p).unwrap(), (1.0f64 / 81.0).sqrt()) <= 1e-15);
-    }
-
-    #[test]
-    fn parallel_recursion_matches_pair_sum() {
-        // Above TREE_PARALLEL points, where the sub-problems are joined.
-        let d = 3;
-        let x = uniform(3 * TREE_PARALLEL * d, 5);
-        let p = Points::new(&x, d).unwrap();
-        assert!(rel(l2_star_fast(p).unwrap(), l2_star_direct(p).unwrap()) <= 1e-13);
     }
 
     #[test]

@@ -18,7 +18,7 @@ use crate::{Error, Result};
 /// use qmckit::analysis::{Points, spectrum::{SpectrumMean, spectrum_2d}};
 /// let mut mean = SpectrumMean::new();
 /// for x in [0.1, 0.4] {
-///     mean.add(&spectrum_2d(Points::new(&[x, 0.5, 0.9, 0.2], 2)?, 2)?)?;
+///     mean.add(&spectrum_2d(Points::new(&[x, 0.5, 0.9, 0.2], 2)?, 2, &qmckit::work::Budget::DEFAULT)?)?;
 /// }
 /// let m = mean.mean()?;
 /// assert_eq!((mean.sets(), m.points(), m.get(0, 0)), (2, 2, Some(2.0)));

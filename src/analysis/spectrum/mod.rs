@@ -39,7 +39,7 @@ pub use nufft::NUFFT_MIN_TOLERANCE;
 
 use super::Points;
 use crate::work::Stop;
-use crate::work::{Budget, Cost, Rate};
+use crate::work::{Budget, Cost, Limits, Rate};
 use crate::{Error, Result};
 
 /// Complex multiply-adds above which [`spectrum_2d`] refuses: [`SPECTRUM_RATE`] times the
@@ -47,7 +47,7 @@ use crate::{Error, Result};
 pub const SPECTRUM_WORK_BUDGET: f64 = 1e10;
 
 /// Complex multiply-adds a second of the direct sums (two threads; measured at 1.1e9 to
-/// 1.6e9 for K = 32 to 512), the rate [`spectrum_2d_within`] turns its budget into work with.
+/// 1.6e9 for K = 32 to 512), the rate [`spectrum_2d`] turns its budget into work with.
 pub const SPECTRUM_RATE: Rate = Rate::per_second(1e9);
 
 /// Largest `K` [`spectrum_2d`] accepts: the `(2K + 1)^2` powers, the half plane of complex
@@ -112,42 +112,37 @@ impl Spectrum {
 /// up to rounding (direct sums, no FFT: the points need not lie on a grid). See the module
 /// documentation for the definition and the cost.
 ///
+/// The limits: the time budget (`&Budget::DEFAULT`, ten seconds, for the usual requests):
+/// the `N (K + 1)(2K + 1)` complex multiply-adds at [`SPECTRUM_RATE`] must fit in it,
+/// checked before any work or allocation.
+///
 /// # Errors
 /// [`Error::Unsupported`] unless `points.dims() == 2`, or for `k_max` above
-/// [`SPECTRUM_MAX_K`]; [`Error::TooManyPoints`] when
-/// `N (K + 1)(2K + 1)` exceeds [`SPECTRUM_WORK_BUDGET`] (`max`: the most points within it
-/// for this `K`).
+/// [`SPECTRUM_MAX_K`]; [`Error::TooManyPoints`] when the estimate exceeds the budget (`max`:
+/// the most points the budget admits for this `K`; [`SPECTRUM_WORK_BUDGET`] steps for
+/// the default); [`Error::OutOfTime`] past the deadline of the budget (started here if it
+/// was not), read once per row of each block of 256 points.
 ///
 /// ```
-/// use qmckit::analysis::{Points, spectrum::spectrum_2d};
+/// use qmckit::{work::Budget, analysis::{Points, spectrum::spectrum_2d}};
 /// // The 2 x 2 grid of cell centres: P = N = 4 where both frequencies are even, else 0.
 /// let p = Points::new(&[0.25, 0.25, 0.75, 0.25, 0.25, 0.75, 0.75, 0.75], 2)?;
-/// let s = spectrum_2d(p, 2)?;
+/// let s = spectrum_2d(p, 2, &Budget::DEFAULT)?;
 /// assert!((s.get(2, -2).unwrap() - 4.0).abs() < 1e-12);
 /// assert!(s.get(1, 0).unwrap().abs() < 1e-12);
 /// assert_eq!(s.get(0, 0), Some(4.0));
-/// # Ok::<(), qmckit::Error>(())
-/// ```
-pub fn spectrum_2d(points: Points<'_>, k_max: usize) -> Result<Spectrum> {
-    spectrum_2d_within(points, k_max, &Budget::DEFAULT)
-}
-
-/// [`spectrum_2d`] within a time budget: the `N (K + 1)(2K + 1)` complex multiply-adds at
-/// [`SPECTRUM_RATE`] must fit in `budget`, checked before any work or allocation.
-///
-/// # Errors
-/// As [`spectrum_2d`]; [`Error::TooManyPoints`] names the most points the budget admits for
-/// this `K`; [`Error::OutOfTime`] past the deadline of `budget` (started here if it was
-/// not), read once per row of each block of 256 points.
-///
-/// ```
-/// use qmckit::{work::Budget, analysis::{Points, spectrum::spectrum_2d_within}};
 /// let p = Points::new(&[0.5; 2000], 2)?; // 1000 points
-/// assert!(spectrum_2d_within(p, 64, &Budget::seconds(10.0)?).is_ok());
-/// assert!(spectrum_2d_within(p, 2048, &Budget::seconds(0.1)?).is_err());
+/// assert!(spectrum_2d(p, 64, &Budget::seconds(10.0)?).is_ok());
+/// assert!(spectrum_2d(p, 2048, &Budget::seconds(0.1)?).is_err());
 /// # Ok::<(), qmckit::Error>(())
 /// ```
-pub fn spectrum_2d_within(points: Points<'_>, k_max: usize, budget: &Budget) -> Result<Spectrum> {
+pub fn spectrum_2d<'a>(
+    points: Points<'_>,
+    k_max: usize,
+    limits: impl Into<Limits<'a>>,
+) -> Result<Spectrum> {
+    let limits = limits.into();
+    let budget = limits.budget();
     if points.dims() != 2 {
         return Err(Error::Unsupported {
             what: "a spectrum of points that are not 2-dimensional",

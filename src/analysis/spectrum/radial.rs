@@ -28,7 +28,7 @@ impl Spectrum {
     /// use qmckit::analysis::{Points, spectrum::spectrum_2d};
     /// // One point: P(k) = 1 everywhere but k = 0, so every annulus has mean 1 and
     /// // anisotropy 0.
-    /// let s = spectrum_2d(Points::new(&[0.3, 0.7], 2)?, 3)?;
+    /// let s = spectrum_2d(Points::new(&[0.3, 0.7], 2)?, 3, &qmckit::work::Budget::DEFAULT)?;
     /// let radial = s.radial();
     /// assert_eq!(radial.len(), 3);
     /// assert_eq!(radial[0].count, 8); // (±1, 0), (0, ±1), (±1, ±1): |k| rounds to 1

@@ -58,8 +58,8 @@
 //! coordinate's trade of volume against counted points is bounded on its own). Only then
 //! are the knapsacks brought up to date. On 6D Sobol' points (`N` = 450) the second check
 //! leaves 92701 of 77.9 million cells; the knapsacks did 9.5e9 multiply-compares before it,
-//! 2.5e6 with it. The cost left is the walk over the cells, which grows about `sqrt N`
-//! slower than `N^(1 + d/2)` on the sizes measured (see [`work_estimate`]).
+//! 2.5e6 with it. The cost left is the walk over the cells, which grows a little more than
+//! `sqrt N` slower than `N^(1 + d/2)` on the sizes measured (see [`work_estimate`]).
 //!
 //! The per-coordinate tables and the knapsack prefixes are updated incrementally along the
 //! last coordinate, and the sorted lists of a cut are merged from the previous sibling's,
@@ -74,8 +74,10 @@
 //! (1026 s); without the table bounds the time grows like `N^4` (1000 points: 285 s).
 //! Other dimensions: `d = 3`: 40000 in 5.3 s; `d = 4`: 6000
 //! in 10.5 s; `d = 5`: 1300 in 9.0 s; `d = 7`: 260 in 10.9 s; `d = 8`: 150 in 8.5 s;
-//! `d = 10`: 70 in 8.2 s. [`work_estimate`] is fitted to these; [`star_dem_within`] takes
-//! another budget than [`star_dem`]'s ten seconds.
+//! `d = 10`: 70 in 8.2 s. [`work_estimate`] is fitted to the CPU time of one thread
+//! (`examples/time_costs.rs`, 3 to 24 dimensions; the table in `docs/budgets.md`), and the
+//! estimate assumes two cores; [`star_dem`] takes the budget (ten seconds for
+//! `&Budget::DEFAULT`).
 
 use super::cells::{
     SortedPrefix, closed_slack, convolve_max, convolve_min, merge_sorted, open_slack,
@@ -84,16 +86,16 @@ use super::cost::within;
 pub use super::cost::{max_points, max_points_within, work_estimate};
 use crate::analysis::Points;
 use crate::work::Stop;
-use crate::work::{Budget, Progress, no_progress};
+use crate::work::{Limits, Progress};
 use crate::{Error, Result};
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicU64, Ordering};
 
 /// The most dimensions the decomposition runs in for two or more counted points: its walk
 /// nests one level per coordinate and a slab point records its coordinate in a byte, so
-/// both stay bounded. The bound is never reached in practice: two points in 256 dimensions
-/// are estimated at more than `10^36` steps ([`work_estimate`]). A set with at most one
-/// counted point has a closed form (see [`star_dem_within`]) and no dimension limit.
+/// both stay bounded: a set with two or more counted points in more dimensions is
+/// [`Error::TooLarge`]. A set with at most one counted point has a closed form (see
+/// [`star_dem`]) and no dimension limit.
 pub const DEM_MAX_DIMS: usize = 255;
 
 /// Exact star discrepancy `D*_N` of `points` (any `d >= 1`) by the Dobkin–Eppstein–Mitchell
@@ -104,24 +106,10 @@ pub const DEM_MAX_DIMS: usize = 255;
 /// Time `O(N^(1 + d/2))` (less with pruning), memory `O(N d)` per thread; measured times in
 /// the [module documentation](self). Results are within a few ulps of the exact value
 /// (volumes are products of grid coordinates in `f64`), exact for dyadic sets with few bits.
-/// [`star_dem_within`] takes another budget and reports progress.
 ///
-/// # Errors
-/// As [`star_dem_within`] with [`Budget::DEFAULT`].
-///
-/// ```
-/// use qmckit::analysis::{Points, star::dem::star_dem};
-/// // One point at the center of the cube: the closed box [0, 1/2]^3 holds it,
-/// // 1 - 1/8 = 7/8.
-/// assert_eq!(star_dem(Points::new(&[0.5, 0.5, 0.5], 3)?)?, 0.875);
-/// # Ok::<(), qmckit::Error>(())
-/// ```
-pub fn star_dem(points: Points<'_>) -> Result<f64> {
-    star_dem_within(points, &Budget::DEFAULT, &no_progress)
-}
-
-/// [`star_dem`] within the time budget `budget` ([`work_estimate`] steps at
-/// [`STAR_RATE`](super::STAR_RATE), checked in `O(1)` before anything is allocated) with a progress report:
+/// The limits: the time budget (`&Budget::DEFAULT`, ten seconds, for the usual requests;
+/// [`work_estimate`] steps at [`STAR_RATE`](super::STAR_RATE) on two cores, checked in
+/// `O(1)` before anything is allocated) and a progress report:
 /// `progress(done, PROGRESS_STEPS)` is called, from any thread, each time one of the slabs
 /// of the first cut is finished (and once at the end with `done = PROGRESS_STEPS`). A slab
 /// counts as its estimated share of the work (those with more points take longer): `done`
@@ -135,25 +123,31 @@ pub fn star_dem(points: Points<'_>) -> Result<f64> {
 /// `[0, x]`), in `O(N d)`.
 ///
 /// # Errors
-/// [`Error::TooManyPoints`] when [`work_estimate`] exceeds `budget` (`max`: the largest
+/// [`Error::TooManyPoints`] when [`work_estimate`] exceeds the budget (`max`: the largest
 /// `N` within it, [`max_points_within`]); [`Error::TooLarge`] for two or more counted points
 /// in more than [`DEM_MAX_DIMS`] dimensions; [`Error::OutOfTime`] past the deadline of
-/// `budget` (started here if it was not), checked before every evaluated cell and every
+/// the budget (started here if it was not), checked before every evaluated cell and every
 /// 256 pruned ones.
 ///
 /// ```
-/// use qmckit::work::Budget;
-/// use qmckit::analysis::{Points, star::dem::star_dem_within};
+/// use qmckit::work::{Budget, Limits};
+/// use qmckit::analysis::{Points, star::dem::star_dem};
 /// use std::sync::atomic::{AtomicUsize, Ordering};
+/// // One point at the center of the cube: the closed box [0, 1/2]^3 holds it,
+/// // 1 - 1/8 = 7/8.
+/// assert_eq!(star_dem(Points::new(&[0.5, 0.5, 0.5], 3)?, &Budget::DEFAULT)?, 0.875);
 /// let calls = AtomicUsize::new(0);
 /// let p = Points::new(&[0.5, 0.5, 0.5, 0.25, 0.75, 0.125], 3)?;
-/// let d = star_dem_within(p, &Budget::DEFAULT, &|_, _| {
+/// let report = |_, _| {
 ///     calls.fetch_add(1, Ordering::Relaxed);
-/// })?;
+/// };
+/// let d = star_dem(p, Limits::DEFAULT.with_progress(&report))?;
 /// assert!(d >= 0.75 && calls.load(Ordering::Relaxed) >= 1);
 /// # Ok::<(), qmckit::Error>(())
 /// ```
-pub fn star_dem_within(points: Points<'_>, budget: &Budget, progress: Progress<'_>) -> Result<f64> {
+pub fn star_dem<'a>(points: Points<'_>, limits: impl Into<Limits<'a>>) -> Result<f64> {
+    let limits = limits.into();
+    let (budget, progress) = (limits.budget(), limits.progress());
     let (n, d) = (points.len(), points.dims());
     if !within(work_estimate(n, d), budget) {
         return Err(Error::TooManyPoints {
@@ -180,7 +174,7 @@ pub fn star_dem_within(points: Points<'_>, budget: &Budget, progress: Progress<'
 }
 
 /// `D*_N` of a set whose only counted point is `x` (or none), `N = n`: see
-/// [`star_dem_within`].
+/// [`star_dem`].
 fn single_point(x: Option<&[f64]>, n: f64) -> f64 {
     let Some(x) = x else {
         return 1.0;
@@ -190,10 +184,10 @@ fn single_point(x: Option<&[f64]>, n: f64) -> f64 {
     (n - 1.0).max(n * largest).max(1.0 - n * vol) / n
 }
 
-/// The `total` of [`star_dem_within`]'s progress reports.
+/// The `total` of [`star_dem`]'s progress reports.
 pub const PROGRESS_STEPS: usize = 1000;
 
-/// [`star_dem_within`] without the work check; the walk stops early (with a meaningless
+/// [`star_dem`] without the work check; the walk stops early (with a meaningless
 /// value) once `stop` says so.
 fn dem_from(points: Points<'_>, progress: Progress<'_>, stop: &Stop) -> f64 {
     let d = points.dims();

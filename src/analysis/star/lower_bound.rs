@@ -61,7 +61,7 @@ fn splitmix(state: &mut u64) -> u64 {
 /// use qmckit::analysis::{Points, star::{star_lower_bound, star_exact}};
 /// let p = Points::new(&[0.5, 0.5, 0.5], 3)?;
 /// let lower = star_lower_bound(p, 7, 1000);
-/// assert!(lower <= star_exact(p)? && lower >= 0.5); // [0,1) x [0,1) x [0,1/2) is empty
+/// assert!(lower <= star_exact(p, &qmckit::work::Budget::DEFAULT)? && lower >= 0.5); // [0,1) x [0,1) x [0,1/2) is empty
 /// # Ok::<(), qmckit::Error>(())
 /// ```
 pub fn star_lower_bound(points: Points<'_>, seed: u64, iterations: u64) -> f64 {

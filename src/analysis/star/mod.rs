@@ -38,11 +38,11 @@
 //! | function | cost | limit |
 //! |---|---|---|
 //! | [`star_1d`] | `O(N log N)` | none |
-//! | [`star_2d`] | `O(N^2)` time, `O(N)` memory, parallel over columns | `N^2` steps at [`STAR_RATE`] within the budget: `N <= 54_772` in ten seconds |
-//! | [`star_exact`] | `O(N^2)` in 2D; `O(N^(1 + d/2))` for `d >= 3` (Dobkin–Eppstein–Mitchell, [`dem`]), pruned | ≈ `3e9` steps, about ten seconds: `N <= 48989, 5650, 1338, 478` for `d = 3, 4, 5, 6`; [`star_exact_within`] takes a budget |
+//! | [`star_2d`] | `O(N^2)` time, `O(N)` memory, parallel over columns | `(N + 1)^2` cells at [`SWEEP_RATE`] on two cores ([`star_cost`]) within the budget: `N <= 114_016` in ten seconds |
+//! | [`star_exact`] | `O(N^2)` in 2D; `O(N^(1 + d/2))` for `d >= 3` (Dobkin–Eppstein–Mitchell, [`dem`]), pruned: measured about `N^((d + 1)/2 - 0.15)` | [`star_cost`] within ten seconds: `N <= 64517, 6391, 1483, 557` for `d = 3, 4, 5, 6`; its second argument is the budget |
 //! | [`extreme_2d`] | `O(N^3)` | `N <= 1200`; [`extreme_2d_within`] takes a budget, at [`EXTREME_RATE`] |
 //! | [`star_lower_bound`] | `O(iterations · (N + 32) d)` ([`lower_bound_steps`]) | none; [`star_lower_bound_within`] takes a budget, at [`LOWER_BOUND_RATE`] |
-//! | [`star_upper_bound`] | Thiémard's cover ([`thiemard`]): about `Σ_R (N vol(b_R) + 16)(d + k_R) + 2 d (k_R - 1)` over its regions, parallel | ten seconds at [`THIEMARD_RATE`], estimated first; [`thiemard::bounds_within`] takes a budget |
+//! | [`star_upper_bound`] | Thiémard's cover ([`thiemard`]): about `Σ_R (N vol(b_R) + 16)(d + k_R) + 2 d (k_R - 1)` over its regions, parallel | ten seconds at [`THIEMARD_RATE`], estimated first; [`thiemard::bounds`] takes a budget |
 //!
 //! Every budgeted function estimates its cost before it allocates anything that grows with
 //! the input, and none recurses deeper than a constant: the searches keep their state on the
@@ -57,27 +57,28 @@ mod sweep;
 pub mod thiemard;
 mod thiemard_cost;
 
-pub use cost::{LOWER_BOUND_RATE, STAR_RATE, THIEMARD_RATE};
+pub use cost::{LOWER_BOUND_RATE, SORT_RATE, STAR_RATE, SWEEP_RATE, THIEMARD_RATE, star_cost};
 pub use extreme::{EXTREME_2D_MAX_POINTS, EXTREME_RATE, extreme_2d, extreme_2d_within};
 pub use lower_bound::{lower_bound_steps, star_lower_bound, star_lower_bound_within};
 
 use super::Points;
 use crate::work::Stop;
-use crate::work::{Budget, Progress, no_progress};
+use crate::work::{Budget, Limits};
 use crate::{Error, Result};
 
 /// Largest `N` [`star_2d`] (and [`star`], [`star_exact`] in 2D) accepts within
-/// [`Budget::DEFAULT`]: the largest `N` with `N^2` steps at [`STAR_RATE`] within ten
-/// seconds (`N = 2^14` takes about one).
-pub const STAR_2D_MAX_POINTS: u64 = 54_772;
+/// [`Budget::DEFAULT`]: the largest `N` whose `(N + 1)^2` cells at [`SWEEP_RATE`] on
+/// [`CORES`](crate::work::CORES) cores take at most ten seconds ([`star_cost`]).
+pub const STAR_2D_MAX_POINTS: u64 = 114_016;
 
 // The 2D limit is the default budget's: one rule for every exact entry point.
 const _: () = {
-    let steps = STAR_RATE.steps_per_second() * crate::work::DEFAULT_SECONDS;
-    assert!(
-        (STAR_2D_MAX_POINTS * STAR_2D_MAX_POINTS) as f64 <= steps
-            && ((STAR_2D_MAX_POINTS + 1) * (STAR_2D_MAX_POINTS + 1)) as f64 > steps
+    let cells = SWEEP_RATE.steps_per_second() * crate::work::CORES * crate::work::DEFAULT_SECONDS;
+    let (n, next) = (
+        (STAR_2D_MAX_POINTS + 1) as f64,
+        (STAR_2D_MAX_POINTS + 2) as f64,
     );
+    assert!(n * n <= cells && next * next > cells);
 };
 
 /// Star discrepancy of `points`, exact: [`star_1d`] in 1D, [`star_2d`] in 2D,
@@ -96,7 +97,7 @@ const _: () = {
 /// # Ok::<(), qmckit::Error>(())
 /// ```
 pub fn star(points: Points<'_>) -> Result<f64> {
-    star_exact(points)
+    star_exact(points, &Budget::DEFAULT)
 }
 
 /// Exact 1D star discrepancy by the closed form (Niederreiter 1992, Thm. 2.6):
@@ -139,8 +140,8 @@ pub fn star_1d(points: Points<'_>) -> Result<f64> {
 /// over the ranks of the distinct `y`s holds the points left of `a`, and one pass over it
 /// evaluates `a b - open/N` and `closed/N - a b` at every critical `b`. Cost
 /// `O(N · M)` with `M <= N + 1` distinct `y`s, so `O(N^2)` time and `O(N)` memory; the
-/// columns are split over rayon's threads. Measured: 1.0 s for `N = 2^14` (LP net or
-/// Sobol') on a shared 2-core machine.
+/// columns are split over rayon's threads. Estimated `(N + 1)^2` cells at [`SWEEP_RATE`]
+/// (6.5e8 a second and core) on two cores ([`star_cost`]): 20000 Sobol' points, 0.31 s.
 ///
 /// # Errors
 /// [`Error::Unsupported`] unless `points.dims() == 2`; [`Error::TooManyPoints`] above
@@ -161,7 +162,7 @@ pub fn star_2d(points: Points<'_>) -> Result<f64> {
             what: "star_2d of points that are not 2-dimensional",
         });
     }
-    star_exact(points)
+    star_exact(points, &Budget::DEFAULT)
 }
 
 /// Exact star discrepancy in any dimension: [`star_1d`] in 1D, the `O(N^2)` sweep of
@@ -172,63 +173,48 @@ pub fn star_2d(points: Points<'_>) -> Result<f64> {
 ///
 /// The value is `max over the critical grid of max(vol - open/N, closed/N - vol)`, points
 /// with a coordinate equal to 1 never counted (see the module documentation). Measured on
-/// the shared 2-core machine (two threads, load about 1.5, Sobol' points), about ten
-/// seconds: `d = 3`: 40000 points in 5.3 s; `d = 4`: 6000 in 10.5 s; `d = 5`: 1300 in 9.0 s;
-/// `d = 6`: 500 in 8.4 s (details in [`dem`]); enumerating the critical grid takes ten
-/// seconds at about 1900, 365, 140 and 70 points.
+/// one thread (CPU time, Sobol' points; `docs/budgets.md`): `d = 3`: 40000 points in 8.4 s;
+/// `d = 4`: 8000 in 33 s; `d = 5`: 2000 in 45 s; `d = 6`: 600 in 25 s, two threads taking
+/// about half (details in [`dem`]); enumerating the critical grid takes ten seconds at
+/// about 1900, 365, 140 and 70 points.
 /// Beyond that use [`star_lower_bound`] / [`star_upper_bound`].
 ///
+/// The limits: the time budget (`&Budget::DEFAULT`, ten seconds, for the usual
+/// requests), checked against the estimate [`star_cost`] (the 2D sweep's cells at
+/// [`SWEEP_RATE`], [`dem::work_estimate`] for `d >= 3` at [`STAR_RATE`], both on two cores)
+/// in `O(1)` before anything is allocated, and a progress report for `d >= 3` (see
+/// [`dem::star_dem`]). With a budget of ten minutes `d = 6` takes up to 1893 points
+/// (estimated 71 s for 1000 Sobol' points, which took 86 s on two cores at a load of 1.5).
+///
 /// # Errors
-/// [`Error::TooManyPoints`] when the estimated time exceeds [`Budget::DEFAULT`] (`N^2`
-/// steps in 2D, [`dem::work_estimate`] for `d >= 3`, at [`STAR_RATE`]); `max` is the largest
-/// `N` within it for this `d` ([`max_points_within`]). [`Error::TooLarge`] for two or more
-/// counted points in more than [`dem::DEM_MAX_DIMS`] dimensions.
+/// [`Error::TooManyPoints`] when the estimated time exceeds the budget (`max`: the largest
+/// `N` within it, [`max_points_within`]); [`Error::TooLarge`] for two or more counted points
+/// in more than [`dem::DEM_MAX_DIMS`] dimensions; [`Error::OutOfTime`] when the run passes
+/// the deadline of the budget (started here if the caller did not: `1.25 x` its seconds),
+/// checked once per column of the 2D sweep and every few cells of the decomposition.
 ///
 /// ```
+/// use qmckit::work::Budget;
 /// use qmckit::analysis::{Points, star::star_exact};
 /// // One point at the center of the cube: the closed box [0, 1/2]^3 holds it,
 /// // 1 - 1/8 = 7/8; every box missing it has volume at most 1/2.
-/// assert_eq!(star_exact(Points::new(&[0.5, 0.5, 0.5], 3)?)?, 0.875);
-/// # Ok::<(), qmckit::Error>(())
-/// ```
-pub fn star_exact(points: Points<'_>) -> Result<f64> {
-    star_exact_within(points, &Budget::DEFAULT, &no_progress)
-}
-
-/// [`star_exact`] within the time budget `budget` (estimated steps at [`STAR_RATE`]: `N^2`
-/// in 2D, [`dem::work_estimate`] for `d >= 3`), with a progress report for `d >= 3` (see
-/// [`dem::star_dem_within`]). The estimate is computed in `O(1)` before anything is
-/// allocated. With a budget of ten minutes `d = 6` takes up to 1542 points; 1000 Sobol'
-/// points took 86 s and 2000 took 17 minutes on two cores (the estimate is conservative for
-/// large sets, see [`dem::work_estimate`]).
-///
-/// # Errors
-/// [`Error::TooManyPoints`] when the estimated time exceeds `budget` (`max`: the largest
-/// `N` within it, [`max_points_within`]); [`Error::TooLarge`] for two or more counted points
-/// in more than [`dem::DEM_MAX_DIMS`] dimensions; [`Error::OutOfTime`] when the run passes
-/// the deadline of `budget` (started here if the caller did not: `1.25 x` its seconds), checked
-/// once per column of the 2D sweep and every few cells of the decomposition.
-///
-/// ```
-/// use qmckit::work::{Budget, no_progress};
-/// use qmckit::analysis::{Points, star::star_exact_within};
 /// let p = Points::new(&[0.5, 0.5, 0.5], 3)?;
-/// assert_eq!(star_exact_within(p, &Budget::DEFAULT, &no_progress)?, 0.875);
+/// assert_eq!(star_exact(p, &Budget::DEFAULT)?, 0.875);
 /// let tiny = Budget::seconds(1e-12)?;
-/// assert!(star_exact_within(p, &tiny, &no_progress).is_err()); // past the budget
+/// assert!(star_exact(p, &tiny).is_err()); // past the budget
 /// # Ok::<(), qmckit::Error>(())
 /// ```
-pub fn star_exact_within(
-    points: Points<'_>,
-    budget: &Budget,
-    progress: Progress<'_>,
-) -> Result<f64> {
+pub fn star_exact<'a>(points: Points<'_>, limits: impl Into<Limits<'a>>) -> Result<f64> {
+    let limits = limits.into();
+    let budget = limits.budget();
     let n = points.len();
     match points.dims() {
         1 => star_1d(points),
         2 => {
-            let nf = n as f64;
-            if nf * nf > budget.steps(STAR_RATE) {
+            if budget
+                .check("the exact star discrepancy", star_cost(n, 2))
+                .is_err()
+            {
                 return Err(Error::TooManyPoints {
                     requested: n as u64,
                     max: max_points_within(2, budget),
@@ -236,38 +222,25 @@ pub fn star_exact_within(
             }
             sweep::sweep_2d(points, &Stop::new(budget, "the exact star discrepancy"))
         }
-        _ => dem::star_dem_within(points, budget, progress),
+        _ => dem::star_dem(points, limits),
     }
 }
 
-/// The largest `N` whose exact star discrepancy in `d` dimensions is estimated within
-/// `budget`: unlimited (`u64::MAX`) for `d <= 1`, `floor(sqrt(steps))` in 2D (`steps` the
-/// budget's steps at [`STAR_RATE`]), [`dem::max_points_within`] for `d >= 3`. `O(1)` for
-/// `d <= 2`, a binary search of 40 estimates otherwise.
+/// The largest `N` whose exact star discrepancy in `d` dimensions is estimated
+/// ([`star_cost`]) within `budget`: unlimited (`u64::MAX`) for `d <= 1`, the largest `N`
+/// with `(N + 1)^2 <= cells` in 2D (`cells` the budget's cells at [`SWEEP_RATE`] on two
+/// cores), [`dem::max_points_within`] for `d >= 3`. `O(1)` for `d <= 2`, a binary search of
+/// 40 estimates otherwise.
 ///
 /// ```
 /// use qmckit::{work::Budget, analysis::star::max_points_within};
-/// assert_eq!(max_points_within(2, &Budget::DEFAULT), 54_772);
-/// assert_eq!(max_points_within(6, &Budget::DEFAULT), 478);
+/// assert_eq!(max_points_within(2, &Budget::DEFAULT), 114_016);
+/// assert_eq!(max_points_within(6, &Budget::DEFAULT), 557);
 /// ```
 pub fn max_points_within(d: usize, budget: &Budget) -> u64 {
     match d {
         0 | 1 => u64::MAX,
-        2 => {
-            let steps = budget.steps(STAR_RATE);
-            if steps >= (u64::MAX as f64) * (u64::MAX as f64) {
-                return u64::MAX;
-            }
-            let mut r = steps.sqrt().floor() as u64;
-            // Correct the rounding of the square root.
-            while r > 0 && (r as f64) * (r as f64) > steps {
-                r -= 1;
-            }
-            while ((r + 1) as f64) * ((r + 1) as f64) <= steps {
-                r += 1;
-            }
-            r
-        }
+        2 => cost::max_points_2d(budget),
         _ => dem::max_points_within(d, budget),
     }
 }
@@ -290,7 +263,7 @@ pub fn max_points_within(d: usize, budget: &Budget) -> u64 {
 /// # Errors
 /// Those of [`thiemard::bounds`]: [`Error::Unsupported`] for `δ`
 /// not in `(0, 1]`; [`Error::TooManyPoints`] when the estimated time exceeds
-/// [`Budget::DEFAULT`] (take a larger `δ`; [`thiemard::bounds_within`] takes a budget).
+/// [`Budget::DEFAULT`] (take a larger `δ`; [`thiemard::bounds`] takes a budget).
 ///
 /// ```
 /// use qmckit::analysis::{Points, star::star_upper_bound};
@@ -300,5 +273,5 @@ pub fn max_points_within(d: usize, budget: &Budget) -> u64 {
 /// # Ok::<(), qmckit::Error>(())
 /// ```
 pub fn star_upper_bound(points: Points<'_>, delta: f64) -> Result<f64> {
-    thiemard::bounds(points, delta).map(|b| b.upper)
+    thiemard::bounds(points, delta, &Budget::DEFAULT).map(|b| b.upper)
 }

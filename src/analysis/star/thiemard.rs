@@ -69,10 +69,10 @@
 
 use super::cost::THIEMARD_RATE;
 use super::thiemard_cost::{
-    chain_step_cost, estimate, region_cost, root_chain_lower_bound, split_factor,
+    chain_step_cost, estimate, region_cost, root_chain_lower_bound, split, vol,
 };
 use crate::analysis::Points;
-use crate::work::Budget;
+use crate::work::Limits;
 use crate::work::Stop;
 use crate::{Error, Result};
 use std::sync::Mutex;
@@ -137,22 +137,8 @@ const MAX_POINTS: u64 = u32::MAX as u64;
 /// two numbers in `[0, 1]`), so an upper bound above 1 (the rounding margin on a bracket
 /// worth 1) is lowered to 1, which stays a valid bound; and `lower <= upper`.
 ///
-/// # Errors
-/// As [`bounds_within`] with [`Budget::DEFAULT`].
-///
-/// ```
-/// use qmckit::analysis::{Points, star::thiemard::bounds};
-/// // One point at the center of the square: D* = 1 - 1/4 = 3/4.
-/// let b = bounds(Points::new(&[0.5, 0.5], 2)?, 0.01)?;
-/// assert!(b.lower <= 0.75 && 0.75 <= b.upper && b.upper <= 0.76 + 1e-12);
-/// # Ok::<(), qmckit::Error>(())
-/// ```
-pub fn bounds(points: Points<'_>, delta: f64) -> Result<Bounds> {
-    bounds_within(points, delta, &Budget::DEFAULT)
-}
-
-/// [`bounds`] within the time budget `budget` (the estimated comparisons at
-/// [`THIEMARD_RATE`]).
+/// The limits: the time budget (`&Budget::DEFAULT`, ten seconds, for the usual requests),
+/// checked against the estimated comparisons at [`THIEMARD_RATE`].
 ///
 /// # Errors
 /// [`Error::Unsupported`] for `δ` not in `(0, 1]`; [`Error::TooManyPoints`] when the
@@ -166,13 +152,18 @@ pub fn bounds(points: Points<'_>, delta: f64) -> Result<Bounds> {
 ///
 /// ```
 /// use qmckit::work::Budget;
-/// use qmckit::analysis::{Points, star::thiemard::bounds_within};
+/// use qmckit::analysis::{Points, star::thiemard::bounds};
+/// // One point at the center of the square: D* = 1 - 1/4 = 3/4.
+/// let b = bounds(Points::new(&[0.5, 0.5], 2)?, 0.01, &Budget::DEFAULT)?;
+/// assert!(b.lower <= 0.75 && 0.75 <= b.upper && b.upper <= 0.76 + 1e-12);
 /// let data = vec![0.5; 2 * 1000]; // two points in 1000 dimensions
 /// let p = Points::new(&data, 1000)?;
-/// assert!(bounds_within(p, 0.05, &Budget::DEFAULT).is_err()); // refused at once
+/// assert!(bounds(p, 0.05, &Budget::DEFAULT).is_err()); // refused at once
 /// # Ok::<(), qmckit::Error>(())
 /// ```
-pub fn bounds_within(points: Points<'_>, delta: f64, budget: &Budget) -> Result<Bounds> {
+pub fn bounds<'a>(points: Points<'_>, delta: f64, limits: impl Into<Limits<'a>>) -> Result<Bounds> {
+    let limits = limits.into();
+    let budget = limits.budget();
     if !(delta > 0.0 && delta <= 1.0) {
         return Err(Error::Unsupported {
             what: "Thiémard's bounds need 0 < delta <= 1",
@@ -249,35 +240,6 @@ fn cap(steps: f64) -> u64 {
         u64::MAX
     } else {
         steps as u64
-    }
-}
-
-/// Product of the coordinates.
-fn vol(c: &[f64]) -> f64 {
-    c.iter().product()
-}
-
-/// Thiémard's split of the region `[a, b]` with the first `m` coordinates fixed: writes the
-/// lower corner `γ` of its bracket into `g`. Requires `vol(b) > delta`. The free part of `γ`
-/// always moves below `b` in coordinate `m`, so the loop along child `m` ends.
-pub(super) fn split(a: &[f64], b: &[f64], m: usize, delta: f64, g: &mut [f64]) {
-    let fixed = vol(a.get(..m).unwrap_or(&[]));
-    let free = vol(b.get(m..).unwrap_or(&[]));
-    let ratio = (vol(b) - delta) / (fixed * free);
-    let s = split_factor(ratio, b.len() - m);
-    for (j, gj) in g.iter_mut().enumerate() {
-        *gj = if j < m {
-            a.get(j).copied().unwrap_or(0.0)
-        } else {
-            s * b.get(j).copied().unwrap_or(0.0)
-        };
-    }
-    // In exact arithmetic s < 1 (vol(b) - vol_fixed(a) vol_free(b) < delta holds for every
-    // region of the decomposition); after rounding, force progress.
-    if let (Some(gm), Some(&bm)) = (g.get_mut(m), b.get(m))
-        && *gm >= bm
-    {
-        *gm = bm.next_down().max(0.0);
     }
 }
 

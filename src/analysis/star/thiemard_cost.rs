@@ -1,5 +1,7 @@
 //! The cost model of [`super::thiemard::bounds`]: the work of a region, a lower bound from
 //! the first chain alone (`O(1)` memory), and the estimate from a pass over the regions.
+//! The split of a region ([`split`]) lives here, as the estimate walks the same regions as
+//! the cover: the cover imports it from this module, never the other way round.
 //!
 //! Units are point-coordinate comparisons at [`super::cost::THIEMARD_RATE`]. A region
 //! `[a, b]` with `k = d - m >= 2` free coordinates and `L` points in `[0, b)` costs
@@ -39,6 +41,36 @@ pub(super) fn split_factor(ratio: f64, k: usize) -> f64 {
         ratio.max(0.0).sqrt().min(1.0)
     } else {
         ratio.max(0.0).powf(1.0 / k as f64).min(1.0)
+    }
+}
+
+/// Product of the coordinates.
+pub(super) fn vol(c: &[f64]) -> f64 {
+    c.iter().product()
+}
+
+/// Thiémard's split (see [`super::thiemard`]) of the region `[a, b]` with the first `m`
+/// coordinates fixed: writes the lower corner `γ` of its bracket into `g`. Requires
+/// `vol(b) > delta`. The free part of `γ` always moves below `b` in coordinate `m`, so the
+/// loop along child `m` ends. Shared by the cover and its estimate.
+pub(super) fn split(a: &[f64], b: &[f64], m: usize, delta: f64, g: &mut [f64]) {
+    let fixed = vol(a.get(..m).unwrap_or(&[]));
+    let free = vol(b.get(m..).unwrap_or(&[]));
+    let ratio = (vol(b) - delta) / (fixed * free);
+    let s = split_factor(ratio, b.len() - m);
+    for (j, gj) in g.iter_mut().enumerate() {
+        *gj = if j < m {
+            a.get(j).copied().unwrap_or(0.0)
+        } else {
+            s * b.get(j).copied().unwrap_or(0.0)
+        };
+    }
+    // In exact arithmetic s < 1 (vol(b) - vol_fixed(a) vol_free(b) < delta holds for every
+    // region of the decomposition); after rounding, force progress.
+    if let (Some(gm), Some(&bm)) = (g.get_mut(m), b.get(m))
+        && *gm >= bm
+    {
+        *gm = bm.next_down().max(0.0);
     }
 }
 
@@ -214,7 +246,7 @@ impl Estimate {
                     if let Some(chunk) = self.buf.get_mut(ia..ig + d) {
                         let (ab, g) = chunk.split_at_mut(2 * d);
                         let (a, b) = ab.split_at(d);
-                        super::thiemard::split(a, b, m, self.delta, g);
+                        split(a, b, m, self.delta, g);
                     }
                     m + 1
                 }

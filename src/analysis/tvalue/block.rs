@@ -2,10 +2,10 @@
 //! intervals with the exact coordinates.
 
 use crate::analysis::Points;
-use crate::analysis::tvalue::{COUNT_RATE, count_steps, t_value_points_within};
+use crate::analysis::tvalue::{t_value_cost, t_value_points};
 use crate::digital::DigitalNetB;
 use crate::error::{Error, Result};
-use crate::work::{Budget, Cost};
+use crate::work::Budget;
 
 /// The t-value in base `b` of points `start .. start + b^m` of `net`: the smallest `t`
 /// such that every elementary interval of volume `b^(t-m)` holds `b^t` of them.
@@ -13,8 +13,9 @@ use crate::work::{Budget, Cost};
 /// Only `floor(x b^m)` decides which interval of volume `>= b^-m` holds a point, and it is
 /// taken from the exact coordinate [`DigitalNetB::value`] (`v / b^K`), so the count is
 /// exact although the 0.32 samples round (`1/3` would fall below its interval). Cost:
-/// [`count_steps`] (about `log2(m) C(m + s - 1, s - 1) b^m (s + 1)` steps), checked
-/// against `budget` before any work.
+/// [`t_value_cost`] (the levels of the binary
+/// search, each about `C(rho + s - 1, s - 1) b^m (s + 1)` steps), checked against `budget`
+/// before any work.
 ///
 /// ```
 /// use qmckit::work::Budget;
@@ -44,10 +45,7 @@ pub fn t_value_block<M: AsRef<[u16]>>(
     let s = net.dims();
     budget.check(
         "counting points in elementary intervals",
-        Cost::steps(
-            count_steps(n, s, m, u32::BITS - m.leading_zeros()),
-            COUNT_RATE,
-        ),
+        t_value_cost(n, s, m, net.base(), None),
     )?;
     let (k, _) = crate::digital::output_digits(net.base())?;
     let drop = b.pow((k as u32).saturating_sub(m));
@@ -60,5 +58,5 @@ pub fn t_value_block<M: AsRef<[u16]>>(
             *slot = (cell as f64 + 0.5) / cells;
         }
     }
-    t_value_points_within(Points::new(&x, s)?, net.base(), m, budget)
+    t_value_points(Points::new(&x, s)?, net.base(), m, budget)
 }

@@ -1,9 +1,11 @@
 //! Counting points in elementary intervals: the t-value of any point set, and the intervals
 //! that break a given `t`.
 
+#[cfg(doc)]
+use super::cost::{COUNT_RATE, count_steps};
+use super::cost::{failures_cost, t_value_cost};
 use crate::analysis::Points;
-use crate::work::Stop;
-use crate::work::{Budget, Cost, Rate};
+use crate::work::{Limits, Stop};
 use crate::{Error, Result};
 use core::fmt;
 use rayon::prelude::*;
@@ -354,69 +356,71 @@ fn digits_f64(points: Points, base: u32, m: u32) -> Result<Digits> {
 ///
 /// Cost: a binary search over the interval size `rho = m - t`, about `log2 m` levels; a
 /// level counts `N` points into `2^rho` cells for each of its `C(rho + s - 1, s - 1)` shapes,
-/// `O(N s)` each, stopping at the first unbalanced shape (rayon over the first side).
+/// `O(N s)` each, stopping at the first unbalanced shape (rayon over the first side):
+/// [`count_steps`] at [`COUNT_RATE`] a second and core.
 /// For `s = 2, m = 14`: about 60 shapes of 16 384 points, milliseconds. Memory `8 N s` bytes
 /// of digits plus `4 * 2^rho` bytes of counts per thread.
 ///
 /// # Errors
 /// [`Error::ZeroDimensions`], [`Error::MTooLarge`] for `m > 32`, [`Error::BufferLength`]
-/// unless `samples.len() == 2^m dims`; [`Error::OverBudget`] when [`count_steps`] exceeds
-/// [`Budget::DEFAULT`] (see [`t_value_u32_within`]).
+/// unless `samples.len() == 2^m dims`; [`Error::OverBudget`] when [`t_value_cost`] without
+/// an expected t-value (every level of the search counted whole) exceeds the budget of
+/// `limits` (`&Budget::DEFAULT`: ten seconds), checked before the digits are made;
+/// [`Error::OutOfTime`] past its deadline.
 ///
 /// ```
 /// use qmckit::analysis::tvalue::t_value_u32;
+/// use qmckit::work::Budget;
 /// use qmckit::{LarcherPillichshammer, Sampler};
 /// let lp = LarcherPillichshammer::new(4)?;
 /// let mut pts = vec![0u32; 2 * 16];
 /// lp.fill(0, &mut pts)?;
-/// assert_eq!(t_value_u32(&pts, 2, 4)?, 0); // LP is a (0, m, 2)-net
+/// assert_eq!(t_value_u32(&pts, 2, 4, &Budget::DEFAULT)?, 0); // LP is a (0, m, 2)-net
 /// pts.swap(1, 17); // swap two y values: (0, 15/16), (1/2, 0)
-/// assert!(t_value_u32(&pts, 2, 4)? > 0);
+/// assert!(t_value_u32(&pts, 2, 4, &Budget::DEFAULT)? > 0);
+/// let pts = vec![0u32; 4 << 10]; // 2^10 points at the origin in 4D
+/// assert_eq!(t_value_u32(&pts, 4, 10, &Budget::DEFAULT)?, 10);
+/// let tiny = Budget::seconds(1e-6)?;
+/// assert!(t_value_u32(&pts, 4, 10, &tiny).is_err());
 /// # Ok::<(), qmckit::Error>(())
 /// ```
-pub fn t_value_u32(samples: &[u32], dims: usize, m: u32) -> Result<u32> {
-    t_value_u32_within(samples, dims, m, &Budget::DEFAULT)
+pub fn t_value_u32<'a>(
+    samples: &[u32],
+    dims: usize,
+    m: u32,
+    limits: impl Into<Limits<'a>>,
+) -> Result<u32> {
+    t_value_u32_expecting(samples, dims, m, None, limits)
 }
 
-/// Point-cell steps per second of the interval counters (one step: one coordinate of one
-/// point placed, or one cell cleared and checked). Measured about `1.8e8` a second
-/// (`2^21` points in 2D, all levels, one core of two shared); set below that.
-pub const COUNT_RATE: Rate = Rate::per_second(1e8);
-
-/// An upper bound on the steps of counting `N = b^m` points of `s` coordinates for the
-/// shapes of `levels` interval sizes up to `m`: `levels C(m + s - 1, s - 1) (N s + N)`
-/// (at most `C(rho + s - 1, s - 1) <= C(m + s - 1, s - 1)` shapes a level, each a pass over
-/// the `N s` digits and the `b^rho <= N` cells). The t-value's binary search visits at most
-/// `ceil(log2(m + 1))` levels, the failure listing one. `O(s)`.
-pub fn count_steps(n: u64, s: usize, m: u32, levels: u32) -> f64 {
-    let shapes = (1..s).fold(1.0, |c, k| c * (f64::from(m) + k as f64) / k as f64);
-    f64::from(levels) * shapes * n as f64 * (s as f64 + 1.0)
-}
-
-/// Levels the binary search of [`t_value_u32`] visits, at most: `ceil(log2(m + 1))`.
-fn search_levels(m: u32) -> u32 {
-    u32::BITS - m.leading_zeros()
-}
-
-/// [`t_value_u32`] within the time budget `budget`: [`count_steps`] with the binary
-/// search's levels, at [`COUNT_RATE`], checked before the digits are made.
+/// [`t_value_u32`] for a set whose t-value is expected to be `expected_t` (e.g. a
+/// scrambled net: Owen scrambling, digital shifts and linear matrix scrambles keep the
+/// t-value of the net, which the rank test gives): the estimate, [`t_value_cost`], follows
+/// the search such a set takes, so it is about the real time instead of the most any set
+/// takes. The result does not depend on `expected_t`; a wrong guess only makes the estimate
+/// wrong, and the deadline of the budget (started here if it was not) bounds the run.
 ///
 /// # Errors
-/// As [`t_value_u32`], [`Error::OverBudget`] past `budget`.
+/// As [`t_value_u32`]; [`Error::OutOfTime`] past the deadline (read once per shape).
 ///
 /// ```
 /// use qmckit::work::Budget;
-/// use qmckit::analysis::tvalue::t_value_u32_within;
-/// let pts = vec![0u32; 4 << 10]; // 2^10 points at the origin in 4D
-/// assert_eq!(t_value_u32_within(&pts, 4, 10, &Budget::DEFAULT)?, 10);
-/// let tiny = Budget::seconds(1e-6)?;
-/// assert!(t_value_u32_within(&pts, 4, 10, &tiny).is_err());
+/// use qmckit::analysis::tvalue::t_value_u32_expecting;
+/// let pts = vec![0u32; 2 << 12]; // 2^12 points at the origin in 2D: t = 12
+/// assert_eq!(t_value_u32_expecting(&pts, 2, 12, Some(12), &Budget::DEFAULT)?, 12);
 /// # Ok::<(), qmckit::Error>(())
 /// ```
-pub fn t_value_u32_within(samples: &[u32], dims: usize, m: u32, budget: &Budget) -> Result<u32> {
+pub fn t_value_u32_expecting<'a>(
+    samples: &[u32],
+    dims: usize,
+    m: u32,
+    expected_t: Option<u32>,
+    limits: impl Into<Limits<'a>>,
+) -> Result<u32> {
+    let limits = limits.into();
+    let budget = limits.budget();
     check_u32(samples, dims, m)?;
-    let steps = count_steps(1u64 << m, dims, m, search_levels(m));
-    budget.check(COUNTING, Cost::steps(steps, COUNT_RATE))?;
+    budget.check(COUNTING, t_value_cost(1u64 << m, dims, m, 2, expected_t))?;
     let d = digits_u32(samples, dims, m)?;
     Ok(m - d.strength(&Stop::new(budget, COUNTING))?)
 }
@@ -436,40 +440,36 @@ pub fn t_value_u32_within(samples: &[u32], dims: usize, m: u32, budget: &Budget)
 /// [`Error::BaseTooSmall`], [`Error::MTooLarge`] (beyond `b^m <= 2^53` or `m > 32`),
 /// [`Error::BufferLength`] unless there are exactly `b^m` points, and
 /// [`Error::CoordinateOutOfRange`] for a coordinate equal to 1 (it lies in no elementary
-/// interval).
+/// interval); [`Error::OverBudget`] past the budget of `limits` (`&Budget::DEFAULT`: ten
+/// seconds; checked before counting), [`Error::OutOfTime`] past its deadline (read once per
+/// shape counted).
 ///
 /// ```
 /// use qmckit::analysis::{Points, tvalue::t_value_points};
+/// use qmckit::work::Budget;
 /// // The 3 x 3 grid of cell centres is a (0, 2, 2)-net in base 3? No: t = 1
 /// // (the interval [0, 1/9) x [0, 1) is empty); the 9 points (i/9 + 1/18, phi_3(i) + 1/18)
 /// // of Hammersley in base 3 are a (0, 2, 2)-net.
 /// let grid: Vec<f64> = (0..9).flat_map(|i| [(i / 3) as f64 / 3.0 + 1.0 / 6.0,
 ///                                           (i % 3) as f64 / 3.0 + 1.0 / 6.0]).collect();
-/// assert_eq!(t_value_points(Points::new(&grid, 2)?, 3, 2)?, 1);
+/// assert_eq!(t_value_points(Points::new(&grid, 2)?, 3, 2, &Budget::DEFAULT)?, 1);
 /// let ham: Vec<f64> = (0..9).flat_map(|i| [i as f64 / 9.0 + 1.0 / 18.0,
 ///                                          ((i % 3) * 3 + i / 3) as f64 / 9.0 + 1.0 / 18.0])
 ///                           .collect();
-/// assert_eq!(t_value_points(Points::new(&ham, 2)?, 3, 2)?, 0);
+/// assert_eq!(t_value_points(Points::new(&ham, 2)?, 3, 2, &Budget::DEFAULT)?, 0);
 /// # Ok::<(), qmckit::Error>(())
 /// ```
-pub fn t_value_points(points: Points, base: u32, m: u32) -> Result<u32> {
-    t_value_points_within(points, base, m, &Budget::DEFAULT)
-}
-
-/// As [`t_value_points`], [`Error::OverBudget`] past `budget` (checked before counting),
-/// [`Error::OutOfTime`] past its deadline (read once per shape counted).
-///
-/// # Errors
-/// As [`t_value_points`].
-pub fn t_value_points_within(points: Points, base: u32, m: u32, budget: &Budget) -> Result<u32> {
+pub fn t_value_points<'a>(
+    points: Points,
+    base: u32,
+    m: u32,
+    limits: impl Into<Limits<'a>>,
+) -> Result<u32> {
+    let limits = limits.into();
+    let budget = limits.budget();
     let d = digits_f64(points, base, m)?;
-    let steps = count_steps(
-        d.pow.last().copied().unwrap_or(1),
-        d.dims,
-        m,
-        search_levels(m),
-    );
-    budget.check(COUNTING, Cost::steps(steps, COUNT_RATE))?;
+    let n = d.pow.last().copied().unwrap_or(1);
+    budget.check(COUNTING, t_value_cost(n, d.dims, m, base, None))?;
     Ok(m - d.strength(&Stop::new(budget, COUNTING))?)
 }
 
@@ -481,48 +481,35 @@ pub fn t_value_points_within(points: Points, base: u32, m: u32, budget: &Budget)
 /// Cost: every shape of size `m - t`, `O(N s + 2^(m - t))` each (see [`t_value_u32`]).
 ///
 /// # Errors
-/// As [`t_value_u32`] (one level of [`count_steps`] within [`Budget::DEFAULT`]; see
-/// [`elementary_interval_failures_u32_within`]), and [`Error::MTooLarge`] for `t > m`
-/// (reported as `m: t, max: m`).
+/// As [`t_value_u32`] (one level, [`failures_cost`], within the budget of `limits`, checked
+/// before the digits are made), and [`Error::MTooLarge`] for `t > m` (reported as
+/// `m: t, max: m`).
 ///
 /// ```
 /// use qmckit::analysis::tvalue::elementary_interval_failures_u32;
+/// use qmckit::work::Budget;
 /// // Four points all in [0, 1/2) x [0, 1/2): not a (0, 2, 2)-net, nor a (1, 2, 2)-net.
 /// let pts = [0u32, 0, 1 << 29, 1 << 30, 1 << 30, 1 << 29, 3 << 29, 3 << 29];
-/// let f = elementary_interval_failures_u32(&pts, 2, 2, 1, 10)?;
+/// let f = elementary_interval_failures_u32(&pts, 2, 2, 1, 10, &Budget::DEFAULT)?;
 /// assert_eq!((f[0].shape.clone(), f[0].cell.clone(), f[0].count, f[0].expected),
 ///            (vec![0, 1], vec![0, 0], 4, 2));
 /// # Ok::<(), qmckit::Error>(())
 /// ```
-pub fn elementary_interval_failures_u32(
+pub fn elementary_interval_failures_u32<'a>(
     samples: &[u32],
     dims: usize,
     m: u32,
     t: u32,
     limit: usize,
+    limits: impl Into<Limits<'a>>,
 ) -> Result<Vec<IntervalFailure>> {
-    elementary_interval_failures_u32_within(samples, dims, m, t, limit, &Budget::DEFAULT)
-}
-
-/// [`elementary_interval_failures_u32`] within the time budget `budget` (one level of
-/// [`count_steps`] at [`COUNT_RATE`], checked before the digits are made).
-///
-/// # Errors
-/// As [`elementary_interval_failures_u32`], [`Error::OverBudget`] past `budget`.
-pub fn elementary_interval_failures_u32_within(
-    samples: &[u32],
-    dims: usize,
-    m: u32,
-    t: u32,
-    limit: usize,
-    budget: &Budget,
-) -> Result<Vec<IntervalFailure>> {
+    let limits = limits.into();
+    let budget = limits.budget();
     check_u32(samples, dims, m)?;
     if t > m {
         return Err(Error::MTooLarge { m: t, max: m });
     }
-    let steps = count_steps(1u64 << m, dims, m, 1);
-    budget.check(COUNTING, Cost::steps(steps, COUNT_RATE))?;
+    budget.check(COUNTING, failures_cost(1u64 << m, dims, m - t, 2))?;
     let d = digits_u32(samples, dims, m)?;
     let stop = Stop::new(budget, COUNTING);
     let found = d.failures(m - t, limit, &stop);
@@ -533,21 +520,25 @@ pub fn elementary_interval_failures_u32_within(
 /// (digits as in [`t_value_points`]).
 ///
 /// # Errors
-/// As [`t_value_points`], and [`Error::MTooLarge`] for `t > m`.
-pub fn elementary_interval_failures(
+/// As [`t_value_points`] (one level, [`failures_cost`], within the budget of `limits`), and
+/// [`Error::MTooLarge`] for `t > m`.
+pub fn elementary_interval_failures<'a>(
     points: Points,
     base: u32,
     m: u32,
     t: u32,
     limit: usize,
+    limits: impl Into<Limits<'a>>,
 ) -> Result<Vec<IntervalFailure>> {
+    let limits = limits.into();
+    let budget = limits.budget();
     let d = digits_f64(points, base, m)?;
     if t > m {
         return Err(Error::MTooLarge { m: t, max: m });
     }
-    let steps = count_steps(d.pow.last().copied().unwrap_or(1), d.dims, m, 1);
-    Budget::DEFAULT.check(COUNTING, Cost::steps(steps, COUNT_RATE))?;
-    let stop = Stop::new(&Budget::DEFAULT, COUNTING);
+    let n = d.pow.last().copied().unwrap_or(1);
+    budget.check(COUNTING, failures_cost(n, d.dims, m - t, base))?;
+    let stop = Stop::new(budget, COUNTING);
     let found = d.failures(m - t, limit, &stop);
     stop.finish(found)
 }

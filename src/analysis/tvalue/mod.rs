@@ -44,13 +44,17 @@
 //! ([`crate::digital::DigitalNetB`]) from its exact coordinates.
 
 mod block;
+mod cost;
 mod count;
 
 pub use block::t_value_block;
+pub use cost::{
+    COUNT_RATE, COUNTS_CACHE_BYTES, INCREMENT_MISS, OTHER_BASE_FACTOR, UNBALANCED_SHARE,
+    count_steps, failures_cost, level_steps, t_value_cost,
+};
 pub use count::{
-    COUNT_RATE, IntervalFailure, count_steps, elementary_interval_failures,
-    elementary_interval_failures_u32, elementary_interval_failures_u32_within, t_value_points,
-    t_value_points_within, t_value_u32, t_value_u32_within,
+    IntervalFailure, elementary_interval_failures, elementary_interval_failures_u32,
+    t_value_points, t_value_u32, t_value_u32_expecting,
 };
 
 #[cfg(test)]
@@ -98,16 +102,24 @@ mod tests {
 
     #[test]
     fn validation() {
-        assert!(t_value_u32(&[0; 3], 1, 2).is_err());
-        assert!(t_value_u32(&[0; 4], 0, 2).is_err());
+        assert!(t_value_u32(&[0; 3], 1, 2, &crate::work::Budget::DEFAULT).is_err());
+        assert!(t_value_u32(&[0; 4], 0, 2, &crate::work::Budget::DEFAULT).is_err());
         let p = [0.5; 4];
         let pts = Points::new(&p, 1).unwrap();
         assert_eq!(
-            t_value_points(pts, 1, 2),
+            t_value_points(pts, 1, 2, &crate::work::Budget::DEFAULT),
             Err(Error::BaseTooSmall { base: 1 })
         );
-        assert!(t_value_points(pts, 3, 2).is_err());
+        assert!(t_value_points(pts, 3, 2, &crate::work::Budget::DEFAULT).is_err());
         let one = [0.0, 1.0];
-        assert!(t_value_points(Points::new(&one, 1).unwrap(), 2, 1).is_err());
+        assert!(
+            t_value_points(
+                Points::new(&one, 1).unwrap(),
+                2,
+                1,
+                &crate::work::Budget::DEFAULT
+            )
+            .is_err()
+        );
     }
 }

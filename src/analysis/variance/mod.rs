@@ -48,7 +48,7 @@ pub struct Prediction {
 /// ```
 /// use qmckit::analysis::{Points, spectrum::spectrum_2d, variance::*};
 /// // One point: P = 1 everywhere, so the prediction is the white-noise variance.
-/// let s = spectrum_2d(Points::new(&[0.3, 0.6], 2)?, 16)?;
+/// let s = spectrum_2d(Points::new(&[0.3, 0.6], 2)?, 16, &qmckit::work::Budget::DEFAULT)?;
 /// let disk = TorusIntegrand::disk(0.25)?;
 /// let p = predicted_variance(&s, &disk);
 /// assert!((p.variance - 0.15779639865760675).abs() < 1e-14);
