@@ -271,6 +271,7 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
             let fig = RadialFigure {
                 title: title("radial power spectrum"),
                 x_label: "radius |k|".into(),
+                y_label: "mean power".into(),
                 curves,
             };
             draw(&fig, format, w, h, &name)?
@@ -290,6 +291,7 @@ pub fn run(args: &PlotArgs) -> Result<(), Failure> {
             let fig = RadialFigure {
                 title: title("pair correlation g(r)"),
                 x_label: "distance r".into(),
+                y_label: "g(r)".into(),
                 curves,
             };
             draw(&fig, format, w, h, &name)?

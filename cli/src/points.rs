@@ -476,14 +476,25 @@ pub fn run(args: &PointsArgs) -> Result<(), Failure> {
     if let Some(option) = args.blue.first_given(budgeted)
         && !is_relaxed(args.sampler)
     {
-        let to = if option == "--max-seconds" {
-            "poisson, best-candidate, gaussian-blue-noise, pmj02bn"
-        } else {
-            "poisson, best-candidate, gaussian-blue-noise"
-        };
+        // The samplers that take the option, from the catalog: every set built whole takes
+        // the budget; the blue-noise options go to the blue-noise sets (the relaxed ones
+        // take `--iterations` and `--torus`, and the catalog judges the rest).
+        let to: Vec<&str> = qmckit::catalog::SAMPLERS
+            .iter()
+            .filter(|e| {
+                let whole = e.kind.size() == qmckit::catalog::Size::Whole;
+                match option {
+                    "--max-seconds" => whole,
+                    "--iterations" | "--torus" => blue_noise_kind(e).is_some() || is_relaxed(e),
+                    _ => blue_noise_kind(e).is_some(),
+                }
+            })
+            .map(|e| e.name)
+            .collect();
         return Err(Failure::usage(format!(
-            "{option} does not apply to {} (only to {to})",
-            args.sampler.name
+            "{option} does not apply to {} (only to {})",
+            args.sampler.name,
+            to.join(", ")
         )));
     }
     let n = args

@@ -223,6 +223,8 @@ pub struct RadialFigure {
     pub title: String,
     /// The x-axis label.
     pub x_label: String,
+    /// The y-axis label ("mean power" for a spectrum, "g(r)" for a pair correlation).
+    pub y_label: String,
     /// One `(label, points)` curve per spectrum.
     pub curves: Vec<(String, Vec<(f64, f64)>)>,
 }
@@ -265,7 +267,7 @@ impl Figure for RadialFigure {
             .configure_mesh()
             .light_line_style(RGBColor(235, 235, 235))
             .x_desc(clean(&self.x_label))
-            .y_desc("mean power")
+            .y_desc(clean(&self.y_label))
             .label_style(label_font())
             .draw()
             .map_err(drawing)?;

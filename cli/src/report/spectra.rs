@@ -193,6 +193,7 @@ fn power_spectrum(ctx: &Ctx) -> Result<Section, Failure> {
     let radial = RadialFigure {
         title: "radial power spectrum".into(),
         x_label: "|k| / sqrt(N)".into(),
+        y_label: "mean power".into(),
         curves: vec![("Poisson disk".into(), radial_curve(&spec))],
     };
     s.figures
@@ -248,6 +249,7 @@ fn colours(ctx: &Ctx) -> Result<Section, Failure> {
     let radial = RadialFigure {
         title: "radial power".into(),
         x_label: "|k| / sqrt(N)".into(),
+        y_label: "mean power".into(),
         curves: vec![
             ("white".into(), radial_curve(&sw)),
             ("blue (best candidate)".into(), radial_curve(&sb)),
@@ -441,6 +443,7 @@ fn variance(ctx: &Ctx) -> Result<Section, Failure> {
         &RadialFigure {
             title: "radial power".into(),
             x_label: "|k| / sqrt(N)".into(),
+            y_label: "mean power".into(),
             curves,
         },
         WIDE,

@@ -392,6 +392,7 @@ fn radial_axes_are_finite() {
     let fig = RadialFigure {
         title: String::new(),
         x_label: String::new(),
+        y_label: String::new(),
         curves: vec![("a".into(), vec![(0.5, 1.0), (1.0, f64::MAX)])],
     };
     // The power axis ends at 1.05 times the largest value: infinite here, refused.
@@ -403,6 +404,7 @@ fn radial_axes_are_finite() {
     let fig = RadialFigure {
         title: String::new(),
         x_label: String::new(),
+        y_label: String::new(),
         curves: vec![("a".into(), vec![(-1.0, -2.0), (1.0, 1.0)])],
     };
     assert!(within(20, move || render(&fig, Format::Png, 300, 300)).is_ok());
@@ -437,6 +439,7 @@ fn svg_text_is_well_formed() {
     let fig = RadialFigure {
         title: nasty.into(),
         x_label: nasty.into(),
+        y_label: nasty.into(),
         curves: vec![(nasty.into(), vec![(0.5, 1.0), (1.0, 2.0)])],
     };
     check(render(&fig, Format::Svg, 400, 400).unwrap());
