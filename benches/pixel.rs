@@ -27,6 +27,7 @@ use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use qmckit::digital::sobol::OwenSobol;
 use qmckit::hash::mix64;
 use qmckit::pixel::{PaddedSobol, PixelSampler, Randomization, ZSobol, pbrt_f32};
+use qmckit::work::Budget;
 
 const SIDE: u32 = 256;
 const SPP: usize = 16;
@@ -149,7 +150,8 @@ fn pixels(c: &mut Criterion) {
     group.bench_function("qmckit_pmj02bn", |bch| {
         let mut out = vec![[0u32; 2]; 65_536];
         bch.iter(|| {
-            qmckit::pmj::bn::fill(black_box(7), &mut out, &mut work).expect("length");
+            qmckit::pmj::bn::fill(black_box(7), &mut out, &mut work, &Budget::UNLIMITED)
+                .expect("length");
             black_box(&mut out);
         })
     });
@@ -161,8 +163,14 @@ fn pixels(c: &mut Criterion) {
         group.bench_function(name, |bch| {
             let mut out = vec![[0u32; 2]; 65_536];
             bch.iter(|| {
-                qmckit::pmj::christensen::fill(black_box(7), k, &mut out, &mut work)
-                    .expect("length");
+                qmckit::pmj::christensen::fill(
+                    black_box(7),
+                    k,
+                    &mut out,
+                    &mut work,
+                    &Budget::UNLIMITED,
+                )
+                .expect("length");
                 black_box(&mut out);
             })
         });

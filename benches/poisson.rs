@@ -17,13 +17,13 @@ fn poisson(c: &mut Criterion) {
     let theirs = fast_poisson::Poisson2D::new()
         .with_dimensions([1.0, 1.0], r)
         .with_seed(1);
-    let n_ours = ours.generate_within(&Budget::UNLIMITED).unwrap().count();
+    let n_ours = ours.generate(&Budget::UNLIMITED).unwrap().count();
     let n_theirs = theirs.generate().len();
     let mut g = c.benchmark_group("poisson_2d_r0.01");
     g.measurement_time(Duration::from_secs(5));
     g.throughput(Throughput::Elements(n_ours as u64));
     g.bench_function("qmckit", |b| {
-        b.iter(|| black_box(ours.generate_within(&Budget::UNLIMITED).unwrap()))
+        b.iter(|| black_box(ours.generate(&Budget::UNLIMITED).unwrap()))
     });
     g.throughput(Throughput::Elements(n_theirs as u64));
     g.bench_function("fast_poisson", |b| b.iter(|| black_box(theirs.generate())));
@@ -36,7 +36,7 @@ fn void_and_cluster(c: &mut Criterion) {
     g.throughput(Throughput::Elements(64 * 64));
     let ours = VoidAndCluster::new(64, 64).unwrap();
     g.bench_function("qmckit", |b| {
-        b.iter(|| black_box(ours.generate_within(&Budget::UNLIMITED).unwrap()))
+        b.iter(|| black_box(ours.generate(&Budget::UNLIMITED).unwrap()))
     });
     g.bench_function("blue-noise", |b| {
         b.iter(|| {

@@ -29,7 +29,7 @@ fn main() {
         let s = PoissonDisk::new(2, r)
             .unwrap()
             .seed(seed)
-            .generate_within(&Budget::UNLIMITED)
+            .generate(&Budget::UNLIMITED)
             .unwrap();
         let secs = t.elapsed().as_secs_f64();
         line("qmckit", &task, s.count(), s.count() as f64 * r * r, secs);
@@ -41,7 +41,7 @@ fn main() {
             .candidates(45)
             .unwrap()
             .seed(seed)
-            .generate_within(&Budget::UNLIMITED)
+            .generate(&Budget::UNLIMITED)
             .unwrap();
         let secs = t.elapsed().as_secs_f64();
         line(
@@ -63,7 +63,7 @@ fn main() {
     let t = Instant::now();
     let m = VoidAndCluster::new(side, side)
         .unwrap()
-        .generate_within(&Budget::UNLIMITED)
+        .generate(&Budget::UNLIMITED)
         .unwrap();
     line(
         "qmckit",

@@ -3,9 +3,12 @@
 //! `mask::the_static_table_is_the_generated_mask` regenerates it and compares.
 
 use qmckit::blue_noise::VoidAndCluster;
+use qmckit::work::Budget;
 
 fn main() -> Result<(), qmckit::Error> {
-    let mask = VoidAndCluster::new(64, 64)?.seed(0).generate()?;
+    let mask = VoidAndCluster::new(64, 64)?
+        .seed(0)
+        .generate(&Budget::DEFAULT)?;
     println!("{}", include_str!("mask64_header.txt").trim_end());
     println!("#[rustfmt::skip]");
     println!("pub static MASK64: [u16; 4096] = [");

@@ -9,7 +9,7 @@
 
 use std::time::Instant;
 
-use qmckit::work::no_progress;
+use qmckit::work::Budget;
 use qmckit_cli::scene::{SceneImage, Study, StudyOptions, cost};
 
 /// The lecture's "MSE 1/r x" ratios, `r` per non-baseline sampler.
@@ -79,7 +79,7 @@ fn main() {
     let all = Instant::now();
     for s in Study::ALL {
         let t = Instant::now();
-        let st = match s.run(&o, &no_progress) {
+        let st = match s.run(&o, &Budget::UNLIMITED) {
             Ok(st) => st,
             Err(e) => {
                 eprintln!("{}: {e}", s.title(o.spp));

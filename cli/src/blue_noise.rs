@@ -135,21 +135,21 @@ pub fn build(
             if let Some(k) = args.candidates {
                 pd = pd.candidates(k)?;
             }
-            pd.generate_within(&budget)?
+            pd.generate(&budget)?
         }
         Kind::BestCandidate => {
             let mut bc = BestCandidate::new(need_n()?)?.seed(seed);
             if let Some(m) = args.candidates {
                 bc = bc.candidates(m)?;
             }
-            bc.generate_within(&budget)?
+            bc.generate(&budget)?
         }
         Kind::Gaussian => {
             let mut g = GaussianBlueNoise::new(need_n()?)?.seed(seed);
             if let Some(i) = args.iterations {
                 g = g.iterations(i)?;
             }
-            g.generate_within(&budget)?
+            g.generate(&budget)?
         }
     })
 }

@@ -133,11 +133,9 @@ fn sampler_of(spec: &Spec, budget: &Budget) -> Result<Box<dyn Sampler>, Failure>
             .torus(false)
             .maximal(false)
             .seed(seed)
-            .generate_within(budget)?,
-        SamplerKind::BestCandidate => BestCandidate::new(n)?.seed(seed).generate_within(budget)?,
-        SamplerKind::GaussianBlueNoise => GaussianBlueNoise::new(n)?
-            .seed(seed)
-            .generate_within(budget)?,
+            .generate(budget)?,
+        SamplerKind::BestCandidate => BestCandidate::new(n)?.seed(seed).generate(budget)?,
+        SamplerKind::GaussianBlueNoise => GaussianBlueNoise::new(n)?.seed(seed).generate(budget)?,
         _ => return build(spec),
     };
     Ok(match spec.scramble.kind {

@@ -256,7 +256,7 @@ fn measure(
                 },
             )?;
             let ta = with_spinner(&name, || {
-                star::star_lower_bound_within(p, 0, lower_bound_iterations(p), budget)
+                star::star_lower_bound(p, 0, lower_bound_iterations(p), budget)
             })
             .map_err(over_budget)?;
             // Both are valid lower bounds, the cover's upper bound is valid too: D* lies
@@ -270,7 +270,7 @@ fn measure(
             "extreme is implemented for 2-dimensional points only, not {}",
             set.dims
         )),
-        MeasureKind::Extreme => with_spinner(&name, || star::extreme_2d_within(p, budget))
+        MeasureKind::Extreme => with_spinner(&name, || star::extreme_2d(p, budget))
             .map_err(|e| refusal(e, "extreme", set, "")),
         _ => Err(format!("{name} is not computed here")),
     }?;

@@ -74,7 +74,7 @@ pub fn run(cmd: &MaskCommand) -> Result<(), Failure> {
     let mask = VoidAndCluster::new(w, h)?
         .seed(args.seed)
         .sigma(args.sigma)?
-        .generate_within(&budget)?;
+        .generate(&budget)?;
     let mut out = std::io::BufWriter::new(std::io::stdout().lock());
     write_mask(&mut out, &mask, args.format)?;
     out.flush()?;

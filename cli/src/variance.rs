@@ -152,12 +152,12 @@ fn points_of(
             PoissonDisk::with_points(2, u64::from(n))?
                 .torus(true)
                 .seed(key)
-                .generate_within(budget)?,
+                .generate(budget)?,
         ),
         SamplerKind::GaussianBlueNoise => Some(
             GaussianBlueNoise::new(u64::from(n))?
                 .seed(key)
-                .generate_within(budget)?,
+                .generate(budget)?,
         ),
         _ => None,
     };

@@ -178,7 +178,7 @@ fn pmj_sequences(u: &mut Unstructured) -> Result<()> {
             let work_len = pmj::bn::workspace_len(n).unwrap_or(0);
             let short = u.int_in_range(0..=work_len.min(4))?;
             let mut work = vec![0u32; work_len - short];
-            let r = pmj::bn::fill(seed, &mut pts, &mut work);
+            let r = pmj::bn::fill(seed, &mut pts, &mut work, &Budget::UNLIMITED);
             assert!(
                 short == 0 || n < 2 || r.is_err() || work_len == 0,
                 "short workspace accepted"
@@ -191,7 +191,8 @@ fn pmj_sequences(u: &mut Unstructured) -> Result<()> {
             let candidates = size(u)?;
             let work_len = pmj::christensen::workspace_len(n).unwrap_or(0);
             let mut work = vec![0u32; work_len];
-            let r = pmj::christensen::fill(seed, candidates, &mut pts, &mut work);
+            let r =
+                pmj::christensen::fill(seed, candidates, &mut pts, &mut work, &Budget::UNLIMITED);
             if candidates == 0 || candidates > pmj::christensen::MAX_CANDIDATES {
                 assert!(r.is_err() || n == 0, "{candidates} candidates accepted");
             }
@@ -206,7 +207,7 @@ fn pmj_sequences(u: &mut Unstructured) -> Result<()> {
             }
             let before = pts.clone();
             let mut work = vec![0u32; pmj::spread::workspace_len(n).unwrap_or(0)];
-            if pmj::spread::spread(&mut pts, &mut work).is_err() {
+            if pmj::spread::spread(&mut pts, &mut work, &Budget::UNLIMITED).is_err() {
                 assert_eq!(pts, before, "spread changed the points it refused");
             }
         }
@@ -234,7 +235,7 @@ fn blue_noise(u: &mut Unstructured) -> Result<()> {
                 return Ok(());
             };
             let _ = p.cost();
-            p.generate_within(&budget())
+            p.generate(&budget())
         }
         1 => {
             let Ok(b) = BestCandidate::new(u64::from(size(u)?)) else {
@@ -244,7 +245,7 @@ fn blue_noise(u: &mut Unstructured) -> Result<()> {
                 return Ok(());
             };
             let _ = b.cost();
-            b.seed(seed).generate_within(&budget())
+            b.seed(seed).generate(&budget())
         }
         2 => {
             let Ok(g) = GaussianBlueNoise::new(u64::from(size(u)?)) else {
@@ -257,7 +258,7 @@ fn blue_noise(u: &mut Unstructured) -> Result<()> {
                 return Ok(());
             };
             let _ = g.cost();
-            g.seed(seed).generate_within(&budget())
+            g.seed(seed).generate(&budget())
         }
         _ => {
             let (w, h) = (size(u)? as usize, size(u)? as usize);
@@ -268,7 +269,7 @@ fn blue_noise(u: &mut Unstructured) -> Result<()> {
                 return Ok(());
             };
             let _ = v.cost();
-            if let Ok(mask) = v.generate_within(&budget()) {
+            if let Ok(mask) = v.generate(&budget()) {
                 let n = mask.width() * mask.height();
                 assert_eq!(mask.ranks().len(), n);
                 let mut seen = vec![false; n];

@@ -5,6 +5,7 @@
 use numpy::{PyArray1, PyArray2, PyArrayMethods};
 use pyo3::prelude::*;
 use qmckit::blue_noise::PoissonDisk;
+use qmckit::work::Budget;
 
 use crate::error::to_py;
 
@@ -27,7 +28,9 @@ pub fn poisson_disk<'py>(
         .map_err(to_py)?
         .seed(seed)
         .surface(surface);
-    let set = py.detach(move || builder.generate()).map_err(to_py)?;
+    let set = py
+        .detach(move || builder.generate(&Budget::DEFAULT))
+        .map_err(to_py)?;
     let n = set.count();
     PyArray1::from_vec(py, set.to_f64()).reshape([n, d])
 }

@@ -464,7 +464,7 @@ pub fn pmj02bn(py: Python<'_>, n: usize, seed: u64) -> PyResult<NativeSampler> {
         .detach(move || -> qmckit::Result<Vec<u32>> {
             let mut pts = vec![[0u32; 2]; n];
             let mut work = vec![0u32; work_len];
-            qmckit::pmj::bn::fill(seed, &mut pts, &mut work)?;
+            qmckit::pmj::bn::fill(seed, &mut pts, &mut work, &qmckit::work::Budget::UNLIMITED)?;
             Ok(pts.into_iter().flatten().collect())
         })
         .map_err(to_py)?;

@@ -35,7 +35,7 @@
 //! and paced against a [`Budget`].
 
 use super::Points;
-use crate::work::{Budget, Cost, Rate};
+use crate::work::{Budget, Cost, Limits, Rate};
 use crate::{Error, Result};
 
 /// Pair comparisons a second in `d <= 3`, one core, release (about 1e8 measured; lower
@@ -99,19 +99,23 @@ pub fn packing_distance(n: usize, d: usize) -> Result<f64> {
 /// of the module documentation; `f64::INFINITY` for one point.
 ///
 /// ```
-/// use qmckit::{analysis::{Points, spacing::min_distance_within}, work::Budget};
+/// use qmckit::{analysis::{Points, spacing::min_distance}, work::Budget};
 /// let p = [0.1, 0.1, 0.9, 0.9, 0.5, 0.45];
 /// let b = Budget::DEFAULT;
-/// assert!((min_distance_within(Points::new(&p, 2)?, true, &b)? - 0.2 * 2f64.sqrt()).abs() < 1e-15);
-/// assert!((min_distance_within(Points::new(&p, 2)?, false, &b)? - 0.4f64.hypot(0.35)).abs() < 1e-15);
+/// assert!((min_distance(Points::new(&p, 2)?, true, &b)? - 0.2 * 2f64.sqrt()).abs() < 1e-15);
+/// assert!((min_distance(Points::new(&p, 2)?, false, &b)? - 0.4f64.hypot(0.35)).abs() < 1e-15);
 /// # Ok::<(), qmckit::Error>(())
 /// ```
 ///
 /// # Errors
 /// [`Error::OverBudget`] when even the first grid's estimate exceeds the budget,
 /// [`Error::OutOfTime`], [`Error::TooLarge`].
-pub fn min_distance_within(points: Points, toroidal: bool, budget: &Budget) -> Result<f64> {
-    let budget = budget.started();
+pub fn min_distance<'a>(
+    points: Points,
+    toroidal: bool,
+    limits: impl Into<Limits<'a>>,
+) -> Result<f64> {
+    let budget = limits.into().budget().started();
     let (n, d) = (points.len(), points.dims());
     if n < 2 {
         return Ok(f64::INFINITY);
@@ -144,24 +148,24 @@ pub fn min_distance_within(points: Points, toroidal: bool, budget: &Budget) -> R
 /// a few hundred points, as the minimum of `N^2/2` distances).
 ///
 /// ```
-/// use qmckit::{analysis::{Points, spacing::normalized_min_distance_within}, work::Budget};
+/// use qmckit::{analysis::{Points, spacing::normalized_min_distance}, work::Budget};
 /// // Two points at (1/4, 1/4) and (3/4, 3/4): 1/sqrt(2) apart on the torus, and
 /// // d_max(2, 2) = sqrt(1 / sqrt(3)).
 /// let p = [0.25, 0.25, 0.75, 0.75];
-/// let r = normalized_min_distance_within(Points::new(&p, 2)?, true, &Budget::DEFAULT)?;
+/// let r = normalized_min_distance(Points::new(&p, 2)?, true, &Budget::DEFAULT)?;
 /// assert!((r - 0.5f64.sqrt() / (1.0 / 3f64.sqrt()).sqrt()).abs() < 1e-12);
 /// # Ok::<(), qmckit::Error>(())
 /// ```
 ///
 /// # Errors
-/// As [`min_distance_within`] and [`packing_distance`].
-pub fn normalized_min_distance_within(
+/// As [`min_distance`] and [`packing_distance`].
+pub fn normalized_min_distance<'a>(
     points: Points,
     toroidal: bool,
-    budget: &Budget,
+    limits: impl Into<Limits<'a>>,
 ) -> Result<f64> {
     let dmax = packing_distance(points.len(), points.dims())?;
-    Ok(min_distance_within(points, toroidal, budget)? / dmax)
+    Ok(min_distance(points, toroidal, limits)? / dmax)
 }
 
 fn dist2(a: &[f64], b: &[f64], toroidal: bool) -> f64 {

@@ -13,7 +13,8 @@
 //!
 //! ```
 //! use qmckit::blue_noise::BestCandidate;
-//! let set = BestCandidate::new(256)?.candidates(10)?.seed(1).generate()?;
+//! use qmckit::work::Budget;
+//! let set = BestCandidate::new(256)?.candidates(10)?.seed(1).generate(&Budget::DEFAULT)?;
 //! assert_eq!(set.count(), 256);
 //! # Ok::<(), qmckit::Error>(())
 //! ```
@@ -82,21 +83,13 @@ impl BestCandidate {
         Cost::steps(f64::from(self.m) * n * n / 2.0, TESTS)
     }
 
-    /// The set within the default budget.
-    ///
-    /// # Errors
-    /// [`Error::OverBudget`].
-    pub fn generate(&self) -> Result<PointSet> {
-        self.generate_within(&Budget::DEFAULT)
-    }
-
     /// The set, refused before it starts when [`cost`](Self::cost) exceeds `budget`, and
     /// stopped at the budget's deadline (started here if the caller has not; the clock is
     /// read once every [`crate::work::PACER_INTERVAL`] candidates).
     ///
     /// # Errors
     /// [`Error::OverBudget`], [`Error::TooLarge`], [`Error::OutOfTime`].
-    pub fn generate_within(&self, budget: &Budget) -> Result<PointSet> {
+    pub fn generate(&self, budget: &Budget) -> Result<PointSet> {
         let budget = budget.started();
         budget.check("best-candidate sampling", self.cost())?;
         let mut pacer = budget.pacer("best-candidate sampling");

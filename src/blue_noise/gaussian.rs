@@ -16,7 +16,8 @@
 //!
 //! ```
 //! use qmckit::blue_noise::GaussianBlueNoise;
-//! let set = GaussianBlueNoise::new(128)?.iterations(50)?.seed(2).generate()?;
+//! use qmckit::work::Budget;
+//! let set = GaussianBlueNoise::new(128)?.iterations(50)?.seed(2).generate(&Budget::DEFAULT)?;
 //! assert_eq!(set.count(), 128);
 //! # Ok::<(), qmckit::Error>(())
 //! ```
@@ -135,14 +136,6 @@ impl GaussianBlueNoise {
         )
     }
 
-    /// The set within the default budget.
-    ///
-    /// # Errors
-    /// [`Error::OverBudget`].
-    pub fn generate(&self) -> Result<PointSet> {
-        self.generate_within(&Budget::DEFAULT)
-    }
-
     /// The set, refused before it starts when [`cost`](Self::cost) exceeds `budget`, and
     /// stopped at the budget's deadline (started here if the caller has not): the clock is
     /// read once an iteration and, within one, once every `DEADLINE_POINTS` points of
@@ -150,7 +143,7 @@ impl GaussianBlueNoise {
     ///
     /// # Errors
     /// [`Error::OverBudget`], [`Error::TooLarge`], [`Error::OutOfTime`].
-    pub fn generate_within(&self, budget: &Budget) -> Result<PointSet> {
+    pub fn generate(&self, budget: &Budget) -> Result<PointSet> {
         let budget = budget.started();
         budget.check("Gaussian blue noise", self.cost())?;
         let n = self.n as usize;

@@ -40,9 +40,10 @@
 //!
 //! ```
 //! use qmckit::blue_noise::Lloyd;
-//! let set = Lloyd::new(64, 2)?.iterations(10)?.seed(1).generate()?;
+//! use qmckit::work::Budget;
+//! let set = Lloyd::new(64, 2)?.iterations(10)?.seed(1).generate(&Budget::DEFAULT)?;
 //! assert_eq!(set.count(), 64);
-//! let cc = Lloyd::new(32, 3)?.capacity_constrained(true).torus(true).iterations(5)?.generate()?;
+//! let cc = Lloyd::new(32, 3)?.capacity_constrained(true).torus(true).iterations(5)?.generate(&Budget::DEFAULT)?;
 //! assert_eq!(cc.count(), 32);
 //! # Ok::<(), qmckit::Error>(())
 //! ```
@@ -191,20 +192,12 @@ impl Lloyd {
         )
     }
 
-    /// The set within the default budget.
-    ///
-    /// # Errors
-    /// As [`Lloyd::generate_within`].
-    pub fn generate(&self) -> Result<PointSet> {
-        self.generate_within(&Budget::DEFAULT)
-    }
-
     /// The set, refused before it starts when [`cost`](Self::cost) exceeds `budget`,
     /// stopped at the budget's deadline.
     ///
     /// # Errors
     /// [`Error::OverBudget`], [`Error::TooLarge`], [`Error::OutOfTime`].
-    pub fn generate_within(&self, budget: &Budget) -> Result<PointSet> {
+    pub fn generate(&self, budget: &Budget) -> Result<PointSet> {
         let trace = self.run(budget)?;
         let mut coords = crate::size::vec_with_capacity(trace.sites.len())?;
         coords.extend(trace.sites.iter().map(|&x| to_fraction(x)));
@@ -214,7 +207,7 @@ impl Lloyd {
     /// The construction with its energies and final counts ([`LloydTrace`]).
     ///
     /// # Errors
-    /// As [`Lloyd::generate_within`].
+    /// As [`Lloyd::generate`].
     pub fn run(&self, budget: &Budget) -> Result<LloydTrace> {
         let what = if self.ccvt {
             "CCVT"

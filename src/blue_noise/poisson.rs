@@ -33,7 +33,8 @@
 //!
 //! ```
 //! use qmckit::blue_noise::PoissonDisk;
-//! let set = PoissonDisk::new(2, 0.05)?.torus(true).seed(7).generate()?;
+//! use qmckit::work::Budget;
+//! let set = PoissonDisk::new(2, 0.05)?.torus(true).seed(7).generate(&Budget::DEFAULT)?;
 //! assert!(set.count() > 150);
 //! # Ok::<(), qmckit::Error>(())
 //! ```
@@ -159,8 +160,9 @@ impl PoissonDisk {
     ///
     /// ```
     /// use qmckit::blue_noise::PoissonDisk;
-    /// let shell = PoissonDisk::new(2, 0.05)?.seed(1).generate()?;
-    /// let surface = PoissonDisk::new(2, 0.05)?.surface(true).seed(1).generate()?;
+    /// use qmckit::work::Budget;
+    /// let shell = PoissonDisk::new(2, 0.05)?.seed(1).generate(&Budget::DEFAULT)?;
+    /// let surface = PoissonDisk::new(2, 0.05)?.surface(true).seed(1).generate(&Budget::DEFAULT)?;
     /// assert!(surface.count() > shell.count());
     /// # Ok::<(), qmckit::Error>(())
     /// ```
@@ -242,7 +244,7 @@ impl PoissonDisk {
     /// cost a point, plus the grid. Calibrated within a factor 2 of measured runs for
     /// Bridson's loop in 1 to 8 dimensions and the 2D maximal fill
     /// (docs/budgets.md); the maximal fill in 3 or more dimensions has no useful
-    /// estimate, and the deadline of [`generate_within`](Self::generate_within) bounds it.
+    /// estimate, and the deadline of [`generate`](Self::generate) bounds it.
     ///
     /// # Errors
     /// As [`new`](Self::new).
@@ -273,21 +275,13 @@ impl PoissonDisk {
         Ok(Cost::steps(seconds, Rate::per_second(1.0)))
     }
 
-    /// The set, within the default budget.
-    ///
-    /// # Errors
-    /// [`Error::OverBudget`], [`Error::TooLarge`].
-    pub fn generate(&self) -> Result<PointSet> {
-        self.generate_within(&Budget::DEFAULT)
-    }
-
     /// The set, refused before it starts when [`cost`](Self::cost) exceeds `budget`, and
     /// stopped at the budget's deadline (started here if the caller has not): a run admitted
     /// under a budget of `B` seconds ends within about `1.25 B` whatever the estimate said.
     ///
     /// # Errors
     /// [`Error::OverBudget`], [`Error::TooLarge`], [`Error::OutOfTime`].
-    pub fn generate_within(&self, budget: &Budget) -> Result<PointSet> {
+    pub fn generate(&self, budget: &Budget) -> Result<PointSet> {
         let budget = budget.started();
         budget.check("Poisson-disk sampling", self.cost()?)?;
         let (set, _) = match self.target {
@@ -304,8 +298,8 @@ impl PoissonDisk {
     /// draws the pilot set: the cost of one construction).
     ///
     /// # Errors
-    /// As [`generate_within`](Self::generate_within).
-    pub fn radius_within(&self, budget: &Budget) -> Result<f64> {
+    /// As [`generate`](Self::generate).
+    pub fn radius(&self, budget: &Budget) -> Result<f64> {
         match self.target {
             Target::Radius(r) => Ok(r),
             Target::Points(n) => {

@@ -37,7 +37,8 @@
 //!
 //! ```
 //! use qmckit::blue_noise::Sot;
-//! let set = Sot::new(64, 2)?.iterations(20)?.seed(3).generate()?;
+//! use qmckit::work::Budget;
+//! let set = Sot::new(64, 2)?.iterations(20)?.seed(3).generate(&Budget::DEFAULT)?;
 //! assert_eq!(set.count(), 64);
 //! # Ok::<(), qmckit::Error>(())
 //! ```
@@ -165,20 +166,12 @@ impl Sot {
         )
     }
 
-    /// The set within the default budget.
-    ///
-    /// # Errors
-    /// As [`Sot::generate_within`].
-    pub fn generate(&self) -> Result<PointSet> {
-        self.generate_within(&Budget::DEFAULT)
-    }
-
     /// The set, refused before it starts when [`cost`](Self::cost) exceeds `budget`,
     /// stopped at the budget's deadline.
     ///
     /// # Errors
     /// [`Error::OverBudget`], [`Error::TooLarge`], [`Error::OutOfTime`].
-    pub fn generate_within(&self, budget: &Budget) -> Result<PointSet> {
+    pub fn generate(&self, budget: &Budget) -> Result<PointSet> {
         let pts = self.run(budget)?;
         let mut coords = crate::size::vec_with_capacity(pts.len())?;
         coords.extend(pts.iter().map(|&x| to_fraction(x.clamp(0.0, 1.0))));
@@ -188,7 +181,7 @@ impl Sot {
     /// The points as `f64`, row-major (not clamped).
     ///
     /// # Errors
-    /// As [`Sot::generate_within`].
+    /// As [`Sot::generate`].
     pub fn run(&self, budget: &Budget) -> Result<Vec<f64>> {
         const WHAT: &str = "sliced optimal transport";
         let budget = budget.started();

@@ -28,7 +28,8 @@
 //!
 //! ```
 //! use qmckit::blue_noise::VoidAndCluster;
-//! let mask = VoidAndCluster::new(16, 16)?.seed(3).generate()?;
+//! use qmckit::work::Budget;
+//! let mask = VoidAndCluster::new(16, 16)?.seed(3).generate(&Budget::DEFAULT)?;
 //! let mut seen = mask.ranks().to_vec();
 //! seen.sort_unstable();
 //! assert!(seen.iter().enumerate().all(|(i, &r)| r as usize == i));
@@ -163,21 +164,13 @@ impl VoidAndCluster {
         Cost::steps(n * micros * scale, PIXEL_MICROS)
     }
 
-    /// The mask within the default budget.
-    ///
-    /// # Errors
-    /// [`Error::OverBudget`].
-    pub fn generate(&self) -> Result<RankMask> {
-        self.generate_within(&Budget::DEFAULT)
-    }
-
     /// The mask, refused before it starts when [`cost`](Self::cost) exceeds `budget`, and
     /// stopped at the budget's deadline (started here if the caller has not; the clock is
     /// read about once every [`crate::work::PACER_INTERVAL`] flips of the 13 x 13 kernel).
     ///
     /// # Errors
     /// [`Error::OverBudget`], [`Error::TooLarge`], [`Error::OutOfTime`].
-    pub fn generate_within(&self, budget: &Budget) -> Result<RankMask> {
+    pub fn generate(&self, budget: &Budget) -> Result<RankMask> {
         let budget = budget.started();
         budget.check("void-and-cluster mask", self.cost())?;
         let mut pacer = budget.pacer("void-and-cluster mask");

@@ -146,11 +146,11 @@ impl Entry<MeasureKind> {
         }
         Ok(match self.kind {
             MeasureKind::Star => star::star_exact(points, budget)?,
-            MeasureKind::Extreme => star::extreme_2d_within(points, budget)?,
+            MeasureKind::Extreme => star::extreme_2d(points, budget)?,
             MeasureKind::MinDistance => distance::min_distance(points, false),
             MeasureKind::MeanMinDistance => distance::mean_min_distance(points, false),
             MeasureKind::NormalizedMinDistance => {
-                crate::analysis::spacing::normalized_min_distance_within(points, false, budget)?
+                crate::analysis::spacing::normalized_min_distance(points, false, budget)?
             }
             _ => {
                 return Err(super::CatalogError::Unused {
@@ -203,7 +203,7 @@ pub static MEASURES: &[MeasureEntry] = &[
         summary: "extreme (unanchored box) discrepancy, exact, 2D",
         math: "D = sup_(a <= b) |#{x_i in [a, b)}/N - vol[a, b)| (Niederreiter 1992)",
         params: &[BUDGET],
-        item: "qmckit::analysis::star::extreme_2d_within",
+        item: "qmckit::analysis::star::extreme_2d",
     },
     Entry {
         kind: MeasureKind::L2Star,
@@ -345,7 +345,7 @@ pub static MEASURES: &[MeasureEntry] = &[
             param("toroidal", "distance on the torus", "false", "bool"),
             BUDGET,
         ],
-        item: "qmckit::analysis::spacing::normalized_min_distance_within",
+        item: "qmckit::analysis::spacing::normalized_min_distance",
     },
     Entry {
         kind: MeasureKind::Spectrum,

@@ -111,21 +111,21 @@ mod built {
                 if let Some(k) = opts.candidates {
                     pd = pd.candidates(k)?;
                 }
-                pd.generate_within(&budget)?
+                pd.generate(&budget)?
             }
             SamplerKind::BestCandidate => {
                 let mut bc = BestCandidate::new(need_n()?)?.seed(seed);
                 if let Some(m) = opts.candidates {
                     bc = bc.candidates(m)?;
                 }
-                bc.generate_within(&budget)?
+                bc.generate(&budget)?
             }
             _ => {
                 let mut g = GaussianBlueNoise::new(need_n()?)?.seed(seed);
                 if let Some(i) = opts.iterations {
                     g = g.iterations(i)?;
                 }
-                g.generate_within(&budget)?
+                g.generate(&budget)?
             }
         })
     }
@@ -148,7 +148,7 @@ mod built {
             if let Some(i) = opts.iterations {
                 s = s.iterations(i)?;
             }
-            s.generate_within(&budget)?
+            s.generate(&budget)?
         } else {
             let mut l = Lloyd::new(n, dims)?
                 .seed(seed)
@@ -157,7 +157,7 @@ mod built {
             if let Some(i) = opts.iterations {
                 l = l.iterations(i)?;
             }
-            l.generate_within(&budget)?
+            l.generate(&budget)?
         })
     }
 
@@ -189,7 +189,7 @@ mod built {
         budget.check("pmj02bn points", Cost::steps(steps, PMJ02BN_STEPS))?;
         let mut pts = crate::size::vec_zeroed::<[u32; 2]>(len)?;
         let mut work = crate::size::vec_zeroed::<u32>(work_len)?;
-        bn::fill_within(seed, &mut pts, &mut work, &budget)?;
+        bn::fill(seed, &mut pts, &mut work, &budget)?;
         drop(work);
         let mut coords = crate::size::vec_with_capacity(crate::size::coordinates(n, 2)?)?;
         coords.extend(pts.into_iter().flatten());

@@ -57,7 +57,7 @@ pub fn build_tables(
             });
         }
     }
-    bn::fill(seed, table, work)?;
+    bn::fill(seed, table, work, &crate::work::Budget::UNLIMITED)?;
     let cells = 1usize << (2 * tb);
     let per = 1u32 << (2 * log4);
     let counts = work.get_mut(..cells).ok_or(Error::BufferLength {

@@ -26,7 +26,7 @@
 //! let mut pts = [[0u32; 2]; 64];
 //! let mut work = [0u32; 512];
 //! assert!(bn::workspace_len(64)? <= work.len());
-//! bn::fill(7, &mut pts, &mut work)?;
+//! bn::fill(7, &mut pts, &mut work, &qmckit::work::Budget::UNLIMITED)?;
 //! // One point in every cell of the 8 x 8 grid.
 //! let mut seen = [false; 64];
 //! for p in &pts { seen[((p[1] >> 29) * 8 + (p[0] >> 29)) as usize] = true; }
@@ -56,27 +56,15 @@ pub const fn workspace_len(n: usize) -> Result<usize> {
 ///
 /// # Errors
 /// [`crate::Error::TooManyPoints`] past [`MAX_POINTS`]; [`crate::Error::BufferLength`] for
-/// a short `work`.
-pub fn fill(seed: u64, out: &mut [[u32; 2]], work: &mut [u32]) -> Result<()> {
-    fill_within(seed, out, work, &Budget::UNLIMITED)
-}
-
-/// [`fill`] under the deadline of `budget` (started on entry if it was not; the same
-/// points bit for bit when it finishes). The spread, `O(n log n)`, checks the deadline
-/// ([`spread::spread_within`]); the `O(n)` PMJ02 fill before it does not.
-///
-/// # Errors
-/// As [`fill`]; [`crate::Error::OutOfTime`] past the deadline (`out` is then not the
-/// sequence: discard it).
-pub fn fill_within(
-    seed: u64,
-    out: &mut [[u32; 2]],
-    work: &mut [u32],
-    budget: &Budget,
-) -> Result<()> {
+/// a short `work`; [`crate::Error::OutOfTime`] past the deadline of `budget` (started on
+/// entry if it was not; `out` is then not the sequence: discard it). The spread,
+/// `O(n log n)`, checks the deadline ([`spread::spread`]); the `O(n)` PMJ02 fill before it
+/// does not. Within the deadline ([`Budget::UNLIMITED`] has none) the points are the same
+/// bit for bit whatever the budget.
+pub fn fill(seed: u64, out: &mut [[u32; 2]], work: &mut [u32], budget: &Budget) -> Result<()> {
     spread::workspace_len(out.len())?;
     spread::check_work(out.len(), work.len())?;
     let budget = budget.started();
     super::fill(seed, out)?;
-    spread::spread_within(out, work, &budget)
+    spread::spread(out, work, &budget)
 }

@@ -60,7 +60,8 @@
 //! let mut pts = [[0u32; 2]; 64];
 //! let mut work = [0u32; 256];
 //! assert!(christensen::workspace_len(64)? <= work.len());
-//! christensen::fill(7, DEFAULT_CANDIDATES, &mut pts, &mut work)?;
+//! let unlimited = &qmckit::work::Budget::UNLIMITED;
+//! christensen::fill(7, DEFAULT_CANDIDATES, &mut pts, &mut work, unlimited)?;
 //! // One point in every cell of the 8 x 8 grid.
 //! let mut seen = [false; 64];
 //! for p in &pts { seen[((p[1] >> 29) * 8 + (p[0] >> 29)) as usize] = true; }
@@ -326,19 +327,13 @@ impl Pass<'_> {
 ///
 /// # Errors
 /// [`Error::TooManyPoints`] past [`MAX_POINTS`]; [`Error::InvalidParameter`] for
-/// `candidates` outside `1..=`[`MAX_CANDIDATES`]; [`Error::BufferLength`] for a short `work`.
-pub fn fill(seed: u64, candidates: u32, out: &mut [[u32; 2]], work: &mut [u32]) -> Result<()> {
-    fill_within(seed, candidates, out, work, &Budget::UNLIMITED)
-}
-
-/// [`fill`] under the deadline of `budget` (started on entry if it was not; the same
-/// points bit for bit when it finishes): the clock is read (with `std`) about once every
-/// [`crate::work::PACER_INTERVAL`] candidates.
-///
-/// # Errors
-/// As [`fill`]; [`Error::OutOfTime`] past the deadline (`out` then holds only a prefix of
-/// the sequence: discard it).
-pub fn fill_within(
+/// `candidates` outside `1..=`[`MAX_CANDIDATES`]; [`Error::BufferLength`] for a short `work`;
+/// [`Error::OutOfTime`] past the deadline of `budget` (started on entry if it was not;
+/// [`Budget::UNLIMITED`] has none), whose clock is read (with `std`) about once every
+/// [`crate::work::PACER_INTERVAL`] candidates (`out` then holds only a prefix of the
+/// sequence: discard it). Within the deadline the points are the same bit for bit whatever
+/// the budget.
+pub fn fill(
     seed: u64,
     candidates: u32,
     out: &mut [[u32; 2]],

@@ -45,7 +45,7 @@
 //! fill(3, &mut pts)?;
 //! let mut work = [0u32; 2048];
 //! assert!(spread::workspace_len(256)? <= work.len());
-//! spread::spread(&mut pts, &mut work)?;
+//! spread::spread(&mut pts, &mut work, &qmckit::work::Budget::UNLIMITED)?;
 //! // Still one point in every cell of the 16 x 16 grid (and of every elementary grid).
 //! let mut seen = [false; 256];
 //! for p in &pts { seen[((p[1] >> 28) * 16 + (p[0] >> 28)) as usize] = true; }
@@ -452,21 +452,16 @@ pub const fn check_work(n: usize, work: usize) -> Result<()> {
 /// [`Error::TooManyPoints`] past [`MAX_POINTS`]; [`Error::BufferLength`] for a short
 /// `work`; [`Error::InvalidParameter`] if two of the first `2^k` points share a stratum of
 /// width `2^-k` or a cell of the `2^floor(k/2) x 2^ceil(k/2)` grid (then `pts` is not a
-/// (0, 2)-sequence), with `pts` unchanged.
-pub fn spread(pts: &mut [[u32; 2]], work: &mut [u32]) -> Result<()> {
-    spread_within(pts, work, &Budget::UNLIMITED)
-}
-
-/// [`spread`] under the deadline of `budget` (started on entry if it was not): the sweep
-/// reads the clock (with `std`) about once every [`crate::work::PACER_INTERVAL`] points
-/// its flips visit, so it stops within a few milliseconds of the deadline. No estimate is
-/// checked here: the caller estimates (`O(n log n)`, see the module text).
+/// (0, 2)-sequence), with `pts` unchanged; [`Error::OutOfTime`] past the deadline of
+/// `budget`, with `pts` a nested scramble of the input (still a (0, 2)-sequence, every net
+/// intact) whose flips are only partly chosen: not the result, to be discarded.
 ///
-/// # Errors
-/// As [`spread`]; [`Error::OutOfTime`] past the deadline, with `pts` a nested scramble of
-/// the input (still a (0, 2)-sequence, every net intact) whose flips are only partly
-/// chosen: not the result, to be discarded.
-pub fn spread_within(pts: &mut [[u32; 2]], work: &mut [u32], budget: &Budget) -> Result<()> {
+/// The deadline of `budget` (started on entry if it was not; [`Budget::UNLIMITED`] has
+/// none) bounds the sweep: it reads the clock (with `std`) about once every
+/// [`crate::work::PACER_INTERVAL`] points its flips visit, so it stops within a few
+/// milliseconds of the deadline. No estimate is checked here: the caller estimates
+/// (`O(n log n)`, see the module text).
+pub fn spread(pts: &mut [[u32; 2]], work: &mut [u32], budget: &Budget) -> Result<()> {
     let n = pts.len();
     check_work(n, work.len())?;
     let mut pacer = budget.started().pacer("PMJ02BN spread");

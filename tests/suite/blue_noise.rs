@@ -88,7 +88,7 @@ fn poisson_disk_pairs_are_at_least_r_apart() {
                 .unwrap()
                 .torus(torus)
                 .seed(seed)
-                .generate()
+                .generate(&Budget::DEFAULT)
                 .unwrap();
             let x = coords(&s);
             assert!(s.count() > 10, "{d} {r} {torus}: {}", s.count());
@@ -130,7 +130,7 @@ fn poisson_disk_surface_points_touch_a_neighbour() {
                 .unwrap()
                 .surface(surface)
                 .seed(3)
-                .generate()
+                .generate(&Budget::DEFAULT)
                 .unwrap();
             coords(&s)
         };
@@ -209,7 +209,7 @@ fn tiled_poisson_sets_are_r_separated_across_tiles() {
                 .unwrap()
                 .torus(torus)
                 .seed(seed)
-                .generate()
+                .generate(&Budget::DEFAULT)
                 .unwrap();
             assert!(s.count() > 60_000, "{}", s.count());
             let m = min_distance_sweep(&coords(&s), r, torus);
@@ -270,7 +270,7 @@ fn tiled_poisson_sets_have_no_seams() {
                     .unwrap()
                     .torus(torus)
                     .seed(seed)
-                    .generate()
+                    .generate(&Budget::DEFAULT)
                     .unwrap(),
             );
             profile(&borders, &x, &mut at_borders);
@@ -336,7 +336,7 @@ fn tiled_poisson_sets_leave_no_holes() {
     for torus in [false, true] {
         for seed in 0..8 {
             let s = PoissonDisk::new(2, r).unwrap().torus(torus).seed(seed);
-            let worst = largest_gap(&coords(&s.generate().unwrap()), r, torus);
+            let worst = largest_gap(&coords(&s.generate(&Budget::DEFAULT).unwrap()), r, torus);
             assert!(worst < 2.0 * r, "torus {torus} seed {seed}: gap {worst}");
         }
     }
@@ -351,7 +351,7 @@ fn million_point_poisson_sets_leave_no_holes() {
         let s = PoissonDisk::new(2, r)
             .unwrap()
             .seed(seed)
-            .generate()
+            .generate(&Budget::DEFAULT)
             .unwrap();
         let nr2 = s.count() as f64 * r * r;
         assert!((0.61..0.62).contains(&nr2), "seed {seed}: N r^2 = {nr2}");
@@ -367,7 +367,7 @@ fn poisson_sets_do_not_depend_on_the_thread_count() {
             .unwrap()
             .torus(true)
             .seed(11)
-            .generate()
+            .generate(&Budget::DEFAULT)
             .unwrap()
     };
     let one = rayon::ThreadPoolBuilder::new()
@@ -393,7 +393,7 @@ fn bridson_density_matches_the_literature() {
             .unwrap()
             .torus(true)
             .seed(seed)
-            .generate()
+            .generate(&Budget::DEFAULT)
             .unwrap();
         total += s.count() as f64 * r * r / 4.0;
     }
@@ -409,7 +409,7 @@ fn maximal_sets_leave_no_room_for_another_disk() {
             .torus(torus)
             .maximal(true)
             .seed(5)
-            .generate()
+            .generate(&Budget::DEFAULT)
             .unwrap();
         let x = coords(&s);
         assert!(min_distance(&x, 2, torus) >= r);
@@ -435,7 +435,7 @@ fn maximal_sets_leave_no_room_for_another_disk() {
                 .unwrap()
                 .torus(torus)
                 .seed(5)
-                .generate()
+                .generate(&Budget::DEFAULT)
                 .unwrap(),
         );
         let uncovered = (0..m * m).any(|i| {
@@ -458,14 +458,14 @@ fn about_n_points_lands_near_n() {
         (1, 500, false),
     ] {
         let pd = PoissonDisk::with_points(d, n).unwrap().torus(torus).seed(3);
-        let got = pd.generate().unwrap().count() as f64;
+        let got = pd.generate(&Budget::DEFAULT).unwrap().count() as f64;
         assert!((got / n as f64 - 1.0).abs() < 0.03, "d {d} n {n}: {got}");
-        let r = pd.radius_within(&Budget::DEFAULT).unwrap();
+        let r = pd.radius(&Budget::DEFAULT).unwrap();
         let again = PoissonDisk::new(d, r)
             .unwrap()
             .torus(torus)
             .seed(3)
-            .generate()
+            .generate(&Budget::DEFAULT)
             .unwrap();
         assert_eq!(
             again.count() as f64,
@@ -480,31 +480,39 @@ fn constructions_are_deterministic_per_seed() {
     let a = PoissonDisk::new(2, 0.03)
         .unwrap()
         .seed(9)
-        .generate()
+        .generate(&Budget::DEFAULT)
         .unwrap();
     let b = PoissonDisk::new(2, 0.03)
         .unwrap()
         .seed(9)
-        .generate()
+        .generate(&Budget::DEFAULT)
         .unwrap();
     let c = PoissonDisk::new(2, 0.03)
         .unwrap()
         .seed(10)
-        .generate()
+        .generate(&Budget::DEFAULT)
         .unwrap();
     assert_eq!(a, b);
     assert_ne!(a, c);
-    let a = BestCandidate::new(300).unwrap().seed(1).generate().unwrap();
+    let a = BestCandidate::new(300)
+        .unwrap()
+        .seed(1)
+        .generate(&Budget::DEFAULT)
+        .unwrap();
     assert_eq!(
         a,
-        BestCandidate::new(300).unwrap().seed(1).generate().unwrap()
+        BestCandidate::new(300)
+            .unwrap()
+            .seed(1)
+            .generate(&Budget::DEFAULT)
+            .unwrap()
     );
     let a = GaussianBlueNoise::new(200)
         .unwrap()
         .iterations(20)
         .unwrap()
         .seed(1)
-        .generate()
+        .generate(&Budget::DEFAULT)
         .unwrap();
     assert_eq!(
         a,
@@ -513,7 +521,7 @@ fn constructions_are_deterministic_per_seed() {
             .iterations(20)
             .unwrap()
             .seed(1)
-            .generate()
+            .generate(&Budget::DEFAULT)
             .unwrap()
     );
     // A point set is a sampler of its points.
@@ -553,19 +561,23 @@ fn bad_parameters_are_errors() {
     assert!(PoissonDisk::with_points(2, 1 << 40).is_err());
     let tight = Budget::seconds(1e-6).unwrap();
     assert!(matches!(
-        PoissonDisk::new(2, 0.001).unwrap().generate_within(&tight),
+        PoissonDisk::new(2, 0.001).unwrap().generate(&tight),
         Err(Error::OverBudget { .. })
     ));
     assert!(matches!(BestCandidate::new(0), Err(Error::ZeroPoints)));
     assert!(BestCandidate::new(10).unwrap().candidates(0).is_err());
     assert!(matches!(
-        BestCandidate::new(100_000).unwrap().generate(),
+        BestCandidate::new(100_000)
+            .unwrap()
+            .generate(&Budget::DEFAULT),
         Err(Error::OverBudget { .. })
     ));
     assert!(GaussianBlueNoise::new(1).is_err());
     assert!(GaussianBlueNoise::new(10).unwrap().sigma(f64::NAN).is_err());
     assert!(matches!(
-        GaussianBlueNoise::new(1 << 20).unwrap().generate(),
+        GaussianBlueNoise::new(1 << 20)
+            .unwrap()
+            .generate(&Budget::DEFAULT),
         Err(Error::OverBudget { .. })
     ));
 }
@@ -592,7 +604,7 @@ fn best_candidate_is_blue() {
             &BestCandidate::new(1024)
                 .unwrap()
                 .seed(seed)
-                .generate()
+                .generate(&Budget::DEFAULT)
                 .unwrap(),
         );
         let (min, mean) = nn_stats(&x);
@@ -616,7 +628,7 @@ fn poisson_disk_low_frequency_plateau() {
                 .unwrap()
                 .torus(true)
                 .seed(seed)
-                .generate()
+                .generate(&Budget::DEFAULT)
                 .unwrap(),
         );
         let (min, mean) = nn_stats(&x);
@@ -642,7 +654,7 @@ fn gaussian_blue_noise_has_near_zero_low_frequency_power() {
             &GaussianBlueNoise::new(1024)
                 .unwrap()
                 .seed(seed)
-                .generate()
+                .generate(&Budget::DEFAULT)
                 .unwrap(),
         );
         let (min, mean) = nn_stats(&x);

@@ -67,7 +67,7 @@ fn masks_are_permutations_and_thresholds_are_blue() {
     let mask: RankMask = VoidAndCluster::new(side, side)
         .unwrap()
         .seed(4)
-        .generate()
+        .generate(&Budget::DEFAULT)
         .unwrap();
     assert!(is_permutation(mask.ranks()));
     let n = side * side;
@@ -103,7 +103,7 @@ fn non_square_and_tiny_masks_are_permutations() {
         let m = VoidAndCluster::new(w, h)
             .unwrap()
             .seed(1)
-            .generate()
+            .generate(&Budget::DEFAULT)
             .unwrap();
         assert_eq!(m.ranks().len(), w * h);
         assert!(is_permutation(m.ranks()), "{w}x{h}");
@@ -111,14 +111,14 @@ fn non_square_and_tiny_masks_are_permutations() {
     let a = VoidAndCluster::new(32, 32)
         .unwrap()
         .seed(7)
-        .generate()
+        .generate(&Budget::DEFAULT)
         .unwrap();
     assert_eq!(
         a,
         VoidAndCluster::new(32, 32)
             .unwrap()
             .seed(7)
-            .generate()
+            .generate(&Budget::DEFAULT)
             .unwrap()
     );
     assert_ne!(
@@ -126,7 +126,7 @@ fn non_square_and_tiny_masks_are_permutations() {
         VoidAndCluster::new(32, 32)
             .unwrap()
             .seed(8)
-            .generate()
+            .generate(&Budget::DEFAULT)
             .unwrap()
     );
 }
@@ -146,9 +146,7 @@ fn bad_mask_sizes_are_errors() {
     assert!(VoidAndCluster::new(8, 8).unwrap().sigma(f64::NAN).is_err());
     let tight = qmckit::work::Budget::seconds(1e-4).unwrap();
     assert!(matches!(
-        VoidAndCluster::new(1024, 1024)
-            .unwrap()
-            .generate_within(&tight),
+        VoidAndCluster::new(1024, 1024).unwrap().generate(&tight),
         Err(Error::OverBudget { .. })
     ));
 }
@@ -158,7 +156,7 @@ fn the_static_table_is_the_generated_mask() {
     let m = VoidAndCluster::new(64, 64)
         .unwrap()
         .seed(0)
-        .generate()
+        .generate(&Budget::DEFAULT)
         .unwrap();
     let table: Vec<u32> = MASK64.iter().map(|&r| u32::from(r)).collect();
     assert_eq!(table, m.ranks(), "regenerate with examples/gen_mask64.rs");
@@ -191,7 +189,7 @@ fn void_and_cluster_stops_at_its_deadline() {
     crate::blue_noise::budget::stops_at_the_deadline(
         "void and cluster",
         vc.cost().seconds(),
-        |b| vc.generate_within(b),
+        |b| vc.generate(b),
     );
     // The estimate grows with the pixels faster than linearly (cache misses of the trees).
     let s = |w: usize| VoidAndCluster::new(w, w).unwrap().cost().seconds();

@@ -137,11 +137,12 @@ fn seeds_give_different_sequences() {
 mod christensen {
     use qmckit::pmj::christensen::{self, DEFAULT_CANDIDATES, MAX_CANDIDATES, workspace_len};
     use qmckit::pmj::{XOR, fill as fill02};
+    use qmckit::work::Budget;
 
     fn make(seed: u64, k: u32, n: usize) -> Vec<[u32; 2]> {
         let mut pts = vec![[0u32; 2]; n];
         let mut work = vec![0u32; workspace_len(n).unwrap()];
-        christensen::fill(seed, k, &mut pts, &mut work).unwrap();
+        christensen::fill(seed, k, &mut pts, &mut work, &Budget::UNLIMITED).unwrap();
         pts
     }
 
@@ -184,12 +185,21 @@ mod christensen {
     fn bad_input_is_an_error() {
         let mut pts = vec![[0u32; 2]; 100];
         let mut work = vec![0u32; workspace_len(100).unwrap()];
-        assert!(christensen::fill(0, 0, &mut pts, &mut work).is_err());
-        assert!(christensen::fill(0, MAX_CANDIDATES + 1, &mut pts, &mut work).is_err());
+        assert!(christensen::fill(0, 0, &mut pts, &mut work, &Budget::UNLIMITED).is_err());
+        assert!(
+            christensen::fill(
+                0,
+                MAX_CANDIDATES + 1,
+                &mut pts,
+                &mut work,
+                &Budget::UNLIMITED
+            )
+            .is_err()
+        );
         let short = work.len() - 1;
-        assert!(christensen::fill(0, 1, &mut pts, &mut work[..short]).is_err());
+        assert!(christensen::fill(0, 1, &mut pts, &mut work[..short], &Budget::UNLIMITED).is_err());
         assert!(workspace_len((1 << 30) + 1).is_err());
-        assert!(christensen::fill(0, 1, &mut [], &mut []).is_ok());
+        assert!(christensen::fill(0, 1, &mut [], &mut [], &Budget::UNLIMITED).is_ok());
     }
 
     /// Mean toroidal nearest-neighbour distance divided by the hexagonal-lattice spacing
@@ -334,11 +344,12 @@ mod bn {
     use super::christensen::{mean_nn, nn_stats};
     use super::first_block_failure;
     use qmckit::pmj::{bn, christensen, fill as fill02, spread};
+    use qmckit::work::Budget;
 
     fn make(seed: u64, n: usize) -> Vec<[u32; 2]> {
         let mut pts = vec![[0u32; 2]; n];
         let mut work = vec![0u32; bn::workspace_len(n).unwrap()];
-        bn::fill(seed, &mut pts, &mut work).unwrap();
+        bn::fill(seed, &mut pts, &mut work, &Budget::UNLIMITED).unwrap();
         pts
     }
 
@@ -370,10 +381,10 @@ mod bn {
         let n = 1 << 12;
         let mut pts = vec![[0u32; 2]; n];
         let mut work = vec![0u32; christensen::workspace_len(n).unwrap()];
-        christensen::fill(4, 10, &mut pts, &mut work).unwrap();
+        christensen::fill(4, 10, &mut pts, &mut work, &Budget::UNLIMITED).unwrap();
         let before = pts.clone();
         let mut work = vec![0u32; spread::workspace_len(n).unwrap()];
-        spread::spread(&mut pts, &mut work).unwrap();
+        spread::spread(&mut pts, &mut work, &Budget::UNLIMITED).unwrap();
         assert_eq!(first_block_failure(&pts), None);
         assert!(pts.iter().zip(&before).filter(|(a, b)| a != b).count() > n / 2);
         assert!(mean_nn(&pts) > 1.08 * mean_nn(&before));
@@ -393,7 +404,7 @@ mod bn {
             fill02(seed, &mut pmj02).unwrap();
             let mut best = vec![[0u32; 2]; n];
             let mut work = vec![0u32; christensen::workspace_len(n).unwrap()];
-            christensen::fill(seed, 100, &mut best, &mut work).unwrap();
+            christensen::fill(seed, 100, &mut best, &mut work, &Budget::UNLIMITED).unwrap();
             let sets = [pmj02, best, make(seed, n)];
             for (r, set) in sets.iter().enumerate() {
                 for (c, &p) in prefixes.iter().enumerate() {
@@ -430,16 +441,16 @@ mod bn {
         // Two points in one cell of the 2 x 2 grid: not a (0, 2)-sequence.
         let mut pts = [[0u32; 2], [1 << 30, 1 << 30], [1 << 31, 0], [0, 1 << 31]];
         let before = pts;
-        assert!(spread::spread(&mut pts, &mut work).is_err());
+        assert!(spread::spread(&mut pts, &mut work, &Budget::UNLIMITED).is_err());
         assert_eq!(pts, before);
         let mut pts = vec![[0u32; 2]; 100];
         let short = bn::workspace_len(100).unwrap() - 1;
-        assert!(bn::fill(0, &mut pts, &mut vec![0; short]).is_err());
-        assert!(spread::spread(&mut pts, &mut vec![0; short]).is_err());
+        assert!(bn::fill(0, &mut pts, &mut vec![0; short], &Budget::UNLIMITED).is_err());
+        assert!(spread::spread(&mut pts, &mut vec![0; short], &Budget::UNLIMITED).is_err());
         assert!(bn::workspace_len((1 << 30) + 1).is_err());
-        assert!(bn::fill(0, &mut [], &mut []).is_ok());
+        assert!(bn::fill(0, &mut [], &mut [], &Budget::UNLIMITED).is_ok());
         let mut one = [[0u32; 2]];
-        assert!(bn::fill(0, &mut one, &mut []).is_ok());
+        assert!(bn::fill(0, &mut one, &mut [], &Budget::UNLIMITED).is_ok());
         // Deterministic, and seeds differ.
         assert_eq!(make(3, 500), make(3, 500));
         assert!(make(4, 64).iter().zip(&make(3, 64)).all(|(a, b)| a != b));
@@ -488,12 +499,12 @@ mod deadline {
         stops_at_the_deadline("PMJ02BN", |n, budget| {
             let mut pts = vec![[0u32; 2]; n];
             let mut work = vec![0u32; bn::workspace_len(n)?];
-            bn::fill_within(3, &mut pts, &mut work, budget)
+            bn::fill(3, &mut pts, &mut work, budget)
         });
         stops_at_the_deadline("Christensen PMJ02", |n, budget| {
             let mut pts = vec![[0u32; 2]; n];
             let mut work = vec![0u32; christensen::workspace_len(n)?];
-            christensen::fill_within(3, 100, &mut pts, &mut work, budget)
+            christensen::fill(3, 100, &mut pts, &mut work, budget)
         });
     }
 
@@ -503,9 +514,9 @@ mod deadline {
         let mut a = vec![[0u32; 2]; n];
         let mut b = vec![[0u32; 2]; n];
         let mut work = vec![0u32; bn::workspace_len(n).unwrap()];
-        bn::fill(5, &mut a, &mut work).unwrap();
+        bn::fill(5, &mut a, &mut work, &Budget::UNLIMITED).unwrap();
         let far = Budget::seconds(1e6).unwrap().started();
-        bn::fill_within(5, &mut b, &mut work, &far).unwrap();
+        bn::fill(5, &mut b, &mut work, &far).unwrap();
         assert_eq!(a, b);
     }
 }

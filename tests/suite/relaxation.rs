@@ -7,10 +7,8 @@
 //! minimum distance equals the brute force.
 
 use qmckit::analysis::Points;
-use qmckit::analysis::distance::min_distance;
-use qmckit::analysis::spacing::{
-    min_distance_within, normalized_min_distance_within, packing_distance,
-};
+use qmckit::analysis::distance;
+use qmckit::analysis::spacing::{min_distance, normalized_min_distance, packing_distance};
 use qmckit::blue_noise::{Lloyd, Sot};
 use qmckit::lattice::hex::HexGrid;
 use qmckit::work::Budget;
@@ -164,7 +162,7 @@ fn sot_lowers_the_sliced_wasserstein_distance() {
                 .seed(8)
                 .iterations(iterations)
                 .unwrap();
-            s.generate().unwrap().to_f64()
+            s.generate(&Budget::DEFAULT).unwrap().to_f64()
         };
         let sw: Vec<f64> = [0, 5, 50, 300]
             .iter()
@@ -189,11 +187,11 @@ fn relaxed_sets_refuse_bad_parameters() {
     assert!(Sot::new(10, 2).unwrap().batch(0).is_err());
     let tight = Budget::seconds(1e-6).unwrap();
     assert!(matches!(
-        Lloyd::new(1 << 20, 2).unwrap().generate_within(&tight),
+        Lloyd::new(1 << 20, 2).unwrap().generate(&tight),
         Err(qmckit::Error::OverBudget { .. })
     ));
     assert!(matches!(
-        Sot::new(1 << 20, 2).unwrap().generate_within(&tight),
+        Sot::new(1 << 20, 2).unwrap().generate(&tight),
         Err(qmckit::Error::OverBudget { .. })
     ));
 }
@@ -206,8 +204,8 @@ fn grid_min_distance_is_the_brute_force() {
             let pts = uniform(n, d, (n * d) as u64);
             let p = Points::new(&pts, d).unwrap();
             for torus in [false, true] {
-                let got = min_distance_within(p, torus, &b).unwrap();
-                let want = min_distance(p, torus);
+                let got = min_distance(p, torus, &b).unwrap();
+                let want = distance::min_distance(p, torus);
                 assert!(
                     (got - want).abs() <= 1e-15 * want.max(1e-300),
                     "d {d} n {n} torus {torus}: {got} vs {want}"
@@ -219,9 +217,9 @@ fn grid_min_distance_is_the_brute_force() {
     let h = HexGrid::new(986).unwrap();
     let pts: Vec<f64> = (0..986).flat_map(|i| h.point_f64(i)).collect();
     let p = Points::new(&pts, 2).unwrap();
-    let got = min_distance_within(p, true, &b).unwrap();
+    let got = min_distance(p, true, &b).unwrap();
     assert!((got - h.nearest_distance()).abs() < 1e-12);
-    let ratio = normalized_min_distance_within(p, true, &b).unwrap();
+    let ratio = normalized_min_distance(p, true, &b).unwrap();
     assert!((ratio - h.nearest_distance() / packing_distance(986, 2).unwrap()).abs() < 1e-12);
     assert!(ratio > 0.99 && ratio <= 1.0, "{ratio}");
 }

@@ -303,14 +303,17 @@ fn extreme_2d_matches_brute_force() {
         };
         let data = rng.set(n, 2, q);
         let p = Points::new(&data, 2).unwrap();
-        let (got, want) = (extreme_2d(p).unwrap(), brute_extreme_2d(&data));
+        let (got, want) = (
+            extreme_2d(p, &Budget::DEFAULT).unwrap(),
+            brute_extreme_2d(&data),
+        );
         assert!((got - want).abs() < 1e-14, "{data:?}: {got} vs {want}");
         // D* <= D <= 4 D* in 2D, and D >= 1/N.
         let s = star_2d(p).unwrap();
         assert!(s <= got + 1e-15 && got <= 4.0 * s + 1e-15 && got >= 1.0 / n as f64);
     }
     let big = vec![0.5; 2 * 2001];
-    assert!(extreme_2d(Points::new(&big, 2).unwrap()).is_err());
+    assert!(extreme_2d(Points::new(&big, 2).unwrap(), &Budget::DEFAULT).is_err());
 }
 
 #[test]
@@ -322,7 +325,7 @@ fn bounds_bracket_the_exact_value() {
             let data = rng.set(n, d, q);
             let p = Points::new(&data, d).unwrap();
             let exact = star(p).unwrap();
-            let lower = star_lower_bound(p, trial, 3000);
+            let lower = star_lower_bound(p, trial, 3000, &Budget::UNLIMITED).unwrap();
             // Both are exact up to the rounding of the volumes (a few ulps).
             assert!(
                 lower <= exact + 1e-14,
@@ -345,7 +348,7 @@ fn bounds_bracket_the_exact_value() {
     // On the 64-point LP net the search gets close to the exact 21/512, never above it.
     let lp = sampler_points(&LarcherPillichshammer::new(6).unwrap(), 64);
     let p = Points::new(&lp, 2).unwrap();
-    let lower = star_lower_bound(p, 1, 20_000);
+    let lower = star_lower_bound(p, 1, 20_000, &Budget::UNLIMITED).unwrap();
     assert!((0.035..=21.0 / 512.0).contains(&lower), "{lower}");
     assert!(star_upper_bound(p, 0.0).is_err());
 }
@@ -501,7 +504,7 @@ fn dem_refuses_beyond_its_budget() {
     let steps = 2e10;
     assert_eq!(STAR_RATE.steps_per_second() * CORES * 10.0, steps);
     for d in 3..=8 {
-        let max = max_points(d) as usize;
+        let max = max_points(d, &Budget::DEFAULT) as usize;
         assert!(work_estimate(max, d) <= steps);
         assert!(work_estimate(max + 1, d) > steps);
         // The estimate in seconds is the same model.
@@ -524,7 +527,7 @@ fn dem_refuses_beyond_its_budget() {
 
 #[test]
 fn dem_within_a_budget_reports_progress() {
-    use qmckit::analysis::star::dem::{max_points_within, star_dem, work_estimate};
+    use qmckit::analysis::star::dem::{max_points, star_dem, work_estimate};
     use qmckit::analysis::star::{STAR_RATE, star_exact};
     use qmckit::work::Budget;
     use std::sync::Mutex;
@@ -535,7 +538,7 @@ fn dem_within_a_budget_reports_progress() {
     // A larger budget admits more points; the refusal names the largest N within it.
     for (d, steps) in [(3, 1e5), (4, 2e11), (6, 1.2e12)] {
         let budget = within(steps);
-        let max = max_points_within(d, &budget) as usize;
+        let max = max_points(d, &budget) as usize;
         assert!(work_estimate(max, d) <= steps && work_estimate(max + 1, d) > steps);
         let data = vec![0.25; (max + 1) * d];
         let p = Points::new(&data, d).unwrap();
@@ -701,25 +704,25 @@ fn decomposition_at_its_dimension_limit_runs_on_a_small_stack() {
 
 #[test]
 fn exact_refusals_report_the_largest_set_within_the_budget() {
-    use qmckit::analysis::star::max_points_within;
+    use qmckit::analysis::star::max_points;
     use qmckit::work::Budget;
     // 2D: floor(sqrt(1.3e9 s)) - 1 for s seconds ((N + 1)^2 cells at 6.5e8 a second on
     // each of two cores).
-    assert_eq!(max_points_within(2, &Budget::DEFAULT), 114_016);
+    assert_eq!(max_points(2, &Budget::DEFAULT), 114_016);
     assert_eq!(
-        max_points_within(2, &Budget::seconds(0.01).unwrap()),
+        max_points(2, &Budget::seconds(0.01).unwrap()),
         3604 // sqrt(1.3e7) = 3605.55
     );
-    assert_eq!(max_points_within(1, &Budget::DEFAULT), u64::MAX);
-    assert_eq!(max_points_within(2, &Budget::UNLIMITED), u64::MAX);
+    assert_eq!(max_points(1, &Budget::DEFAULT), u64::MAX);
+    assert_eq!(max_points(2, &Budget::UNLIMITED), u64::MAX);
     // d >= 3: 25.3 N^1.85 nanoseconds of one core, within 2e10 in 3D (N = 64517, as the
     // CLI documents).
-    assert_eq!(max_points_within(3, &Budget::DEFAULT), 64_517);
+    assert_eq!(max_points(3, &Budget::DEFAULT), 64_517);
 }
 
 #[test]
 fn extreme_within_a_budget() {
-    use qmckit::analysis::star::extreme_2d_within;
+    use qmckit::analysis::star::extreme_2d;
     use qmckit::work::Budget;
     // N^3 / 2 steps at 1.7e8 a second: 1503 points within ten seconds (1503^3 / 2 =
     // 1.698e9 <= 1.7e9 < 1504^3 / 2), refused at once past it.
@@ -727,7 +730,7 @@ fn extreme_within_a_budget() {
     let p = Points::new(&data, 2).unwrap();
     let start = std::time::Instant::now();
     assert_eq!(
-        extreme_2d_within(p, &Budget::DEFAULT),
+        extreme_2d(p, &Budget::DEFAULT),
         Err(qmckit::Error::TooManyPoints {
             requested: 1504,
             max: 1503
@@ -737,8 +740,11 @@ fn extreme_within_a_budget() {
     // Within it, the same value as extreme_2d: one point, the degenerate closed box on it
     // holds it with volume 0, so D = 1.
     let one = Points::new(&[0.5, 0.5], 2).unwrap();
-    assert_eq!(extreme_2d_within(one, &Budget::DEFAULT), extreme_2d(one));
-    assert_eq!(extreme_2d(one), Ok(1.0));
+    assert_eq!(
+        extreme_2d(one, &Budget::DEFAULT),
+        extreme_2d(one, &Budget::UNLIMITED)
+    );
+    assert_eq!(extreme_2d(one, &Budget::DEFAULT), Ok(1.0));
 }
 
 /// Deadlines: a budget started and left to expire (its estimate admits the work) stops
@@ -748,9 +754,7 @@ mod deadlines {
     use qmckit::Error;
     use qmckit::analysis::Points;
     use qmckit::analysis::l2::L2Metric;
-    use qmckit::analysis::star::{
-        extreme_2d_within, star_exact, star_lower_bound, star_lower_bound_within, thiemard,
-    };
+    use qmckit::analysis::star::{extreme_2d, star_exact, star_lower_bound, thiemard};
     use qmckit::work::Budget;
     use std::time::{Duration, Instant};
 
@@ -777,8 +781,8 @@ mod deadlines {
         let p3 = Points::new(&s3, 3).unwrap();
         assert!(out_of_time(star_exact(p3, &b)));
         let small = Points::new(&s2[..200], 2).unwrap();
-        assert!(out_of_time(extreme_2d_within(small, &b)));
-        assert!(out_of_time(star_lower_bound_within(small, 1, 1000, &b)));
+        assert!(out_of_time(extreme_2d(small, &b)));
+        assert!(out_of_time(star_lower_bound(small, 1, 1000, &b)));
         assert!(out_of_time(thiemard::bounds(p2, 0.1, &b)));
         let s8 = Rng(3).set(600, 8, None);
         let p8 = Points::new(&s8, 8).unwrap();
@@ -800,8 +804,10 @@ mod deadlines {
         );
         let p2 = Points::new(&s3[..300], 3).unwrap();
         assert_eq!(
-            star_lower_bound_within(p2, 3, 2000, &b).unwrap().to_bits(),
-            star_lower_bound(p2, 3, 2000).to_bits()
+            star_lower_bound(p2, 3, 2000, &b).unwrap().to_bits(),
+            star_lower_bound(p2, 3, 2000, &Budget::UNLIMITED)
+                .unwrap()
+                .to_bits()
         );
     }
 

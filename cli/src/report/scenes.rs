@@ -6,7 +6,7 @@
 use crate::plot::{ColourMap, ImageFigure, PointsFigure};
 use crate::scene::samplers::{SOBOL_OWEN, ZSOBOL};
 use crate::scene::{self, SceneImage, SceneStudy, Study, StudyOptions, quad_light_uv};
-use qmckit::work::{Cost, Rate, no_progress};
+use qmckit::work::{Cost, Rate};
 
 use super::super::Failure;
 use super::{Ctx, Section, claims, error_caption, error_scale, row, sig};
@@ -29,8 +29,8 @@ pub fn sections(ctx: &Ctx) -> Result<Vec<Section>, Failure> {
     let each = scene::cost(&o) as f64 / 5.0;
     ctx.budget
         .check("each rendered study", Cost::steps(each, SCENE_RATE))?;
-    let area = Study::PixelArea.run_within(&o, &no_progress, &ctx.budget)?;
-    let shadow = Study::SoftShadow.run_within(&o, &no_progress, &ctx.budget)?;
+    let area = Study::PixelArea.run(&o, &ctx.budget)?;
+    let shadow = Study::SoftShadow.run(&o, &ctx.budget)?;
     let mut mse = Section::new(
         "mse-tables-n16",
         "MSE tables at n = 16: independent, stratified, Sobol'",
@@ -83,7 +83,7 @@ pub fn sections(ctx: &Ctx) -> Result<Vec<Section>, Failure> {
     )?);
     add_renders(ctx, &mut quad, "quad", &shadow)?;
 
-    let motion = Study::MotionDefocus.run_within(&o, &no_progress, &ctx.budget)?;
+    let motion = Study::MotionDefocus.run(&o, &ctx.budget)?;
     let mut md = Section::new(
         "motion-blur-defocus",
         "Sampling motion blur + defocus: independent, Halton, Sobol'",
@@ -101,7 +101,7 @@ pub fn sections(ctx: &Ctx) -> Result<Vec<Section>, Failure> {
         mse_order(&motion)
     );
 
-    let pl = Study::PixelLight.run_within(&o, &no_progress, &ctx.budget)?;
+    let pl = Study::PixelLight.run(&o, &ctx.budget)?;
     let mut pls = Section::new(
         "pixel-light",
         "Pixel x light sampling",
@@ -109,7 +109,7 @@ pub fn sections(ctx: &Ctx) -> Result<Vec<Section>, Failure> {
     );
     add_study(ctx, &mut pls, "pixel-light", &pl, &[])?;
 
-    let ao = Study::AmbientOcclusion.run_within(&o, &no_progress, &ctx.budget)?;
+    let ao = Study::AmbientOcclusion.run(&o, &ctx.budget)?;
     let mut aos = Section::new(
         "ambient-occlusion",
         "Ambient occlusion: white vs blue-noise error distribution",

@@ -37,7 +37,7 @@ fn poisson(n: u64, seed: u64, ctx: &Ctx) -> Result<Set, Failure> {
     Ok(PoissonDisk::with_points(2, n)?
         .torus(true)
         .seed(seed)
-        .generate_within(&ctx.budget)?
+        .generate(&ctx.budget)?
         .to_f64())
 }
 
@@ -47,7 +47,7 @@ fn best_candidate(n: u64, seed: u64, ctx: &Ctx) -> Result<Set, Failure> {
     Ok(BestCandidate::new(n)?
         .candidates(10)?
         .seed(seed)
-        .generate_within(&ctx.budget)?
+        .generate(&ctx.budget)?
         .to_f64())
 }
 
@@ -87,7 +87,7 @@ fn dithering(ctx: &Ctx) -> Result<Section, Failure> {
     let mask_side = ctx.pick(32usize, 64);
     let mask = VoidAndCluster::new(mask_side, mask_side)?
         .seed(1)
-        .generate_within(&ctx.budget)?;
+        .generate(&ctx.budget)?;
     let ranks = mask.ranks();
     let cells = (mask_side * mask_side) as f64;
     let rng = Independent::new(1, 5)?;
@@ -390,7 +390,7 @@ fn variance(ctx: &Ctx) -> Result<Section, Failure> {
                 1 => poisson(n, seed, ctx)?,
                 _ => GaussianBlueNoise::new(n)?
                     .seed(seed)
-                    .generate_within(&ctx.budget)?
+                    .generate(&ctx.budget)?
                     .to_f64(),
             });
         }

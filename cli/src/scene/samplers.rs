@@ -148,16 +148,16 @@ impl Prepared {
             return Err(Error::NotPowerOfTwo { n: spp as u64 });
         }
         let mut params = Params::dims(dims);
-        if let SceneSampler::Points { sampler, .. } = kind {
-            if catalog::sampler(sampler).map_err(catalog_error)?.name == "stratified" {
-                if dims != 2 {
-                    return Err(Error::InvalidParameter {
-                        what: "the stratified scene sampler is two-dimensional",
-                    });
-                }
-                let m = spp.trailing_zeros();
-                params.strata = Some(vec![1 << m.div_ceil(2), 1 << (m / 2)]);
+        if let SceneSampler::Points { sampler, .. } = kind
+            && catalog::sampler(sampler).map_err(catalog_error)?.name == "stratified"
+        {
+            if dims != 2 {
+                return Err(Error::InvalidParameter {
+                    what: "the stratified scene sampler is two-dimensional",
+                });
             }
+            let m = spp.trailing_zeros();
+            params.strata = Some(vec![1 << m.div_ceil(2), 1 << (m / 2)]);
         }
         let p = Prepared {
             kind,

@@ -7,8 +7,8 @@ use super::integrands::{Integrand, standard_camera, standard_scene};
 use super::samplers::{Prepared, SceneSampler};
 use qmckit::analysis::screen_error::ScreenError;
 use qmckit::work::Budget;
+use qmckit::work::Limits;
 use qmckit::work::Stop;
-use qmckit::work::{Progress, no_progress};
 use qmckit::{Error, Jitter, OwenSobol, Result, Stratified};
 use rayon::prelude::*;
 
@@ -213,26 +213,16 @@ impl Study {
             .saturating_mul(per_pixel)
     }
 
-    /// Runs the study, reporting `progress(done, total)` in renders (one a sampler and
-    /// seed, one for the reference).
-    ///
-    /// # Errors
-    /// As [`check`].
-    pub fn run(self, o: &StudyOptions, progress: Progress) -> Result<SceneStudy> {
-        self.run_within(o, progress, &Budget::UNLIMITED)
-    }
-
-    /// [`run`](Self::run) under the deadline of `budget` (started here if it was not),
-    /// read once per image row of every render.
+    /// Runs the study under the deadline of the budget of `limits` (started here if it was
+    /// not; read once per image row of every render, [`Budget::UNLIMITED`] has none),
+    /// reporting progress to the progress callback of `limits` in renders (one a sampler
+    /// and seed, one for the reference).
     ///
     /// # Errors
     /// As [`check`]; [`Error::OutOfTime`] past the deadline.
-    pub fn run_within(
-        self,
-        o: &StudyOptions,
-        progress: Progress,
-        budget: &Budget,
-    ) -> Result<SceneStudy> {
+    pub fn run<'a>(self, o: &StudyOptions, limits: impl Into<Limits<'a>>) -> Result<SceneStudy> {
+        let limits = limits.into();
+        let (budget, progress) = (limits.budget(), limits.progress());
         check(o)?;
         let stop = Stop::new(budget, "a scene study");
         let samples = self.cost(o);
@@ -473,7 +463,7 @@ pub fn low_band(err: &[f64], w: usize, h: usize) -> (f64, f64) {
 /// # Errors
 /// As [`check`]; past [`MAX_STUDY_SAMPLES`].
 pub fn pixel_area_study(o: &StudyOptions) -> Result<SceneStudy> {
-    Study::PixelArea.run(o, &no_progress)
+    Study::PixelArea.run(o, &Budget::UNLIMITED)
 }
 
 /// Lecture table 2 at `n = spp`: soft shadows of the quad light ([`Integrand::SoftShadow`],
@@ -483,7 +473,7 @@ pub fn pixel_area_study(o: &StudyOptions) -> Result<SceneStudy> {
 /// # Errors
 /// As [`pixel_area_study`].
 pub fn soft_shadow_study(o: &StudyOptions) -> Result<SceneStudy> {
-    Study::SoftShadow.run(o, &no_progress)
+    Study::SoftShadow.run(o, &Budget::UNLIMITED)
 }
 
 /// Motion blur and defocus ([`Integrand::MotionDefocus`], 5D: film 2, lens 2, time 1):
@@ -492,7 +482,7 @@ pub fn soft_shadow_study(o: &StudyOptions) -> Result<SceneStudy> {
 /// # Errors
 /// As [`pixel_area_study`].
 pub fn motion_defocus_study(o: &StudyOptions) -> Result<SceneStudy> {
-    Study::MotionDefocus.run(o, &no_progress)
+    Study::MotionDefocus.run(o, &Budget::UNLIMITED)
 }
 
 /// Pixel x light ([`Integrand::PixelLight`], 4D: film 2, light 2): independent, Sobol' 4D
@@ -502,7 +492,7 @@ pub fn motion_defocus_study(o: &StudyOptions) -> Result<SceneStudy> {
 /// # Errors
 /// As [`pixel_area_study`].
 pub fn pixel_light_study(o: &StudyOptions) -> Result<SceneStudy> {
-    Study::PixelLight.run(o, &no_progress)
+    Study::PixelLight.run(o, &Budget::UNLIMITED)
 }
 
 /// Ambient occlusion ([`Integrand::AmbientOcclusion`], 2D: a cosine-weighted direction at
@@ -513,7 +503,7 @@ pub fn pixel_light_study(o: &StudyOptions) -> Result<SceneStudy> {
 /// # Errors
 /// As [`pixel_area_study`].
 pub fn ambient_occlusion_study(o: &StudyOptions) -> Result<SceneStudy> {
-    Study::AmbientOcclusion.run(o, &no_progress)
+    Study::AmbientOcclusion.run(o, &Budget::UNLIMITED)
 }
 
 /// Two 2D patterns of the quad-light figure: `(stratified, Sobol')`.

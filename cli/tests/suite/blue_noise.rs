@@ -3,6 +3,7 @@
 
 use crate::common::cli::{assert_usage_error, run};
 use qmckit::blue_noise::{BestCandidate, PoissonDisk};
+use qmckit::work::Budget;
 
 fn gap(a: f64, b: f64, torus: bool) -> f64 {
     let d = (a - b).abs();
@@ -50,7 +51,7 @@ fn points_poisson_writes_the_library_set() {
         .unwrap()
         .torus(true)
         .seed(4)
-        .generate()
+        .generate(&Budget::DEFAULT)
         .unwrap();
     assert_eq!(got, lib.coords());
     let x = qmckit::analysis::Points::from_u32(&got);
@@ -85,7 +86,7 @@ fn points_poisson_writes_the_library_set() {
         .candidates(3)
         .unwrap()
         .seed(2)
-        .generate()
+        .generate(&Budget::DEFAULT)
         .unwrap();
     assert_eq!(parse(out.stdout), lib.coords());
     let out = run(

@@ -190,7 +190,9 @@ fn max_seconds_sets_the_star_budget() {
         .flat_map(|l| l.split(',').map(|v| v.parse::<f64>().unwrap()))
         .collect();
     let p = qmckit::analysis::Points::new(&coords, 12).unwrap();
-    let lower = qmckit::analysis::star::star_lower_bound(p, 1, 20_000);
+    let lower =
+        qmckit::analysis::star::star_lower_bound(p, 1, 20_000, &qmckit::work::Budget::UNLIMITED)
+            .unwrap();
     assert!(lower <= got + 1e-12 && got < lower + 0.01, "{lower} {got}");
     let want = qmckit::analysis::star::star_exact(p, &qmckit::work::Budget::UNLIMITED).unwrap();
     assert_eq!(got, want);

@@ -25,7 +25,7 @@ fn mask_command_writes_the_ranks() {
     let lib = qmckit::blue_noise::VoidAndCluster::new(16, 8)
         .unwrap()
         .seed(2)
-        .generate()
+        .generate(&qmckit::work::Budget::DEFAULT)
         .unwrap();
     assert_eq!(rows.concat(), lib.ranks());
 }

@@ -424,7 +424,7 @@ fn studies_are_deterministic() {
 fn scene_quick_timing() {
     let t = std::time::Instant::now();
     for s in Study::ALL {
-        s.run(&StudyOptions::quick(), &qmckit::work::no_progress)
+        s.run(&StudyOptions::quick(), &qmckit::work::Budget::UNLIMITED)
             .unwrap();
     }
     let secs = t.elapsed().as_secs_f64();

@@ -111,15 +111,10 @@ pub fn star_cost(n: usize, d: usize) -> Cost {
     }
 }
 
-/// Largest `N` whose [`work_estimate`] is within [`Budget::DEFAULT`].
-pub fn max_points(d: usize) -> u64 {
-    max_points_within(d, &Budget::DEFAULT)
-}
-
 /// Largest `N` (at least 1, at most `2^40`) whose decomposition ([`work_estimate`] at
 /// [`STAR_RATE`] on [`CORES`] cores) is within `budget`, by a binary search of 40
 /// estimates.
-pub fn max_points_within(d: usize, budget: &Budget) -> u64 {
+pub fn max_points(d: usize, budget: &Budget) -> u64 {
     let (mut lo, mut hi) = (1u64, 1u64 << 40);
     while lo < hi {
         let mid = lo + (hi - lo).div_ceil(2);
@@ -228,7 +223,7 @@ mod tests {
         for seconds in [0.01, 1.0, 10.0, 600.0] {
             let budget = Budget::seconds(seconds).unwrap();
             for d in 2..=30 {
-                let max = super::super::max_points_within(d, &budget) as usize;
+                let max = super::super::max_points(d, &budget) as usize;
                 assert!(star_cost(max, d).seconds() <= seconds || max <= 1, "d {d}");
                 assert!(star_cost(max + 1, d).seconds() > seconds, "d {d}");
             }

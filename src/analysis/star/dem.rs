@@ -83,7 +83,7 @@ use super::cells::{
     SortedPrefix, closed_slack, convolve_max, convolve_min, merge_sorted, open_slack,
 };
 use super::cost::within;
-pub use super::cost::{max_points, max_points_within, work_estimate};
+pub use super::cost::{max_points, work_estimate};
 use crate::analysis::Points;
 use crate::work::Stop;
 use crate::work::{Limits, Progress};
@@ -124,7 +124,7 @@ pub const DEM_MAX_DIMS: usize = 255;
 ///
 /// # Errors
 /// [`Error::TooManyPoints`] when [`work_estimate`] exceeds the budget (`max`: the largest
-/// `N` within it, [`max_points_within`]); [`Error::TooLarge`] for two or more counted points
+/// `N` within it, [`max_points`]); [`Error::TooLarge`] for two or more counted points
 /// in more than [`DEM_MAX_DIMS`] dimensions; [`Error::OutOfTime`] past the deadline of
 /// the budget (started here if it was not), checked before every evaluated cell and every
 /// 256 pruned ones.
@@ -152,7 +152,7 @@ pub fn star_dem<'a>(points: Points<'_>, limits: impl Into<Limits<'a>>) -> Result
     if !within(work_estimate(n, d), budget) {
         return Err(Error::TooManyPoints {
             requested: n as u64,
-            max: max_points_within(d, budget),
+            max: max_points(d, budget),
         });
     }
     if d > DEM_MAX_DIMS {

@@ -3,12 +3,13 @@
 use super::sweep::{counted, grid, rank};
 use crate::analysis::Points;
 use crate::work::Stop;
-use crate::work::{Budget, Rate};
+use crate::work::{Limits, Rate};
 use crate::{Error, Result};
 use rayon::prelude::*;
 
-/// Largest `N` [`extreme_2d`] accepts (`N^3 / 2` sweep steps, about five seconds).
-pub const EXTREME_2D_MAX_POINTS: u64 = 1200;
+/// Sweep steps per second of [`extreme_2d`] (`N^3 / 2` steps for `N` points): 1000 points,
+/// `5e8` steps, took 2.7 s on two shared cores.
+pub const EXTREME_RATE: Rate = Rate::per_second(1.7e8);
 
 /// Exact extreme (unanchored) discrepancy in 2D:
 /// `D_N = sup over boxes [a, b) in [0,1]^2 of |A([a, b))/N - vol([a, b))|`.
@@ -25,52 +26,29 @@ pub const EXTREME_2D_MAX_POINTS: u64 = 1200;
 /// (about `N^3 / 2` steps), `O(N)` memory per thread; parallel over the lower `x` bound.
 /// Measured: `N = 500` in 0.4 s, `N = 1000` in 2.7 s (shared 2-core machine).
 ///
+/// The budget of `limits` bounds it: `N^3 / 2` steps at [`EXTREME_RATE`], checked first
+/// ([`Budget::DEFAULT`](crate::work::Budget::DEFAULT), ten seconds, admits `N <= 1503`).
+///
 /// # Errors
-/// [`Error::Unsupported`] unless `points.dims() == 2`; [`Error::TooManyPoints`] above
-/// [`EXTREME_2D_MAX_POINTS`].
+/// [`Error::Unsupported`] unless `points.dims() == 2`; [`Error::TooManyPoints`] past the
+/// budget, `max` the largest `N` within it; [`Error::OutOfTime`] past the deadline of the
+/// budget (started here if it was not), read once per `O(N)` slab.
 ///
 /// ```
 /// use qmckit::analysis::{Points, star::extreme_2d};
+/// use qmckit::work::Budget;
 /// // One point: the degenerate closed box on it holds it with volume 0, so D = 1.
-/// assert_eq!(extreme_2d(Points::new(&[0.5, 0.5], 2)?)?, 1.0);
+/// assert_eq!(extreme_2d(Points::new(&[0.5, 0.5], 2)?, &Budget::DEFAULT)?, 1.0);
 /// // Four points at the centers of the 2x2 cells: the open slab (1/4, 3/4) x (0, 1) misses
 /// // them all (vol 1/2), and the closed [1/4, 3/4] x [1/4, 3/4] holds all with vol 1/4:
 /// // 1 - 1/4 = 3/4 is the maximum.
 /// let c = [0.25, 0.25, 0.75, 0.25, 0.25, 0.75, 0.75, 0.75];
-/// assert_eq!(extreme_2d(Points::new(&c, 2)?)?, 0.75);
+/// assert_eq!(extreme_2d(Points::new(&c, 2)?, &Budget::DEFAULT)?, 0.75);
 /// # Ok::<(), qmckit::Error>(())
 /// ```
-pub fn extreme_2d(points: Points<'_>) -> Result<f64> {
-    if points.len() as u64 > EXTREME_2D_MAX_POINTS && points.dims() == 2 {
-        return Err(Error::TooManyPoints {
-            requested: points.len() as u64,
-            max: EXTREME_2D_MAX_POINTS,
-        });
-    }
-    extreme_2d_within(points, &Budget::UNLIMITED)
-}
-
-/// Sweep steps per second of [`extreme_2d`] (`N^3 / 2` steps for `N` points): 1000 points,
-/// `5e8` steps, took 2.7 s on two shared cores.
-pub const EXTREME_RATE: Rate = Rate::per_second(1.7e8);
-
-/// [`extreme_2d`] within the time budget `budget` instead of the fixed
-/// [`EXTREME_2D_MAX_POINTS`]: `N^3 / 2` steps at [`EXTREME_RATE`], checked first (the
-/// default budget of ten seconds admits `N <= 1503`).
-///
-/// # Errors
-/// [`Error::Unsupported`] unless `points.dims() == 2`; [`Error::TooManyPoints`] past the
-/// budget, `max` the largest `N` within it; [`Error::OutOfTime`] past the deadline of
-/// `budget` (started here if it was not), read once per `O(N)` slab.
-///
-/// ```
-/// use qmckit::work::Budget;
-/// use qmckit::analysis::{Points, star::extreme_2d_within};
-/// let p = Points::new(&[0.5, 0.5], 2)?;
-/// assert_eq!(extreme_2d_within(p, &Budget::DEFAULT)?, 1.0);
-/// # Ok::<(), qmckit::Error>(())
-/// ```
-pub fn extreme_2d_within(points: Points<'_>, budget: &Budget) -> Result<f64> {
+pub fn extreme_2d<'a>(points: Points<'_>, limits: impl Into<Limits<'a>>) -> Result<f64> {
+    let limits = limits.into();
+    let budget = limits.budget();
     if points.dims() != 2 {
         return Err(Error::Unsupported {
             what: "extreme_2d of points that are not 2-dimensional",

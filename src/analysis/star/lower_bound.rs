@@ -4,7 +4,7 @@ use super::cost::LOWER_BOUND_RATE;
 use super::sweep::counted;
 use crate::Result;
 use crate::analysis::Points;
-use crate::work::{Budget, Cost};
+use crate::work::{Budget, Cost, Limits};
 
 /// SplitMix64 step, for the randomized search: a Weyl step of the state, then the crate's
 /// 64-bit finalizer [`crate::hash::mix64`].
@@ -57,16 +57,36 @@ fn splitmix(state: &mut u64) -> u64 {
 /// | Sobol' | 20 | 10000 | 0.0159 | 11 s | 0.0066 |
 /// | random | 20 | 10000 | 0.0344 | 11 s | |
 ///
+/// The budget of `limits` bounds it: [`lower_bound_steps`] at [`LOWER_BOUND_RATE`],
+/// checked in `O(1)` before anything is allocated; with [`Budget::UNLIMITED`] it is never
+/// refused or stopped.
+///
+/// # Errors
+/// [`crate::Error::OverBudget`] when the estimate exceeds the budget (fewer iterations, or
+/// fewer points or dimensions, are faster); [`crate::Error::OutOfTime`] when the search
+/// passes the deadline of the budget (started here if it was not), read every few thousand
+/// point-coordinate steps.
+///
 /// ```
 /// use qmckit::analysis::{Points, star::{star_lower_bound, star_exact}};
+/// use qmckit::work::Budget;
 /// let p = Points::new(&[0.5, 0.5, 0.5], 3)?;
-/// let lower = star_lower_bound(p, 7, 1000);
-/// assert!(lower <= star_exact(p, &qmckit::work::Budget::DEFAULT)? && lower >= 0.5); // [0,1) x [0,1) x [0,1/2) is empty
+/// let lower = star_lower_bound(p, 7, 1000, &Budget::DEFAULT)?;
+/// assert!(lower <= star_exact(p, &Budget::DEFAULT)? && lower >= 0.5); // [0,1) x [0,1) x [0,1/2) is empty
+/// assert!(star_lower_bound(p, 7, u64::MAX, &Budget::DEFAULT).is_err()); // over the budget
 /// # Ok::<(), qmckit::Error>(())
 /// ```
-pub fn star_lower_bound(points: Points<'_>, seed: u64, iterations: u64) -> f64 {
-    // No deadline: an unlimited budget never stops the search.
-    lower_bound(points, seed, iterations, &Budget::UNLIMITED).unwrap_or(0.0)
+pub fn star_lower_bound<'a>(
+    points: Points<'_>,
+    seed: u64,
+    iterations: u64,
+    limits: impl Into<Limits<'a>>,
+) -> Result<f64> {
+    let limits = limits.into();
+    let budget = limits.budget();
+    let steps = lower_bound_steps(points.len(), points.dims(), iterations);
+    budget.check(WHAT, Cost::steps(steps, LOWER_BOUND_RATE))?;
+    lower_bound(points, seed, iterations, budget)
 }
 
 /// The name of threshold accepting in the errors of the budget.
@@ -82,34 +102,6 @@ pub fn lower_bound_steps(n: usize, d: usize, iterations: u64) -> f64 {
     let per = (iterations / walks) as f64;
     let scores = 2.0 + walks as f64 * (2.0 * per.sqrt().ceil().max(1.0) + per + 1.0);
     scores * (n as f64 + 32.0) * d as f64
-}
-
-/// [`star_lower_bound`] within the time budget `budget`: [`lower_bound_steps`] at
-/// [`LOWER_BOUND_RATE`], checked in `O(1)` before anything is allocated.
-///
-/// # Errors
-/// [`crate::Error::OverBudget`] when the estimate exceeds `budget` (fewer iterations, or
-/// fewer points or dimensions, are faster); [`crate::Error::OutOfTime`] when the search
-/// passes the deadline of `budget` (started here if it was not), read every few thousand
-/// point-coordinate steps.
-///
-/// ```
-/// use qmckit::work::Budget;
-/// use qmckit::analysis::{Points, star::star_lower_bound_within};
-/// let p = Points::new(&[0.5, 0.5, 0.5], 3)?;
-/// assert!(star_lower_bound_within(p, 7, 1000, &Budget::DEFAULT)? >= 0.5);
-/// assert!(star_lower_bound_within(p, 7, u64::MAX, &Budget::DEFAULT).is_err());
-/// # Ok::<(), qmckit::Error>(())
-/// ```
-pub fn star_lower_bound_within(
-    points: Points<'_>,
-    seed: u64,
-    iterations: u64,
-    budget: &Budget,
-) -> Result<f64> {
-    let steps = lower_bound_steps(points.len(), points.dims(), iterations);
-    budget.check(WHAT, Cost::steps(steps, LOWER_BOUND_RATE))?;
-    lower_bound(points, seed, iterations, budget)
 }
 
 /// [`star_lower_bound`] itself, stopped by the deadline of `budget`.

@@ -40,8 +40,8 @@
 //! | [`star_1d`] | `O(N log N)` | none |
 //! | [`star_2d`] | `O(N^2)` time, `O(N)` memory, parallel over columns | `(N + 1)^2` cells at [`SWEEP_RATE`] on two cores ([`star_cost`]) within the budget: `N <= 114_016` in ten seconds |
 //! | [`star_exact`] | `O(N^2)` in 2D; `O(N^(1 + d/2))` for `d >= 3` (Dobkin–Eppstein–Mitchell, [`dem`]), pruned: measured about `N^((d + 1)/2 - 0.15)` | [`star_cost`] within ten seconds: `N <= 64517, 6391, 1483, 557` for `d = 3, 4, 5, 6`; its second argument is the budget |
-//! | [`extreme_2d`] | `O(N^3)` | `N <= 1200`; [`extreme_2d_within`] takes a budget, at [`EXTREME_RATE`] |
-//! | [`star_lower_bound`] | `O(iterations · (N + 32) d)` ([`lower_bound_steps`]) | none; [`star_lower_bound_within`] takes a budget, at [`LOWER_BOUND_RATE`] |
+//! | [`extreme_2d`] | `O(N^3)` | `N^3 / 2` steps at [`EXTREME_RATE`] within the budget: `N <= 1503` in ten seconds; its second argument is the budget |
+//! | [`star_lower_bound`] | `O(iterations · (N + 32) d)` ([`lower_bound_steps`]) | [`lower_bound_steps`] at [`LOWER_BOUND_RATE`] within the budget, its last argument ([`Budget::UNLIMITED`](crate::work::Budget::UNLIMITED): none) |
 //! | [`star_upper_bound`] | Thiémard's cover ([`thiemard`]): about `Σ_R (N vol(b_R) + 16)(d + k_R) + 2 d (k_R - 1)` over its regions, parallel | ten seconds at [`THIEMARD_RATE`], estimated first; [`thiemard::bounds`] takes a budget |
 //!
 //! Every budgeted function estimates its cost before it allocates anything that grows with
@@ -58,8 +58,8 @@ pub mod thiemard;
 mod thiemard_cost;
 
 pub use cost::{LOWER_BOUND_RATE, SORT_RATE, STAR_RATE, SWEEP_RATE, THIEMARD_RATE, star_cost};
-pub use extreme::{EXTREME_2D_MAX_POINTS, EXTREME_RATE, extreme_2d, extreme_2d_within};
-pub use lower_bound::{lower_bound_steps, star_lower_bound, star_lower_bound_within};
+pub use extreme::{EXTREME_RATE, extreme_2d};
+pub use lower_bound::{lower_bound_steps, star_lower_bound};
 
 use super::Points;
 use crate::work::Stop;
@@ -188,7 +188,7 @@ pub fn star_2d(points: Points<'_>) -> Result<f64> {
 ///
 /// # Errors
 /// [`Error::TooManyPoints`] when the estimated time exceeds the budget (`max`: the largest
-/// `N` within it, [`max_points_within`]); [`Error::TooLarge`] for two or more counted points
+/// `N` within it, [`max_points`]); [`Error::TooLarge`] for two or more counted points
 /// in more than [`dem::DEM_MAX_DIMS`] dimensions; [`Error::OutOfTime`] when the run passes
 /// the deadline of the budget (started here if the caller did not: `1.25 x` its seconds),
 /// checked once per column of the 2D sweep and every few cells of the decomposition.
@@ -217,7 +217,7 @@ pub fn star_exact<'a>(points: Points<'_>, limits: impl Into<Limits<'a>>) -> Resu
             {
                 return Err(Error::TooManyPoints {
                     requested: n as u64,
-                    max: max_points_within(2, budget),
+                    max: max_points(2, budget),
                 });
             }
             sweep::sweep_2d(points, &Stop::new(budget, "the exact star discrepancy"))
@@ -229,19 +229,19 @@ pub fn star_exact<'a>(points: Points<'_>, limits: impl Into<Limits<'a>>) -> Resu
 /// The largest `N` whose exact star discrepancy in `d` dimensions is estimated
 /// ([`star_cost`]) within `budget`: unlimited (`u64::MAX`) for `d <= 1`, the largest `N`
 /// with `(N + 1)^2 <= cells` in 2D (`cells` the budget's cells at [`SWEEP_RATE`] on two
-/// cores), [`dem::max_points_within`] for `d >= 3`. `O(1)` for `d <= 2`, a binary search of
+/// cores), [`dem::max_points`] for `d >= 3`. `O(1)` for `d <= 2`, a binary search of
 /// 40 estimates otherwise.
 ///
 /// ```
-/// use qmckit::{work::Budget, analysis::star::max_points_within};
-/// assert_eq!(max_points_within(2, &Budget::DEFAULT), 114_016);
-/// assert_eq!(max_points_within(6, &Budget::DEFAULT), 557);
+/// use qmckit::{work::Budget, analysis::star::max_points};
+/// assert_eq!(max_points(2, &Budget::DEFAULT), 114_016);
+/// assert_eq!(max_points(6, &Budget::DEFAULT), 557);
 /// ```
-pub fn max_points_within(d: usize, budget: &Budget) -> u64 {
+pub fn max_points(d: usize, budget: &Budget) -> u64 {
     match d {
         0 | 1 => u64::MAX,
         2 => cost::max_points_2d(budget),
-        _ => dem::max_points_within(d, budget),
+        _ => dem::max_points(d, budget),
     }
 }
 

@@ -160,9 +160,11 @@ pub fn pmj<W: Write>(out: &mut W) -> fmt::Result {
 /// 4 KiB of workspace: the micro:bit has 16 KiB of RAM), a few points and a digest; Christensen's best-candidate construction, 8 candidates, likewise.
 fn pmj02bn<W: Write>(out: &mut W) -> fmt::Result {
     use qmckit::pmj::{bn, christensen};
+    use qmckit::work::Budget;
+    let unlimited = &Budget::UNLIMITED;
     let mut pts = [[0u32; 2]; 128];
     let mut work = [0u32; 1016];
-    match christensen::fill(black_box(5), 8, &mut pts, &mut work) {
+    match christensen::fill(black_box(5), 8, &mut pts, &mut work, unlimited) {
         Ok(()) => {
             let mut d = Digest::new();
             pts.iter().for_each(|q| d.push_all(q));
@@ -170,7 +172,7 @@ fn pmj02bn<W: Write>(out: &mut W) -> fmt::Result {
         }
         Err(_) => writeln!(out, "pmj02 best candidate: error")?,
     }
-    match bn::fill(black_box(5), &mut pts, &mut work) {
+    match bn::fill(black_box(5), &mut pts, &mut work, unlimited) {
         Ok(()) => {
             for k in [0usize, 1, 2, 3, 17, 127] {
                 writeln!(
@@ -188,6 +190,6 @@ fn pmj02bn<W: Write>(out: &mut W) -> fmt::Result {
     writeln!(
         out,
         "pmj02bn short work: {}",
-        Res(bn::fill(5, &mut pts, &mut work[..10]).map(|_| 0))
+        Res(bn::fill(5, &mut pts, &mut work[..10], unlimited).map(|_| 0))
     )
 }

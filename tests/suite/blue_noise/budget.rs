@@ -65,20 +65,18 @@ fn every_construction_stops_at_its_deadline() {
             0.3,
         );
         let seconds = pd.cost().unwrap().seconds();
-        stops_at_the_deadline("Poisson disk", seconds, |b| pd.generate_within(b));
+        stops_at_the_deadline("Poisson disk", seconds, |b| pd.generate(b));
     }
     let pd = PoissonDisk::with_points(3, 40_000).unwrap();
     stops_at_the_deadline("Poisson disk by count", pd.cost().unwrap().seconds(), |b| {
-        pd.generate_within(b)
+        pd.generate(b)
     });
     let bc = sized(
         (6..20).map(|m| BestCandidate::new(1 << m).unwrap()),
         |b| b.cost().seconds(),
         0.3,
     );
-    stops_at_the_deadline("best candidate", bc.cost().seconds(), |b| {
-        bc.generate_within(b)
-    });
+    stops_at_the_deadline("best candidate", bc.cost().seconds(), |b| bc.generate(b));
     let g = sized(
         (1..1000).map(|i| {
             GaussianBlueNoise::new(1 << 14)
@@ -89,9 +87,7 @@ fn every_construction_stops_at_its_deadline() {
         |g| g.cost().seconds(),
         0.3,
     );
-    stops_at_the_deadline("Gaussian blue noise", g.cost().seconds(), |b| {
-        g.generate_within(b)
-    });
+    stops_at_the_deadline("Gaussian blue noise", g.cost().seconds(), |b| g.generate(b));
 }
 
 #[test]
