@@ -61,7 +61,8 @@ impl PixelKind {
     }
 
     /// The samplers a randomizer that `self` refuses applies to, in words (for
-    /// [`super::CatalogError::NotApplicable`]).
+    /// [`super::CatalogError::NotApplicable`]; the builder's, so `std`).
+    #[cfg(feature = "std")]
     const fn rule(self) -> &'static str {
         match self {
             PixelKind::Halton => {
