@@ -133,26 +133,35 @@ pub const fn permutation_element(i: u32, l: u32, p: u32) -> u32 {
     // An `i >= l` is reduced first, so the walk always starts on a cycle through [0, l).
     let mut i = i % l;
     loop {
-        i ^= p;
-        i = i.wrapping_mul(0xe170_893d);
-        i ^= p >> 16;
-        i ^= (i & w) >> 4;
-        i ^= p >> 8;
-        i = i.wrapping_mul(0x0929_eb3f);
-        i ^= p >> 23;
-        i ^= (i & w) >> 1;
-        i = i.wrapping_mul(1 | (p >> 27));
-        i = i.wrapping_mul(0x6935_fa69);
-        i ^= (i & w) >> 11;
-        i = i.wrapping_mul(0x74dc_b303);
-        i ^= (i & w) >> 2;
-        i = i.wrapping_mul(0x9e50_1cc3);
-        i ^= (i & w) >> 2;
-        i = i.wrapping_mul(0xc860_a3df);
-        i &= w;
-        i ^= i >> 5;
+        i = permutation_round(i, w, p);
         if i < l {
             return i.wrapping_add(p) % l; // u32 arithmetic, as in pbrt
         }
     }
+}
+
+/// One round of Kensler's keyed permutation ("Correlated Multi-Jittered Sampling", 2013):
+/// an invertible mixer of `[0, w + 1)`, `w + 1` a power of two, keyed by `p`. Cycle-walking
+/// it until the value falls below `l` permutes `[0, l)` ([`permutation_element`]). O(1).
+#[inline]
+pub const fn permutation_round(mut i: u32, w: u32, p: u32) -> u32 {
+    i ^= p;
+    i = i.wrapping_mul(0xe170_893d);
+    i ^= p >> 16;
+    i ^= (i & w) >> 4;
+    i ^= p >> 8;
+    i = i.wrapping_mul(0x0929_eb3f);
+    i ^= p >> 23;
+    i ^= (i & w) >> 1;
+    i = i.wrapping_mul(1 | (p >> 27));
+    i = i.wrapping_mul(0x6935_fa69);
+    i ^= (i & w) >> 11;
+    i = i.wrapping_mul(0x74dc_b303);
+    i ^= (i & w) >> 2;
+    i = i.wrapping_mul(0x9e50_1cc3);
+    i ^= (i & w) >> 2;
+    i = i.wrapping_mul(0xc860_a3df);
+    i &= w;
+    i ^= i >> 5;
+    i
 }

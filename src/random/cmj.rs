@@ -81,24 +81,7 @@ pub const fn permute(i: u32, l: u64, p: u32) -> u32 {
     // At most 2^k rounds (w + 1 = 2^k); the walk returns below l within 2^k - l + 1.
     let mut rounds = w as u64 + 1;
     loop {
-        i ^= p;
-        i = i.wrapping_mul(0xe170_893d);
-        i ^= p >> 16;
-        i ^= (i & w) >> 4;
-        i ^= p >> 8;
-        i = i.wrapping_mul(0x0929_eb3f);
-        i ^= p >> 23;
-        i ^= (i & w) >> 1;
-        i = i.wrapping_mul(1 | p >> 27);
-        i = i.wrapping_mul(0x6935_fa69);
-        i ^= (i & w) >> 11;
-        i = i.wrapping_mul(0x74dc_b303);
-        i ^= (i & w) >> 2;
-        i = i.wrapping_mul(0x9e50_1cc3);
-        i ^= (i & w) >> 2;
-        i = i.wrapping_mul(0xc860_a3df);
-        i &= w;
-        i ^= i >> 5;
+        i = crate::hash::pbrt::permutation_round(i, w, p);
         rounds -= 1;
         if (i as u64) < l || rounds == 0 {
             break;
@@ -106,6 +89,8 @@ pub const fn permute(i: u32, l: u64, p: u32) -> u32 {
     }
     // `rounds == 0` with `i >= l` cannot happen (see above); the remainder keeps the
     // result below `l` regardless.
+    // The sum in 64 bits: the paper's 32-bit `(i + p) % l` (and pbrt's) is no bijection
+    // when the sum wraps (e.g. l = 3, p = 2^32 - 1; tested).
     ((i as u64 + p as u64) % l) as u32
 }
 
