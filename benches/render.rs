@@ -13,9 +13,11 @@
 //!
 //! Each row writes a pixel's 64 values into a stack buffer and passes it to `black_box`.
 //!
-//! A second group times long fills (4096 points); a third, `fill_vs_memset_65536x4_f32`,
-//! times [`OwenSobol::fill_f32`] of 2^16 four-dimensional points (1 MiB of `f32`) next to a
-//! memset of the same bytes, with one seed and with a reseed every 16 points.
+//! A second group times long fills (4096 points); two more, `fill_vs_memset_65536x4_f32`
+//! and `fill_vs_memset_1048576x4_f32`, time [`OwenSobol::fill_f32`] of 2^16 and 2^20
+//! four-dimensional points (1 MiB of `f32` in the L2 cache; 16 MiB, the whole render, in
+//! memory) next to a memset of the same bytes, with one seed, with a reseed every 16
+//! points, and with runs that do not start at a multiple of 16.
 //! Run: `cargo bench --bench render -- --measurement-time 2 --warm-up-time 1`.
 
 use std::hint::black_box;
@@ -134,22 +136,30 @@ fn render(c: &mut Criterion) {
     });
     group.finish();
 
-    // `OwenSobol::fill_f32` against a memset of the same bytes (2^16 points x 4 dimensions,
-    // 1 MiB of f32): one seed for all points, and a reseed every 16 points (a pixel's
-    // samples).
-    const N: usize = 1 << 16;
-    let mut group = c.benchmark_group("fill_vs_memset_65536x4_f32");
-    group.throughput(Throughput::Bytes((N * D * 4) as u64));
-    let seq: Vec<u32> = (0..N as u32).collect();
+    fill_vs_memset(c, &base, 1 << 16);
+    fill_vs_memset(c, &base, 1 << 20);
+}
+
+/// `OwenSobol::fill_f32` against a memset of the same bytes: `n` points x 4 dimensions of
+/// `f32` (2^16: 1 MiB, in the L2 cache; 2^20: 16 MiB, the 256 x 256 x 16 render, in
+/// memory), with one seed for all points, with a reseed every 16 points (a pixel's
+/// samples), and with the indices offset by 8 (runs of 16 that do not start at a multiple
+/// of 16: the blocks-of-four path).
+fn fill_vs_memset(c: &mut Criterion, base: &OwenSobol, n: usize) {
+    let mut group = c.benchmark_group(format!("fill_vs_memset_{n}x4_f32"));
+    group.throughput(Throughput::Bytes((n * D * 4) as u64));
+    let seeded = base.with_seed(pixel_seed(7));
+    let seq: Vec<u32> = (0..n as u32).collect();
+    let shifted: Vec<u32> = (8..n as u32 + 8).collect();
     group.bench_function("memset", |bch| {
-        let mut out = vec![[0f32; D]; N];
+        let mut out = vec![[0f32; D]; n];
         bch.iter(|| {
             black_box(&mut out[..]).fill(black_box([0.0; D]));
             black_box(&mut out);
         })
     });
     group.bench_function("owen_sobol_fill_f32_one_seed", |bch| {
-        let mut out = vec![[0f32; D]; N];
+        let mut out = vec![[0f32; D]; n];
         bch.iter(|| {
             black_box(&seeded)
                 .fill_f32(black_box(&seq), &mut out)
@@ -158,9 +168,9 @@ fn render(c: &mut Criterion) {
         })
     });
     group.bench_function("owen_sobol_fill_f32_reseed_16", |bch| {
-        let mut out = vec![[0f32; D]; N];
+        let mut out = vec![[0f32; D]; n];
         bch.iter(|| {
-            let mut s = black_box(base);
+            let mut s = black_box(*base);
             for (p, (idx, o)) in black_box(&seq)
                 .chunks_exact(SPP)
                 .zip(out.chunks_exact_mut(SPP))
@@ -169,6 +179,15 @@ fn render(c: &mut Criterion) {
                 s.reseed(pixel_seed(p as u32));
                 s.fill_f32(idx, o).expect("lengths");
             }
+            black_box(&mut out);
+        })
+    });
+    group.bench_function("owen_sobol_fill_f32_one_seed_offset_8", |bch| {
+        let mut out = vec![[0f32; D]; n];
+        bch.iter(|| {
+            black_box(&seeded)
+                .fill_f32(black_box(&shifted), &mut out)
+                .expect("lengths");
             black_box(&mut out);
         })
     });

@@ -125,6 +125,27 @@ pub const fn to_f32_lanes(x: u32) -> f32 {
     kept as f32 * (INV_2_POW_32 as f32)
 }
 
+/// The same function as [`to_f32`] (bit for bit, checked for all 2^32 inputs), for lanes
+/// with a leading-zero count: the `c = max(0, 8 - lz(x))` bits below the 24 leading
+/// significant ones are cleared with one variable shift, and the kept value converts to
+/// `f32` exactly and scales exactly by 2^-32. Cost: a leading-zero count, four integer
+/// operations, one conversion, one multiply (an AVX-512 CD build counts leading zeros in
+/// one instruction a vector; without one, [`to_f32_lanes`] is the cheaper form).
+///
+/// ```
+/// use qmckit::bits::{to_f32, to_f32_lz};
+/// for x in [0, 1, 0x00FF_FFFF, 0x0100_0001, 0x8000_00FF, 0xFFFF_FFFF] {
+///     assert_eq!(to_f32_lz(x).to_bits(), to_f32(x).to_bits());
+/// }
+/// ```
+#[inline]
+pub const fn to_f32_lz(x: u32) -> f32 {
+    let clear = 8u32.saturating_sub(x.leading_zeros());
+    // clear <= 8, so the shift is in range.
+    let kept = x & !((1u32 << clear) - 1);
+    kept as f32 * (INV_2_POW_32 as f32)
+}
+
 /// `x / 2^32` as a `fixed` crate `U0F32` (same bits, no rounding).
 #[cfg(feature = "fixed")]
 #[inline]
@@ -318,6 +339,18 @@ impl Affine {
         let mut k = 0;
         while k < 32 {
             images[k] = 1 << k;
+            k += 1;
+        }
+        Affine { images, shift: 0 }
+    };
+
+    /// The bit reversal `x -> reverse(x)` (`M 2^k = 2^(31 - k)`, no shift): linear over
+    /// GF(2), so a digital construction folds it into its direction numbers.
+    pub const REVERSE: Affine = {
+        let mut images = [0u32; 32];
+        let mut k = 0;
+        while k < 32 {
+            images[k] = 1 << (31 - k);
             k += 1;
         }
         Affine { images, shift: 0 }

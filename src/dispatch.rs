@@ -83,6 +83,7 @@ fn detect() -> Level {
     if std::arch::is_x86_feature_detected!("avx512f")
         && std::arch::is_x86_feature_detected!("avx512bw")
         && std::arch::is_x86_feature_detected!("avx512vl")
+        && std::arch::is_x86_feature_detected!("avx512cd")
         && std::arch::is_x86_feature_detected!("gfni")
     {
         return Level::Avx512Gfni;
@@ -144,7 +145,7 @@ fn run_int_avx2<K: Kernel>(k: K) -> K::Output {
 /// With AVX-512 the 16 lanes of a `u32` kernel are one vector, and a bit reversal is a GFNI
 /// affine transform plus a byte shuffle.
 #[cfg(all(feature = "std", target_arch = "x86_64"))]
-#[target_feature(enable = "avx512f,avx512bw,avx512vl,gfni")]
+#[target_feature(enable = "avx512f,avx512bw,avx512vl,avx512cd,gfni")]
 fn run_int_avx512<K: Kernel>(k: K) -> K::Output {
     k.run()
 }

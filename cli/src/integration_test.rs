@@ -5,7 +5,7 @@
 use std::io::{BufWriter, Write};
 
 use clap::Args;
-use qmckit::analysis::integrate::{BenchmarkOptions, Family, benchmark};
+use qmckit::analysis::integrate::{BenchmarkCurve, BenchmarkOptions, Family, benchmark};
 use qmckit::catalog::{self, Params, RandomizerEntry, SamplerEntry, Size};
 use qmckit::sampler::Sampler;
 use qmckit::work::Limits;
@@ -28,6 +28,9 @@ Families on [0, 1]^d, each with its exact integral:
   gaussian-mixture  mixtures of four of them, random weights
   heaviside         1 on one side of a random hyperplane through a random point (d <= 8;
                     the volume exact by inclusion-exclusion in integers)
+  blinn-phong       Blinn-Phong lobes max(0, w.h)^n on the sphere, w from a coordinate
+                    pair by the area-preserving map, random axis h, n in 1..32 (a product
+                    over the pairs; integral 1/(2(n+1)) each)
 
 Theory: independent -0.5 on every family; jittered -1 on smooth integrands and
 -(1/2 + 1/(2d)) on a Heaviside (-0.75 in 2D); Owen-scrambled nets about -1.5 on smooth
@@ -53,8 +56,8 @@ const DEFAULT_SAMPLERS: [&str; 6] = [
 pub struct IntegrationTestArgs {
     /// Samplers: SAMPLER or SAMPLER+RANDOMIZER, catalog names (see below).
     samplers: Vec<String>,
-    /// The integrand family: gaussian, gaussian-mixture or heaviside.
-    #[arg(long, default_value = "gaussian", value_parser = ["gaussian", "gaussian-mixture", "heaviside"])]
+    /// The integrand family (the library's `Family::ALL`, by name).
+    #[arg(long, default_value = "gaussian", value_parser = clap::builder::PossibleValuesParser::new(Family::ALL.map(Family::name)))]
     family: String,
     /// Dimensions.
     #[arg(short = 'd', default_value_t = 2)]
@@ -98,6 +101,80 @@ fn build(
     catalog::build(s, r, &params)
 }
 
+/// One benchmark run's settings (the command's options).
+#[derive(Clone, Copy, Debug)]
+pub struct Plan {
+    /// The integrand family.
+    pub family: Family,
+    /// Dimensions.
+    pub d: usize,
+    /// Sizes `2^min_m ..= 2^max_m` (those the construction makes).
+    pub min_m: u32,
+    /// See `min_m`.
+    pub max_m: u32,
+    /// Random integrands.
+    pub integrands: u32,
+    /// Seed of the integrands and the randomizations.
+    pub seed: u64,
+}
+
+/// The benchmark of each `SAMPLER[+RANDOMIZER]` spec under `plan`, within `budget` (a
+/// progress bar a sampler): `(label, curve)` pairs in the order of `specs`. Used by the
+/// command and by the report.
+///
+/// # Errors
+/// Unknown names, a construction that makes none of the sizes (the catalog's reason), the
+/// benchmark's errors (budget, deadline).
+pub fn curves(
+    specs: &[String],
+    plan: &Plan,
+    budget: &qmckit::work::Budget,
+) -> Result<Vec<(String, BenchmarkCurve)>, Failure> {
+    let mut chosen = Vec::new();
+    for spec in specs {
+        let (s, r) = parse(spec)?;
+        // The sizes the construction makes, checked once each with seed 0.
+        let sizes: Vec<u64> = (plan.min_m..=plan.max_m)
+            .map(|m| 1u64 << m)
+            .filter(|&n| build(s, r, plan.d, n, 0).is_ok())
+            .collect();
+        if sizes.is_empty() {
+            // The catalog's reason, for the smallest size.
+            build(s, r, plan.d, 1 << plan.min_m, 0)?;
+        }
+        let label = if r.name == "none" {
+            s.name.to_string()
+        } else {
+            format!("{} + {}", s.name, r.name)
+        };
+        chosen.push((s, r, sizes, label));
+    }
+    let mut blocks = Vec::new();
+    for (s, r, sizes, label) in &chosen {
+        let opts = BenchmarkOptions {
+            family: plan.family,
+            dims: plan.d,
+            sizes: sizes.clone(),
+            integrands: plan.integrands,
+            seed: plan.seed,
+        };
+        let make = |n: u64, seed: u64| -> qmckit::Result<Box<dyn Sampler>> {
+            build(s, r, plan.d, n, seed).map_err(|e| match e {
+                catalog::CatalogError::Build(e) => e,
+                _ => qmckit::Error::InvalidParameter {
+                    what: "a size the construction refused after accepting it",
+                },
+            })
+        };
+        let title = format!("{} on {}", plan.family.name(), label);
+        let curve = with_progress(&title, |progress| {
+            benchmark(&make, &opts, Limits::new(*budget).with_progress(progress))
+        })?;
+        blocks.push((label.clone(), curve));
+    }
+    Ok(blocks)
+}
+
 /// Runs `qmckit integration-test`.
 pub fn run(args: &IntegrationTestArgs) -> Result<(), Failure> {
     if args.max_m > 20 || args.min_m > args.max_m {
@@ -114,55 +191,22 @@ pub fn run(args: &IntegrationTestArgs) -> Result<(), Failure> {
     } else {
         args.samplers.clone()
     };
-    let mut chosen = Vec::new();
-    for spec in &specs {
-        let (s, r) = parse(spec)?;
-        // The sizes the construction makes, checked once each with seed 0.
-        let sizes: Vec<u64> = (args.min_m..=args.max_m)
-            .map(|m| 1u64 << m)
-            .filter(|&n| build(s, r, args.d, n, 0).is_ok())
-            .collect();
-        if sizes.is_empty() {
-            // The catalog's reason, for the smallest size.
-            build(s, r, args.d, 1 << args.min_m, 0)?;
-        }
-        let label = if r.name == "none" {
-            s.name.to_string()
-        } else {
-            format!("{} + {}", s.name, r.name)
-        };
-        chosen.push((s, r, sizes, label));
-    }
-    let mut blocks = Vec::new();
-    for (s, r, sizes, label) in &chosen {
-        let opts = BenchmarkOptions {
-            family,
-            dims: args.d,
-            sizes: sizes.clone(),
-            integrands: args.integrands,
-            seed: args.seed,
-        };
-        let make = |n: u64, seed: u64| -> qmckit::Result<Box<dyn Sampler>> {
-            build(s, r, args.d, n, seed).map_err(|e| match e {
-                catalog::CatalogError::Build(e) => e,
-                _ => qmckit::Error::InvalidParameter {
-                    what: "a size the construction refused after accepting it",
-                },
-            })
-        };
-        let title = format!("{} on {}", family.name(), label);
-        let curve = with_progress(&title, |progress| {
-            benchmark(&make, &opts, Limits::new(budget).with_progress(progress))
-        })?;
-        blocks.push((label.clone(), curve));
-    }
+    let plan = Plan {
+        family,
+        d: args.d,
+        min_m: args.min_m,
+        max_m: args.max_m,
+        integrands: args.integrands,
+        seed: args.seed,
+    };
+    let blocks = curves(&specs, &plan, &budget)?;
     let out = std::io::stdout();
     let mut w = BufWriter::new(out.lock());
     writeln!(w, "# n rmse")?;
     writeln!(
         w,
         "# integration-test: family {}, d {}, {} integrands, seed {}",
-        family.name(),
+        plan.family.name(),
         args.d,
         args.integrands,
         args.seed

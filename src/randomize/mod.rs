@@ -99,7 +99,7 @@ pub use crate::sampler::Base2Digital;
 use crate::bits::FromFraction;
 use crate::dispatch::{self, Level};
 use crate::error::Result;
-use crate::sampler::{CONVERT_CHUNK, Sampler, check_fill};
+use crate::sampler::{Sampler, check_fill};
 use kernels::{scramble_lanes_at, scramble_lanes_into_at, scramble_slice_at};
 
 /// One dimension's randomization, prepared by [`Randomizer::scrambler`]: a tiny `Copy`
@@ -495,9 +495,9 @@ impl<S: Sampler, R: Randomizes<S>> Scrambled<S, R> {
             return Ok(());
         }
         // Whole lane patterns a chunk (width is a multiple of dims, so whole points too).
-        let chunk = CONVERT_CHUNK / width * width;
+        let chunk = ROWS_CHUNK / width * width;
         let per = chunk / dims;
-        let mut buf = [0u32; CONVERT_CHUNK];
+        let mut buf = [0u32; ROWS_CHUNK];
         for (c, part) in out.chunks_mut(chunk).enumerate() {
             let xs = buf.get_mut(..part.len()).unwrap_or(&mut []);
             // c * per < rows, so the index is at most the last one the caller validated.
@@ -539,6 +539,16 @@ impl<S: Sampler, R: Randomizes<S>> Scrambled<S, R> {
         }
     }
 }
+
+/// Values a chunk of [`Scrambled::fill_as`]'s long fills: each chunk restarts the
+/// sampler's fill (Sobol's sequential fill rebuilds its step table and start point, a few
+/// hundred operations a dimension), so 64-bit targets take 16 KiB chunks, which keep that
+/// below a tenth of an operation a value and stay in the L1 cache; 32-bit targets keep
+/// [`CONVERT_CHUNK`](crate::sampler::CONVERT_CHUNK) (4 KiB of stack).
+#[cfg(target_pointer_width = "64")]
+const ROWS_CHUNK: usize = 4096;
+#[cfg(not(target_pointer_width = "64"))]
+const ROWS_CHUNK: usize = crate::sampler::CONVERT_CHUNK;
 
 /// Values [`Scrambled::fill_as`] fills through its small stack buffer (one pixel's 16
 /// four-dimensional samples).

@@ -5,8 +5,10 @@
 //! The slide groups live in one file each: [`constructions`] (radical inverse to Owen
 //! scrambling, warps), [`discrepancy`] (D*, the Koksma–Hlawka bound, measured error),
 //! [`nets`] (elementary intervals, (0,2)-sequences, blue-noise Sobol'), [`spectra`]
-//! (dithering, spectra, variance) and `scenes` (the rendered studies).
+//! (dithering, spectra, variance), `scenes` (the rendered studies) and [`benchmark`] (the
+//! integration benchmark of random Gaussians and Heavisides, beyond the lecture).
 
+mod benchmark;
 mod claims;
 mod constructions;
 mod discrepancy;
@@ -32,7 +34,8 @@ Writes DIR/index.html and its figures (SVG for plots, PNG for images and spectra
 section per slide of the lecture 'Monte Carlo 2' (radical inverse, van der Corput, Halton,
 Hammersley, permuted and Owen-scrambled radical inverses, discrepancy of three point sets,
 the Koksma-Hlawka bound, measured QMC error, elementary intervals, (0,2)-sequences,
-rendered MSE studies, blue-noise dithering, spectra, variance). Every number is computed in
+rendered MSE studies, blue-noise dithering, spectra, variance), and the integration
+benchmark (random Gaussians and Heavisides). Every number is computed in
 the run; the lecture's own numbers stand beside ours, labelled 'lecture', with a sentence
 where they differ.
 
@@ -240,13 +243,14 @@ pub fn error_caption(name: &str, scale: f64, count: usize) -> String {
 type Builder = fn(&Ctx) -> Result<Vec<Section>, Failure>;
 
 /// The slide groups, in the lecture's order.
-const GROUPS: [(&str, Builder); 6] = [
+const GROUPS: [(&str, Builder); 7] = [
     ("warps and constructions", constructions::sections),
     ("discrepancy and error", discrepancy::sections),
     ("nets", nets::sections),
     ("rendered studies", scenes::sections),
     ("spectra", spectra::sections),
     ("variance", spectra::variance_sections),
+    ("integration benchmark", benchmark::sections),
 ];
 
 /// Runs `qmckit report`.

@@ -1,11 +1,12 @@
 //! Random integrand families with exact integrals over `[0, 1]^d`, for comparing samplers
 //! on thousands of integrands at once (the integration benchmark of graphics papers: random
-//! Gaussians and Heavisides; [`benchmark`](super::benchmark) runs them).
+//! Gaussians, Heavisides and Blinn–Phong lobes; [`benchmark`](super::benchmark) runs them).
 //!
 //! | family | `f(x)` | exact integral | dimensions |
 //! |---|---|---|---|
 //! | [`Family::Gaussian`] | `exp(-sum_k (x_k - c_k)^2 / (2 s_k^2))`, `c_k ~ U(0, 1)`, `s_k ~ U(0.05, 0.5)` (an anisotropic Gaussian, axis-aligned, clipped to the cube) | `prod_k s_k sqrt(pi / 2) (erf((1 - c_k) / (s_k sqrt 2)) + erf(c_k / (s_k sqrt 2)))` | any |
 //! | [`Family::GaussianMixture`] | `sum_(j<4) w_j g_j(x)`, four such Gaussians with weights `w_j ~ U(0, 1)` normalized to sum 1 | the weighted sum of the four | any |
+//! | [`Family::BlinnPhong`] | `prod_j max(0, w(x_(2j), x_(2j+1)) . h_j)^(n_j)`: Blinn–Phong lobes on the sphere, `w(u, v) = (sqrt(1 - z^2) cos 2 pi v, sqrt(1 - z^2) sin 2 pi v, z)` with `z = 1 - 2u` (Archimedes' area-preserving map), lobe axes `h_j` uniform on the sphere, exponents `n_j` in `1..=32`; an odd last coordinate is a lobe on the circle, `max(0, cos(2 pi x - t))^n` | `prod_j 1 / (2 (n_j + 1))` (the map keeps area, and `int_(S^2) max(0, w . h)^n dw = 2 pi / (n + 1)` for every axis `h`); the circle's factor `W_n / (2 pi)`, Wallis' `W_n = int_(-pi/2)^(pi/2) cos^n t dt` | any |
 //! | [`Family::Heaviside`] | `1` where `w . x >= w . p`, else `0`: a random hyperplane through a random point `p` (`w_k = +-k_k / 64`, `k_k` in `13..=64`, random signs; `p_k = j_k / 16`, `j_k` in `1..=15`) | the cube's volume on that side, exactly: after reflecting the coordinates with `w_k < 0`, `vol{a . y <= t} = (1 / (d! prod a_k)) sum_(v in {0,1}^d) (-1)^|v| (t - a . v)_+^d` (the inclusion-exclusion formula for a simplex cut by the cube; Barrow & Smith 1979), summed in `i128` integers and divided once | 1 to 8 |
 //!
 //! The Heaviside's normal and point sit on grids so that its integral is an exact rational
@@ -16,7 +17,7 @@
 //! integrand everywhere.
 //!
 //! Cost: drawing O(d) (Heaviside: O(2^d d) for its integral); evaluating O(d) (mixture:
-//! 4 d).
+//! 4 d; lobes: a `pow` and three trigonometric functions a pair).
 
 use std::vec::Vec;
 
@@ -39,18 +40,26 @@ pub enum Family {
     GaussianMixture,
     /// Indicators of half-spaces cut by random hyperplanes.
     Heaviside,
+    /// Products of Blinn–Phong lobes on the sphere (coordinate pairs mapped to directions).
+    BlinnPhong,
 }
 
 impl Family {
     /// Every family, in the order of the module's table.
-    pub const ALL: [Family; 3] = [Family::Gaussian, Family::GaussianMixture, Family::Heaviside];
+    pub const ALL: [Family; 4] = [
+        Family::Gaussian,
+        Family::GaussianMixture,
+        Family::Heaviside,
+        Family::BlinnPhong,
+    ];
 
-    /// The family's name: `gaussian`, `gaussian-mixture`, `heaviside`.
+    /// The family's name: `gaussian`, `gaussian-mixture`, `heaviside`, `blinn-phong`.
     pub const fn name(self) -> &'static str {
         match self {
             Family::Gaussian => "gaussian",
             Family::GaussianMixture => "gaussian-mixture",
             Family::Heaviside => "heaviside",
+            Family::BlinnPhong => "blinn-phong",
         }
     }
 
@@ -132,6 +141,12 @@ enum Kind {
         w: Vec<f64>,
         b: f64,
     },
+    /// Lobes on the sphere (axis, exponent), then at most one on the circle (angle,
+    /// exponent).
+    Lobes {
+        sphere: Vec<([f64; 3], i32)>,
+        circle: Option<(f64, i32)>,
+    },
 }
 
 impl RandomIntegrand {
@@ -172,6 +187,7 @@ impl RandomIntegrand {
                 (Kind::Mixture(parts), i)
             }
             Family::Heaviside => heaviside(d, seed),
+            Family::BlinnPhong => lobes(d, seed),
         };
         Ok(RandomIntegrand {
             kind,
@@ -193,6 +209,19 @@ impl RandomIntegrand {
                 let s: f64 = w.iter().zip(x).map(|(w, x)| w * x).sum();
                 if s >= *b { 1.0 } else { 0.0 }
             }
+            Kind::Lobes { sphere, circle } => {
+                let mut f = 1.0;
+                for (pair, (h, n)) in x.chunks_exact(2).zip(sphere) {
+                    let w = sphere_direction(pair[0], pair[1]);
+                    let c = w[0] * h[0] + w[1] * h[1] + w[2] * h[2];
+                    f *= libm::pow(c.max(0.0), f64::from(*n));
+                }
+                if let (Some((t, n)), Some(&u)) = (circle, x.get(2 * sphere.len())) {
+                    let c = libm::cos(core::f64::consts::TAU * u - t);
+                    f *= libm::pow(c.max(0.0), f64::from(*n));
+                }
+                f
+            }
         }
     }
 
@@ -200,6 +229,52 @@ impl RandomIntegrand {
     pub fn exact(&self) -> f64 {
         self.integral
     }
+}
+
+/// The direction of `(u, v)` under Archimedes' map: `z = 1 - 2u`, azimuth `2 pi v`.
+fn sphere_direction(u: f64, v: f64) -> [f64; 3] {
+    let z = 1.0 - 2.0 * u;
+    let r = libm::sqrt((1.0 - z * z).max(0.0));
+    let phi = core::f64::consts::TAU * v;
+    [r * libm::cos(phi), r * libm::sin(phi), z]
+}
+
+/// `int_(-pi/2)^(pi/2) cos^n t dt` (Wallis): `pi (n-1)!! / n!!` for even `n`,
+/// `2 (n-1)!! / n!!` for odd `n`.
+fn wallis(n: i32) -> f64 {
+    let mut w = if n % 2 == 0 {
+        core::f64::consts::PI
+    } else {
+        2.0
+    };
+    let mut k = n;
+    while k >= 2 {
+        w *= f64::from(k - 1) / f64::from(k);
+        k -= 2;
+    }
+    w
+}
+
+/// The Blinn–Phong lobes of `seed` in `d` dimensions and their exact integral (see the
+/// module's table).
+fn lobes(d: usize, seed: u64) -> (Kind, f64) {
+    let mut sphere = Vec::with_capacity(d / 2);
+    let mut integral = 1.0;
+    for j in 0..(d / 2) as u64 {
+        // An axis uniform on the sphere (the same area-preserving map) and an exponent.
+        let h = sphere_direction(unit(hash3(seed, j, 4)), unit(hash3(seed, j, 5)));
+        let n = 1 + (hash3(seed, j, 6) % 32) as i32;
+        integral *= 1.0 / (2.0 * f64::from(n + 1));
+        sphere.push((h, n));
+    }
+    let circle = (d % 2 == 1).then(|| {
+        let j = (d / 2) as u64;
+        let t = core::f64::consts::TAU * unit(hash3(seed, j, 4));
+        let n = 1 + (hash3(seed, j, 6) % 32) as i32;
+        integral *= wallis(n) / core::f64::consts::TAU;
+        (t, n)
+    });
+    (Kind::Lobes { sphere, circle }, integral)
 }
 
 /// The Heaviside of `seed`: its test and its exact integral (see the module's table).
@@ -268,10 +343,11 @@ mod tests {
                         sum += f.eval(&x);
                     }
                     let mid = sum / cells as f64;
-                    let tol = if family == Family::Heaviside {
-                        4.0 / k as f64
-                    } else {
-                        1e-6
+                    let tol = match family {
+                        Family::Heaviside => 4.0 / k as f64,
+                        // Exponents to 32: a narrow peak and a kink at the terminator.
+                        Family::BlinnPhong => 2e-6,
+                        _ => 1e-6,
                     };
                     assert!(
                         (mid - f.exact()).abs() < tol,
@@ -340,9 +416,42 @@ mod tests {
         }
     }
 
+    /// Wallis' integrals against their textbook values, and a lobe pointing at the pole
+    /// against `int_0^1 t^n dt / 2` computed in closed form.
+    #[test]
+    fn wallis_and_the_polar_lobe() {
+        use core::f64::consts::PI;
+        for (n, w) in [
+            (0, PI),
+            (1, 2.0),
+            (2, PI / 2.0),
+            (3, 4.0 / 3.0),
+            (4, 3.0 * PI / 8.0),
+        ] {
+            assert!((wallis(n) - w).abs() < 1e-15, "n={n}");
+        }
+        // With h = (0, 0, 1), f(u, v) = max(0, 1 - 2u)^n: int_0^(1/2) (1 - 2u)^n du.
+        for n in [1, 5, 32] {
+            let k = 1 << 16;
+            let mid: f64 = (0..k)
+                .map(|i| (i as f64 + 0.5) / k as f64)
+                .map(|u| {
+                    let w = sphere_direction(u, 0.3);
+                    libm::pow(w[2].max(0.0), f64::from(n))
+                })
+                .sum::<f64>()
+                / k as f64;
+            assert!(
+                (mid - 1.0 / (2.0 * f64::from(n + 1))).abs() < 1e-8,
+                "n={n}: {mid}"
+            );
+        }
+    }
+
     #[test]
     fn bad_dimensions_are_refused() {
         assert!(RandomIntegrand::draw(Family::Heaviside, 9, 0).is_err());
         assert!(RandomIntegrand::draw(Family::Gaussian, 0, 0).is_err());
+        assert!(RandomIntegrand::draw(Family::BlinnPhong, 0, 0).is_err());
     }
 }

@@ -453,9 +453,10 @@ impl Base2Digital for Sobol {
 
     /// Up to four dimensions in natural order on 64-bit targets: each point's reversed
     /// coordinates are four reads of the interleaved byte tables of the reversed direction
-    /// numbers (the tables of [`OwenSobol`]), XORed, with no reversal a value. `None`
-    /// otherwise (wider points, Gray order, and 32-bit targets, which keep their flash free
-    /// of the 16 KiB of tables).
+    /// numbers (the tables of [`OwenSobol`]), XORed, with no reversal a value. Otherwise
+    /// (wider points, Gray order, and 32-bit targets, which keep their flash free of the
+    /// 16 KiB of tables) the reversal is folded into the direction numbers like any linear
+    /// map ([`Affine::REVERSE`]): the sequential fill's cost, no reversal a value.
     #[inline]
     fn fill_reversed(&self, start: u32, out: &mut [u32]) -> Option<Result<()>> {
         #[cfg(target_pointer_width = "64")]
@@ -465,7 +466,6 @@ impl Base2Digital for Sobol {
                     .map(|_| owen::fill_reversed(self.dims, start, out)),
             );
         }
-        let _ = (start, out);
-        None
+        self.fill_maps(start, out, Some(&|_| Some(Affine::REVERSE)))
     }
 }

@@ -15,7 +15,7 @@
 //! hashes. Dimensions from 4 on are evaluated from the direction numbers (32 AND/XOR steps).
 
 use super::{SOBOL_DIRECTIONS, SOBOL_MAX_DIMS, Sobol, SobolDimension, byte_tables};
-use crate::bits::{reverse_bits, to_f32, to_f32_lanes};
+use crate::bits::{reverse_bits, to_f32, to_f32_lanes, to_f32_lz};
 use crate::dispatch::{self, Kernel};
 use crate::error::{Error, Result};
 use crate::randomize::{FastOwen, FastOwenScrambler, OwenHash, Scrambled, dimension_seed};
@@ -344,8 +344,14 @@ fn fill_blocks(s: &OwenSobol, indices: &[u32], out: &mut [[f32; 4]]) {
     );
     #[cfg(target_pointer_width = "64")]
     let (indices, out) = {
-        let (idx4, idx_rest) = indices.as_chunks::<4>();
-        let (out4, out_rest) = out.as_chunks_mut::<4>();
+        let (idx16, idx_rest) = indices.as_chunks::<16>();
+        let (out16, out_rest) = out.as_chunks_mut::<16>();
+        match s.owen.hash() {
+            OwenHash::Vegdahl => fill16(s, idx16, out16, crate::hash::vegdahl),
+            OwenHash::LaineKarras => fill16(s, idx16, out16, crate::hash::laine_karras),
+        }
+        let (idx4, idx_rest) = idx_rest.as_chunks::<4>();
+        let (out4, out_rest) = out_rest.as_chunks_mut::<4>();
         match s.owen.hash() {
             OwenHash::Vegdahl => {
                 for (o, i) in out4.iter_mut().zip(idx4) {
@@ -362,6 +368,69 @@ fn fill_blocks(s: &OwenSobol, indices: &[u32], out: &mut [[f32; 4]]) {
     };
     for (o, &i) in out.iter_mut().zip(indices) {
         *o = s.sample4_f32(i);
+    }
+}
+
+/// Sixteen points at a time: a run of 16 consecutive indices from a multiple of 16 (a
+/// pixel's samples, a sequential fill) as whole rows of the low-byte table
+/// ([`run16_f32`]), other indices as four blocks of four ([`block_f32`]).
+#[cfg(target_pointer_width = "64")]
+#[inline(always)]
+fn fill16(
+    s: &OwenSobol,
+    indices: &[[u32; 16]],
+    out: &mut [[[f32; 4]; 16]],
+    hash: impl Fn(u32, u32) -> u32 + Copy,
+) {
+    for (o, i) in out.iter_mut().zip(indices) {
+        if is_aligned_run(i) {
+            run16_f32(s, i[0], o, hash);
+        } else {
+            let (o4, _) = o.as_chunks_mut::<4>();
+            let (i4, _) = i.as_chunks::<4>();
+            for (o, i) in o4.iter_mut().zip(i4) {
+                *o = block_f32(s, i, hash);
+            }
+        }
+    }
+}
+
+/// `true` when `idx` is `i, i + 1, .., i + 15` with `i` a multiple of 16 (so the 16 share
+/// their upper three bytes and their low bytes are one run of table rows).
+#[cfg(target_pointer_width = "64")]
+#[inline(always)]
+fn is_aligned_run(idx: &[u32; 16]) -> bool {
+    let first = idx[0];
+    let mut same = first.is_multiple_of(16);
+    for (k, &i) in idx.iter().enumerate() {
+        same &= i == first.wrapping_add(k as u32);
+    }
+    same
+}
+
+/// Sixteen points `first .. first + 16` (`first` a multiple of 16) into `out` as 64
+/// lanes: the low-byte table's 16 consecutive rows XORed with the shared upper part, then
+/// one hash, reversal and conversion loop over all 64 lanes (four AVX-512 vectors).
+#[cfg(target_pointer_width = "64")]
+#[inline(always)]
+fn run16_f32(s: &OwenSobol, first: u32, out: &mut [[f32; 4]; 16], hash: impl Fn(u32, u32) -> u32) {
+    let high = reversed4_high(first);
+    let low = (first & 0xF0) as usize;
+    let Some(Ok(rows)) = REVERSED4[0]
+        .as_flattened()
+        .get(4 * low..4 * low + 64)
+        .map(<&[u32; 64]>::try_from)
+    else {
+        return; // unreachable: low + 16 <= 256
+    };
+    let high: [u32; 16] = core::array::from_fn(|k| high[k % 4]);
+    let keys: [u32; 16] = core::array::from_fn(|k| s.keys[k % 4]);
+    let (out, _) = out.as_flattened_mut().as_chunks_mut::<16>();
+    let (rows, _) = rows.as_chunks::<16>();
+    for (o, r) in out.iter_mut().zip(rows) {
+        for k in 0..16 {
+            o[k] = to_f32_lz(reverse_bits(hash(r[k] ^ high[k], keys[k])));
+        }
     }
 }
 
@@ -394,7 +463,7 @@ fn block_f32(s: &OwenSobol, idx: &[u32; 4], hash: impl Fn(u32, u32) -> u32) -> [
     let mut y = [0f32; 16];
     let keys: [u32; 16] = core::array::from_fn(|k| s.keys[k % 4]);
     for ((yk, &xk), &key) in y.iter_mut().zip(&x).zip(&keys) {
-        *yk = to_f32_lanes(reverse_bits(hash(xk, key)));
+        *yk = to_f32_lz(reverse_bits(hash(xk, key)));
     }
     core::array::from_fn(|p| core::array::from_fn(|lane| y[(4 * p + lane) % 16]))
 }
@@ -515,14 +584,23 @@ mod tests {
                     .is_err()
             );
         }
-        let gray = Sobol::with_order(2, Order::Gray).unwrap();
-        assert!(gray.fill_reversed(0, &mut [0; 4]).is_none());
-        assert!(
-            Sobol::new(5)
-                .unwrap()
-                .fill_reversed(0, &mut [0; 5])
-                .is_none()
-        );
+        // Gray order and wide points: the reversal folded into the direction numbers.
+        for sobol in [
+            Sobol::with_order(2, Order::Gray).unwrap(),
+            Sobol::with_order(8, Order::Gray).unwrap(),
+            Sobol::new(5).unwrap(),
+            Sobol::new(21).unwrap(),
+        ] {
+            let dims = sobol.dims();
+            for (start, n) in [(0u32, 1usize), (0, 16), (3, 300), (1 << 20, 33)] {
+                let mut plain = vec![0u32; n * dims];
+                sobol.fill(start, &mut plain).unwrap();
+                let mut rev = vec![0u32; n * dims];
+                sobol.fill_reversed(start, &mut rev).unwrap().unwrap();
+                let reversed: Vec<u32> = plain.iter().map(|x| x.reverse_bits()).collect();
+                assert_eq!(rev, reversed, "dims {dims} start {start} n {n}");
+            }
+        }
     }
 
     /// Every build the CPU runs, on lengths leaving 0 to 3 points past the blocks of four
@@ -535,10 +613,28 @@ mod tests {
             .chain(250..262)
             .chain((0..4099u32).map(|k| k.wrapping_mul(2_654_435_761) ^ (k >> 3)))
             .chain([0, 1, 255, 256, u32::MAX])
+            .chain(4096..4160)
+            .chain(0xFFFF_FFF0..=u32::MAX)
+            .chain(4000..4040)
             .collect();
         for hash in [OwenHash::Vegdahl, OwenHash::LaineKarras] {
             let s = OwenSobol::with_hash(4, 77, hash).unwrap();
-            for len in [0, 1, 2, 3, 4, 5, 6, 7, 4101, 4103, indices.len()] {
+            for len in [
+                0,
+                1,
+                2,
+                3,
+                4,
+                5,
+                6,
+                7,
+                16,
+                17,
+                33,
+                4101,
+                4103,
+                indices.len(),
+            ] {
                 for lv in dispatch::levels() {
                     let mut out = vec![[-1f32; 4]; len];
                     fill_f32_at(lv, &s, &indices[..len], &mut out);
