@@ -32,6 +32,8 @@ mod spectrum;
 mod star_discrepancy;
 mod star_lower;
 mod thiemard;
+#[cfg(feature = "analysis")]
+mod transport;
 mod tvalue;
 mod variance;
 mod warps;
