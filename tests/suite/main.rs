@@ -5,6 +5,8 @@
 mod common;
 
 mod blue_noise;
+#[cfg(feature = "analysis")]
+mod bnot;
 mod catalog;
 mod cmj;
 mod conversions;
