@@ -646,12 +646,7 @@ pub static SAMPLERS: &[SamplerEntry] = &[
             DIMS_2,
             POINTS,
             SEED,
-            param(
-                "iterations",
-                "solve-and-move iterations",
-                "50",
-                "0 to 10^4",
-            ),
+            param("iterations", "solve-and-move iterations", "50", "0 to 10^4"),
             param("torus", "periodic cells", "false", "bool"),
             param(
                 "budget",

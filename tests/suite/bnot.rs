@@ -25,12 +25,21 @@ fn uniform(n: usize, seed: u64) -> Vec<f64> {
 /// `max_i |N A_i - 1|`.
 fn capacity_error(areas: &[f64]) -> f64 {
     let n = areas.len() as f64;
-    areas.iter().map(|a| (a * n - 1.0).abs()).fold(0.0, f64::max)
+    areas
+        .iter()
+        .map(|a| (a * n - 1.0).abs())
+        .fold(0.0, f64::max)
 }
 
 #[test]
 fn bnot_cells_have_equal_capacity() {
-    for (n, torus) in [(1u64, false), (3, true), (100, false), (100, true), (1000, true)] {
+    for (n, torus) in [
+        (1u64, false),
+        (3, true),
+        (100, false),
+        (100, true),
+        (1000, true),
+    ] {
         let t = Bnot::new(n)
             .unwrap()
             .torus(torus)
@@ -129,7 +138,12 @@ fn bnot_is_blue_noise() {
     let n = 1024;
     // |k| <= 8, a quarter of the blue-noise peak near sqrt(N) = 32.
     let white = low_power(&uniform(n, 3), 8);
-    let torus = Bnot::new(n as u64).unwrap().torus(true).seed(1).run(&B).unwrap();
+    let torus = Bnot::new(n as u64)
+        .unwrap()
+        .torus(true)
+        .seed(1)
+        .run(&B)
+        .unwrap();
     let square = Bnot::new(n as u64).unwrap().seed(1).run(&B).unwrap();
     let (pt, ps) = (low_power(&torus.sites, 8), low_power(&square.sites, 8));
     assert!(white > 0.7, "white {white}");
@@ -153,7 +167,12 @@ fn ot_distance_falls_from_white_to_jittered_to_bnot() {
             ]
         })
         .collect();
-    let bnot = Bnot::new(n as u64).unwrap().seed(3).generate(&B).unwrap().to_f64();
+    let bnot = Bnot::new(n as u64)
+        .unwrap()
+        .seed(3)
+        .generate(&B)
+        .unwrap()
+        .to_f64();
     let w = |p: &[f64]| ot_distance(Points::new(p, 2).unwrap(), &B).unwrap();
     let (ww, wj, wb) = (w(&white), w(&jittered), w(&bnot));
     assert!(ww > wj && wj > wb, "{ww} {wj} {wb}");

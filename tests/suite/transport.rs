@@ -167,11 +167,19 @@ fn hand_solved_cells() {
     for w in [0.0, 0.05, 0.2, -0.1] {
         let sites = [0.25, 0.5, 0.75, 0.5];
         let d = PowerDiagram::new(&sites, &[w, 0.0], false, &B).unwrap();
-        assert!((d.area(0) - (0.5 + w)).abs() < 1e-15, "w {w}: {}", d.area(0));
+        assert!(
+            (d.area(0) - (0.5 + w)).abs() < 1e-15,
+            "w {w}: {}",
+            d.area(0)
+        );
         assert!((d.centroid(0)[0] - (0.5 + w) / 2.0).abs() < 1e-15);
         assert!((d.centroid(0)[1] - 0.5).abs() < 1e-15);
         let t = PowerDiagram::new(&sites, &[w, 0.0], true, &B).unwrap();
-        assert!((t.area(0) - (0.5 + 2.0 * w)).abs() < 1e-15, "w {w}: {}", t.area(0));
+        assert!(
+            (t.area(0) - (0.5 + 2.0 * w)).abs() < 1e-15,
+            "w {w}: {}",
+            t.area(0)
+        );
         assert!((t.centroid(0)[0] - 0.25).abs() < 1e-15);
         // Its second moment about the site: the strip [-w, 1/2 + w] x [0, 1].
         let (a, b) = (-w - 0.25, 0.25 + w);
@@ -263,7 +271,14 @@ fn grid_areas(sites: &[f64], w: &[f64], torus: bool, m: usize) -> Vec<f64> {
 
 #[test]
 fn the_solve_gives_equal_capacities() {
-    for (n, torus) in [(1usize, false), (2, true), (50, false), (50, true), (2000, false), (2000, true)] {
+    for (n, torus) in [
+        (1usize, false),
+        (2, true),
+        (50, false),
+        (50, true),
+        (2000, false),
+        (2000, true),
+    ] {
         // Clustered sites: half of them in the left fifth, where Voronoi cells are small.
         let mut sites = uniform(n, 40 + n as u64);
         for x in sites.iter_mut().step_by(4) {
@@ -284,11 +299,18 @@ fn the_solve_gives_equal_capacities() {
             // (boundary pixels: about perimeter / pixel, 4 sqrt(1/N) 400 of 160000).
             let counted = grid_areas(&sites, t.weights(), torus, 400);
             for a in counted {
-                assert!((a * n as f64 - 1.0).abs() < 0.05, "n {n} torus {torus}: {a}");
+                assert!(
+                    (a * n as f64 - 1.0).abs() < 0.05,
+                    "n {n} torus {torus}: {a}"
+                );
             }
             // Zero weights (Voronoi) are far from equal here.
             let v = PowerDiagram::voronoi(&sites, torus, &B).unwrap();
-            let spread = v.areas().iter().map(|a| (a * n as f64 - 1.0).abs()).fold(0.0, f64::max);
+            let spread = v
+                .areas()
+                .iter()
+                .map(|a| (a * n as f64 - 1.0).abs())
+                .fold(0.0, f64::max);
             assert!(spread > 0.5, "{spread}");
         }
     }
