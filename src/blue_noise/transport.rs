@@ -301,7 +301,7 @@ fn conjugate_gradients(d: &PowerDiagram, b: &[f64], budget: &Budget) -> Result<V
         }
         apply(d, &diag, &p, &mut hp);
         let php = dot(&p, &hp);
-        if !(php > 0.0) {
+        if php.is_nan() || php <= 0.0 {
             break;
         }
         let a = rz / php;

@@ -95,7 +95,7 @@ fn check_classification(sites: &[f64], w: &[f64], torus: bool) {
             let pow: Vec<f64> = (0..n).map(|i| dist2(x, p(i), torus) - w[i]).collect();
             let best = pow.iter().copied().fold(f64::INFINITY, f64::min);
             let mut found = 0;
-            for i in 0..n {
+            for (i, &pow_i) in pow.iter().enumerate() {
                 let cell = d.cell(i);
                 if shifts
                     .iter()
@@ -103,9 +103,8 @@ fn check_classification(sites: &[f64], w: &[f64], torus: bool) {
                 {
                     found += 1;
                     assert!(
-                        pow[i] <= best + 1e-9,
-                        "torus {torus}: {x:?} in cell {i} at power {} > {best}",
-                        pow[i]
+                        pow_i <= best + 1e-9,
+                        "torus {torus}: {x:?} in cell {i} at power {pow_i} > {best}"
                     );
                 }
             }
