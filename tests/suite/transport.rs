@@ -339,3 +339,15 @@ fn ot_distance_closed_forms() {
         assert!((got - want).abs() < 1e-12 * want, "k {k}: {got} vs {want}");
     }
 }
+
+#[test]
+fn the_catalog_measure_is_the_distance() {
+    let e = qmckit::catalog::measure("wasserstein").unwrap();
+    assert_eq!(e.name, "ot-distance");
+    // One point at the centre: W_2^2 = 2/3 - 1 + 1/2 = 1/6.
+    let p = Points::new(&[0.5, 0.5], 2).unwrap();
+    let got = e.scalar(p, &B).unwrap();
+    assert!((got - (1.0f64 / 6.0).sqrt()).abs() < 1e-15, "{got}");
+    let p3 = Points::new(&[0.5, 0.5, 0.5], 3).unwrap();
+    assert!(e.scalar(p3, &B).is_err());
+}
