@@ -128,7 +128,7 @@ impl Transport {
 }
 
 /// The estimated running time of a solve from zero weights for `n` sites: about
-/// [`COLD_DIAGRAMS`] diagrams and as many conjugate-gradient solves of
+/// 12 diagrams and as many conjugate-gradient solves of
 /// `4 sqrt(n) + 20` iterations over `7 n` entries.
 pub fn cost(n: usize) -> Cost {
     let diagrams = PowerDiagram::cost(n).seconds() * COLD_DIAGRAMS;
