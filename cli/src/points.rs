@@ -52,8 +52,10 @@ not apply):
                        points a site), any -d to 64: -n N, --iterations I, --torus
   sot                  sliced optimal transport in the cube, any -d to 64: -n N,
                        --iterations I
+  bnot                 blue noise through optimal transport (equal-area power cells),
+                       2D: -n N, --iterations I (default 50), --torus
   --max-seconds S refuses, before starting, a set whose estimated time exceeds S
-  (also pmj02bn, lloyd, ccvt, sot).
+  (also pmj02bn, lloyd, ccvt, sot, bnot).
 
 Other sets: cmj (Kensler's correlated multi-jitter, --total N, -d any, --seed);
 hex (hexagonal grid on the torus, 2D, --total N even; --scramble shift for a random
@@ -159,10 +161,10 @@ pub struct Spec {
     pub vector: Option<std::path::PathBuf>,
     /// Lattice: a Korobov parameter.
     pub korobov: Option<u64>,
-    /// The time budget of sets built whole at super-linear cost (pmj02bn, lloyd, ccvt,
+    /// The time budget of sets built whole at super-linear cost (pmj02bn, lloyd, ccvt, bnot,
     /// sot).
     pub budget: qmckit::work::Budget,
-    /// The options of the relaxed sets (lloyd, ccvt, sot: `--iterations`, `--torus`).
+    /// The options of the relaxed sets (lloyd, ccvt, sot, bnot: `--iterations`, `--torus`).
     pub blue_noise: BlueNoiseOptions,
 }
 
@@ -277,13 +279,13 @@ impl PointsArgs {
     }
 }
 
-/// `true` for the relaxed sets built whole through the catalog (lloyd, ccvt, sot), which
-/// take `--iterations`, `--max-seconds` and (lloyd, ccvt) `--torus`; the catalog refuses
-/// the other blue-noise options for them.
+/// `true` for the relaxed sets built whole through the catalog (lloyd, ccvt, sot, bnot),
+/// which take `--iterations`, `--max-seconds` and (lloyd, ccvt, bnot) `--torus`; the
+/// catalog refuses the other blue-noise options for them.
 pub fn is_relaxed(sampler: SamplerName) -> bool {
     matches!(
         sampler.kind,
-        SamplerKind::Lloyd | SamplerKind::Ccvt | SamplerKind::Sot
+        SamplerKind::Lloyd | SamplerKind::Ccvt | SamplerKind::Sot | SamplerKind::Bnot
     )
 }
 

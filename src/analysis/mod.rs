@@ -16,6 +16,7 @@
 //! | [`variance`] | integration variance predicted from a mean spectrum (torus-shifted samplers, disk and Gaussian integrands) and measured beside it |
 //! | [`pcf`] | pair correlation function of 2D point sets (UTK's definition, optionally toroidal) and the structure factor from it |
 //! | [`pointfile`] | reading point sets from text (the `qmckit discrepancy` input format) |
+//! | [`transport`] | the semi-discrete optimal-transport distance `W_2` between 2D points and the uniform square (exact Laguerre cells, damped Newton) |
 //! | [`screen_error`] | screen-space error of a pixel sampler: the error image of a per-pixel integrand and its low-frequency power |
 
 pub mod distance;
@@ -27,6 +28,7 @@ pub mod screen_error;
 pub mod spacing;
 pub mod spectrum;
 pub mod star;
+pub mod transport;
 pub mod tvalue;
 pub mod variance;
 

@@ -7,6 +7,9 @@
 //! * [`GaussianBlueNoise`] — Ahmed, Ren & Wonka's Gaussian blue noise on the torus.
 //! * [`Lloyd`] — Lloyd relaxation and capacity-constrained Voronoi tessellations (CCVT,
 //!   Balzer, Schlömer & Deussen 2009) in any dimension, in the cube or on the torus.
+//! * [`Bnot`] — blue noise through optimal transport (de Goes et al. 2012) in the square
+//!   or on the torus, 2D, on exact power diagrams ([`power`]) with equal capacities solved
+//!   by damped Newton ([`transport`]).
 //! * [`Sot`] — sliced optimal transport sampling (Paulin et al. 2020) in the cube.
 //! * [`VoidAndCluster`] — Ulichney's void-and-cluster rank masks, toroidal, up to 2048².
 //! * [`mask64`] — a 64×64 void-and-cluster rank mask as a static table, in `no_std` too.
@@ -21,6 +24,8 @@ pub mod mask64;
 
 #[cfg(feature = "analysis")]
 pub mod best_candidate;
+#[cfg(feature = "analysis")]
+pub mod bnot;
 #[cfg(feature = "analysis")]
 mod bridson;
 #[cfg(feature = "analysis")]
@@ -38,6 +43,8 @@ pub mod poisson;
 #[cfg(feature = "analysis")]
 mod poisson_cost;
 #[cfg(feature = "analysis")]
+pub mod power;
+#[cfg(feature = "analysis")]
 mod rng;
 #[cfg(feature = "analysis")]
 mod shell;
@@ -48,10 +55,14 @@ mod tiles;
 #[cfg(feature = "analysis")]
 mod tournament;
 #[cfg(feature = "analysis")]
+pub mod transport;
+#[cfg(feature = "analysis")]
 pub mod void_and_cluster;
 
 #[cfg(feature = "analysis")]
 pub use best_candidate::BestCandidate;
+#[cfg(feature = "analysis")]
+pub use bnot::{Bnot, BnotTrace};
 #[cfg(feature = "analysis")]
 pub use gaussian::GaussianBlueNoise;
 #[cfg(feature = "analysis")]

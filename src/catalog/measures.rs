@@ -37,6 +37,8 @@ pub enum MeasureKind {
     MeanMinDistance,
     /// Minimum distance over the packing bound `d_max(N, d)`.
     NormalizedMinDistance,
+    /// Semi-discrete optimal-transport distance `W_2` to the uniform square, 2D.
+    OtDistance,
     /// Fourier power spectrum (periodogram) of 2D points.
     Spectrum,
     /// Radial average and anisotropy of the spectrum.
@@ -120,8 +122,8 @@ pub type MeasureEntry = Entry<MeasureKind>;
 impl Entry<MeasureKind> {
     /// The value of a scalar measure of `points`, within `budget` (estimated first where
     /// the measure has an estimate; the deadline bounds the rest): star (exact), extreme
-    /// (2D), the eight L2 measures, min-distance, mean-min-distance and
-    /// normalized-min-distance (in the cube).
+    /// (2D), the eight L2 measures, min-distance, mean-min-distance,
+    /// normalized-min-distance (in the cube) and ot-distance (2D).
     ///
     /// ```
     /// use qmckit::{analysis::Points, catalog, work::Budget};
@@ -152,6 +154,7 @@ impl Entry<MeasureKind> {
             MeasureKind::NormalizedMinDistance => {
                 crate::analysis::spacing::normalized_min_distance(points, false, budget)?
             }
+            MeasureKind::OtDistance => crate::analysis::transport::ot_distance(points, budget)?,
             _ => {
                 return Err(super::CatalogError::Unused {
                     entry: self.name,
@@ -346,6 +349,19 @@ pub static MEASURES: &[MeasureEntry] = &[
             BUDGET,
         ],
         item: "qmckit::analysis::spacing::normalized_min_distance",
+    },
+    Entry {
+        kind: MeasureKind::OtDistance,
+        name: "ot-distance",
+        aliases: &[
+            alias("wasserstein", "the W_2 distance it is"),
+            alias("transport-distance", "what it measures"),
+        ],
+        summary: "semi-discrete optimal-transport distance W_2 from 2D points (mass 1/N each) to \
+                  the uniform square, exact Laguerre cells",
+        math: "W_2^2 = sum_i int_(L_i) |x - p_i|^2, L_i the power cells of area 1/N (Aurenhammer, Hoffmann & Aronov 1998; Mérigot 2011; Kitagawa, Mérigot & Thibert 2019)",
+        params: &[BUDGET],
+        item: "qmckit::analysis::transport::ot_distance",
     },
     Entry {
         kind: MeasureKind::Spectrum,

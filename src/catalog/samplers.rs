@@ -48,6 +48,8 @@ pub enum SamplerKind {
     Ccvt,
     /// Sliced optimal transport sampling, built whole.
     Sot,
+    /// Blue noise through optimal transport (BNOT), built whole.
+    Bnot,
 }
 
 /// What a construction is, as far as randomizers care ([`super::applies`]).
@@ -67,7 +69,7 @@ pub enum Family {
     /// latin, pmj02, pmj02bn, cmj).
     Random,
     /// Blue-noise sets built whole (poisson, best-candidate, gaussian-blue-noise, lloyd,
-    /// ccvt, sot).
+    /// ccvt, sot, bnot).
     BlueNoise,
 }
 
@@ -83,7 +85,7 @@ impl Family {
                 "random constructions (independent, stratified, latin, pmj02, pmj02bn, cmj)"
             }
             Family::BlueNoise => {
-                "blue-noise sets (poisson, best-candidate, gaussian-blue-noise, lloyd, ccvt, sot)"
+                "blue-noise sets (poisson, best-candidate, gaussian-blue-noise, lloyd, ccvt, sot, bnot)"
             }
         }
     }
@@ -128,7 +130,8 @@ impl SamplerKind {
             | SamplerKind::GaussianBlueNoise
             | SamplerKind::Lloyd
             | SamplerKind::Ccvt
-            | SamplerKind::Sot => Family::BlueNoise,
+            | SamplerKind::Sot
+            | SamplerKind::Bnot => Family::BlueNoise,
         }
     }
 
@@ -148,7 +151,8 @@ impl SamplerKind {
             | SamplerKind::GaussianBlueNoise
             | SamplerKind::Lloyd
             | SamplerKind::Ccvt
-            | SamplerKind::Sot => Size::Whole,
+            | SamplerKind::Sot
+            | SamplerKind::Bnot => Size::Whole,
             _ => Size::Sequence,
         }
     }
@@ -162,7 +166,7 @@ impl SamplerKind {
     }
 
     /// The only dimension count the construction has, if it has one (vdc 1; lp, pmj02,
-    /// pmj02bn, best-candidate, gaussian-blue-noise and hex 2).
+    /// pmj02bn, best-candidate, gaussian-blue-noise, hex and bnot 2).
     pub const fn fixed_dims(self) -> Option<usize> {
         match self {
             SamplerKind::Vdc => Some(1),
@@ -171,7 +175,8 @@ impl SamplerKind {
             | SamplerKind::Pmj02bn
             | SamplerKind::BestCandidate
             | SamplerKind::GaussianBlueNoise
-            | SamplerKind::Hex => Some(2),
+            | SamplerKind::Hex
+            | SamplerKind::Bnot => Some(2),
             _ => None,
         }
     }
@@ -627,5 +632,29 @@ pub static SAMPLERS: &[SamplerEntry] = &[
             ),
         ],
         item: "qmckit::blue_noise::Sot",
+    },
+    Entry {
+        kind: SamplerKind::Bnot,
+        name: "bnot",
+        aliases: &[alias(
+            "blue-noise-optimal-transport",
+            "de Goes et al. 2012's title",
+        )],
+        summary: "blue noise through optimal transport: centroids of equal-area power cells, 2D, square or torus, built whole",
+        math: "solve w: |Laguerre cell_i(w)| = 1/N (damped Newton), then x_i <- centroid; W2^2 never increases (de Goes, Breeden, Ostromoukhov & Desbrun 2012)",
+        params: &[
+            DIMS_2,
+            POINTS,
+            SEED,
+            param("iterations", "solve-and-move iterations", "50", "0 to 10^4"),
+            param("torus", "periodic cells", "false", "bool"),
+            param(
+                "budget",
+                "time budget of the construction",
+                "10 s",
+                "positive seconds",
+            ),
+        ],
+        item: "qmckit::blue_noise::Bnot",
     },
 ];

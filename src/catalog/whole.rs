@@ -9,7 +9,7 @@ use super::{CatalogError, SamplerKind};
 pub struct BlueNoiseOptions {
     /// poisson: the disk radius, instead of `points`.
     pub radius: Option<f64>,
-    /// poisson, lloyd, ccvt: toroidal distance.
+    /// poisson, lloyd, ccvt, bnot: toroidal distance.
     pub torus: bool,
     /// poisson: fill until no further disk fits.
     pub maximal: bool,
@@ -17,7 +17,7 @@ pub struct BlueNoiseOptions {
     /// (default 10).
     pub candidates: Option<u32>,
     /// gaussian-blue-noise: gradient-descent iterations (default 500); lloyd, ccvt
-    /// (default 30), sot (default 100): their iterations.
+    /// (default 30), sot (default 100), bnot (default 50): their iterations.
     pub iterations: Option<u32>,
 }
 
@@ -31,8 +31,8 @@ impl BlueNoiseOptions {
             ("radius", self.radius.is_some() && !poisson, only_poisson),
             (
                 "torus",
-                self.torus && !matches!(kind, S::Poisson | S::Lloyd | S::Ccvt),
-                "only poisson, lloyd and ccvt take it",
+                self.torus && !matches!(kind, S::Poisson | S::Lloyd | S::Ccvt | S::Bnot),
+                "only poisson, lloyd, ccvt and bnot take it",
             ),
             ("maximal", self.maximal && !poisson, only_poisson),
             (
@@ -44,8 +44,11 @@ impl BlueNoiseOptions {
             (
                 "iterations",
                 self.iterations.is_some()
-                    && !matches!(kind, S::GaussianBlueNoise | S::Lloyd | S::Ccvt | S::Sot),
-                "only gaussian-blue-noise, lloyd, ccvt and sot take it",
+                    && !matches!(
+                        kind,
+                        S::GaussianBlueNoise | S::Lloyd | S::Ccvt | S::Sot | S::Bnot
+                    ),
+                "only gaussian-blue-noise, lloyd, ccvt, sot and bnot take it",
             ),
         ]
         .into_iter()
@@ -130,9 +133,9 @@ mod built {
         })
     }
 
-    /// The relaxed sets: lloyd, ccvt (on the torus if `opts.torus`) and sot, `n`
-    /// points of `dims`, their iterations from `opts` (else their defaults), within
-    /// `budget`.
+    /// The relaxed sets: lloyd, ccvt, bnot (on the torus if `opts.torus`) and sot, `n`
+    /// points of `dims` (bnot: 2), their iterations from `opts` (else their defaults),
+    /// within `budget`.
     pub(in crate::catalog) fn relaxed(
         kind: SamplerKind,
         opts: &BlueNoiseOptions,
@@ -141,9 +144,18 @@ mod built {
         seed: u64,
         budget: &Budget,
     ) -> Result<PointSet, CatalogError> {
-        use crate::blue_noise::{Lloyd, Sot};
+        use crate::blue_noise::{Bnot, Lloyd, Sot};
         let budget = budget.started();
-        Ok(if kind == SamplerKind::Sot {
+        Ok(if kind == SamplerKind::Bnot {
+            if dims != 2 {
+                return Err(crate::Error::DimensionOutOfRange { dim: dims, dims: 2 }.into());
+            }
+            let mut b = Bnot::new(n)?.seed(seed).torus(opts.torus);
+            if let Some(i) = opts.iterations {
+                b = b.iterations(i)?;
+            }
+            b.generate(&budget)?
+        } else if kind == SamplerKind::Sot {
             let mut s = Sot::new(n, dims)?.seed(seed);
             if let Some(i) = opts.iterations {
                 s = s.iterations(i)?;

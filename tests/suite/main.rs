@@ -5,6 +5,8 @@
 mod common;
 
 mod blue_noise;
+#[cfg(feature = "analysis")]
+mod bnot;
 mod catalog;
 mod cmj;
 mod conversions;
@@ -32,6 +34,8 @@ mod spectrum;
 mod star_discrepancy;
 mod star_lower;
 mod thiemard;
+#[cfg(feature = "analysis")]
+mod transport;
 mod tvalue;
 mod variance;
 mod warps;
