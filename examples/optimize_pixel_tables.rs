@@ -60,7 +60,7 @@ impl Rng {
         (self.next() >> 11) as f64 / (1u64 << 53) as f64
     }
     fn below(&mut self, n: usize) -> usize {
-        ((self.next() >> 32) * n as u64 >> 32) as usize
+        (((self.next() >> 32) * n as u64) >> 32) as usize
     }
 }
 
@@ -227,9 +227,9 @@ fn anneal(e: &[Vec<f64>], iterations: u64, sigma: f64, rng: &mut Rng) -> Vec<usi
         let (fp, fq) = (&filt[p * c..(p + 1) * c], &filt[q * c..(q + 1) * c]);
         let self_term = 2.0 - 2.0 * kdist(p, q);
         let mut s = 0.0;
-        for k in 0..c {
-            let a = eq[k] - ep[k];
-            s += 2.0 * a * (fp[k] - fq[k]) + a * a * self_term;
+        for (((a, b), f), g) in eq.iter().zip(ep).zip(fp).zip(fq) {
+            let d = a - b;
+            s += 2.0 * d * (f - g) + d * d * self_term;
         }
         s
     };

@@ -186,7 +186,7 @@ pub enum DomainBase<'t> {
 
 /// One 2D dimension pair of one pixel sample: made by [`Domain::root`], derived by
 /// [`new_domain`](Domain::new_domain), [`split`](Domain::split) and
-/// [`chain`](Domain::chain), drawn by [`draw_2d`](Domain::draw_2d). `Copy`, five words.
+/// [`chain`](Domain::chain), drawn by [`draw_2d`](Domain::draw_2d). `Copy`, 64 bytes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Domain<'t> {
     base: DomainBase<'t>,

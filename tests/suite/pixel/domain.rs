@@ -311,6 +311,7 @@ fn domains_are_deterministic_and_keyed() {
     assert_ne!(a.new_domain(5).state(), a.new_domain(6).state());
     assert_ne!(a.new_domain(0).state(), a.chain().state());
     assert_ne!(a.new_domain(5).state(), a.split(5, 1, 0).unwrap().state());
+    assert!(core::mem::size_of::<Domain>() <= 64);
     let other_seed = Domain::root(DomainBase::OwenSobol, 4, 2, 3, 8, 12).unwrap();
     assert_ne!(a.state(), other_seed.state());
     // The state does not depend on the pixel (the tables' offsets are shared).
