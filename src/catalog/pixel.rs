@@ -23,6 +23,10 @@ pub enum PixelKind {
     Halton,
     /// pbrt-v4's `StratifiedSampler`.
     Stratified,
+    /// Owen-scrambled Sobol' with per-pixel keys from an optimized blue-noise table.
+    BlueNoiseSobol,
+    /// A rank-1 lattice with per-pixel shifts from an optimized blue-noise table.
+    BlueNoiseLattice,
 }
 
 impl PixelKind {
@@ -224,6 +228,30 @@ pub static PIXEL_SAMPLERS: &[PixelEntry] = &[
         item: "qmckit::pixel::Pmj02BnPixels",
     },
     Entry {
+        kind: PixelKind::BlueNoiseSobol,
+        name: "bn-sobol",
+        aliases: &[
+            alias("blue-noise-owen-sobol", "qmckit::pixel::BlueNoiseSobol"),
+            alias("bn-owen-sobol", "a short form"),
+        ],
+        summary: "blue-noise Owen-Sobol': per-pixel scrambling keys from an optimized 64x64 table",
+        math: "Owen-scrambled Sobol' (0, 1) per pixel, keys permuted over a toroidal tile so the screen-space error is blue (Heitz & Belcour 2019; Belcour & Heitz 2021); dimension pairs are hashed domains",
+        params: &[WIDTH, HEIGHT, SPP, SEED],
+        item: "qmckit::pixel::BlueNoiseSobol",
+    },
+    Entry {
+        kind: PixelKind::BlueNoiseLattice,
+        name: "bn-lattice",
+        aliases: &[alias(
+            "blue-noise-lattice",
+            "qmckit::pixel::BlueNoiseLattice",
+        )],
+        summary: "blue-noise rank-1 lattice: per-pixel Cranley-Patterson shifts from an optimized 64x64 table",
+        math: "the lattice (rev(j), rev(j) g) per pixel, shifted by the pixel's cell of a toroidal table optimized for blue screen-space error (Belcour & Heitz 2021); dimension pairs are hashed domains",
+        params: &[WIDTH, HEIGHT, SPP, SEED],
+        item: "qmckit::pixel::BlueNoiseLattice",
+    },
+    Entry {
         kind: PixelKind::Independent,
         name: "independent",
         aliases: &[alias("random", "white noise")],
@@ -247,8 +275,9 @@ mod built {
     use super::super::{CatalogError, RandomizerEntry};
     use super::{PixelEntry, PixelKind as P};
     use crate::pixel::{
-        HaltonSampler, ImageSobol, IndependentPixels, PaddedSobol, PixelGrid, PixelPoint,
-        PixelSampler, Pmj02BnTables, Pmj02Pixels, StratifiedSampler, ZSobol,
+        BlueNoiseLattice, BlueNoiseSobol, HaltonSampler, ImageSobol, IndependentPixels,
+        PaddedSobol, PixelGrid, PixelPoint, PixelSampler, Pmj02BnTables, Pmj02Pixels,
+        StratifiedSampler, ZSobol,
     };
     use std::boxed::Box;
 
@@ -326,6 +355,8 @@ mod built {
             P::PaddedSobol => Box::new(PaddedSobol::new(w, h, spp, r, seed)?),
             P::Pmj02 => Box::new(Pmj02Pixels::new(w, h, spp, seed)?),
             P::Independent => Box::new(IndependentPixels::new(w, h, spp, seed)?),
+            P::BlueNoiseSobol => Box::new(BlueNoiseSobol::new(w, h, spp, seed)?),
+            P::BlueNoiseLattice => Box::new(BlueNoiseLattice::new(w, h, spp, seed)?),
             P::Halton => Box::new(HaltonSampler::new(w, h, spp, r, seed)?),
             // Jittered unless `none` was asked for.
             P::Stratified => Box::new(StratifiedSampler::with_spp(

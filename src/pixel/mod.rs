@@ -34,6 +34,8 @@
 //! | [`HaltonSampler`] | pbrt's `HaltonSampler`: one Halton sequence over the image plane, the pixel's indices by the Chinese remainder theorem | yes | `j + k` digit steps | `~24 / log2 b` digit steps (a hash and a permutation each when randomized) |
 //! | [`StratifiedSampler`] | pbrt's `StratifiedSampler`: strata permuted per pixel and dimension, PCG32 jitter | no | the pixel hash | one MurmurHash, one permutation, a PCG32 jump |
 //! | [`IndependentPixels`] | independent uniform values from a hash of `(seed, pixel, index, dimension)` | no | the pixel hash | one `hash3` |
+//! | [`BlueNoiseSobol`] | Owen-scrambled Sobol' per pixel, keys from an optimized blue-noise tile (Heitz & Belcour 2019; Belcour & Heitz 2021); dimension `d` the [`domain`] `new_domain(d)` | no | nothing | 2 `hash3`, a table read, 3 Vegdahl hashes |
+//! | [`BlueNoiseLattice`] | a rank-1 lattice per pixel, Cranley–Patterson shifts from an optimized blue-noise tile (Belcour & Heitz 2021) | no | nothing | 2 `hash3`, a table read, one Vegdahl hash |
 //!
 //! [`HaltonSampler`] and [`StratifiedSampler`] compute their floats as pbrt does, in `f32`
 //! arithmetic ([`PixelSampler::value_1d_f32`]); their 0.32 fractions are the exact values
@@ -41,6 +43,9 @@
 //! the `*_f32` draws return pbrt's floats. For ZSobol, [`ZSobol::pixel_dimension`] is the
 //! batch path of one pixel and one dimension over all its samples (the digits above the
 //! sample's and both scramble keys computed once; bit-identical).
+//!
+//! [`domain`] derives dimensions by key instead of by counter ([`Domain`]: `new_domain(key)`,
+//! `split`, `chain`), for path tracers; its bits are documented as stable.
 //!
 //! A renderer's loop: for each pixel, for each sample, start, then draw.
 //!
@@ -71,6 +76,8 @@
 //! # Ok::<(), qmckit::Error>(())
 //! ```
 
+mod blue_noise_pixels;
+pub mod domain;
 mod halton;
 mod image_sobol;
 mod independent;
@@ -80,6 +87,11 @@ mod pmj_pixels;
 mod stratified;
 mod zsobol;
 
+pub use blue_noise_pixels::{
+    BLUE_NOISE_LATTICE_GENERATOR, BLUE_NOISE_LATTICE_SHIFTS, BLUE_NOISE_SOBOL_KEYS,
+    BLUE_NOISE_TILE_SIDE, BlueNoiseLattice, BlueNoiseSobol,
+};
+pub use domain::Domain;
 pub use halton::{HALTON_PIXEL_DIMS, HaltonSampler};
 pub use image_sobol::{IMAGE_SOBOL_DIMS, ImageSobol, PBRT_SOBOL_DIMS};
 pub use independent::IndependentPixels;

@@ -8,7 +8,9 @@
 // pbrt's check values are quoted as published, with 9 significant digits.
 #![allow(clippy::excessive_precision)]
 
+mod blue_noise;
 mod compiled;
+mod domain;
 mod halton_stratified;
 
 use crate::common::first_net_failure;

@@ -18,6 +18,8 @@
 //! | [`SOBOL_XOR`] | `sobol` + `xor` | Sobol' points `0..spp` with a random digital shift |
 //! | [`SOBOL_OWEN`] | `sobol` + `fast-owen` | Sobol' points `0..spp`, hash-based Owen scrambling |
 //! | [`ZSOBOL`] | pixel sampler `zsobol` + `fast-owen` | pbrt's blue-noise Sobol': dimensions in pairs, one `start_pixel_sample(x, y, i)`, then `get_2d` per pair |
+//! | [`BN_SOBOL`] | pixel sampler `bn-sobol` | Owen-Sobol' per pixel, keys from the optimized blue-noise table; pairs as ZSobol's |
+//! | [`BN_LATTICE`] | pixel sampler `bn-lattice` | a rank-1 lattice per pixel, shifts from the optimized blue-noise table; pairs as ZSobol's |
 //!
 //! Cost: building the catalog sampler once a pixel (O(d), Halton's permutations O(d b)),
 //! then its batch fill, O(d) a point; a pixel sampler is built once an image row, then
@@ -76,6 +78,17 @@ pub const SOBOL_OWEN: SceneSampler = SceneSampler::Points {
 pub const ZSOBOL: SceneSampler = SceneSampler::Pixel {
     sampler: "zsobol",
     randomizer: "fast-owen",
+};
+
+/// Blue-noise Owen-Sobol' (per-pixel keys from an optimized table).
+pub const BN_SOBOL: SceneSampler = SceneSampler::Pixel {
+    sampler: "bn-sobol",
+    randomizer: "none",
+};
+/// Blue-noise rank-1 lattice (per-pixel shifts from an optimized table).
+pub const BN_LATTICE: SceneSampler = SceneSampler::Pixel {
+    sampler: "bn-lattice",
+    randomizer: "none",
 };
 
 impl SceneSampler {
@@ -207,8 +220,13 @@ impl Prepared {
             seed: self.seed,
         };
         let entry = catalog::pixel_sampler(sampler).map_err(catalog_error)?;
-        let r = catalog::randomizer(randomizer).map_err(catalog_error)?;
-        catalog::build_pixel(entry, Some(r), &params)
+        // "none" for a sampler that takes no randomizer: its own randomness.
+        let r = if entry.kind.takes_randomizer() {
+            Some(catalog::randomizer(randomizer).map_err(catalog_error)?)
+        } else {
+            None
+        };
+        catalog::build_pixel(entry, r, &params)
             .map(Some)
             .map_err(catalog_error)
     }

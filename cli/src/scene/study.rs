@@ -181,12 +181,21 @@ impl Study {
 
     /// The samplers compared, the first the independent baseline.
     pub const fn samplers(self) -> &'static [SceneSampler] {
-        use super::samplers::{HALTON, INDEPENDENT, SOBOL_OWEN, SOBOL_XOR, STRATIFIED, ZSOBOL};
+        use super::samplers::{
+            BN_LATTICE, BN_SOBOL, HALTON, INDEPENDENT, SOBOL_OWEN, SOBOL_XOR, STRATIFIED, ZSOBOL,
+        };
         match self {
             Study::PixelArea | Study::SoftShadow => &[INDEPENDENT, STRATIFIED, SOBOL_OWEN],
             Study::MotionDefocus => &[INDEPENDENT, HALTON, SOBOL_OWEN],
-            Study::PixelLight => &[INDEPENDENT, SOBOL_XOR, SOBOL_OWEN, ZSOBOL],
-            Study::AmbientOcclusion => &[INDEPENDENT, SOBOL_OWEN, ZSOBOL],
+            Study::PixelLight => &[
+                INDEPENDENT,
+                SOBOL_XOR,
+                SOBOL_OWEN,
+                ZSOBOL,
+                BN_SOBOL,
+                BN_LATTICE,
+            ],
+            Study::AmbientOcclusion => &[INDEPENDENT, SOBOL_OWEN, ZSOBOL, BN_SOBOL, BN_LATTICE],
         }
     }
 
@@ -486,8 +495,9 @@ pub fn motion_defocus_study(o: &StudyOptions) -> Result<SceneStudy> {
 }
 
 /// Pixel x light ([`Integrand::PixelLight`], 4D: film 2, light 2): independent, Sobol' 4D
-/// (digital shift), Sobol' fast-owen 4D and ZSobol (blue-noise Sobol', pairs of dimensions).
-/// Cost: 4 samplers.
+/// (digital shift), Sobol' fast-owen 4D, ZSobol (blue-noise Sobol', pairs of dimensions) and
+/// the table-driven blue-noise Owen-Sobol' and lattice (pairs of dimensions as domains).
+/// Cost: 6 samplers.
 ///
 /// # Errors
 /// As [`pixel_area_study`].
@@ -497,8 +507,9 @@ pub fn pixel_light_study(o: &StudyOptions) -> Result<SceneStudy> {
 
 /// Ambient occlusion ([`Integrand::AmbientOcclusion`], 2D: a cosine-weighted direction at
 /// the pixel center's hit): white noise (independent per pixel; Sobol' fast-owen with a seed per
-/// pixel) against blue noise (ZSobol). [`MseEntry::low_band`] holds the error images'
-/// low-frequency power. Cost: 3 samplers.
+/// pixel) against blue noise (ZSobol, and the table-driven blue-noise Owen-Sobol' and
+/// lattice). [`MseEntry::low_band`] holds the error images' low-frequency power. Cost: 5
+/// samplers.
 ///
 /// # Errors
 /// As [`pixel_area_study`].

@@ -349,7 +349,7 @@ fn motion_defocus_and_pixel_light_qmc_beats_independent() {
     assert_eq!(md.mse[1].sampler, "halton + perm");
     assert!(md.mse[2].mse < md.mse[0].mse, "{:?}", md.mse);
     let pl = pixel_light_study(&small()).unwrap();
-    assert_eq!(pl.mse.len(), 4);
+    assert_eq!(pl.mse.len(), 6);
     assert!(
         pl.mse[1..].iter().all(|e| e.mse < pl.mse[0].mse),
         "{:?}",
@@ -372,9 +372,23 @@ fn zsobol_ao_error_has_less_low_frequency_power() {
     let names: Vec<&str> = ao.mse.iter().map(|e| e.sampler.as_str()).collect();
     assert_eq!(
         names,
-        ["independent", "sobol + fast-owen", "zsobol + fast-owen"]
+        [
+            "independent",
+            "sobol + fast-owen",
+            "zsobol + fast-owen",
+            "bn-sobol",
+            "bn-lattice"
+        ]
     );
     let (ind, owen, z) = (&ao.mse[0], &ao.mse[1], &ao.mse[2]);
+    // The table-driven blue-noise samplers too.
+    for bn in &ao.mse[3..] {
+        assert!(
+            bn.low_band < 0.75 * ind.low_band.min(owen.low_band),
+            "{:?}",
+            ao.mse
+        );
+    }
     // Silhouettes and the sky's zero-error rows dilute the effect: about 0.6 against 1.1.
     assert!(
         z.low_band < 0.75 * ind.low_band.min(owen.low_band),
