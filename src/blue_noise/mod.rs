@@ -7,7 +7,11 @@
 //! * [`GaussianBlueNoise`] — Ahmed, Ren & Wonka's Gaussian blue noise on the torus.
 //! * [`Lloyd`] — Lloyd relaxation and capacity-constrained Voronoi tessellations (CCVT,
 //!   Balzer, Schlömer & Deussen 2009) in any dimension, in the cube or on the torus.
-//! * [`Sot`] — sliced optimal transport sampling (Paulin et al. 2020) in the cube.
+//! * [`ProjectiveBlueNoise`] — projective blue noise (Reinert et al. 2016): dart throwing
+//!   that keeps radii in the full space and in every 1D and 2D axis projection, 2 to 8
+//!   dimensions, on the torus.
+//! * [`Sot`] — sliced optimal transport sampling (Paulin et al. 2020) in the cube,
+//!   optionally projective (directions also drawn in the 1D and 2D axis subspaces).
 //! * [`VoidAndCluster`] — Ulichney's void-and-cluster rank masks, toroidal, up to 2048².
 //! * [`mask64`] — a 64×64 void-and-cluster rank mask as a static table, in `no_std` too.
 //!
@@ -38,6 +42,8 @@ pub mod poisson;
 #[cfg(feature = "analysis")]
 mod poisson_cost;
 #[cfg(feature = "analysis")]
+pub mod projective;
+#[cfg(feature = "analysis")]
 mod rng;
 #[cfg(feature = "analysis")]
 mod shell;
@@ -60,6 +66,8 @@ pub use lloyd::{Lloyd, LloydTrace};
 pub use point_set::PointSet;
 #[cfg(feature = "analysis")]
 pub use poisson::PoissonDisk;
+#[cfg(feature = "analysis")]
+pub use projective::{ProjectiveBlueNoise, ProjectiveSet};
 #[cfg(feature = "analysis")]
 pub use sot::Sot;
 #[cfg(feature = "analysis")]

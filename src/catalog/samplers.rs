@@ -48,6 +48,9 @@ pub enum SamplerKind {
     Ccvt,
     /// Sliced optimal transport sampling, built whole.
     Sot,
+    /// Projective blue noise (dart throwing in the full space and its projections), built
+    /// whole.
+    ProjectiveBlueNoise,
 }
 
 /// What a construction is, as far as randomizers care ([`super::applies`]).
@@ -67,7 +70,7 @@ pub enum Family {
     /// latin, pmj02, pmj02bn, cmj).
     Random,
     /// Blue-noise sets built whole (poisson, best-candidate, gaussian-blue-noise, lloyd,
-    /// ccvt, sot).
+    /// ccvt, sot, projective-blue-noise).
     BlueNoise,
 }
 
@@ -83,7 +86,8 @@ impl Family {
                 "random constructions (independent, stratified, latin, pmj02, pmj02bn, cmj)"
             }
             Family::BlueNoise => {
-                "blue-noise sets (poisson, best-candidate, gaussian-blue-noise, lloyd, ccvt, sot)"
+                "blue-noise sets (poisson, best-candidate, gaussian-blue-noise, lloyd, ccvt, sot, \
+                 projective-blue-noise)"
             }
         }
     }
@@ -128,7 +132,8 @@ impl SamplerKind {
             | SamplerKind::GaussianBlueNoise
             | SamplerKind::Lloyd
             | SamplerKind::Ccvt
-            | SamplerKind::Sot => Family::BlueNoise,
+            | SamplerKind::Sot
+            | SamplerKind::ProjectiveBlueNoise => Family::BlueNoise,
         }
     }
 
@@ -148,7 +153,8 @@ impl SamplerKind {
             | SamplerKind::GaussianBlueNoise
             | SamplerKind::Lloyd
             | SamplerKind::Ccvt
-            | SamplerKind::Sot => Size::Whole,
+            | SamplerKind::Sot
+            | SamplerKind::ProjectiveBlueNoise => Size::Whole,
             _ => Size::Sequence,
         }
     }
@@ -607,7 +613,8 @@ pub static SAMPLERS: &[SamplerEntry] = &[
             "sliced-optimal-transport",
             "Paulin et al. 2020's title",
         )],
-        summary: "sliced optimal transport sampling in the cube, any dimension to 64, built whole",
+        summary: "sliced optimal transport sampling in the cube, any dimension to 64, built whole; \
+                  projective: half the directions in the 1D and 2D axis subspaces",
         math: "x_i += mean over L directions of (t_rank(i) - <theta, x_i>) theta, t the projected cube's quantile blocks (Paulin et al. 2020)",
         params: &[
             param("dims", "coordinates of each point", "2", "1 to 64"),
@@ -620,6 +627,12 @@ pub static SAMPLERS: &[SamplerEntry] = &[
                 "0 to 10^5",
             ),
             param(
+                "projective",
+                "every other direction in an axis-aligned 1D or 2D subspace, so the projections are spread too",
+                "false",
+                "bool",
+            ),
+            param(
                 "budget",
                 "time budget of the construction",
                 "10 s",
@@ -627,5 +640,29 @@ pub static SAMPLERS: &[SamplerEntry] = &[
             ),
         ],
         item: "qmckit::blue_noise::Sot",
+    },
+    Entry {
+        kind: SamplerKind::ProjectiveBlueNoise,
+        name: "projective-blue-noise",
+        aliases: &[alias(
+            "projective",
+            "Reinert, Ritschel, Seidel & Georgiev 2016's title",
+        )],
+        summary: "projective blue noise on the torus, 2 to 8 dimensions: dart throwing with radii in the \
+                  full space and in every 1D and 2D axis projection, built whole",
+        math: "accept x if |x - y| >= r_d, |x_k - y_k| >= r_1, |(x_k, x_l) - (y_k, y_l)| >= r_2 for all y; \
+               r_m = rho r_max(N, m), rho shrunk by 0.99 after 1000 rejections (Reinert et al. 2016)",
+        params: &[
+            param("dims", "coordinates of each point", "2", "2 to 8"),
+            POINTS,
+            SEED,
+            param(
+                "budget",
+                "time budget of the construction",
+                "10 s",
+                "positive seconds",
+            ),
+        ],
+        item: "qmckit::blue_noise::ProjectiveBlueNoise",
     },
 ];

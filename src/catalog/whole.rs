@@ -19,6 +19,8 @@ pub struct BlueNoiseOptions {
     /// gaussian-blue-noise: gradient-descent iterations (default 500); lloyd, ccvt
     /// (default 30), sot (default 100): their iterations.
     pub iterations: Option<u32>,
+    /// sot: projective sampling (half the directions in the 1D and 2D axis subspaces).
+    pub projective: bool,
 }
 
 impl BlueNoiseOptions {
@@ -46,6 +48,11 @@ impl BlueNoiseOptions {
                 self.iterations.is_some()
                     && !matches!(kind, S::GaussianBlueNoise | S::Lloyd | S::Ccvt | S::Sot),
                 "only gaussian-blue-noise, lloyd, ccvt and sot take it",
+            ),
+            (
+                "projective",
+                self.projective && kind != S::Sot,
+                "only sot takes it; projective-blue-noise is always projective",
             ),
         ]
         .into_iter()
@@ -130,9 +137,10 @@ mod built {
         })
     }
 
-    /// The relaxed sets: lloyd, ccvt (on the torus if `opts.torus`) and sot, `n`
-    /// points of `dims`, their iterations from `opts` (else their defaults), within
-    /// `budget`.
+    /// The relaxed sets: lloyd, ccvt (on the torus if `opts.torus`) and sot
+    /// (projective if `opts.projective`), `n` points of `dims`, their iterations from
+    /// `opts` (else their defaults), within `budget`; and projective-blue-noise, `n`
+    /// points of `dims` within `budget`.
     pub(in crate::catalog) fn relaxed(
         kind: SamplerKind,
         opts: &BlueNoiseOptions,
@@ -141,10 +149,14 @@ mod built {
         seed: u64,
         budget: &Budget,
     ) -> Result<PointSet, CatalogError> {
-        use crate::blue_noise::{Lloyd, Sot};
+        use crate::blue_noise::{Lloyd, ProjectiveBlueNoise, Sot};
         let budget = budget.started();
-        Ok(if kind == SamplerKind::Sot {
-            let mut s = Sot::new(n, dims)?.seed(seed);
+        Ok(if kind == SamplerKind::ProjectiveBlueNoise {
+            ProjectiveBlueNoise::new(n, dims)?
+                .seed(seed)
+                .generate(&budget)?
+        } else if kind == SamplerKind::Sot {
+            let mut s = Sot::new(n, dims)?.seed(seed).projective(opts.projective);
             if let Some(i) = opts.iterations {
                 s = s.iterations(i)?;
             }

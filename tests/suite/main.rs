@@ -24,6 +24,8 @@ mod pcf;
 mod peers;
 mod pixel;
 mod pmj;
+#[cfg(feature = "analysis")]
+mod projective;
 mod randomize;
 #[cfg(feature = "analysis")]
 mod relaxation;
