@@ -278,9 +278,8 @@ impl ProjectiveBlueNoise {
         let budget = budget.started();
         budget.check(WHAT, self.cost())?;
         let (n, d) = (self.n as usize, self.dims);
-        let mut coords = crate::size::vec_with_capacity::<u32>(crate::size::coordinates(
-            self.n, d,
-        )?)?;
+        let mut coords =
+            crate::size::vec_with_capacity::<u32>(crate::size::coordinates(self.n, d)?)?;
         let mut xs = crate::size::vec_with_capacity::<f64>(coords.capacity())?;
         let full = max_spacing(self.n, d);
         let one = if self.projections >= 1 {

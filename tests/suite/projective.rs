@@ -109,11 +109,11 @@ fn measure() {
                 let p = b.run(&Budget::seconds(600.0).unwrap()).unwrap();
                 let secs = t.elapsed().as_secs_f64();
                 let pts = p.points.to_f64();
-                let (one, two) = if d > 2 {
-                    projection_power(&[pts.clone()], n as usize, d)
-                } else {
-                    (projection_power(&[pts.clone()], n as usize, d).0, low_power(&pts, 2, &[0, 1], ((n as f64).sqrt() / 2.0) as usize))
-                };
+                // In 2D the "2D" column is the full space's low-frequency power.
+                let (one, mut two) = projection_power(std::slice::from_ref(&pts), n as usize, d);
+                if d == 2 {
+                    two = low_power(&pts, 2, &[0, 1], ((n as f64).sqrt() / 2.0) as usize);
+                }
                 println!(
                     "n {n} d {d} proj {proj} T {trials}: rho {:.3} candidates/N {:.1} time {secs:.3}s est {:.3}s  low power 1D {one:.3} 2D {two:.3}",
                     p.relative_radius,
@@ -152,11 +152,17 @@ fn sw2_plane(pts: &[f64], d: usize, a: usize, b: usize, dirs: usize) -> f64 {
     let m = ((n * c) as f64).sqrt() as usize;
     assert_eq!(m * m, n * c, "N must be a power of 4");
     let reference: Vec<f64> = (0..m * m)
-        .flat_map(|i| [((i % m) as f64 + 0.5) / m as f64, ((i / m) as f64 + 0.5) / m as f64])
+        .flat_map(|i| {
+            [
+                ((i % m) as f64 + 0.5) / m as f64,
+                ((i / m) as f64 + 0.5) / m as f64,
+            ]
+        })
         .collect();
     let mut total = 0.0;
     for j in 0..dirs {
-        let angle = std::f64::consts::PI * (j as f64 + 0.5 * std::f64::consts::SQRT_2) / dirs as f64;
+        let angle =
+            std::f64::consts::PI * (j as f64 + 0.5 * std::f64::consts::SQRT_2) / dirs as f64;
         let (s, co) = angle.sin_cos();
         let mut p: Vec<f64> = pts.chunks(d).map(|x| co * x[a] + s * x[b]).collect();
         let mut r: Vec<f64> = reference.chunks(2).map(|y| co * y[0] + s * y[1]).collect();
@@ -239,7 +245,11 @@ fn projective_blue_noise_keeps_its_radii() {
             assert_eq!(p.radius_2d.is_some(), proj >= 2 && d > 2);
             let (full, one, two) = min_distances(&pts, d);
             let tol = 1.0 - 1e-12;
-            assert!(full >= tol * p.radius, "n {n} d {d} proj {proj}: {full} < {}", p.radius);
+            assert!(
+                full >= tol * p.radius,
+                "n {n} d {d} proj {proj}: {full} < {}",
+                p.radius
+            );
             if let Some(r1) = p.radius_1d {
                 assert!(close(r1, rho * spacing(n as f64, 1)));
                 assert!(one >= tol * r1, "n {n} d {d} proj {proj}: 1D {one} < {r1}");
@@ -282,14 +292,23 @@ fn projective_blue_noise_projections_are_blue() {
         // 4 d (N/8) exponential values is within a few per cent of it).
         assert!((0.85..1.15).contains(&white.0), "white 1D {white:?}");
         // Dart throwing in the full space alone leaves the 1D projections white.
-        assert!(full_only.0 > 0.75 * white.0, "full-space only {full_only:?}");
+        assert!(
+            full_only.0 > 0.75 * white.0,
+            "full-space only {full_only:?}"
+        );
         // Projective: the 1D projections far below white noise; the 2D ones (d = 3;
         // in 2D the plane is the full space) well below.
-        assert!(projective.0 < 0.35 * white.0, "d {d}: 1D {projective:?} vs {white:?}");
+        assert!(
+            projective.0 < 0.35 * white.0,
+            "d {d}: 1D {projective:?} vs {white:?}"
+        );
         if d > 2 {
             assert!((0.8..1.2).contains(&white.1), "white 2D {white:?}");
             assert!(full_only.1 > 0.7 * white.1, "full-space only {full_only:?}");
-            assert!(projective.1 < 0.6 * white.1, "d {d}: 2D {projective:?} vs {white:?}");
+            assert!(
+                projective.1 < 0.6 * white.1,
+                "d {d}: 2D {projective:?} vs {white:?}"
+            );
         }
     }
 }
@@ -309,7 +328,9 @@ fn projective_blue_noise_refuses_bad_input() {
     assert!(p.weight(1.5).is_err());
     let tight = Budget::seconds(1e-6).unwrap();
     assert!(matches!(
-        ProjectiveBlueNoise::new(1 << 16, 4).unwrap().generate(&tight),
+        ProjectiveBlueNoise::new(1 << 16, 4)
+            .unwrap()
+            .generate(&tight),
         Err(qmckit::Error::OverBudget { .. })
     ));
 }
@@ -327,8 +348,14 @@ fn projective_sot_spreads_the_projections() {
             assert!(w[1].0 < w[0].0 && w[1].1 < w[0].1, "d {d}: {at:?}");
         }
         let last = at[2];
-        assert!(last.0 < 0.3 * plain.0, "d {d}: 1D {last:?} vs plain {plain:?}");
-        assert!(last.1 < 0.8 * plain.1, "d {d}: 2D {last:?} vs plain {plain:?}");
+        assert!(
+            last.0 < 0.3 * plain.0,
+            "d {d}: 1D {last:?} vs plain {plain:?}"
+        );
+        assert!(
+            last.1 < 0.8 * plain.1,
+            "d {d}: 2D {last:?} vs plain {plain:?}"
+        );
     }
     // In 1D there is no subspace: the option changes nothing.
     assert_eq!(sot(64, 1, 20, true, 1), sot(64, 1, 20, false, 1));
