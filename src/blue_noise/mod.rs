@@ -12,6 +12,8 @@
 //!   dimensions, on the torus.
 //! * [`Sot`] — sliced optimal transport sampling (Paulin et al. 2020) in the cube,
 //!   optionally projective (directions also drawn in the 1D and 2D axis subspaces).
+//! * [`ForcedRandom`] — forced random sampling (Cornel et al. 2017): a blue-noise rank
+//!   matrix thresholded against an importance density, 2D.
 //! * [`VoidAndCluster`] — Ulichney's void-and-cluster rank masks, toroidal, up to 2048².
 //! * [`mask64`] — a 64×64 void-and-cluster rank mask as a static table, in `no_std` too.
 //!
@@ -27,6 +29,8 @@ pub mod mask64;
 pub mod best_candidate;
 #[cfg(feature = "analysis")]
 mod bridson;
+#[cfg(feature = "analysis")]
+pub mod forced_random;
 #[cfg(feature = "analysis")]
 pub mod gaussian;
 #[cfg(feature = "analysis")]
@@ -58,6 +62,8 @@ pub mod void_and_cluster;
 
 #[cfg(feature = "analysis")]
 pub use best_candidate::BestCandidate;
+#[cfg(feature = "analysis")]
+pub use forced_random::ForcedRandom;
 #[cfg(feature = "analysis")]
 pub use gaussian::GaussianBlueNoise;
 #[cfg(feature = "analysis")]

@@ -11,6 +11,8 @@ mod conversions;
 #[cfg(feature = "analysis")]
 mod digital;
 mod fixed_warps;
+#[cfg(feature = "analysis")]
+mod forced_random;
 mod golden_discrepancy;
 mod golden_scipy;
 mod golden_sobol;
