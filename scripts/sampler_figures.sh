@@ -27,7 +27,8 @@ sets() {
 : >"$TMP/radial"
 : >"$TMP/pcf"
 for spec in "cmj cmj" "hex hex" "lloyd lloyd" "ccvt ccvt" "sot sot" \
-    "sot sot-projective --projective" "projective-blue-noise projective-blue-noise"; do
+    "sot sot-projective --projective" "projective-blue-noise projective-blue-noise" \
+    "forced-random forced-random"; do
     # shellcheck disable=SC2086
     set -- $spec
     name=$1

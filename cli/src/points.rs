@@ -55,8 +55,10 @@ not apply):
                        2D axis subspace: the projections are spread too)
   projective-blue-noise  dart throwing with radii in the full space and in every 1D and
                        2D axis projection, on the torus, -d 2 to 8: -n N
+  forced-random        forced random sampling, 2D, constant density: the N cells of
+                       lowest rank of a 128 x 128 void-and-cluster matrix: -n N
   --max-seconds S refuses, before starting, a set whose estimated time exceeds S
-  (also pmj02bn, lloyd, ccvt, sot, projective-blue-noise).
+  (also pmj02bn, lloyd, ccvt, sot, projective-blue-noise, forced-random).
 
 Other sets: cmj (Kensler's correlated multi-jitter, --total N, -d any, --seed);
 hex (hexagonal grid on the torus, 2D, --total N even; --scramble shift for a random
@@ -292,6 +294,7 @@ pub fn is_relaxed(sampler: SamplerName) -> bool {
             | SamplerKind::Ccvt
             | SamplerKind::Sot
             | SamplerKind::ProjectiveBlueNoise
+            | SamplerKind::ForcedRandom
     )
 }
 

@@ -51,6 +51,8 @@ pub enum SamplerKind {
     /// Projective blue noise (dart throwing in the full space and its projections), built
     /// whole.
     ProjectiveBlueNoise,
+    /// Forced random sampling (a blue-noise rank matrix thresholded), built whole.
+    ForcedRandom,
 }
 
 /// What a construction is, as far as randomizers care ([`super::applies`]).
@@ -70,7 +72,7 @@ pub enum Family {
     /// latin, pmj02, pmj02bn, cmj).
     Random,
     /// Blue-noise sets built whole (poisson, best-candidate, gaussian-blue-noise, lloyd,
-    /// ccvt, sot, projective-blue-noise).
+    /// ccvt, sot, projective-blue-noise, forced-random).
     BlueNoise,
 }
 
@@ -87,7 +89,7 @@ impl Family {
             }
             Family::BlueNoise => {
                 "blue-noise sets (poisson, best-candidate, gaussian-blue-noise, lloyd, ccvt, sot, \
-                 projective-blue-noise)"
+                 projective-blue-noise, forced-random)"
             }
         }
     }
@@ -133,7 +135,8 @@ impl SamplerKind {
             | SamplerKind::Lloyd
             | SamplerKind::Ccvt
             | SamplerKind::Sot
-            | SamplerKind::ProjectiveBlueNoise => Family::BlueNoise,
+            | SamplerKind::ProjectiveBlueNoise
+            | SamplerKind::ForcedRandom => Family::BlueNoise,
         }
     }
 
@@ -154,7 +157,8 @@ impl SamplerKind {
             | SamplerKind::Lloyd
             | SamplerKind::Ccvt
             | SamplerKind::Sot
-            | SamplerKind::ProjectiveBlueNoise => Size::Whole,
+            | SamplerKind::ProjectiveBlueNoise
+            | SamplerKind::ForcedRandom => Size::Whole,
             _ => Size::Sequence,
         }
     }
@@ -168,7 +172,7 @@ impl SamplerKind {
     }
 
     /// The only dimension count the construction has, if it has one (vdc 1; lp, pmj02,
-    /// pmj02bn, best-candidate, gaussian-blue-noise and hex 2).
+    /// pmj02bn, best-candidate, gaussian-blue-noise, forced-random and hex 2).
     pub const fn fixed_dims(self) -> Option<usize> {
         match self {
             SamplerKind::Vdc => Some(1),
@@ -177,6 +181,7 @@ impl SamplerKind {
             | SamplerKind::Pmj02bn
             | SamplerKind::BestCandidate
             | SamplerKind::GaussianBlueNoise
+            | SamplerKind::ForcedRandom
             | SamplerKind::Hex => Some(2),
             _ => None,
         }
@@ -664,5 +669,28 @@ pub static SAMPLERS: &[SamplerEntry] = &[
             ),
         ],
         item: "qmckit::blue_noise::ProjectiveBlueNoise",
+    },
+    Entry {
+        kind: SamplerKind::ForcedRandom,
+        name: "forced-random",
+        aliases: &[alias(
+            "forced-random-sampling",
+            "Cornel et al. 2017's title",
+        )],
+        summary: "forced random sampling, 2D, constant density: the N cells of lowest rank of a \
+                  128 x 128 void-and-cluster matrix, a uniform point in each, built whole",
+        math: "cell c taken iff M(c mod R) + 1/2 < t_c R^2, t_c = N f_c / sum f (Cornel et al. 2017); here f = 1",
+        params: &[
+            DIMS_2,
+            POINTS,
+            SEED,
+            param(
+                "budget",
+                "time budget of the construction",
+                "10 s",
+                "positive seconds",
+            ),
+        ],
+        item: "qmckit::blue_noise::ForcedRandom",
     },
 ];

@@ -140,7 +140,7 @@ mod built {
     /// The relaxed sets: lloyd, ccvt (on the torus if `opts.torus`) and sot
     /// (projective if `opts.projective`), `n` points of `dims`, their iterations from
     /// `opts` (else their defaults), within `budget`; and projective-blue-noise, `n`
-    /// points of `dims` within `budget`.
+    /// points of `dims` within `budget`; forced-random, `n` points of the constant density.
     pub(in crate::catalog) fn relaxed(
         kind: SamplerKind,
         opts: &BlueNoiseOptions,
@@ -149,9 +149,11 @@ mod built {
         seed: u64,
         budget: &Budget,
     ) -> Result<PointSet, CatalogError> {
-        use crate::blue_noise::{Lloyd, ProjectiveBlueNoise, Sot};
+        use crate::blue_noise::{ForcedRandom, Lloyd, ProjectiveBlueNoise, Sot};
         let budget = budget.started();
-        Ok(if kind == SamplerKind::ProjectiveBlueNoise {
+        Ok(if kind == SamplerKind::ForcedRandom {
+            ForcedRandom::new(n)?.seed(seed).generate(&budget)?
+        } else if kind == SamplerKind::ProjectiveBlueNoise {
             ProjectiveBlueNoise::new(n, dims)?
                 .seed(seed)
                 .generate(&budget)?

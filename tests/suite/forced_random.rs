@@ -10,6 +10,9 @@ use qmckit::blue_noise::ForcedRandom;
 use qmckit::work::Budget;
 use qmckit::{Independent, Sampler};
 
+/// An importance density on the unit square.
+type Density = dyn Fn([f64; 2]) -> f64;
+
 /// Mean periodogram over `1 <= |k| <= kmax`, averaged over the sets.
 fn low_power(sets: &[Vec<f64>], kmax: i64) -> f64 {
     let (mut sum, mut count) = (0.0, 0usize);
@@ -32,7 +35,7 @@ fn low_power(sets: &[Vec<f64>], kmax: i64) -> f64 {
 }
 
 /// The integral of `f` over `[x0, x1) x [y0, y1)` by the midpoint rule on 1000 x 1000.
-fn integral(f: &dyn Fn([f64; 2]) -> f64, x0: f64, x1: f64, y0: f64, y1: f64) -> f64 {
+fn integral(f: &Density, x0: f64, x1: f64, y0: f64, y1: f64) -> f64 {
     let m = 1000;
     let (hx, hy) = ((x1 - x0) / m as f64, (y1 - y0) / m as f64);
     let mut s = 0.0;
@@ -50,7 +53,7 @@ fn counts_follow_the_density() {
     let bump = |p: [f64; 2]| {
         1.0 + 8.0 * (-((p[0] - 0.3).powi(2) + (p[1] - 0.6).powi(2)) / (2.0 * 0.1 * 0.1)).exp()
     };
-    let densities: [(&dyn Fn([f64; 2]) -> f64, &str); 2] = [(&ramp, "ramp"), (&bump, "bump")];
+    let densities: [(&Density, &str); 2] = [(&ramp, "ramp"), (&bump, "bump")];
     let n = 4000usize;
     for (f, name) in densities {
         let whole = integral(f, 0.0, 1.0, 0.0, 1.0);
