@@ -29,6 +29,10 @@ pub struct BlueNoiseArgs {
     /// gaussian-blue-noise: gradient-descent iterations [default: 500].
     #[arg(long, value_name = "I")]
     pub iterations: Option<u32>,
+    /// sot: projective sampling, every other slicing direction in an axis-aligned 1D or
+    /// 2D subspace (the projections are spread too).
+    #[arg(long)]
+    pub projective: bool,
     /// The time budget of the blue-noise sets and of pmj02bn ('inf': no limit)
     /// [default: 10].
     #[arg(long, value_name = "SECONDS")]
@@ -56,6 +60,7 @@ impl BlueNoiseArgs {
             ("--maximal", self.maximal),
             ("--candidates", self.candidates.is_some()),
             ("--iterations", self.iterations.is_some()),
+            ("--projective", self.projective),
             ("--max-seconds", self.max_seconds.is_some() && !budgeted),
         ]
         .into_iter()
@@ -107,6 +112,9 @@ pub fn build(
                 "{name} is two-dimensional: -d must be 2"
             )));
         }
+    }
+    if args.projective {
+        return refuse("--projective");
     }
     if kind != Kind::Gaussian && args.iterations.is_some() {
         return refuse("--iterations");

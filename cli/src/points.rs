@@ -51,11 +51,16 @@ not apply):
   lloyd, ccvt          Lloyd relaxation / capacity-constrained Voronoi (dense sample of 64
                        points a site), any -d to 64: -n N, --iterations I, --torus
   sot                  sliced optimal transport in the cube, any -d to 64: -n N,
-                       --iterations I
+                       --iterations I, --projective (every other direction in a 1D or
+                       2D axis subspace: the projections are spread too)
+  projective-blue-noise  dart throwing with radii in the full space and in every 1D and
+                       2D axis projection, on the torus, -d 2 to 8: -n N
+  forced-random        forced random sampling, 2D, constant density: the N cells of
+                       lowest rank of a 128 x 128 void-and-cluster matrix: -n N
   bnot                 blue noise through optimal transport (equal-area power cells),
                        2D: -n N, --iterations I (default 50), --torus
   --max-seconds S refuses, before starting, a set whose estimated time exceeds S
-  (also pmj02bn, lloyd, ccvt, sot, bnot).
+  (also pmj02bn, lloyd, ccvt, sot, projective-blue-noise, forced-random, bnot).
 
 Other sets: cmj (Kensler's correlated multi-jitter, --total N, -d any, --seed);
 hex (hexagonal grid on the torus, 2D, --total N even; --scramble shift for a random
@@ -271,6 +276,7 @@ impl PointsArgs {
                     maximal: self.blue.maximal,
                     candidates: self.blue.candidates,
                     iterations: self.blue.iterations,
+                    projective: self.blue.projective,
                 }
             } else {
                 BlueNoiseOptions::default()
@@ -279,13 +285,19 @@ impl PointsArgs {
     }
 }
 
-/// `true` for the relaxed sets built whole through the catalog (lloyd, ccvt, sot, bnot),
-/// which take `--iterations`, `--max-seconds` and (lloyd, ccvt, bnot) `--torus`; the
-/// catalog refuses the other blue-noise options for them.
+/// `true` for the relaxed sets built whole through the catalog (lloyd, ccvt, sot,
+/// projective-blue-noise, forced-random, bnot), which take `--max-seconds` and (lloyd,
+/// ccvt, sot, bnot) `--iterations`, (lloyd, ccvt, bnot) `--torus`, (sot) `--projective`; the catalog refuses the
+/// other blue-noise options for them.
 pub fn is_relaxed(sampler: SamplerName) -> bool {
     matches!(
         sampler.kind,
-        SamplerKind::Lloyd | SamplerKind::Ccvt | SamplerKind::Sot | SamplerKind::Bnot
+        SamplerKind::Lloyd
+            | SamplerKind::Ccvt
+            | SamplerKind::Sot
+            | SamplerKind::ProjectiveBlueNoise
+            | SamplerKind::ForcedRandom
+            | SamplerKind::Bnot
     )
 }
 
@@ -488,6 +500,7 @@ pub fn run(args: &PointsArgs) -> Result<(), Failure> {
                 match option {
                     "--max-seconds" => whole,
                     "--iterations" | "--torus" => blue_noise_kind(e).is_some() || is_relaxed(e),
+                    "--projective" => e.kind == SamplerKind::Sot,
                     _ => blue_noise_kind(e).is_some(),
                 }
             })

@@ -52,6 +52,7 @@ def catalog_set(
     seed: int = 0,
     iterations: Optional[int] = None,
     torus: bool = False,
+    projective: bool = False,
 ) -> NativeSampler: ...
 def poisson_disk(
     d: int, radius: float, candidates: int = 30, seed: int = 0, surface: bool = False

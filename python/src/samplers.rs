@@ -474,11 +474,13 @@ pub fn pmj02bn(py: Python<'_>, n: usize, seed: u64) -> PyResult<NativeSampler> {
 
 /// The `n`-point set of any finite catalog sampler (`qmckit::catalog::SAMPLERS` of size
 /// `Set` or `Whole`: stratified, latin, hammersley, lp, cmj, hex, pmj02bn, the blue-noise
-/// sets, lloyd, ccvt, sot, bnot), by name or alias, unrandomized, in `d` dimensions (the
-/// construction's default when `None`), with the construction's `seed`, and for the
-/// relaxed sets their `iterations` and `torus`: the same bits as `qmckit points NAME -n N`.
+/// sets, lloyd, ccvt, sot, bnot, projective-blue-noise), by name or alias, unrandomized, in `d`
+/// dimensions (the construction's default when `None`), with the construction's `seed`,
+/// and for the relaxed sets their `iterations`, `torus` and (sot) `projective`: the same
+/// bits as `qmckit points NAME -n N`.
 #[pyfunction]
-#[pyo3(signature = (name, n, d=None, seed=0, iterations=None, torus=false))]
+#[pyo3(signature = (name, n, d=None, seed=0, iterations=None, torus=false, projective=false))]
+#[allow(clippy::too_many_arguments)] // the keyword arguments of the Python function
 pub fn catalog_set(
     py: Python<'_>,
     name: &str,
@@ -487,6 +489,7 @@ pub fn catalog_set(
     seed: u64,
     iterations: Option<u32>,
     torus: bool,
+    projective: bool,
 ) -> PyResult<NativeSampler> {
     use qmckit::catalog::{self, BlueNoiseOptions, Params, Size};
     let entry = catalog::sampler(name).map_err(|e| value_error(e.to_string()))?;
@@ -503,6 +506,7 @@ pub fn catalog_set(
         blue_noise: BlueNoiseOptions {
             iterations,
             torus,
+            projective,
             ..BlueNoiseOptions::default()
         },
         ..Params::default()

@@ -414,7 +414,8 @@ def test_catalog_set_gives_the_command_s_finite_sets():
 
     from qmckit import _qmckit as q
 
-    for name, d in [("cmj", 2), ("cmj", 3), ("hex", 2), ("lloyd", 2), ("ccvt", 3), ("sot", 2), ("bnot", 2)]:
+    for name, d in [("cmj", 2), ("cmj", 3), ("hex", 2), ("lloyd", 2), ("ccvt", 3), ("sot", 2), ("bnot", 2),
+                    ("projective-blue-noise", 3)]:
         s = q.catalog_set(name, 16, d=d, seed=3)
         assert (s.len, s.dims) == (16, d)
         out = np.empty((16, d), dtype=np.uint32)

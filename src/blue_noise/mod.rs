@@ -10,7 +10,13 @@
 //! * [`Bnot`] — blue noise through optimal transport (de Goes et al. 2012) in the square
 //!   or on the torus, 2D, on exact power diagrams ([`power`]) with equal capacities solved
 //!   by damped Newton ([`transport`]).
-//! * [`Sot`] — sliced optimal transport sampling (Paulin et al. 2020) in the cube.
+//! * [`ProjectiveBlueNoise`] — projective blue noise (Reinert et al. 2016): dart throwing
+//!   that keeps radii in the full space and in every 1D and 2D axis projection, 2 to 8
+//!   dimensions, on the torus.
+//! * [`Sot`] — sliced optimal transport sampling (Paulin et al. 2020) in the cube,
+//!   optionally projective (directions also drawn in the 1D and 2D axis subspaces).
+//! * [`ForcedRandom`] — forced random sampling (Cornel et al. 2017): a blue-noise rank
+//!   matrix thresholded against an importance density, 2D.
 //! * [`VoidAndCluster`] — Ulichney's void-and-cluster rank masks, toroidal, up to 2048².
 //! * [`mask64`] — a 64×64 void-and-cluster rank mask as a static table, in `no_std` too.
 //!
@@ -29,6 +35,8 @@ pub mod bnot;
 #[cfg(feature = "analysis")]
 mod bridson;
 #[cfg(feature = "analysis")]
+pub mod forced_random;
+#[cfg(feature = "analysis")]
 pub mod gaussian;
 #[cfg(feature = "analysis")]
 mod grid;
@@ -44,6 +52,7 @@ pub mod poisson;
 mod poisson_cost;
 #[cfg(feature = "analysis")]
 pub mod power;
+pub mod projective;
 #[cfg(feature = "analysis")]
 mod rng;
 #[cfg(feature = "analysis")]
@@ -63,6 +72,7 @@ pub mod void_and_cluster;
 pub use best_candidate::BestCandidate;
 #[cfg(feature = "analysis")]
 pub use bnot::{Bnot, BnotTrace};
+pub use forced_random::ForcedRandom;
 #[cfg(feature = "analysis")]
 pub use gaussian::GaussianBlueNoise;
 #[cfg(feature = "analysis")]
@@ -71,6 +81,8 @@ pub use lloyd::{Lloyd, LloydTrace};
 pub use point_set::PointSet;
 #[cfg(feature = "analysis")]
 pub use poisson::PoissonDisk;
+#[cfg(feature = "analysis")]
+pub use projective::{ProjectiveBlueNoise, ProjectiveSet};
 #[cfg(feature = "analysis")]
 pub use sot::Sot;
 #[cfg(feature = "analysis")]

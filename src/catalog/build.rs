@@ -379,14 +379,16 @@ fn construct(
             &p.budget,
         )?),
         #[cfg(feature = "analysis")]
-        S::Lloyd | S::Ccvt | S::Sot | S::Bnot => Box::new(super::whole::relaxed(
-            sampler.kind,
-            &p.blue_noise,
-            needed(sampler, p)?,
-            d,
-            seed,
-            &p.budget,
-        )?),
+        S::Lloyd | S::Ccvt | S::Sot | S::Bnot | S::ProjectiveBlueNoise | S::ForcedRandom => {
+            Box::new(super::whole::relaxed(
+                sampler.kind,
+                &p.blue_noise,
+                needed(sampler, p)?,
+                d,
+                seed,
+                &p.budget,
+            )?)
+        }
         #[cfg(not(feature = "analysis"))]
         S::Pmj02bn
         | S::Poisson
@@ -395,7 +397,9 @@ fn construct(
         | S::Lloyd
         | S::Ccvt
         | S::Sot
-        | S::Bnot => {
+        | S::Bnot
+        | S::ProjectiveBlueNoise
+        | S::ForcedRandom => {
             return Err(super::whole::unavailable(sampler.name));
         }
         S::Lattice | S::Kronecker | S::Faure | S::Hex => {

@@ -97,6 +97,8 @@ pub fn examples() -> Vec<(&'static SamplerEntry, Params)> {
         ("ccvt", Params::dims(3).with_points(16)),
         ("sot", p().with_points(20)),
         ("bnot", p().with_points(24)),
+        ("projective-blue-noise", Params::dims(3).with_points(32)),
+        ("forced-random", p().with_points(100)),
     ]);
     v.into_iter()
         .filter_map(|(name, params)| {

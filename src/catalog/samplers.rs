@@ -50,6 +50,11 @@ pub enum SamplerKind {
     Sot,
     /// Blue noise through optimal transport (BNOT), built whole.
     Bnot,
+    /// Projective blue noise (dart throwing in the full space and its projections), built
+    /// whole.
+    ProjectiveBlueNoise,
+    /// Forced random sampling (a blue-noise rank matrix thresholded), built whole.
+    ForcedRandom,
 }
 
 /// What a construction is, as far as randomizers care ([`super::applies`]).
@@ -69,7 +74,7 @@ pub enum Family {
     /// latin, pmj02, pmj02bn, cmj).
     Random,
     /// Blue-noise sets built whole (poisson, best-candidate, gaussian-blue-noise, lloyd,
-    /// ccvt, sot, bnot).
+    /// ccvt, sot, projective-blue-noise, forced-random, bnot).
     BlueNoise,
 }
 
@@ -85,7 +90,8 @@ impl Family {
                 "random constructions (independent, stratified, latin, pmj02, pmj02bn, cmj)"
             }
             Family::BlueNoise => {
-                "blue-noise sets (poisson, best-candidate, gaussian-blue-noise, lloyd, ccvt, sot, bnot)"
+                "blue-noise sets (poisson, best-candidate, gaussian-blue-noise, lloyd, ccvt, sot, \
+                 projective-blue-noise, forced-random, bnot)"
             }
         }
     }
@@ -131,7 +137,9 @@ impl SamplerKind {
             | SamplerKind::Lloyd
             | SamplerKind::Ccvt
             | SamplerKind::Sot
-            | SamplerKind::Bnot => Family::BlueNoise,
+            | SamplerKind::Bnot
+            | SamplerKind::ProjectiveBlueNoise
+            | SamplerKind::ForcedRandom => Family::BlueNoise,
         }
     }
 
@@ -152,7 +160,9 @@ impl SamplerKind {
             | SamplerKind::Lloyd
             | SamplerKind::Ccvt
             | SamplerKind::Sot
-            | SamplerKind::Bnot => Size::Whole,
+            | SamplerKind::Bnot
+            | SamplerKind::ProjectiveBlueNoise
+            | SamplerKind::ForcedRandom => Size::Whole,
             _ => Size::Sequence,
         }
     }
@@ -166,7 +176,7 @@ impl SamplerKind {
     }
 
     /// The only dimension count the construction has, if it has one (vdc 1; lp, pmj02,
-    /// pmj02bn, best-candidate, gaussian-blue-noise, hex and bnot 2).
+    /// pmj02bn, best-candidate, gaussian-blue-noise, forced-random, bnot and hex 2).
     pub const fn fixed_dims(self) -> Option<usize> {
         match self {
             SamplerKind::Vdc => Some(1),
@@ -175,8 +185,9 @@ impl SamplerKind {
             | SamplerKind::Pmj02bn
             | SamplerKind::BestCandidate
             | SamplerKind::GaussianBlueNoise
-            | SamplerKind::Hex
-            | SamplerKind::Bnot => Some(2),
+            | SamplerKind::ForcedRandom
+            | SamplerKind::Bnot
+            | SamplerKind::Hex => Some(2),
             _ => None,
         }
     }
@@ -612,7 +623,8 @@ pub static SAMPLERS: &[SamplerEntry] = &[
             "sliced-optimal-transport",
             "Paulin et al. 2020's title",
         )],
-        summary: "sliced optimal transport sampling in the cube, any dimension to 64, built whole",
+        summary: "sliced optimal transport sampling in the cube, any dimension to 64, built whole; \
+                  projective: half the directions in the 1D and 2D axis subspaces",
         math: "x_i += mean over L directions of (t_rank(i) - <theta, x_i>) theta, t the projected cube's quantile blocks (Paulin et al. 2020)",
         params: &[
             param("dims", "coordinates of each point", "2", "1 to 64"),
@@ -625,6 +637,12 @@ pub static SAMPLERS: &[SamplerEntry] = &[
                 "0 to 10^5",
             ),
             param(
+                "projective",
+                "every other direction in an axis-aligned 1D or 2D subspace, so the projections are spread too",
+                "false",
+                "bool",
+            ),
+            param(
                 "budget",
                 "time budget of the construction",
                 "10 s",
@@ -632,6 +650,53 @@ pub static SAMPLERS: &[SamplerEntry] = &[
             ),
         ],
         item: "qmckit::blue_noise::Sot",
+    },
+    Entry {
+        kind: SamplerKind::ProjectiveBlueNoise,
+        name: "projective-blue-noise",
+        aliases: &[alias(
+            "projective",
+            "Reinert, Ritschel, Seidel & Georgiev 2016's title",
+        )],
+        summary: "projective blue noise on the torus, 2 to 8 dimensions: dart throwing with radii in the \
+                  full space and in every 1D and 2D axis projection, built whole",
+        math: "accept x if |x - y| >= r_d, |x_k - y_k| >= r_1, |(x_k, x_l) - (y_k, y_l)| >= r_2 for all y; \
+               r_m = rho r_max(N, m), rho shrunk by 0.99 after 1000 rejections (Reinert et al. 2016)",
+        params: &[
+            param("dims", "coordinates of each point", "2", "2 to 8"),
+            POINTS,
+            SEED,
+            param(
+                "budget",
+                "time budget of the construction",
+                "10 s",
+                "positive seconds",
+            ),
+        ],
+        item: "qmckit::blue_noise::ProjectiveBlueNoise",
+    },
+    Entry {
+        kind: SamplerKind::ForcedRandom,
+        name: "forced-random",
+        aliases: &[alias(
+            "forced-random-sampling",
+            "Cornel et al. 2017's title",
+        )],
+        summary: "forced random sampling, 2D, constant density: the N cells of lowest rank of a \
+                  128 x 128 void-and-cluster matrix, a uniform point in each, built whole",
+        math: "cell c taken iff M(c mod R) + 1/2 < t_c R^2, t_c = N f_c / sum f (Cornel et al. 2017); here f = 1",
+        params: &[
+            DIMS_2,
+            POINTS,
+            SEED,
+            param(
+                "budget",
+                "time budget of the construction",
+                "10 s",
+                "positive seconds",
+            ),
+        ],
+        item: "qmckit::blue_noise::ForcedRandom",
     },
     Entry {
         kind: SamplerKind::Bnot,

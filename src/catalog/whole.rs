@@ -19,6 +19,8 @@ pub struct BlueNoiseOptions {
     /// gaussian-blue-noise: gradient-descent iterations (default 500); lloyd, ccvt
     /// (default 30), sot (default 100), bnot (default 50): their iterations.
     pub iterations: Option<u32>,
+    /// sot: projective sampling (half the directions in the 1D and 2D axis subspaces).
+    pub projective: bool,
 }
 
 impl BlueNoiseOptions {
@@ -49,6 +51,11 @@ impl BlueNoiseOptions {
                         S::GaussianBlueNoise | S::Lloyd | S::Ccvt | S::Sot | S::Bnot
                     ),
                 "only gaussian-blue-noise, lloyd, ccvt, sot and bnot take it",
+            ),
+            (
+                "projective",
+                self.projective && kind != S::Sot,
+                "only sot takes it; projective-blue-noise is always projective",
             ),
         ]
         .into_iter()
@@ -133,9 +140,10 @@ mod built {
         })
     }
 
-    /// The relaxed sets: lloyd, ccvt, bnot (on the torus if `opts.torus`) and sot, `n`
-    /// points of `dims` (bnot: 2), their iterations from `opts` (else their defaults),
-    /// within `budget`.
+    /// The relaxed sets: lloyd, ccvt, bnot (2D; on the torus if `opts.torus`) and sot
+    /// (projective if `opts.projective`), `n` points of `dims`, their iterations from
+    /// `opts` (else their defaults), within `budget`; and projective-blue-noise, `n`
+    /// points of `dims` within `budget`; forced-random, `n` points of the constant density.
     pub(in crate::catalog) fn relaxed(
         kind: SamplerKind,
         opts: &BlueNoiseOptions,
@@ -144,9 +152,11 @@ mod built {
         seed: u64,
         budget: &Budget,
     ) -> Result<PointSet, CatalogError> {
-        use crate::blue_noise::{Bnot, Lloyd, Sot};
+        use crate::blue_noise::{Bnot, ForcedRandom, Lloyd, ProjectiveBlueNoise, Sot};
         let budget = budget.started();
-        Ok(if kind == SamplerKind::Bnot {
+        Ok(if kind == SamplerKind::ForcedRandom {
+            ForcedRandom::new(n)?.seed(seed).generate(&budget)?
+        } else if kind == SamplerKind::Bnot {
             if dims != 2 {
                 return Err(crate::Error::DimensionOutOfRange { dim: dims, dims: 2 }.into());
             }
@@ -155,8 +165,12 @@ mod built {
                 b = b.iterations(i)?;
             }
             b.generate(&budget)?
+        } else if kind == SamplerKind::ProjectiveBlueNoise {
+            ProjectiveBlueNoise::new(n, dims)?
+                .seed(seed)
+                .generate(&budget)?
         } else if kind == SamplerKind::Sot {
-            let mut s = Sot::new(n, dims)?.seed(seed);
+            let mut s = Sot::new(n, dims)?.seed(seed).projective(opts.projective);
             if let Some(i) = opts.iterations {
                 s = s.iterations(i)?;
             }

@@ -13,6 +13,8 @@ mod conversions;
 #[cfg(feature = "analysis")]
 mod digital;
 mod fixed_warps;
+#[cfg(feature = "analysis")]
+mod forced_random;
 mod golden_discrepancy;
 mod golden_scipy;
 mod golden_sobol;
@@ -26,6 +28,8 @@ mod pcf;
 mod peers;
 mod pixel;
 mod pmj;
+#[cfg(feature = "analysis")]
+mod projective;
 mod randomize;
 #[cfg(feature = "analysis")]
 mod relaxation;

@@ -1,0 +1,218 @@
+//! Forced random sampling (Cornel, Tobler, Sakai, Luksch & Wimmer, "Forced Random
+//! Sampling: fast generation of importance-guided blue-noise samples", The Visual Computer
+//! 33, 2017): about `N` points of the unit square distributed by an importance density
+//! `f`, by thresholding a precomputed blue-noise rank matrix against `f`.
+//!
+//! ## The method
+//!
+//! A forcing matrix `M` is an `R x R` toroidal image holding a permutation of
+//! `0..R^2` such that every threshold `{c : M(c) < t R^2}` is a blue-noise pattern. The
+//! paper builds it by placing matrix cells one after another where a repulsive force
+//! field of the cells placed so far is lowest; here the matrix is Ulichney's
+//! void-and-cluster rank mask ([`super::VoidAndCluster`], Gaussian `sigma = 1.5` cells),
+//! which has the same role and property (every threshold blue), built from the seed.
+//!
+//! The square is cut into a `G x G` grid of cells, `G = k R`, the matrix tiled `k x k`
+//! times over it. With `f_c` the density at the centre of cell `c` and
+//! `t_c = N f_c / sum_c' f_c'` (the expected number of points of the cell; `sum_c t_c =
+//! N`), cell `c` is taken when `M(c mod R) + 1/2 < t_c R^2`, and its point is drawn
+//! uniformly in the cell. In a region where `f` is constant a fraction `t` of the matrix
+//! cells pass, spread as the matrix's threshold `t` is: the counts follow `N` times the
+//! integral of `f` over the region (up to the midpoint rule on the grid and one cell's
+//! rounding a tile), and the pattern is blue noise (tests). `k` is the smallest power of
+//! two with every `t_c <= 1/4` (at most 64); a density too peaked for that (`t_c > 1`
+//! even at `k = 64`) is refused, not clamped. With constant `f` and `N <= R^2 / 4` the
+//! grid is the matrix itself and the set holds exactly `N` points (`ceil`: the cells of
+//! rank below `N`).
+//!
+//! ## Range and cost
+//!
+//! `N` from 1 to 2^22, `R` from 16 to 1024 (default 128). The matrix costs what
+//! [`super::VoidAndCluster::cost`] says (128 x 128: about 0.1 s); the sampling evaluates `f`
+//! at the `G^2 <= 2^26` cell centres (one pass, one more per doubling of `k`) and is
+//! linear in them; estimated with the matrix against a [`Budget`], stopped at its
+//! deadline. Memory `G^2` values.
+//!
+//! ```
+//! use qmckit::blue_noise::ForcedRandom;
+//! use qmckit::work::Budget;
+//! let set = ForcedRandom::new(500)?.seed(2).generate(&Budget::DEFAULT)?;
+//! assert_eq!(set.count(), 500);
+//! // Four times the density on the right half: about 4/5 of the points there.
+//! let f = |p: [f64; 2]| if p[0] < 0.5 { 1.0 } else { 4.0 };
+//! let set = ForcedRandom::new(1000)?.sample(&f, &Budget::DEFAULT)?;
+//! let right = set.to_f64().chunks(2).filter(|p| p[0] >= 0.5).count();
+//! assert!((780..=820).contains(&right));
+//! # Ok::<(), qmckit::Error>(())
+//! ```
+
+use super::rng::Rng;
+use super::{PointSet, VoidAndCluster};
+use crate::work::{Budget, Cost, Rate};
+use crate::{Error, Result};
+
+/// The most points [`ForcedRandom`] takes: 2^22.
+pub const FORCED_MAX_POINTS: u64 = 1 << 22;
+
+/// The most grid cells: 2^26.
+const MAX_CELLS: usize = 1 << 26;
+
+/// Grid cells a second (a density evaluation and a comparison; the density's own cost
+/// unknown, taken slow).
+const CELLS: Rate = Rate::per_second(5e7);
+
+/// Forced random sampling (builder); see the module text.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ForcedRandom {
+    n: u64,
+    side: usize,
+    seed: u64,
+    matrix: VoidAndCluster,
+}
+
+impl ForcedRandom {
+    /// About `n` points (1 to [`FORCED_MAX_POINTS`]), a 128 x 128 matrix, seed 0.
+    ///
+    /// # Errors
+    /// [`Error::ZeroPoints`], [`Error::TooManyPoints`].
+    pub fn new(n: u64) -> Result<Self> {
+        if n == 0 {
+            return Err(Error::ZeroPoints);
+        }
+        if n > FORCED_MAX_POINTS {
+            return Err(Error::TooManyPoints {
+                requested: n,
+                max: FORCED_MAX_POINTS,
+            });
+        }
+        Ok(ForcedRandom {
+            n,
+            side: 128,
+            seed: 0,
+            matrix: VoidAndCluster::new(128, 128)?,
+        })
+    }
+
+    /// The matrix side `R` (16 to 1024).
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] outside that range.
+    pub fn matrix_side(mut self, side: usize) -> Result<Self> {
+        if !(16..=1024).contains(&side) {
+            return Err(Error::InvalidParameter {
+                what: "the forcing matrix side must be 16 to 1024 cells",
+            });
+        }
+        self.side = side;
+        self.matrix = VoidAndCluster::new(side, side)?;
+        Ok(self)
+    }
+
+    /// The seed (the matrix and the positions within cells).
+    pub fn seed(mut self, seed: u64) -> Self {
+        self.seed = seed;
+        self
+    }
+
+    /// The estimated running time: the matrix, and `G^2` cells with `G^2` about
+    /// `max(R^2, 4 N)` (for a constant density; a peaked one refines further).
+    pub fn cost(&self) -> Cost {
+        let r2 = (self.side * self.side) as f64;
+        let cells = r2.max(4.0 * self.n as f64);
+        self.matrix.cost().plus(Cost::steps(2.0 * cells, CELLS))
+    }
+
+    /// About `n` points of the uniform density.
+    ///
+    /// # Errors
+    /// As [`ForcedRandom::sample`].
+    pub fn generate(&self, budget: &Budget) -> Result<PointSet> {
+        self.sample(&|_| 1.0, budget)
+    }
+
+    /// About `n` points following `density` (finite, non-negative, not zero everywhere on
+    /// the cell centres; any scale: it is normalized).
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] for a negative or non-finite density value, a density
+    /// zero at every cell centre, or one too peaked for the finest grid; [`Error::ZeroPoints`]
+    /// when no cell passes; [`Error::OverBudget`], [`Error::TooLarge`],
+    /// [`Error::OutOfTime`].
+    pub fn sample(&self, density: &dyn Fn([f64; 2]) -> f64, budget: &Budget) -> Result<PointSet> {
+        const WHAT: &str = "forced random sampling";
+        let budget = budget.started();
+        budget.check(WHAT, self.cost())?;
+        let r = self.side;
+        let mask = self.matrix.seed(self.seed).generate(&budget)?;
+        let ranks = mask.ranks();
+        let n = self.n as f64;
+        let mut pacer = budget.pacer(WHAT);
+        // The grid: the smallest power-of-two number of tiles with every t_c <= 1/4.
+        let mut k = 1usize;
+        let (f, total) = loop {
+            let g = k * r;
+            let cells = g * g;
+            if cells > MAX_CELLS {
+                return Err(Error::InvalidParameter {
+                    what: "the density is too peaked for the forced random grid (2^26 cells)",
+                });
+            }
+            let mut f = crate::size::vec_zeroed::<f64>(cells)?;
+            let mut total = 0.0;
+            for (c, v) in f.iter_mut().enumerate() {
+                pacer.tick()?;
+                let p = [
+                    ((c % g) as f64 + 0.5) / g as f64,
+                    ((c / g) as f64 + 0.5) / g as f64,
+                ];
+                let x = density(p);
+                if !(x.is_finite() && x >= 0.0) {
+                    return Err(Error::InvalidParameter {
+                        what: "a density must be finite and non-negative",
+                    });
+                }
+                *v = x;
+                total += x;
+            }
+            if !(total > 0.0 && total.is_finite()) {
+                return Err(Error::InvalidParameter {
+                    what: "the density is zero at every cell centre (or its sum overflows)",
+                });
+            }
+            let peak = f.iter().fold(0.0f64, |a, &b| a.max(b)) * n / total;
+            if peak <= 0.25 {
+                break (f, total);
+            }
+            if k >= 64 {
+                if peak <= 1.0 {
+                    break (f, total);
+                }
+                return Err(Error::InvalidParameter {
+                    what: "the density is too peaked for the forced random grid (64 tiles a side)",
+                });
+            }
+            k *= 2;
+        };
+        let g = k * r;
+        let scale = n * (r * r) as f64 / total;
+        let mut rng = Rng::new(self.seed, 0x464F_5243_4544_524E); // "FORCEDRN"
+        let mut coords = Vec::new();
+        let cell = 1.0 / g as f64;
+        for (c, &v) in f.iter().enumerate() {
+            pacer.tick()?;
+            let (i, j) = (c % g, c / g);
+            let rank = ranks.get((j % r) * r + i % r).copied().unwrap_or(u32::MAX);
+            if f64::from(rank) + 0.5 < v * scale {
+                crate::size::reserve(&mut coords, 2)?;
+                for (at, u) in [(i, rng.unit()), (j, rng.unit())] {
+                    let x = (at as f64 + u) * cell;
+                    coords.push(super::lloyd::to_fraction(x.min(1.0)));
+                }
+            }
+        }
+        if coords.is_empty() {
+            return Err(Error::ZeroPoints);
+        }
+        PointSet::new(coords, 2)
+    }
+}
