@@ -8,6 +8,8 @@
 //! * [`Lloyd`] — Lloyd relaxation and capacity-constrained Voronoi tessellations (CCVT,
 //!   Balzer, Schlömer & Deussen 2009) in any dimension, in the cube or on the torus.
 //! * [`Sot`] — sliced optimal transport sampling (Paulin et al. 2020) in the cube.
+//! * [`Ldbn`] — low-discrepancy blue noise (after Ahmed et al. 2016): an Owen-scrambled
+//!   Sobol' (0, m, 2)-net rearranged by an optimized per-tile look-up table, still a net.
 //! * [`VoidAndCluster`] — Ulichney's void-and-cluster rank masks, toroidal, up to 2048².
 //! * [`mask64`] — a 64×64 void-and-cluster rank mask as a static table, in `no_std` too.
 //!
@@ -29,6 +31,8 @@ pub mod gaussian;
 mod grid;
 #[cfg(feature = "analysis")]
 mod kdtree;
+#[cfg(feature = "analysis")]
+pub mod ldbn;
 #[cfg(feature = "analysis")]
 pub mod lloyd;
 #[cfg(feature = "analysis")]
@@ -54,6 +58,8 @@ pub mod void_and_cluster;
 pub use best_candidate::BestCandidate;
 #[cfg(feature = "analysis")]
 pub use gaussian::GaussianBlueNoise;
+#[cfg(feature = "analysis")]
+pub use ldbn::Ldbn;
 #[cfg(feature = "analysis")]
 pub use lloyd::{Lloyd, LloydTrace};
 #[cfg(feature = "analysis")]

@@ -85,6 +85,7 @@ pub fn examples() -> Vec<(&'static SamplerEntry, Params)> {
         ("pmj02", p()),
         ("cmj", Params::dims(3).with_points(64)),
         ("cmj", p().with_points(10)),
+        ("cascaded-sobol", Params::dims(4).with_points(64)),
         ("hex", p().with_points(56)),
     ];
     #[cfg(feature = "analysis")]
@@ -96,6 +97,7 @@ pub fn examples() -> Vec<(&'static SamplerEntry, Params)> {
         ("lloyd", p().with_points(24)),
         ("ccvt", Params::dims(3).with_points(16)),
         ("sot", p().with_points(20)),
+        ("ldbn", p().with_points(256)),
     ]);
     v.into_iter()
         .filter_map(|(name, params)| {

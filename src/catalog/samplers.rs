@@ -48,6 +48,10 @@ pub enum SamplerKind {
     Ccvt,
     /// Sliced optimal transport sampling, built whole.
     Sot,
+    /// Cascaded Sobol': consecutive pairs of dimensions are (0, m, 2)-nets.
+    CascadedSobol,
+    /// Low-discrepancy blue noise: a Sobol' net rearranged by a look-up table, built whole.
+    Ldbn,
 }
 
 /// What a construction is, as far as randomizers care ([`super::applies`]).
@@ -64,10 +68,10 @@ pub enum Family {
     /// Lattice rules and Kronecker sequences: random shifts modulo 1.
     Lattice,
     /// Random constructions whose randomness is their own (independent, stratified,
-    /// latin, pmj02, pmj02bn, cmj).
+    /// latin, pmj02, pmj02bn, cmj, cascaded-sobol).
     Random,
     /// Blue-noise sets built whole (poisson, best-candidate, gaussian-blue-noise, lloyd,
-    /// ccvt, sot).
+    /// ccvt, sot, ldbn).
     BlueNoise,
 }
 
@@ -80,10 +84,10 @@ impl Family {
             Family::BaseBNet => "base-b digital nets (faure)",
             Family::Lattice => "lattices (lattice, kronecker, hex)",
             Family::Random => {
-                "random constructions (independent, stratified, latin, pmj02, pmj02bn, cmj)"
+                "random constructions (independent, stratified, latin, pmj02, pmj02bn, cmj, cascaded-sobol)"
             }
             Family::BlueNoise => {
-                "blue-noise sets (poisson, best-candidate, gaussian-blue-noise, lloyd, ccvt, sot)"
+                "blue-noise sets (poisson, best-candidate, gaussian-blue-noise, lloyd, ccvt, sot, ldbn)"
             }
         }
     }
@@ -122,13 +126,15 @@ impl SamplerKind {
             | SamplerKind::Latin
             | SamplerKind::Pmj02
             | SamplerKind::Pmj02bn
-            | SamplerKind::Cmj => Family::Random,
+            | SamplerKind::Cmj
+            | SamplerKind::CascadedSobol => Family::Random,
             SamplerKind::Poisson
             | SamplerKind::BestCandidate
             | SamplerKind::GaussianBlueNoise
             | SamplerKind::Lloyd
             | SamplerKind::Ccvt
-            | SamplerKind::Sot => Family::BlueNoise,
+            | SamplerKind::Sot
+            | SamplerKind::Ldbn => Family::BlueNoise,
         }
     }
 
@@ -140,6 +146,7 @@ impl SamplerKind {
             | SamplerKind::Hammersley
             | SamplerKind::Lp
             | SamplerKind::Cmj
+            | SamplerKind::CascadedSobol
             | SamplerKind::Hex => Size::Set,
             SamplerKind::Lattice => Size::Rule,
             SamplerKind::Pmj02bn
@@ -148,7 +155,8 @@ impl SamplerKind {
             | SamplerKind::GaussianBlueNoise
             | SamplerKind::Lloyd
             | SamplerKind::Ccvt
-            | SamplerKind::Sot => Size::Whole,
+            | SamplerKind::Sot
+            | SamplerKind::Ldbn => Size::Whole,
             _ => Size::Sequence,
         }
     }
@@ -162,7 +170,7 @@ impl SamplerKind {
     }
 
     /// The only dimension count the construction has, if it has one (vdc 1; lp, pmj02,
-    /// pmj02bn, best-candidate, gaussian-blue-noise and hex 2).
+    /// pmj02bn, best-candidate, gaussian-blue-noise, hex and ldbn 2).
     pub const fn fixed_dims(self) -> Option<usize> {
         match self {
             SamplerKind::Vdc => Some(1),
@@ -171,7 +179,8 @@ impl SamplerKind {
             | SamplerKind::Pmj02bn
             | SamplerKind::BestCandidate
             | SamplerKind::GaussianBlueNoise
-            | SamplerKind::Hex => Some(2),
+            | SamplerKind::Hex
+            | SamplerKind::Ldbn => Some(2),
             _ => None,
         }
     }
@@ -532,6 +541,25 @@ pub static SAMPLERS: &[SamplerEntry] = &[
         item: "qmckit::random::cmj::CorrelatedMultiJitter",
     },
     Entry {
+        kind: SamplerKind::CascadedSobol,
+        name: "cascaded-sobol",
+        aliases: &[alias("cascaded", "Paulin et al. 2021's title, short")],
+        summary: "cascaded Sobol': every consecutive pair of dimensions a (0, m, 2)-net, every \
+                  dimension stratified, N a power of two, Owen-scrambled from the seed",
+        math: "x_0 = O_0(phi_2(i)), x_(j+1) = O_(j+1)(P rev_m(x_j)), P Sobol's Pascal matrix, O_j nested uniform scrambles (Paulin et al. 2021)",
+        params: &[
+            param("dims", "coordinates of each point", "2", "1 to 65536"),
+            param(
+                "points",
+                "the size N = 2^m of the set",
+                "none: needed",
+                "a power of two <= 2^32",
+            ),
+            SEED,
+        ],
+        item: "qmckit::digital::cascaded::CascadedSobol",
+    },
+    Entry {
         kind: SamplerKind::Hex,
         name: "hex",
         aliases: &[
@@ -627,5 +655,33 @@ pub static SAMPLERS: &[SamplerEntry] = &[
             ),
         ],
         item: "qmckit::blue_noise::Sot",
+    },
+    Entry {
+        kind: SamplerKind::Ldbn,
+        name: "ldbn",
+        aliases: &[alias(
+            "low-discrepancy-blue-noise",
+            "Ahmed et al. 2016's title",
+        )],
+        summary: "low-discrepancy blue noise: an Owen-scrambled Sobol' (0, m, 2)-net, N = 4^k, its \
+                  in-cell offsets exchanged within 2 x 2 tiles by an optimized look-up table; still a net",
+        math: "offsets of the cells of a tile's columns (u) and rows (v) exchanged as LDBN_TABLE[configuration] says (after Ahmed et al. 2016)",
+        params: &[
+            DIMS_2,
+            param(
+                "points",
+                "the size N = 4^k of the set",
+                "none: needed",
+                "a power of four, 4 to 2^26",
+            ),
+            SEED,
+            param(
+                "budget",
+                "time budget of the construction",
+                "10 s",
+                "positive seconds",
+            ),
+        ],
+        item: "qmckit::blue_noise::Ldbn",
     },
 ];

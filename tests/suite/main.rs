@@ -5,6 +5,8 @@
 mod common;
 
 mod blue_noise;
+#[cfg(feature = "analysis")]
+mod cascaded;
 mod catalog;
 mod cmj;
 mod conversions;
@@ -18,6 +20,8 @@ mod integrands;
 #[cfg(feature = "analysis")]
 mod integrate;
 mod lattice;
+#[cfg(feature = "analysis")]
+mod ldbn;
 mod mask;
 mod nets;
 mod pcf;
