@@ -546,7 +546,7 @@ pub static SAMPLERS: &[SamplerEntry] = &[
         aliases: &[alias("cascaded", "Paulin et al. 2021's title, short")],
         summary: "cascaded Sobol': every consecutive pair of dimensions a (0, m, 2)-net, every \
                   dimension stratified, N a power of two, Owen-scrambled from the seed",
-        math: "x_0 = O_0(phi_2(i)), x_(j+1) = O_(j+1)(P rev_m(x_j)), P Sobol's Pascal matrix, O_j nested uniform scrambles (Paulin et al. 2021)",
+        math: "x_0 = O_0(phi_2(i)), x_(j+1) = O_(j+1)(P rev_m(Q_j(x_j))), P Sobol's Pascal matrix, O_j, Q_j nested uniform scrambles (Paulin et al. 2021)",
         params: &[
             param("dims", "coordinates of each point", "2", "1 to 65536"),
             param(

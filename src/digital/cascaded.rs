@@ -8,37 +8,43 @@
 //! The 2D Sobol' sequence `(phi_2(k), P k)` (van der Corput and Sobol's second dimension,
 //! `P` the upper-triangular Pascal matrix mod 2, `P[r][c] = C(c, r) mod 2`) is a
 //! `(0, 2)`-sequence: its first `2^m` points are a `(0, m, 2)`-net. Its first coordinate
-//! `phi_2(k)` has the top `m` digits of `x` exactly when `k = rev_m(x)`, the top `m` binary
-//! digits of `x` read backwards as an integer. The cascade chains one such net per pair of
-//! dimensions, each coordinate scrambled by its own nested uniform (Owen) scramble `O_j`:
+//! `phi_2(k)` has the top `m` digits of `w` exactly when `k = rev_m(w)`, the top `m` binary
+//! digits of `w` read backwards as an integer. The cascade chains one such net per pair of
+//! dimensions; each output coordinate is scrambled by its own nested uniform (Owen)
+//! scramble `O_j`, and each link reads its index through a second independent one, `Q_j`:
 //!
 //! ```text
 //! x_0(i)     = O_0(phi_2(i)),                          i < N,
-//! x_(j+1)(i) = O_(j+1)(P rev_m(x_j(i))),               j = 0 .. d - 2.
+//! x_(j+1)(i) = O_(j+1)(P rev_m(Q_j(x_j(i)))),          j = 0 .. d - 2.
 //! ```
 //!
 //! **Why every consecutive pair is a net.** By induction `x_j` is stratified (true for
 //! `x_0`; `P` is a bijection of the `m`-bit integers, and an Owen scramble permutes the
-//! intervals of width `2^-m`), so `k = rev_m(x_j(i))` runs over all of `0 .. N - 1` as `i`
-//! does. The top `m` digits of `x_j(i)` are those of `phi_2(k)`, and the top `b` digits of
-//! `x_(j+1)(i)` are a bijective image (the scramble's, nested) of the top `b` digits of
-//! `P k`. Every elementary interval `2^-a x 2^-b`, `a + b = m`, therefore holds as many
-//! points as an interval of the Sobol' net `{(phi_2(k), P k)}` of the same shape: one.
+//! intervals of width `2^-m`), so `k = rev_m(Q_j(x_j(i)))` runs over all of `0 .. N - 1` as
+//! `i` does. The top `a` digits of `x_j(i)` are a bijective image (nested: `Q_j^-1`'s) of the
+//! top `a` digits of `phi_2(k)`, and the top `b` digits of `x_(j+1)(i)` of those of `P k`
+//! (`O_(j+1)`'s). Every elementary interval `2^-a x 2^-b`, `a + b = m`, therefore holds as
+//! many points as an interval of the Sobol' net `{(phi_2(k), P k)}`: one. As a set, the pair
+//! is that net with both coordinates Owen-scrambled (`Q_j^-1` on the first, `O_(j+1)` on
+//! the second); without `Q_j` the first coordinate's scramble would only relabel the
+//! points and the pair would be the net scrambled in its second coordinate alone, which
+//! keeps Sobol's visible structure.
 //!
 //! **Why the scrambles are needed.** Without them the cascade is linear, `x_j = P^j i`
 //! (digits), and `P^2 = I` over GF(2) (`sum_k C(k, r) C(c, k) = 2^(c-r) C(c, r)`), so
 //! `x_2 = x_0`: the unscrambled cascade repeats itself every two dimensions. Independent
 //! scrambles per dimension, as in the paper, break that while keeping each pair a net
-//! (Owen scrambling keeps nets). The scrambles are [`ExactOwen`] of the seed, dimension
-//! `j`; the digits below `2^-m` come out uniform at random. The set is a set (the
-//! index `rev_m(x_j)` depends on `m`), not an extensible sequence. Non-consecutive pairs
-//! and higher projections carry no guarantee. The paper's optimized initialization of
-//! the 2D nets is not reproduced: every link uses the Sobol' pair `(phi_2, P)`.
+//! (Owen scrambling keeps nets). The scrambles are [`ExactOwen`] of the seed (`O_j`:
+//! dimension `j`; `Q_j`: dimension `j` of a second key hashed from the seed); the digits
+//! below `2^-m` come out uniform at random. The set is a set (the index `rev_m` depends
+//! on `m`), not an extensible sequence. Non-consecutive pairs and higher projections
+//! carry no guarantee. The paper's optimized initialization of the 2D nets is not
+//! reproduced: every link uses the Sobol' pair `(phi_2, P)`.
 //!
 //! ## Range and cost
 //!
 //! `N` a power of two from 1 to `2^32`, 1 to [`CASCADED_MAX_DIMS`] dimensions, any seed.
-//! [`sample`](Sampler::sample)`(i, j)` walks the chain, `O(j)`: `j + 1` scrambles of 32
+//! [`sample`](Sampler::sample)`(i, j)` walks the chain, `O(j)`: `2j + 1` scrambles of 32
 //! hashes each; [`fill`](Sampler::fill) walks it once a point, `O(d)` a point. No
 //! allocation, no table; linear, so no work budget.
 //!
@@ -60,6 +66,9 @@ use crate::bits::reverse_bits;
 use crate::error::{Error, Result};
 use crate::randomize::ExactOwen;
 use crate::sampler::{Sampler, check, check_fill};
+
+/// Mixed into the seed for the index scrambles `Q_j` ("CASCADE" in ASCII, any constant).
+const INDEX_KEY: u64 = 0x0043_4153_4341_4445;
 
 /// The most dimensions [`CascadedSobol`] takes: 2^16 (a coordinate costs `O(dim)`).
 pub const CASCADED_MAX_DIMS: usize = 1 << 16;
@@ -111,6 +120,7 @@ pub struct CascadedSobol {
     m: u32,
     dims: usize,
     owen: ExactOwen,
+    index_owen: ExactOwen,
 }
 
 impl CascadedSobol {
@@ -137,6 +147,7 @@ impl CascadedSobol {
             m: n.trailing_zeros(),
             dims,
             owen: ExactOwen::new(seed),
+            index_owen: ExactOwen::new(crate::hash::mix64(seed ^ INDEX_KEY)),
         })
     }
 
@@ -145,12 +156,13 @@ impl CascadedSobol {
         self.m
     }
 
-    /// The index of the 2D net that continues coordinate `x`: `rev_m(x)`.
-    const fn next_index(&self, x: u32) -> u32 {
+    /// The index of the 2D net that continues coordinate `x` of dimension `j`:
+    /// `rev_m(Q_j(x))`.
+    const fn next_index(&self, x: u32, j: usize) -> u32 {
         if self.m == 0 {
             0
         } else {
-            reverse_bits(x) & (u32::MAX >> (32 - self.m))
+            reverse_bits(self.index_owen.scramble(x, j)) & (u32::MAX >> (32 - self.m))
         }
     }
 
@@ -160,7 +172,7 @@ impl CascadedSobol {
         let mut x = self.owen.scramble(reverse_bits(index), 0);
         f(0, x);
         for j in 1..upto {
-            x = self.owen.scramble(pascal(self.next_index(x)), j);
+            x = self.owen.scramble(pascal(self.next_index(x, j - 1)), j);
             f(j, x);
         }
     }
