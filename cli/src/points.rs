@@ -59,10 +59,14 @@ not apply):
                        lowest rank of a 128 x 128 void-and-cluster matrix: -n N
   bnot                 blue noise through optimal transport (equal-area power cells),
                        2D: -n N, --iterations I (default 50), --torus
+  ldbn                 low-discrepancy blue noise, 2D: -n N a power of four (4 to 2^26): an
+                       Owen-scrambled Sobol' net rearranged by a look-up table, still a net
   --max-seconds S refuses, before starting, a set whose estimated time exceeds S
-  (also pmj02bn, lloyd, ccvt, sot, projective-blue-noise, forced-random, bnot).
+  (also pmj02bn, lloyd, ccvt, sot, projective-blue-noise, forced-random, bnot, ldbn).
 
 Other sets: cmj (Kensler's correlated multi-jitter, --total N, -d any, --seed);
+cascaded-sobol (Paulin et al.'s cascaded Sobol', --total N a power of two, -d to 65536,
+--seed: every consecutive pair of dimensions a (0, m, 2)-net, Owen-scrambled);
 hex (hexagonal grid on the torus, 2D, --total N even; --scramble shift for a random
 shift).";
 
@@ -216,7 +220,7 @@ impl PointsArgs {
         let kind = sampler.kind;
         let randomized = matches!(
             kind,
-            S::Independent | S::Latin | S::Pmj02 | S::Pmj02bn | S::Cmj
+            S::Independent | S::Latin | S::Pmj02 | S::Pmj02bn | S::Cmj | S::CascadedSobol | S::Ldbn
         ) || is_relaxed(sampler)
             || blue_noise_kind(sampler).is_some()
             || (kind == S::Stratified && !self.centered)
@@ -486,7 +490,7 @@ pub fn run(args: &PointsArgs) -> Result<(), Failure> {
     if let Some(kind) = blue_noise_kind(args.sampler) {
         return args.run_blue_noise(kind);
     }
-    let budgeted = args.sampler.kind == SamplerKind::Pmj02bn;
+    let budgeted = matches!(args.sampler.kind, SamplerKind::Pmj02bn | SamplerKind::Ldbn);
     if let Some(option) = args.blue.first_given(budgeted)
         && !is_relaxed(args.sampler)
     {

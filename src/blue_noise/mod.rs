@@ -17,6 +17,8 @@
 //!   optionally projective (directions also drawn in the 1D and 2D axis subspaces).
 //! * [`ForcedRandom`] — forced random sampling (Cornel et al. 2017): a blue-noise rank
 //!   matrix thresholded against an importance density, 2D.
+//! * [`Ldbn`] — low-discrepancy blue noise (after Ahmed et al. 2016): an Owen-scrambled
+//!   Sobol' (0, m, 2)-net rearranged by an optimized per-tile look-up table, still a net.
 //! * [`VoidAndCluster`] — Ulichney's void-and-cluster rank masks, toroidal, up to 2048².
 //! * [`mask64`] — a 64×64 void-and-cluster rank mask as a static table, in `no_std` too.
 //!
@@ -42,6 +44,8 @@ pub mod gaussian;
 mod grid;
 #[cfg(feature = "analysis")]
 mod kdtree;
+#[cfg(feature = "analysis")]
+pub mod ldbn;
 #[cfg(feature = "analysis")]
 pub mod lloyd;
 #[cfg(feature = "analysis")]
@@ -75,6 +79,8 @@ pub use bnot::{Bnot, BnotTrace};
 pub use forced_random::ForcedRandom;
 #[cfg(feature = "analysis")]
 pub use gaussian::GaussianBlueNoise;
+#[cfg(feature = "analysis")]
+pub use ldbn::Ldbn;
 #[cfg(feature = "analysis")]
 pub use lloyd::{Lloyd, LloydTrace};
 #[cfg(feature = "analysis")]

@@ -6,6 +6,7 @@ use std::boxed::Box;
 use std::vec::Vec;
 
 // The constructions, by path: the one place to update when library modules move.
+use crate::digital::cascaded::CascadedSobol;
 use crate::digital::sobol::Order;
 use crate::digital::{DigitalNetB, MAX_BASE, is_prime};
 use crate::lattice::hex::HexGrid;
@@ -366,6 +367,7 @@ fn construct(
         S::Latin => Box::new(LatinHypercube::new(needed(sampler, p)?, d, seed)?),
         S::Stratified => Box::new(stratified(sampler, p, d)?),
         S::Cmj => Box::new(CorrelatedMultiJitter::new(needed(sampler, p)?, d, seed)?),
+        S::CascadedSobol => Box::new(CascadedSobol::new(needed(sampler, p)?, d, seed)?),
         #[cfg(feature = "analysis")]
         S::Pmj02bn => Box::new(super::whole::pmj02bn(needed(sampler, p)?, seed, &p.budget)?),
         #[cfg(feature = "analysis")]
@@ -389,8 +391,13 @@ fn construct(
                 &p.budget,
             )?)
         }
+        #[cfg(feature = "analysis")]
+        S::Ldbn => {
+            Box::new(crate::blue_noise::Ldbn::new(needed(sampler, p)?, seed)?.generate(&p.budget)?)
+        }
         #[cfg(not(feature = "analysis"))]
         S::Pmj02bn
+        | S::Ldbn
         | S::Poisson
         | S::BestCandidate
         | S::GaussianBlueNoise

@@ -85,6 +85,7 @@ pub fn examples() -> Vec<(&'static SamplerEntry, Params)> {
         ("pmj02", p()),
         ("cmj", Params::dims(3).with_points(64)),
         ("cmj", p().with_points(10)),
+        ("cascaded-sobol", Params::dims(4).with_points(64)),
         ("hex", p().with_points(56)),
     ];
     #[cfg(feature = "analysis")]
@@ -99,6 +100,7 @@ pub fn examples() -> Vec<(&'static SamplerEntry, Params)> {
         ("bnot", p().with_points(24)),
         ("projective-blue-noise", Params::dims(3).with_points(32)),
         ("forced-random", p().with_points(100)),
+        ("ldbn", p().with_points(256)),
     ]);
     v.into_iter()
         .filter_map(|(name, params)| {

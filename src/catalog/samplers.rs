@@ -55,6 +55,10 @@ pub enum SamplerKind {
     ProjectiveBlueNoise,
     /// Forced random sampling (a blue-noise rank matrix thresholded), built whole.
     ForcedRandom,
+    /// Cascaded Sobol': consecutive pairs of dimensions are (0, m, 2)-nets.
+    CascadedSobol,
+    /// Low-discrepancy blue noise: a Sobol' net rearranged by a look-up table, built whole.
+    Ldbn,
 }
 
 /// What a construction is, as far as randomizers care ([`super::applies`]).
@@ -71,10 +75,10 @@ pub enum Family {
     /// Lattice rules and Kronecker sequences: random shifts modulo 1.
     Lattice,
     /// Random constructions whose randomness is their own (independent, stratified,
-    /// latin, pmj02, pmj02bn, cmj).
+    /// latin, pmj02, pmj02bn, cmj, cascaded-sobol).
     Random,
     /// Blue-noise sets built whole (poisson, best-candidate, gaussian-blue-noise, lloyd,
-    /// ccvt, sot, projective-blue-noise, forced-random, bnot).
+    /// ccvt, sot, projective-blue-noise, forced-random, bnot, ldbn).
     BlueNoise,
 }
 
@@ -87,11 +91,11 @@ impl Family {
             Family::BaseBNet => "base-b digital nets (faure)",
             Family::Lattice => "lattices (lattice, kronecker, hex)",
             Family::Random => {
-                "random constructions (independent, stratified, latin, pmj02, pmj02bn, cmj)"
+                "random constructions (independent, stratified, latin, pmj02, pmj02bn, cmj, cascaded-sobol)"
             }
             Family::BlueNoise => {
                 "blue-noise sets (poisson, best-candidate, gaussian-blue-noise, lloyd, ccvt, sot, \
-                 projective-blue-noise, forced-random, bnot)"
+                 projective-blue-noise, forced-random, bnot, ldbn)"
             }
         }
     }
@@ -130,7 +134,8 @@ impl SamplerKind {
             | SamplerKind::Latin
             | SamplerKind::Pmj02
             | SamplerKind::Pmj02bn
-            | SamplerKind::Cmj => Family::Random,
+            | SamplerKind::Cmj
+            | SamplerKind::CascadedSobol => Family::Random,
             SamplerKind::Poisson
             | SamplerKind::BestCandidate
             | SamplerKind::GaussianBlueNoise
@@ -139,7 +144,8 @@ impl SamplerKind {
             | SamplerKind::Sot
             | SamplerKind::Bnot
             | SamplerKind::ProjectiveBlueNoise
-            | SamplerKind::ForcedRandom => Family::BlueNoise,
+            | SamplerKind::ForcedRandom
+            | SamplerKind::Ldbn => Family::BlueNoise,
         }
     }
 
@@ -151,6 +157,7 @@ impl SamplerKind {
             | SamplerKind::Hammersley
             | SamplerKind::Lp
             | SamplerKind::Cmj
+            | SamplerKind::CascadedSobol
             | SamplerKind::Hex => Size::Set,
             SamplerKind::Lattice => Size::Rule,
             SamplerKind::Pmj02bn
@@ -162,7 +169,8 @@ impl SamplerKind {
             | SamplerKind::Sot
             | SamplerKind::Bnot
             | SamplerKind::ProjectiveBlueNoise
-            | SamplerKind::ForcedRandom => Size::Whole,
+            | SamplerKind::ForcedRandom
+            | SamplerKind::Ldbn => Size::Whole,
             _ => Size::Sequence,
         }
     }
@@ -176,7 +184,7 @@ impl SamplerKind {
     }
 
     /// The only dimension count the construction has, if it has one (vdc 1; lp, pmj02,
-    /// pmj02bn, best-candidate, gaussian-blue-noise, forced-random, bnot and hex 2).
+    /// pmj02bn, best-candidate, gaussian-blue-noise, forced-random, bnot, hex and ldbn 2).
     pub const fn fixed_dims(self) -> Option<usize> {
         match self {
             SamplerKind::Vdc => Some(1),
@@ -187,7 +195,8 @@ impl SamplerKind {
             | SamplerKind::GaussianBlueNoise
             | SamplerKind::ForcedRandom
             | SamplerKind::Bnot
-            | SamplerKind::Hex => Some(2),
+            | SamplerKind::Hex
+            | SamplerKind::Ldbn => Some(2),
             _ => None,
         }
     }
@@ -548,6 +557,25 @@ pub static SAMPLERS: &[SamplerEntry] = &[
         item: "qmckit::random::cmj::CorrelatedMultiJitter",
     },
     Entry {
+        kind: SamplerKind::CascadedSobol,
+        name: "cascaded-sobol",
+        aliases: &[alias("cascaded", "Paulin et al. 2021's title, short")],
+        summary: "cascaded Sobol': every consecutive pair of dimensions a (0, m, 2)-net, every \
+                  dimension stratified, N a power of two, Owen-scrambled from the seed",
+        math: "x_0 = O_0(phi_2(i)), x_(j+1) = O_(j+1)(P rev_m(Q_j(x_j))), P Sobol's Pascal matrix, O_j, Q_j nested uniform scrambles (Paulin et al. 2021)",
+        params: &[
+            param("dims", "coordinates of each point", "2", "1 to 65536"),
+            param(
+                "points",
+                "the size N = 2^m of the set",
+                "none: needed",
+                "a power of two <= 2^32",
+            ),
+            SEED,
+        ],
+        item: "qmckit::digital::cascaded::CascadedSobol",
+    },
+    Entry {
         kind: SamplerKind::Hex,
         name: "hex",
         aliases: &[
@@ -721,5 +749,33 @@ pub static SAMPLERS: &[SamplerEntry] = &[
             ),
         ],
         item: "qmckit::blue_noise::Bnot",
+    },
+    Entry {
+        kind: SamplerKind::Ldbn,
+        name: "ldbn",
+        aliases: &[alias(
+            "low-discrepancy-blue-noise",
+            "Ahmed et al. 2016's title",
+        )],
+        summary: "low-discrepancy blue noise: an Owen-scrambled Sobol' (0, m, 2)-net, N = 4^k, its \
+                  in-cell offsets exchanged within 2 x 2 tiles by an optimized look-up table; still a net",
+        math: "offsets of the cells of a tile's columns (u) and rows (v) exchanged as LDBN_TABLE[configuration] says (after Ahmed et al. 2016)",
+        params: &[
+            DIMS_2,
+            param(
+                "points",
+                "the size N = 4^k of the set",
+                "none: needed",
+                "a power of four, 4 to 2^26",
+            ),
+            SEED,
+            param(
+                "budget",
+                "time budget of the construction",
+                "10 s",
+                "positive seconds",
+            ),
+        ],
+        item: "qmckit::blue_noise::Ldbn",
     },
 ];

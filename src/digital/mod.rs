@@ -4,6 +4,7 @@
 //! |---|---|
 //! | [`sobol`] | Sobol' (base 2; Joe & Kuo's direction numbers), Owen-scrambled and interlaced variants |
 //! | [`lp`] | Larcher–Pillichshammer's (0, m, 2)-nets and sequence (base 2) |
+//! | [`cascaded`] | cascaded Sobol' (Paulin et al. 2021): every consecutive pair of dimensions a (0, m, 2)-net, Owen-scrambled |
 //! | [`DigitalNet2`], [`rank`] | any base-2 net from its generator matrices (Sobol', LP, Hammersley, van der Corput), and its exact t-value by the rank test (`std`) |
 //! | [`DigitalNetB`], [`faure_matrices`] | digital nets and sequences in a prime base `b` from generator matrices, Faure's (0, s)-sequences |
 //!
@@ -56,6 +57,7 @@
 //! # Ok::<(), qmckit::Error>(())
 //! ```
 
+pub mod cascaded;
 mod faure;
 #[cfg(feature = "std")]
 mod file;

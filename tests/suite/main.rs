@@ -7,6 +7,7 @@ mod common;
 mod blue_noise;
 #[cfg(feature = "analysis")]
 mod bnot;
+mod cascaded;
 mod catalog;
 mod cmj;
 mod conversions;
@@ -22,6 +23,8 @@ mod integrands;
 #[cfg(feature = "analysis")]
 mod integrate;
 mod lattice;
+#[cfg(feature = "analysis")]
+mod ldbn;
 mod mask;
 mod nets;
 mod pcf;
