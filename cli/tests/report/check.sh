@@ -36,7 +36,7 @@ SECTIONS = """warping radical-inverse van-der-corput halton hammersley permuted-
 owen-scrambling three-point-sets low-discrepancy-definition koksma-hlawka measured-qmc-error
 elementary-intervals mse-tables-n16 quad-light motion-blur-defocus zero-two-sequences
 pixel-light ambient-occlusion blue-noise-dithering power-spectrum colours-of-noise
-blue-noise-sobol ld-spectra variance-spectra""".split()
+blue-noise-sobol ld-spectra variance-spectra integration-benchmark""".split()
 
 def png_pixels(path):
     """Decodes a non-interlaced 8-bit PNG (grey, RGB, RGBA): (width, height, rows)."""

@@ -29,6 +29,7 @@ pub const SECTIONS: [&str; 24] = [
     "blue-noise-sobol",
     "ld-spectra",
     "variance-spectra",
+    "integration-benchmark",
 ];
 
 #[test]
