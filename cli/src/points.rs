@@ -52,8 +52,10 @@ not apply):
                        points a site), any -d to 64: -n N, --iterations I, --torus
   sot                  sliced optimal transport in the cube, any -d to 64: -n N,
                        --iterations I
+  penrose              Penrose-tiling sampling (Ostromoukhov et al. 2004), 2D: -n N (the
+                       N points of lowest rank), --seed (rotation and offset)
   --max-seconds S refuses, before starting, a set whose estimated time exceeds S
-  (also pmj02bn, lloyd, ccvt, sot).
+  (also pmj02bn, lloyd, ccvt, sot, penrose).
 
 Other sets: cmj (Kensler's correlated multi-jitter, --total N, -d any, --seed);
 hex (hexagonal grid on the torus, 2D, --total N even; --scramble shift for a random
@@ -209,7 +211,7 @@ impl PointsArgs {
         let kind = sampler.kind;
         let randomized = matches!(
             kind,
-            S::Independent | S::Latin | S::Pmj02 | S::Pmj02bn | S::Cmj
+            S::Independent | S::Latin | S::Pmj02 | S::Pmj02bn | S::Cmj | S::Penrose
         ) || is_relaxed(sampler)
             || blue_noise_kind(sampler).is_some()
             || (kind == S::Stratified && !self.centered)
@@ -472,7 +474,10 @@ pub fn run(args: &PointsArgs) -> Result<(), Failure> {
     if let Some(kind) = blue_noise_kind(args.sampler) {
         return args.run_blue_noise(kind);
     }
-    let budgeted = args.sampler.kind == SamplerKind::Pmj02bn;
+    let budgeted = matches!(
+        args.sampler.kind,
+        SamplerKind::Pmj02bn | SamplerKind::Penrose
+    );
     if let Some(option) = args.blue.first_given(budgeted)
         && !is_relaxed(args.sampler)
     {

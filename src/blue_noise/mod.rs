@@ -8,6 +8,9 @@
 //! * [`Lloyd`] — Lloyd relaxation and capacity-constrained Voronoi tessellations (CCVT,
 //!   Balzer, Schlömer & Deussen 2009) in any dimension, in the cube or on the torus.
 //! * [`Sot`] — sliced optimal transport sampling (Paulin et al. 2020) in the cube.
+//! * [`Penrose`] — one sample a tile of a subdivided Penrose tiling, ranked for
+//!   thresholding (Ostromoukhov, Donohue & Jodoin 2004); [`penrose::importance`] samples a
+//!   density.
 //! * [`VoidAndCluster`] — Ulichney's void-and-cluster rank masks, toroidal, up to 2048².
 //! * [`mask64`] — a 64×64 void-and-cluster rank mask as a static table, in `no_std` too.
 //!
@@ -31,6 +34,8 @@ mod grid;
 mod kdtree;
 #[cfg(feature = "analysis")]
 pub mod lloyd;
+#[cfg(feature = "analysis")]
+pub mod penrose;
 #[cfg(feature = "analysis")]
 mod point_set;
 #[cfg(feature = "analysis")]
@@ -56,6 +61,8 @@ pub use best_candidate::BestCandidate;
 pub use gaussian::GaussianBlueNoise;
 #[cfg(feature = "analysis")]
 pub use lloyd::{Lloyd, LloydTrace};
+#[cfg(feature = "analysis")]
+pub use penrose::Penrose;
 #[cfg(feature = "analysis")]
 pub use point_set::PointSet;
 #[cfg(feature = "analysis")]

@@ -379,6 +379,12 @@ fn construct(
             &p.budget,
         )?),
         #[cfg(feature = "analysis")]
+        S::Penrose => Box::new(super::whole::tiled(
+            needed(sampler, p)?,
+            seed,
+            &p.budget,
+        )?),
+        #[cfg(feature = "analysis")]
         S::Lloyd | S::Ccvt | S::Sot => Box::new(super::whole::relaxed(
             sampler.kind,
             &p.blue_noise,
@@ -394,7 +400,8 @@ fn construct(
         | S::GaussianBlueNoise
         | S::Lloyd
         | S::Ccvt
-        | S::Sot => {
+        | S::Sot
+        | S::Penrose => {
             return Err(super::whole::unavailable(sampler.name));
         }
         S::Lattice | S::Kronecker | S::Faure | S::Hex => {

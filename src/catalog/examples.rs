@@ -96,6 +96,7 @@ pub fn examples() -> Vec<(&'static SamplerEntry, Params)> {
         ("lloyd", p().with_points(24)),
         ("ccvt", Params::dims(3).with_points(16)),
         ("sot", p().with_points(20)),
+        ("penrose", p().with_points(100)),
     ]);
     v.into_iter()
         .filter_map(|(name, params)| {

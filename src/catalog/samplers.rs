@@ -48,6 +48,8 @@ pub enum SamplerKind {
     Ccvt,
     /// Sliced optimal transport sampling, built whole.
     Sot,
+    /// Penrose-tiling sampling (ranked subdivision), built whole.
+    Penrose,
 }
 
 /// What a construction is, as far as randomizers care ([`super::applies`]).
@@ -67,7 +69,7 @@ pub enum Family {
     /// latin, pmj02, pmj02bn, cmj).
     Random,
     /// Blue-noise sets built whole (poisson, best-candidate, gaussian-blue-noise, lloyd,
-    /// ccvt, sot).
+    /// ccvt, sot, penrose).
     BlueNoise,
 }
 
@@ -83,7 +85,8 @@ impl Family {
                 "random constructions (independent, stratified, latin, pmj02, pmj02bn, cmj)"
             }
             Family::BlueNoise => {
-                "blue-noise sets (poisson, best-candidate, gaussian-blue-noise, lloyd, ccvt, sot)"
+                "blue-noise sets (poisson, best-candidate, gaussian-blue-noise, lloyd, ccvt, sot, \
+                 penrose)"
             }
         }
     }
@@ -128,7 +131,8 @@ impl SamplerKind {
             | SamplerKind::GaussianBlueNoise
             | SamplerKind::Lloyd
             | SamplerKind::Ccvt
-            | SamplerKind::Sot => Family::BlueNoise,
+            | SamplerKind::Sot
+            | SamplerKind::Penrose => Family::BlueNoise,
         }
     }
 
@@ -148,7 +152,8 @@ impl SamplerKind {
             | SamplerKind::GaussianBlueNoise
             | SamplerKind::Lloyd
             | SamplerKind::Ccvt
-            | SamplerKind::Sot => Size::Whole,
+            | SamplerKind::Sot
+            | SamplerKind::Penrose => Size::Whole,
             _ => Size::Sequence,
         }
     }
@@ -162,7 +167,7 @@ impl SamplerKind {
     }
 
     /// The only dimension count the construction has, if it has one (vdc 1; lp, pmj02,
-    /// pmj02bn, best-candidate, gaussian-blue-noise and hex 2).
+    /// pmj02bn, best-candidate, gaussian-blue-noise, hex and penrose 2).
     pub const fn fixed_dims(self) -> Option<usize> {
         match self {
             SamplerKind::Vdc => Some(1),
@@ -171,7 +176,8 @@ impl SamplerKind {
             | SamplerKind::Pmj02bn
             | SamplerKind::BestCandidate
             | SamplerKind::GaussianBlueNoise
-            | SamplerKind::Hex => Some(2),
+            | SamplerKind::Hex
+            | SamplerKind::Penrose => Some(2),
             _ => None,
         }
     }
@@ -627,5 +633,33 @@ pub static SAMPLERS: &[SamplerEntry] = &[
             ),
         ],
         item: "qmckit::blue_noise::Sot",
+    },
+    Entry {
+        kind: SamplerKind::Penrose,
+        name: "penrose",
+        aliases: &[alias(
+            "penrose-tiling",
+            "Ostromoukhov, Donohue & Jodoin 2004's tiling",
+        )],
+        summary: "Penrose-tiling sampling, 2D: one point a Robinson triangle of a subdivided \
+                  Penrose tiling, the N of lowest rank (progressive), uncorrected, built whole",
+        math: "triangles shrink by phi a level (F(2h+1), F(2h+2) leaves); ranks interleave the children in proportion; keep rank < N (Ostromoukhov, Donohue & Jodoin 2004)",
+        params: &[
+            DIMS_2,
+            POINTS,
+            param(
+                "seed",
+                "rotation and offset of the square in the tiling",
+                "0",
+                "any u64",
+            ),
+            param(
+                "budget",
+                "time budget of the construction",
+                "10 s",
+                "positive seconds",
+            ),
+        ],
+        item: "qmckit::blue_noise::Penrose",
     },
 ];

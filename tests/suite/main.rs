@@ -32,6 +32,7 @@ mod spectrum;
 mod star_discrepancy;
 mod star_lower;
 mod thiemard;
+mod tiles;
 mod tvalue;
 mod variance;
 mod warps;
