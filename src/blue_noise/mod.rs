@@ -37,6 +37,8 @@ pub mod lloyd;
 #[cfg(feature = "analysis")]
 pub mod penrose;
 #[cfg(feature = "analysis")]
+pub mod penrose_train;
+#[cfg(feature = "analysis")]
 mod point_set;
 #[cfg(feature = "analysis")]
 pub mod poisson;

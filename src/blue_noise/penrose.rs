@@ -21,7 +21,8 @@
 //! The start is the "sun", ten thin triangles of legs 1 around the origin (a decagon of
 //! area `5 sin 36°`), subdivided `L` levels; the unit square sits inside it, rotated by a
 //! random angle and moved by a random offset of at most 0.1 from the centre (the seed).
-//! Each leaf triangle carries one sample, at its centroid.
+//! Each leaf triangle carries one sample, at its centroid moved by a correction vector
+//! (below).
 //!
 //! ## The ranks
 //!
@@ -43,14 +44,25 @@
 //!   density (at least the density's maximum). The expected count in a region is the
 //!   integral of `rho` over it, to the rank stratification's error.
 //!
+//! ## Correction vectors
+//!
+//! As in the paper, samples move by vectors learned offline by relaxation: the sample of a
+//! leaf `(a, b, c)` is `centroid + alpha (b - a) + beta (c - a)`, `(alpha, beta)` from a
+//! [`Table`] indexed by the leaf's class (its index among the 13 or 21 leaves of its
+//! ancestor three levels up) and the band of the threshold fraction `t` (four bands of
+//! `(phi^-2, 1]`, equal in `log t`); a move that would leave the square is not made. The
+//! table, `tables/penrose_corrections.rs`, is made by our optimizer
+//! ([`crate::blue_noise::penrose_train`]). [`Penrose::corrected`]`(false)` keeps the
+//! centroids (the tiling's rings of centroids around its vertices, a minimum distance of
+//! about 0.57 of the hexagonal spacing).
+//!
 //! ## Deviation from the paper
 //!
-//! The paper moves each sample by a correction vector looked up from its code and the
-//! local density, learned offline by relaxation; the samples here sit at the triangles'
-//! centroids, uncorrected, so the set keeps the tiling's quasicrystal order (sharp
-//! spectral peaks, no power near the origin) rather than the paper's relaxed blue noise.
-//! The thresholds are the interleaved ranks above, not the paper's F-codes, and the
-//! depth is uniform (the paper refines only where the density asks).
+//! The thresholds are the interleaved ranks above, not the paper's F-codes; the table's
+//! indexing and values are ours; [`importance`] leaves its samples at the centroids (its
+//! threshold varies beyond the trained bands); the depth is uniform (the paper refines
+//! only where the density asks). Some rings of ten samples around tiling vertices survive
+//! the correction (a class does not see beyond its ancestor).
 //!
 //! ## Cost
 //!
@@ -73,8 +85,8 @@ use super::rng::Rng;
 use crate::work::{Budget, Cost, Pacer, Rate};
 use crate::{Error, Result};
 
-/// The most points [`Penrose`] and [`importance`] give: 2^22.
-pub const PENROSE_MAX_POINTS: u64 = 1 << 22;
+/// The most points [`Penrose`] and [`importance`] give: 2^20.
+pub const PENROSE_MAX_POINTS: u64 = 1 << 20;
 
 /// The golden ratio.
 const PHI: f64 = 1.618_033_988_749_895;
@@ -258,7 +270,7 @@ impl Tables {
 
 /// Where the unit square sits in the sun: `u = R(-theta) (p - centre) + 1/2`.
 #[derive(Clone, Copy, Debug)]
-struct Frame {
+pub(crate) struct Frame {
     cos: f64,
     sin: f64,
     centre: [f64; 2],
@@ -277,10 +289,15 @@ impl Frame {
     }
 
     fn to_square(&self, p: [f64; 2]) -> [f64; 2] {
-        let (x, y) = (p[0] - self.centre[0], p[1] - self.centre[1]);
+        let v = self.rotate([p[0] - self.centre[0], p[1] - self.centre[1]]);
+        [v[0] + 0.5, v[1] + 0.5]
+    }
+
+    /// A vector of the tiling in the square's axes.
+    pub(crate) fn rotate(&self, v: [f64; 2]) -> [f64; 2] {
         [
-            self.cos * x + self.sin * y + 0.5,
-            -self.sin * x + self.cos * y + 0.5,
+            self.cos * v[0] + self.sin * v[1],
+            -self.sin * v[0] + self.cos * v[1],
         ]
     }
 
@@ -297,8 +314,87 @@ fn inside(u: [f64; 2]) -> bool {
     (0.0..1.0).contains(&u[0]) && (0.0..1.0).contains(&u[1])
 }
 
-/// A leaf in the square: its global rank and its point.
-type Leaf = (u32, [f64; 2]);
+/// A leaf in the square: its global rank, its structural class, the directions of its
+/// legs and its centroid.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Leaf {
+    /// The global rank.
+    pub(crate) rank: u32,
+    /// [`NO_CLASS`] or the class: the leaf's index among the leaves of its ancestor
+    /// three levels up, plus 13 when that ancestor is thick.
+    pub(crate) class: u8,
+    /// The directions of `b - a` and `c - a` in the tiling, in steps of 18°.
+    pub(crate) dirs: [u8; 2],
+    /// The centroid, in the square.
+    pub(crate) p: [f64; 2],
+}
+
+/// The class of a leaf with fewer than three levels above it.
+pub(crate) const NO_CLASS: u8 = u8::MAX;
+
+/// Classes of leaves: 13 below a thin ancestor (`F(7)`), 21 below a thick one (`F(8)`).
+pub(crate) const CLASSES: usize = 34;
+
+/// Bands of the threshold fraction `t` in `(phi^-2, 1]`, equal in `log t`.
+pub(crate) const BANDS: usize = 4;
+
+/// A correction table: for each band and class, the offset `(alpha, beta)` of the sample
+/// from the leaf's centroid in the leaf's frame, `alpha (b - a) + beta (c - a)`.
+pub type Table = [[[f64; 2]; CLASSES]; BANDS];
+
+/// The correction table made by [`crate::blue_noise::penrose_train`] (see
+/// `examples/gen_penrose_table.rs`).
+static CORRECTIONS: Table = include!("../../tables/penrose_corrections.rs");
+
+/// The band of a threshold fraction `t` (`(phi^-2, 1]` maps onto `0 .. BANDS`, outside
+/// clamped to the ends).
+pub(crate) fn band(t: f64) -> usize {
+    let u = (1.0 / t).ln() / (PHI * PHI).ln();
+    ((u * BANDS as f64).floor().max(0.0) as usize).min(BANDS - 1)
+}
+
+/// The class of the leaf at the end of `path` (module doc of [`Leaf::class`]).
+fn class(path: &[(Kind, u8)]) -> u8 {
+    let Some(tail) = path.len().checked_sub(3).and_then(|s| path.get(s..)) else {
+        return NO_CLASS;
+    };
+    let mut local = 0u64;
+    for (i, &(kind, child)) in tail.iter().enumerate() {
+        let (tn, tk) = leaves(2 - i);
+        local += match kind {
+            Kind::Thin => u64::from(child) * tn,
+            Kind::Thick => u64::from(child) * tk,
+        };
+    }
+    let base = if tail[0].0 == Kind::Thick { 13 } else { 0 };
+    (local + base) as u8
+}
+
+/// The direction of `v` in steps of 18° (`0 .. 20`).
+fn direction(v: [f64; 2]) -> u8 {
+    let k = (v[1].atan2(v[0]) / (core::f64::consts::PI / 10.0)).round() as i64;
+    k.rem_euclid(20) as u8
+}
+
+/// The sample of `leaf`: its centroid moved by `table[band][class]` in its frame (legs of
+/// length `leg`), or the centroid when it has no class or the move would leave the square.
+pub(crate) fn place(leaf: &Leaf, frame: &Frame, leg: f64, band: usize, table: &Table) -> [f64; 2] {
+    let Some(&[alpha, beta]) = table
+        .get(band)
+        .and_then(|row| row.get(usize::from(leaf.class)))
+    else {
+        return leaf.p;
+    };
+    let [e1, e2] = leaf.dirs.map(|k| {
+        let t = f64::from(k) * core::f64::consts::PI / 10.0;
+        frame.rotate([leg * t.cos(), leg * t.sin()])
+    });
+    let moved = [
+        leaf.p[0] + alpha * e1[0] + beta * e2[0],
+        leaf.p[1] + alpha * e1[1] + beta * e2[1],
+    ];
+    if inside(moved) { moved } else { leaf.p }
+}
 
 /// Every leaf of the sun subdivided `tables.levels` times whose centroid lies in the
 /// square, with its global rank, unordered.
@@ -330,7 +426,15 @@ fn walk(
         let u = frame.to_square(t.centroid());
         if inside(u) {
             crate::size::reserve(out, 1)?;
-            out.push((tables.rank(sun_index, path), u));
+            out.push(Leaf {
+                rank: tables.rank(sun_index, path),
+                class: class(path),
+                dirs: [
+                    direction([t.b[0] - t.a[0], t.b[1] - t.a[1]]),
+                    direction([t.c[0] - t.a[0], t.c[1] - t.a[1]]),
+                ],
+                p: u,
+            });
         }
         return Ok(());
     }
@@ -345,11 +449,11 @@ fn walk(
 
 /// The least depth whose leaves in the square number at least `density` a unit area (on
 /// average), or an error past [`MAX_LEVELS`].
-fn depth_for(density: f64) -> Result<usize> {
+pub(crate) fn depth_for(density: f64) -> Result<usize> {
     (1..=MAX_LEVELS)
         .find(|&l| 10.0 * leaves(l).0 as f64 / sun_area() >= density)
         .ok_or(Error::InvalidParameter {
-            what: "penrose sampling takes at most 2^22 points a unit area",
+            what: "penrose sampling takes at most 2^20 points a unit area",
         })
 }
 
@@ -362,21 +466,27 @@ fn cost_for(density: f64) -> Cost {
     Cost::steps(leaves * (levels + 2.0 + leaves.log2().max(1.0)), STEPS)
 }
 
-fn points(levels: usize, seed: u64, budget: &Budget) -> Result<(Tables, Vec<Leaf>)> {
+/// The leaves of the square at `levels` for `seed`, sorted by rank, the frame, and the
+/// number of leaves of the sun.
+pub(crate) fn ranked(levels: usize, seed: u64, budget: &Budget) -> Result<(Vec<Leaf>, Frame, u64)> {
     const WHAT: &str = "penrose sampling";
     let mut pacer = budget.pacer(WHAT);
     let tables = Tables::new(levels, &mut pacer)?;
-    let leaves = square_leaves(&tables, &Frame::new(seed), &mut pacer)?;
-    Ok((tables, leaves))
+    let frame = Frame::new(seed);
+    let mut leaves = square_leaves(&tables, &frame, &mut pacer)?;
+    leaves.sort_unstable_by_key(|l| l.rank);
+    Ok((leaves, frame, tables.total()))
 }
 
-fn to_set(mut leaves: Vec<Leaf>) -> Result<PointSet> {
-    leaves.sort_unstable_by_key(|l| l.0);
-    let mut coords = crate::size::vec_with_capacity(crate::size::coordinates(
-        leaves.len() as u64,
-        2,
-    )?)?;
-    coords.extend(leaves.iter().flat_map(|l| l.1.map(to_fraction)));
+/// The legs of the leaves of a sun of legs 1 subdivided `levels` times.
+pub(crate) fn leg(levels: usize) -> f64 {
+    PHI.powi(-(levels as i32))
+}
+
+fn to_set(points: impl ExactSizeIterator<Item = [f64; 2]>) -> Result<PointSet> {
+    let mut coords =
+        crate::size::vec_with_capacity(crate::size::coordinates(points.len() as u64, 2)?)?;
+    coords.extend(points.flat_map(|p| p.map(to_fraction)));
     PointSet::new(coords, 2)
 }
 
@@ -385,6 +495,7 @@ fn to_set(mut leaves: Vec<Leaf>) -> Result<PointSet> {
 pub struct Penrose {
     n: u64,
     seed: u64,
+    corrected: bool,
 }
 
 impl Penrose {
@@ -402,7 +513,18 @@ impl Penrose {
                 max: PENROSE_MAX_POINTS,
             });
         }
-        Ok(Penrose { n, seed: 0 })
+        Ok(Penrose {
+            n,
+            seed: 0,
+            corrected: true,
+        })
+    }
+
+    /// Whether the samples move by the correction table (default `true`; `false`: the
+    /// leaves' centroids).
+    pub fn corrected(mut self, corrected: bool) -> Self {
+        self.corrected = corrected;
+        self
     }
 
     /// The seed: the rotation and offset of the square in the tiling.
@@ -427,11 +549,17 @@ impl Penrose {
         budget.check("penrose sampling", self.cost())?;
         let mut levels = depth_for(self.n as f64)?;
         loop {
-            let (_, mut leaves) = points(levels, self.seed, &budget)?;
+            let (leaves, frame, _) = ranked(levels, self.seed, &budget)?;
             if leaves.len() as u64 >= self.n {
-                leaves.sort_unstable_by_key(|l| l.0);
-                leaves.truncate(self.n as usize);
-                return to_set(leaves);
+                let b = band(self.n as f64 / leaves.len() as f64);
+                let (leg, n) = (leg(levels), self.n as usize);
+                return to_set(leaves.iter().take(n).map(|l| {
+                    if self.corrected {
+                        place(l, &frame, leg, b, &CORRECTIONS)
+                    } else {
+                        l.p
+                    }
+                }));
             }
             // The square holds fewer leaves than the mean says (its border): one more level.
             levels += 1;
@@ -469,29 +597,29 @@ pub fn importance<F: Fn(f64, f64) -> f64>(
 ) -> Result<PointSet> {
     if !(1.0..=PENROSE_MAX_POINTS as f64).contains(&max_density) {
         return Err(Error::InvalidParameter {
-            what: "penrose importance sampling takes a maximum density from 1 to 2^22",
+            what: "penrose importance sampling takes a maximum density from 1 to 2^20",
         });
     }
     let budget = budget.started();
     budget.check("penrose sampling", cost_for(max_density))?;
     let levels = depth_for(max_density)?;
-    let (tables, leaves) = points(levels, seed, &budget)?;
-    let total = tables.total() as f64;
+    let (leaves, _, total) = ranked(levels, seed, &budget)?;
+    let total = total as f64;
     let leaf_density = total / sun_area();
-    let mut kept = crate::size::vec_with_capacity::<Leaf>(0)?;
+    let mut kept = crate::size::vec_with_capacity::<[f64; 2]>(0)?;
     for leaf in leaves {
-        let rho = density(leaf.1[0], leaf.1[1]);
+        let rho = density(leaf.p[0], leaf.p[1]);
         if !(0.0..=max_density).contains(&rho) {
             return Err(Error::InvalidParameter {
                 what: "penrose importance sampling: a density value not in [0, max_density]",
             });
         }
-        if (f64::from(leaf.0) + 0.5) / total < rho / leaf_density {
+        if (f64::from(leaf.rank) + 0.5) / total < rho / leaf_density {
             crate::size::reserve(&mut kept, 1)?;
-            kept.push(leaf);
+            kept.push(leaf.p);
         }
     }
-    to_set(kept)
+    to_set(kept.into_iter())
 }
 
 #[cfg(test)]

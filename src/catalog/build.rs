@@ -379,11 +379,7 @@ fn construct(
             &p.budget,
         )?),
         #[cfg(feature = "analysis")]
-        S::Penrose => Box::new(super::whole::tiled(
-            needed(sampler, p)?,
-            seed,
-            &p.budget,
-        )?),
+        S::Penrose => Box::new(super::whole::tiled(needed(sampler, p)?, seed, &p.budget)?),
         #[cfg(feature = "analysis")]
         S::Lloyd | S::Ccvt | S::Sot => Box::new(super::whole::relaxed(
             sampler.kind,

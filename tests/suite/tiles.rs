@@ -3,9 +3,11 @@
 //! Penrose-tiling sampling (Ostromoukhov, Donohue & Jodoin 2004): the number of samples
 //! follows the integral of the density (uniform, and non-uniform region by region); the
 //! set is blue noise: cell counts vary far less than for independent points (binomial
-//! variance `N p (1 - p)`), the periodogram is below white noise's level 1 at low
-//! frequencies, and no two points come close (a fraction of the hexagonal spacing, where
-//! independent points come within `O(1 / N)`).
+//! variance `N p (1 - p)`), the periodogram is far below white noise's level 1 at low
+//! frequencies, nearest neighbours sit farther apart than for independent points, and the
+//! uncorrected centroids keep a minimum distance (a fraction of the hexagonal spacing,
+//! where independent points come within `O(1 / N)`). The correction table must improve on
+//! the centroids, and its optimizer must lower its Lloyd energy.
 #![cfg(feature = "analysis")]
 
 use qmckit::Error;
@@ -84,22 +86,41 @@ fn penrose_gives_n_points_in_the_square() {
 #[test]
 fn penrose_is_blue_noise() {
     let (n, seeds) = (2048u64, 4u64);
-    let (mut var, mut low, mut min) = (0.0, 0.0, f64::INFINITY);
+    let (mut var, mut low, mut nn, mut min0) = (0.0, 0.0, 0.0, f64::INFINITY);
     for seed in 0..seeds {
         let x = penrose_set(n, seed);
         var += count_variance_ratio(&x, 8) / seeds as f64;
         low += low_power(&x) / seeds as f64;
-        min = min.min(min_distance_over_hex(&x));
+        nn += mean_nn_over_hex(&x) / seeds as f64;
+        let centroids = Penrose::new(n)
+            .unwrap()
+            .seed(seed)
+            .corrected(false)
+            .generate(&Budget::DEFAULT)
+            .unwrap()
+            .to_f64();
+        min0 = min0.min(min_distance_over_hex(&centroids));
     }
-    eprintln!("penrose N {n}: count variance / binomial {var:.4}, low power {low:.4}, min distance / hex {min:.3}");
-    assert!(var < 0.1, "cell-count variance {var} of the binomial");
-    assert!(low < 0.5, "low-frequency power {low}");
-    assert!(min > 0.3, "min distance {min} of the hexagonal spacing");
+    eprintln!(
+        "penrose N {n}: count variance / binomial {var:.4}, low power {low:.4}, \
+         mean NN / hex {nn:.3}, uncorrected min distance / hex {min0:.3}"
+    );
+    assert!(var < 0.25, "cell-count variance {var} of the binomial");
+    assert!(low < 0.2, "low-frequency power {low}");
+    assert!(
+        nn > 0.7,
+        "mean nearest-neighbour distance {nn} of the hexagonal spacing"
+    );
+    assert!(
+        min0 > 0.4,
+        "uncorrected min distance {min0} of the hexagonal spacing"
+    );
     // The same measures separate independent points (the tests can fail).
     let white = crate::common::sampler_points(&qmckit::Independent::new(2, 5).unwrap(), 2048);
     assert!(count_variance_ratio(&white, 8) > 0.5);
     assert!(low_power(&white) > 0.5);
-    assert!(min_distance_over_hex(&white) < 0.3);
+    assert!(mean_nn_over_hex(&white) < 0.6);
+    assert!(min_distance_over_hex(&white) < 0.4);
 }
 
 #[test]
@@ -110,7 +131,7 @@ fn every_prefix_of_a_penrose_set_is_uniform() {
     for k in [512usize, 1000, 2048, 4096] {
         let ratio = count_variance_ratio(&x[..2 * k], 4);
         eprintln!("penrose prefix {k}: count variance / binomial {ratio:.4}");
-        assert!(ratio < 0.25, "prefix {k}: {ratio}");
+        assert!(ratio < 0.4, "prefix {k}: {ratio}");
     }
 }
 
@@ -169,7 +190,67 @@ fn penrose_refuses_bad_input() {
     assert!(penrose::importance(|_, _| 200.0, 100.0, 0, &b).is_err());
     let tight = Budget::seconds(1e-6).unwrap();
     assert!(matches!(
-        Penrose::new(1 << 22).unwrap().generate(&tight),
+        Penrose::new(1 << 20).unwrap().generate(&tight),
         Err(Error::OverBudget { .. })
     ));
+}
+
+#[test]
+fn penrose_corrections_improve_on_the_centroids() {
+    // The correction table (trained by Lloyd relaxation) moves the samples off the
+    // tiling's rings of centroids: lower low-frequency power and a larger mean
+    // nearest-neighbour distance than the uncorrected centroids, on sets it was not
+    // trained on (other sizes and seeds).
+    let (mut low, mut low0, mut nn, mut nn0) = (0.0, 0.0, 0.0, 0.0);
+    for seed in 100..104u64 {
+        for n in [1500u64, 3000] {
+            let set = |corrected| {
+                Penrose::new(n)
+                    .unwrap()
+                    .seed(seed)
+                    .corrected(corrected)
+                    .generate(&Budget::DEFAULT)
+                    .unwrap()
+                    .to_f64()
+            };
+            let (x, x0) = (set(true), set(false));
+            low += low_power(&x) / 8.0;
+            low0 += low_power(&x0) / 8.0;
+            nn += mean_nn_over_hex(&x) / 8.0;
+            nn0 += mean_nn_over_hex(&x0) / 8.0;
+        }
+    }
+    eprintln!(
+        "penrose corrected: low power {low:.4} (centroids {low0:.4}), mean NN / hex {nn:.3} (centroids {nn0:.3})"
+    );
+    assert!(low < 0.8 * low0, "low power {low} vs {low0}");
+    assert!(nn > nn0 + 0.1, "mean NN {nn} vs {nn0}");
+}
+
+#[test]
+fn penrose_training_lowers_the_lloyd_energy() {
+    use qmckit::blue_noise::penrose_train::train;
+    let t = train(256, 4, 1, &Budget::DEFAULT).unwrap();
+    eprintln!("penrose training energies {:?}", t.energy);
+    assert_eq!(t.energy.len(), 4);
+    assert!(t.energy[3] < 0.5 * t.energy[0], "{:?}", t.energy);
+    assert!(train(10, 4, 1, &Budget::DEFAULT).is_err());
+    assert!(train(256, 0, 1, &Budget::DEFAULT).is_err());
+}
+
+/// The mean nearest-neighbour distance over the hexagonal spacing (brute force).
+fn mean_nn_over_hex(x: &[f64]) -> f64 {
+    let n = x.len() / 2;
+    let mut total = 0.0;
+    for i in 0..n {
+        let mut best = f64::INFINITY;
+        for j in 0..n {
+            if i != j {
+                let d = (x[2 * i] - x[2 * j]).powi(2) + (x[2 * i + 1] - x[2 * j + 1]).powi(2);
+                best = best.min(d);
+            }
+        }
+        total += best.sqrt();
+    }
+    total / n as f64 / (2.0 / (3f64.sqrt() * n as f64)).sqrt()
 }
