@@ -10,7 +10,7 @@
 //! * [`Sot`] — sliced optimal transport sampling (Paulin et al. 2020) in the cube.
 //! * [`Penrose`] — one sample a tile of a subdivided Penrose tiling, ranked for
 //!   thresholding (Ostromoukhov, Donohue & Jodoin 2004); [`penrose::importance`] samples a
-//!   density.
+//!   density; [`penrose_train`] makes its correction table.
 //! * [`VoidAndCluster`] — Ulichney's void-and-cluster rank masks, toroidal, up to 2048².
 //! * [`mask64`] — a 64×64 void-and-cluster rank mask as a static table, in `no_std` too.
 //!
