@@ -642,8 +642,9 @@ pub static SAMPLERS: &[SamplerEntry] = &[
             "Ostromoukhov, Donohue & Jodoin 2004's tiling",
         )],
         summary: "Penrose-tiling sampling, 2D: one point a Robinson triangle of a subdivided \
-                  Penrose tiling, the N of lowest rank (progressive), uncorrected, built whole",
-        math: "triangles shrink by phi a level (F(2h+1), F(2h+2) leaves); ranks interleave the children in proportion; keep rank < N (Ostromoukhov, Donohue & Jodoin 2004)",
+                  Penrose tiling, moved by a learned correction vector, the N of lowest rank \
+                  (progressive), built whole",
+        math: "triangles shrink by phi a level (F(2h+1), F(2h+2) leaves); ranks interleave the children in proportion; keep rank < N; x = centroid + table[band][class] in the leaf's frame (Ostromoukhov, Donohue & Jodoin 2004)",
         params: &[
             DIMS_2,
             POINTS,
