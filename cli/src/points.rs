@@ -61,8 +61,11 @@ not apply):
                        2D: -n N, --iterations I (default 50), --torus
   ldbn                 low-discrepancy blue noise, 2D: -n N a power of four (4 to 2^26): an
                        Owen-scrambled Sobol' net rearranged by a look-up table, still a net
+  penrose              Penrose-tiling sampling (Ostromoukhov et al. 2004), 2D: -n N (the
+                       N points of lowest rank), --seed (rotation and offset)
   --max-seconds S refuses, before starting, a set whose estimated time exceeds S
-  (also pmj02bn, lloyd, ccvt, sot, projective-blue-noise, forced-random, bnot, ldbn).
+  (also pmj02bn, lloyd, ccvt, sot, projective-blue-noise, forced-random, bnot, ldbn,
+  penrose).
 
 Other sets: cmj (Kensler's correlated multi-jitter, --total N, -d any, --seed);
 cascaded-sobol (Paulin et al.'s cascaded Sobol', --total N a power of two, -d to 65536,
@@ -220,7 +223,14 @@ impl PointsArgs {
         let kind = sampler.kind;
         let randomized = matches!(
             kind,
-            S::Independent | S::Latin | S::Pmj02 | S::Pmj02bn | S::Cmj | S::CascadedSobol | S::Ldbn
+            S::Independent
+                | S::Latin
+                | S::Pmj02
+                | S::Pmj02bn
+                | S::Cmj
+                | S::CascadedSobol
+                | S::Ldbn
+                | S::Penrose
         ) || is_relaxed(sampler)
             || blue_noise_kind(sampler).is_some()
             || (kind == S::Stratified && !self.centered)
@@ -490,7 +500,10 @@ pub fn run(args: &PointsArgs) -> Result<(), Failure> {
     if let Some(kind) = blue_noise_kind(args.sampler) {
         return args.run_blue_noise(kind);
     }
-    let budgeted = matches!(args.sampler.kind, SamplerKind::Pmj02bn | SamplerKind::Ldbn);
+    let budgeted = matches!(
+        args.sampler.kind,
+        SamplerKind::Pmj02bn | SamplerKind::Ldbn | SamplerKind::Penrose
+    );
     if let Some(option) = args.blue.first_given(budgeted)
         && !is_relaxed(args.sampler)
     {

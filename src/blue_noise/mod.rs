@@ -19,6 +19,9 @@
 //!   matrix thresholded against an importance density, 2D.
 //! * [`Ldbn`] — low-discrepancy blue noise (after Ahmed et al. 2016): an Owen-scrambled
 //!   Sobol' (0, m, 2)-net rearranged by an optimized per-tile look-up table, still a net.
+//! * [`Penrose`] — one sample a tile of a subdivided Penrose tiling, ranked for
+//!   thresholding (Ostromoukhov, Donohue & Jodoin 2004); [`penrose::importance`] samples a
+//!   density; [`penrose_train`] makes its correction table.
 //! * [`VoidAndCluster`] — Ulichney's void-and-cluster rank masks, toroidal, up to 2048².
 //! * [`mask64`] — a 64×64 void-and-cluster rank mask as a static table, in `no_std` too.
 //!
@@ -48,6 +51,10 @@ mod kdtree;
 pub mod ldbn;
 #[cfg(feature = "analysis")]
 pub mod lloyd;
+#[cfg(feature = "analysis")]
+pub mod penrose;
+#[cfg(feature = "analysis")]
+pub mod penrose_train;
 #[cfg(feature = "analysis")]
 mod point_set;
 #[cfg(feature = "analysis")]
@@ -83,6 +90,8 @@ pub use gaussian::GaussianBlueNoise;
 pub use ldbn::Ldbn;
 #[cfg(feature = "analysis")]
 pub use lloyd::{Lloyd, LloydTrace};
+#[cfg(feature = "analysis")]
+pub use penrose::Penrose;
 #[cfg(feature = "analysis")]
 pub use point_set::PointSet;
 #[cfg(feature = "analysis")]

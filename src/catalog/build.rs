@@ -381,6 +381,8 @@ fn construct(
             &p.budget,
         )?),
         #[cfg(feature = "analysis")]
+        S::Penrose => Box::new(super::whole::tiled(needed(sampler, p)?, seed, &p.budget)?),
+        #[cfg(feature = "analysis")]
         S::Lloyd | S::Ccvt | S::Sot | S::Bnot | S::ProjectiveBlueNoise | S::ForcedRandom => {
             Box::new(super::whole::relaxed(
                 sampler.kind,
@@ -406,6 +408,7 @@ fn construct(
         | S::Sot
         | S::Bnot
         | S::ProjectiveBlueNoise
+        | S::Penrose
         | S::ForcedRandom => {
             return Err(super::whole::unavailable(sampler.name));
         }

@@ -101,6 +101,7 @@ pub fn examples() -> Vec<(&'static SamplerEntry, Params)> {
         ("projective-blue-noise", Params::dims(3).with_points(32)),
         ("forced-random", p().with_points(100)),
         ("ldbn", p().with_points(256)),
+        ("penrose", p().with_points(100)),
     ]);
     v.into_iter()
         .filter_map(|(name, params)| {

@@ -59,6 +59,8 @@ pub enum SamplerKind {
     CascadedSobol,
     /// Low-discrepancy blue noise: a Sobol' net rearranged by a look-up table, built whole.
     Ldbn,
+    /// Penrose-tiling sampling (ranked subdivision), built whole.
+    Penrose,
 }
 
 /// What a construction is, as far as randomizers care ([`super::applies`]).
@@ -78,7 +80,7 @@ pub enum Family {
     /// latin, pmj02, pmj02bn, cmj, cascaded-sobol).
     Random,
     /// Blue-noise sets built whole (poisson, best-candidate, gaussian-blue-noise, lloyd,
-    /// ccvt, sot, projective-blue-noise, forced-random, bnot, ldbn).
+    /// ccvt, sot, projective-blue-noise, forced-random, bnot, ldbn, penrose).
     BlueNoise,
 }
 
@@ -95,7 +97,7 @@ impl Family {
             }
             Family::BlueNoise => {
                 "blue-noise sets (poisson, best-candidate, gaussian-blue-noise, lloyd, ccvt, sot, \
-                 projective-blue-noise, forced-random, bnot, ldbn)"
+                 projective-blue-noise, forced-random, bnot, ldbn, penrose)"
             }
         }
     }
@@ -145,7 +147,8 @@ impl SamplerKind {
             | SamplerKind::Bnot
             | SamplerKind::ProjectiveBlueNoise
             | SamplerKind::ForcedRandom
-            | SamplerKind::Ldbn => Family::BlueNoise,
+            | SamplerKind::Ldbn
+            | SamplerKind::Penrose => Family::BlueNoise,
         }
     }
 
@@ -170,7 +173,8 @@ impl SamplerKind {
             | SamplerKind::Bnot
             | SamplerKind::ProjectiveBlueNoise
             | SamplerKind::ForcedRandom
-            | SamplerKind::Ldbn => Size::Whole,
+            | SamplerKind::Ldbn
+            | SamplerKind::Penrose => Size::Whole,
             _ => Size::Sequence,
         }
     }
@@ -184,7 +188,7 @@ impl SamplerKind {
     }
 
     /// The only dimension count the construction has, if it has one (vdc 1; lp, pmj02,
-    /// pmj02bn, best-candidate, gaussian-blue-noise, forced-random, bnot, hex and ldbn 2).
+    /// pmj02bn, best-candidate, gaussian-blue-noise, forced-random, bnot, hex, ldbn and penrose 2).
     pub const fn fixed_dims(self) -> Option<usize> {
         match self {
             SamplerKind::Vdc => Some(1),
@@ -196,7 +200,8 @@ impl SamplerKind {
             | SamplerKind::ForcedRandom
             | SamplerKind::Bnot
             | SamplerKind::Hex
-            | SamplerKind::Ldbn => Some(2),
+            | SamplerKind::Ldbn
+            | SamplerKind::Penrose => Some(2),
             _ => None,
         }
     }
@@ -777,5 +782,34 @@ pub static SAMPLERS: &[SamplerEntry] = &[
             ),
         ],
         item: "qmckit::blue_noise::Ldbn",
+    },
+    Entry {
+        kind: SamplerKind::Penrose,
+        name: "penrose",
+        aliases: &[alias(
+            "penrose-tiling",
+            "Ostromoukhov, Donohue & Jodoin 2004's tiling",
+        )],
+        summary: "Penrose-tiling sampling, 2D: one point a Robinson triangle of a subdivided \
+                  Penrose tiling, moved by a learned correction vector, the N of lowest rank \
+                  (progressive), built whole",
+        math: "triangles shrink by phi a level (F(2h+1), F(2h+2) leaves); ranks interleave the children in proportion; keep rank < N; x = centroid + table[band][class] in the leaf's frame (Ostromoukhov, Donohue & Jodoin 2004)",
+        params: &[
+            DIMS_2,
+            POINTS,
+            param(
+                "seed",
+                "rotation and offset of the square in the tiling",
+                "0",
+                "any u64",
+            ),
+            param(
+                "budget",
+                "time budget of the construction",
+                "10 s",
+                "positive seconds",
+            ),
+        ],
+        item: "qmckit::blue_noise::Penrose",
     },
 ];

@@ -65,7 +65,7 @@ impl BlueNoiseOptions {
 }
 
 #[cfg(feature = "analysis")]
-pub(super) use built::{blue_noise, pmj02bn, relaxed};
+pub(super) use built::{blue_noise, pmj02bn, relaxed, tiled};
 
 #[cfg(feature = "analysis")]
 mod built {
@@ -185,6 +185,17 @@ mod built {
             }
             l.generate(&budget)?
         })
+    }
+
+    /// The tile-based sets: penrose, `n` points, within `budget`.
+    pub(in crate::catalog) fn tiled(
+        n: u64,
+        seed: u64,
+        budget: &Budget,
+    ) -> Result<PointSet, CatalogError> {
+        use crate::blue_noise::Penrose;
+        let budget = budget.started();
+        Ok(Penrose::new(n)?.seed(seed).generate(&budget)?)
     }
 
     /// PMJ02BN's throughput in cache: spread steps (a point at one of the `ceil(log2 n)`

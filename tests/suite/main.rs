@@ -41,6 +41,7 @@ mod spectrum;
 mod star_discrepancy;
 mod star_lower;
 mod thiemard;
+mod tiles;
 #[cfg(feature = "analysis")]
 mod transport;
 mod tvalue;
