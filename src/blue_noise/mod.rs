@@ -63,6 +63,7 @@ pub mod poisson;
 mod poisson_cost;
 #[cfg(feature = "analysis")]
 pub mod power;
+#[cfg(feature = "analysis")]
 pub mod projective;
 #[cfg(feature = "analysis")]
 mod rng;
@@ -83,6 +84,7 @@ pub mod void_and_cluster;
 pub use best_candidate::BestCandidate;
 #[cfg(feature = "analysis")]
 pub use bnot::{Bnot, BnotTrace};
+#[cfg(feature = "analysis")]
 pub use forced_random::ForcedRandom;
 #[cfg(feature = "analysis")]
 pub use gaussian::GaussianBlueNoise;
