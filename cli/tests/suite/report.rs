@@ -4,7 +4,7 @@
 use crate::common::cli::run;
 
 /// The slides of issue 18, by section id.
-pub const SECTIONS: [&str; 24] = [
+pub const SECTIONS: [&str; 25] = [
     "warping",
     "radical-inverse",
     "van-der-corput",
