@@ -240,6 +240,25 @@ impl PixelGrid {
         Ok(())
     }
 
+    /// Checks that `(x, y)` is in the image and that `count <= spp` samples are asked for
+    /// (the fill paths' one check).
+    ///
+    /// # Errors
+    /// As [`check`](Self::check); [`Error::BufferLength`] for `count > spp`.
+    #[inline]
+    pub const fn check_fill(&self, x: u32, y: u32, count: usize) -> Result<()> {
+        if let Err(e) = self.check(x, y, 0) {
+            return Err(e);
+        }
+        if count > self.spp as usize {
+            return Err(Error::BufferLength {
+                expected: self.spp as usize,
+                got: count,
+            });
+        }
+        Ok(())
+    }
+
     /// `RoundUpPow2(max(width, height))`, the side of the square power-of-two grid pbrt's
     /// Sobol' samplers lay over the image.
     pub const fn pow2_side(&self) -> u32 {
@@ -266,6 +285,18 @@ pub struct PixelPoint {
 }
 
 impl PixelPoint {
+    /// The point of sample `index` of pixel `(x, y)` with the sampler's key, unchecked (the
+    /// fill paths check the pixel and the count once).
+    #[inline]
+    fn new<S: PixelSampler + ?Sized>(sampler: &S, x: u32, y: u32, index: u32) -> Self {
+        PixelPoint {
+            x,
+            y,
+            index,
+            key: sampler.pixel_key(x, y, index),
+        }
+    }
+
     /// The pixel's column.
     pub const fn x(&self) -> u32 {
         self.x
@@ -379,6 +410,80 @@ pub trait PixelSampler {
         true
     }
 
+    /// The pixel's samples at one dimension pair, prepared: `out[i]` becomes the pair
+    /// pbrt's `Get2D` returns for sample `i` of pixel `(x, y)` with the counter at `dim`
+    /// (`start_pixel_sample(x, y, i)?.with_dimension(dim).get_2d()`), for `i <
+    /// out.len() <= spp`. The samplers override it with one pass over the samples that
+    /// computes what depends on `(pixel, dimension)` once (the default runs the handle's
+    /// draws). Bit-identical to the handle.
+    ///
+    /// ```
+    /// use qmckit::pixel::{PaddedSobol, PixelSampler, Randomization};
+    /// let p = PaddedSobol::new(64, 64, 16, Randomization::FastOwen, 1)?;
+    /// let mut out = [[0u32; 2]; 16];
+    /// p.fill_2d(9, 40, 6, &mut out)?;
+    /// for (i, v) in (0..16).zip(out) {
+    ///     assert_eq!(v, p.start_pixel_sample(9, 40, i)?.with_dimension(6).get_2d());
+    /// }
+    /// # Ok::<(), qmckit::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// As [`PixelGrid::check`] for the pixel; [`Error::BufferLength`] when `out` holds
+    /// more than `spp` samples.
+    fn fill_2d(&self, x: u32, y: u32, dim: usize, out: &mut [[u32; 2]]) -> Result<()> {
+        self.grid().check_fill(x, y, out.len())?;
+        let d = self.counter_dimension(dim, 2);
+        for (i, o) in (0u32..).zip(out.iter_mut()) {
+            let at = PixelPoint::new(self, x, y, i);
+            *o = self.value_2d(&at, d);
+        }
+        Ok(())
+    }
+
+    /// [`fill_2d`](Self::fill_2d) as pbrt's `f32`s (`get_2d_f32`).
+    ///
+    /// # Errors
+    /// As [`fill_2d`](Self::fill_2d).
+    fn fill_2d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [[f32; 2]]) -> Result<()> {
+        self.grid().check_fill(x, y, out.len())?;
+        let d = self.counter_dimension(dim, 2);
+        for (i, o) in (0u32..).zip(out.iter_mut()) {
+            let at = PixelPoint::new(self, x, y, i);
+            *o = self.value_2d_f32(&at, d);
+        }
+        Ok(())
+    }
+
+    /// The 1D values of the pixel's samples with the counter at `dim`: `out[i]` is
+    /// `start_pixel_sample(x, y, i)?.with_dimension(dim).get_1d()`, `i < out.len() <= spp`.
+    ///
+    /// # Errors
+    /// As [`fill_2d`](Self::fill_2d).
+    fn fill_1d(&self, x: u32, y: u32, dim: usize, out: &mut [u32]) -> Result<()> {
+        self.grid().check_fill(x, y, out.len())?;
+        let d = self.counter_dimension(dim, 1);
+        for (i, o) in (0u32..).zip(out.iter_mut()) {
+            let at = PixelPoint::new(self, x, y, i);
+            *o = self.value_1d(&at, d);
+        }
+        Ok(())
+    }
+
+    /// [`fill_1d`](Self::fill_1d) as pbrt's `f32`s (`get_1d_f32`).
+    ///
+    /// # Errors
+    /// As [`fill_2d`](Self::fill_2d).
+    fn fill_1d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [f32]) -> Result<()> {
+        self.grid().check_fill(x, y, out.len())?;
+        let d = self.counter_dimension(dim, 1);
+        for (i, o) in (0u32..).zip(out.iter_mut()) {
+            let at = PixelPoint::new(self, x, y, i);
+            *o = self.value_1d_f32(&at, d);
+        }
+        Ok(())
+    }
+
     /// pbrt's `StartPixelSample(p, index)`: checks `(x, y)` and `index` once, does the
     /// per-pixel precomputation, and returns the handle whose draws cannot fail, with the
     /// dimension counter at 0 ([`PixelSample::with_dimension`] sets it).
@@ -439,6 +544,18 @@ macro_rules! forward_pixel_sampler {
             }
             fn pixel_2d_moves_counter(&self) -> bool {
                 (**self).pixel_2d_moves_counter()
+            }
+            fn fill_2d(&self, x: u32, y: u32, dim: usize, out: &mut [[u32; 2]]) -> Result<()> {
+                (**self).fill_2d(x, y, dim, out)
+            }
+            fn fill_2d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [[f32; 2]]) -> Result<()> {
+                (**self).fill_2d_f32(x, y, dim, out)
+            }
+            fn fill_1d(&self, x: u32, y: u32, dim: usize, out: &mut [u32]) -> Result<()> {
+                (**self).fill_1d(x, y, dim, out)
+            }
+            fn fill_1d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [f32]) -> Result<()> {
+                (**self).fill_1d_f32(x, y, dim, out)
             }
         }
     )*};
