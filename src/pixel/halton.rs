@@ -42,6 +42,9 @@ const MAX_RESOLUTION: u32 = 128;
 /// pbrt-v4. Any `spp >= 1`. Cost: per start, `j + k` divisions; per value `n ≈ 24 / log2 b`
 /// digit steps (one 64-bit division each), plus one MurmurHash and one permutation per digit
 /// for `PermuteDigits`, one `MixBits` and one permutation per digit for `Owen`.
+/// The prepared fills ([`PixelSampler::fill_2d`]) find the pixel's Halton index once
+/// (sample `i` adds `i 2^j 3^k`) and, for `PermuteDigits`, hash each digit's permutation
+/// key once per dimension instead of once per value.
 ///
 /// ```
 /// use qmckit::pixel::{HaltonSampler, PixelSampler, Randomization};
@@ -154,6 +157,97 @@ impl HaltonSampler {
                 let hash = digit_hash(base as u32, k, self.seed) as u32;
                 permutation_element(digit, base as u32, hash)
             }),
+        }
+    }
+}
+
+/// Digits a prepared `PermuteDigits` fill keys ahead (more than pbrt's `f32` stop rule
+/// takes in base 2, 25); later digits, if any, are hashed as they come.
+const KEYED_DIGITS: usize = 32;
+
+impl HaltonSampler {
+    /// The prepared fill: `value(h, d)` for the Halton indices `h` of samples
+    /// `0 .. out.len()` of pixel `(x, y)` (`h0 + i 2^j 3^k`, `h0` found once), with
+    /// `d` the dimension through the counter rule for a request of `width` values.
+    #[inline]
+    fn fill_with<T>(
+        &self,
+        x: u32,
+        y: u32,
+        dim: usize,
+        width: usize,
+        out: &mut [T],
+        value: impl Fn(u64, usize) -> T,
+    ) -> Result<()> {
+        self.grid.check_fill(x, y, out.len())?;
+        let d = self.counter_dimension(dim, width);
+        let h0 = self.pixel_key(x, y, 0);
+        let stride = self.scales[0] * self.scales[1];
+        for (i, o) in out.iter_mut().enumerate() {
+            *o = value(h0 + i as u64 * stride, d);
+        }
+        Ok(())
+    }
+
+    /// The permutation keys `Hash(b, k, seed)` of digits `k < KEYED_DIGITS` of dimension
+    /// `dim`'s base.
+    fn digit_keys(&self, dim: usize) -> [u32; KEYED_DIGITS] {
+        let base = PRIMES[dim] as u32;
+        core::array::from_fn(|k| digit_hash(base, k as u32, self.seed) as u32)
+    }
+
+    /// [`dimension`](Self::dimension) with `PermuteDigits`' keys computed before.
+    fn permuted(&self, h: u64, dim: usize, keys: &[u32; KEYED_DIGITS]) -> (u32, f32) {
+        let base = PRIMES[dim] as u64;
+        digits(base, h, Stop::Permute, |k, digit, _| {
+            let key = match keys.get(k as usize) {
+                Some(&key) => key,
+                None => digit_hash(base as u32, k, self.seed) as u32,
+            };
+            permutation_element(digit, base as u32, key)
+        })
+    }
+
+    /// The prepared pair fill: the `(R, float)` pairs of dimensions `d, d + 1` through
+    /// `pick` (the fraction or pbrt's float).
+    fn fill_pairs<T: Copy>(
+        &self,
+        x: u32,
+        y: u32,
+        dim: usize,
+        out: &mut [[T; 2]],
+        pick: impl Fn((u32, f32)) -> T,
+    ) -> Result<()> {
+        if self.randomize == Randomization::PermuteDigits {
+            let d = self.counter_dimension(dim, 2);
+            let keys = [self.digit_keys(d), self.digit_keys(d + 1)];
+            self.fill_with(x, y, dim, 2, out, |h, d| {
+                [
+                    pick(self.permuted(h, d, &keys[0])),
+                    pick(self.permuted(h, d + 1, &keys[1])),
+                ]
+            })
+        } else {
+            self.fill_with(x, y, dim, 2, out, |h, d| {
+                [pick(self.dimension(h, d)), pick(self.dimension(h, d + 1))]
+            })
+        }
+    }
+
+    /// The prepared 1D fill.
+    fn fill_values<T: Copy>(
+        &self,
+        x: u32,
+        y: u32,
+        dim: usize,
+        out: &mut [T],
+        pick: impl Fn((u32, f32)) -> T,
+    ) -> Result<()> {
+        if self.randomize == Randomization::PermuteDigits {
+            let keys = self.digit_keys(self.counter_dimension(dim, 1));
+            self.fill_with(x, y, dim, 1, out, |h, d| pick(self.permuted(h, d, &keys)))
+        } else {
+            self.fill_with(x, y, dim, 1, out, |h, d| pick(self.dimension(h, d)))
         }
     }
 }
@@ -273,6 +367,22 @@ fn digits(base: u64, mut a: u64, stop: Stop, permute: impl Fn(u32, u32, u64) -> 
 impl PixelSampler for HaltonSampler {
     fn grid(&self) -> PixelGrid {
         self.grid
+    }
+
+    fn fill_2d(&self, x: u32, y: u32, dim: usize, out: &mut [[u32; 2]]) -> Result<()> {
+        self.fill_pairs(x, y, dim, out, |v| v.0)
+    }
+
+    fn fill_2d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [[f32; 2]]) -> Result<()> {
+        self.fill_pairs(x, y, dim, out, |v| v.1)
+    }
+
+    fn fill_1d(&self, x: u32, y: u32, dim: usize, out: &mut [u32]) -> Result<()> {
+        self.fill_values(x, y, dim, out, |v| v.0)
+    }
+
+    fn fill_1d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [f32]) -> Result<()> {
+        self.fill_values(x, y, dim, out, |v| v.1)
     }
 
     /// The Halton index `h` of the sample.

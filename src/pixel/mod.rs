@@ -77,6 +77,7 @@ mod independent;
 mod padded;
 pub mod pmj02bn;
 mod pmj_pixels;
+mod prepared;
 mod stratified;
 mod zsobol;
 

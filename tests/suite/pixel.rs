@@ -10,6 +10,7 @@
 
 mod compiled;
 mod halton_stratified;
+mod prepared;
 
 use crate::common::first_net_failure;
 use qmckit::Error;
