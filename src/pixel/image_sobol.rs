@@ -76,6 +76,9 @@ pub struct ImageSobol {
     frame_cols: [u32; 32],
     /// The index `l < 2^2m` with `f(l) = 2^c`.
     inverse: [u32; 32],
+    /// What sample bit `c` adds to the index: `2^(2m + c) ^ l(frame_cols[c])` (zero past
+    /// the 32 bits), so sample `i`'s index is `l(p) ^ XOR of these` over its set bits.
+    frame_index: [u32; 32],
 }
 
 /// The pixel code of Sobol' index `i` on the `2^m` grid:
@@ -149,6 +152,12 @@ impl ImageSobol {
                 }
             }
         }
+        let frame_index = core::array::from_fn(|c| {
+            let (Some(&f), true) = (frame_cols.get(c), (c as u32) + 2 * m < 32) else {
+                return 0;
+            };
+            product(&comb, f) ^ (1u32 << (2 * m + c as u32))
+        });
         Ok(ImageSobol {
             grid,
             randomize,
@@ -156,6 +165,7 @@ impl ImageSobol {
             m,
             frame_cols,
             inverse: comb,
+            frame_index,
         })
     }
 
@@ -214,30 +224,24 @@ fn product(cols: &[u32; 32], i: u32) -> u32 {
 }
 
 impl ImageSobol {
-    /// The frame columns' index contributions `e_c = 2^(2m + c) ^ l(f(2^(2m + c)))` for the
-    /// sample bits `c < bits`: sample `i`'s index is `l(p) ^ XOR of e_c` over its set bits.
-    fn frame_index_columns(&self) -> [u32; 32] {
-        let n = 2 * self.m;
-        core::array::from_fn(|c| {
-            let (Some(&f), true) = (self.frame_cols.get(c), (c as u32) + n < 32) else {
-                return 0;
-            };
-            product(&self.inverse, f) ^ (1u32 << (n + c as u32))
-        })
-    }
-
     /// The reversed-domain Sobol' values of dimension `d` (`< IMAGE_SOBOL_DIMS`) of samples
     /// `start .. start + out.len()` of the pixel whose frame-0 index is `l0`, into `out`:
     /// the pixel's value, the chunk's high frame bits, then the table doubled over the low
     /// ones.
-    fn reversed_values(&self, d: usize, l0: u32, e: &[u32; 32], start: u32, out: &mut [u32]) {
+    fn reversed_values(&self, d: usize, l0: u32, start: u32, out: &mut [u32]) {
         let cols = match SobolDimension::new(d) {
             Ok(s) => *s.directions(),
             Err(_) => [0; 32], // unreachable: `counter_dimension` keeps `d` in the table
         };
-        let w: [u32; 32] = core::array::from_fn(|c| reverse_bits(product(&cols, e[c])));
+        // Only the sample bits in use: those of the chunk's last sample.
+        let last = start.saturating_add(out.len().saturating_sub(1) as u32);
+        let bits = (32 - last.leading_zeros()) as usize;
+        let mut w = [0u32; 32];
+        for (wc, &e) in w.iter_mut().zip(&self.frame_index).take(bits) {
+            *wc = reverse_bits(product(&cols, e));
+        }
         let v0 = reverse_bits(product(&cols, l0));
-        let first = w.iter().enumerate().fold(v0, |v, (c, &wc)| {
+        let first = w.iter().take(bits).enumerate().fold(v0, |v, (c, &wc)| {
             v ^ (wc & 0u32.wrapping_sub((start >> c) & 1))
         });
         if let Some(o) = out.first_mut() {
@@ -275,13 +279,12 @@ impl ImageSobol {
             seed_hash2(d.wrapping_add(1) as u32, self.seed) as u32,
         ];
         let l0 = self.interval_to_index(0, x, y) as u32;
-        let e = self.frame_index_columns();
         let (mut a, mut b) = ([0u32; CHUNK], [0u32; CHUNK]);
         for (c, chunk) in out.chunks_mut(CHUNK).enumerate() {
             let start = (c * CHUNK) as u32;
             let (a, b) = (&mut a[..chunk.len()], &mut b[..chunk.len()]);
-            self.reversed_values(d, l0, &e, start, a);
-            self.reversed_values(d.wrapping_add(1), l0, &e, start, b);
+            self.reversed_values(d, l0, start, a);
+            self.reversed_values(d.wrapping_add(1), l0, start, b);
             let (a, b) = (&*a, &*b);
             randomize_pairs(self.randomize, keys, chunk, |k| [a[k], b[k]], conv);
         }
@@ -302,11 +305,10 @@ impl ImageSobol {
         let d = self.counter_dimension(dim, 1);
         let key = seed_hash2(d as u32, self.seed) as u32;
         let l0 = self.interval_to_index(0, x, y) as u32;
-        let e = self.frame_index_columns();
         let mut a = [0u32; CHUNK];
         for (c, chunk) in out.chunks_mut(CHUNK).enumerate() {
             let a = &mut a[..chunk.len()];
-            self.reversed_values(d, l0, &e, (c * CHUNK) as u32, a);
+            self.reversed_values(d, l0, (c * CHUNK) as u32, a);
             let a = &*a;
             randomize_values(self.randomize, key, chunk, |k| a[k], conv);
         }
