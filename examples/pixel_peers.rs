@@ -10,7 +10,9 @@
 //! of the same configuration, value for value (`f32` bits), and every prepared path
 //! against its sampler's handle.
 //!
-//! Without the peers (a plain `cargo run --example pixel_peers`) it only says how to build.
+//! Arguments: the number of rounds (15), then optionally a substring: only the rows whose
+//! names contain it run. Without the peers (a plain `cargo run --example pixel_peers`) it
+//! only says how to build.
 
 #[cfg(not(qmckit_peers))]
 fn main() {
@@ -155,6 +157,8 @@ mod peers {
             .nth(1)
             .and_then(|a| a.parse().ok())
             .unwrap_or(15);
+        // An optional second argument keeps only the rows whose names contain it.
+        let only = std::env::args().nth(2).unwrap_or_default();
         let fo = Randomization::FastOwen;
         let zsobol = ZSobol::new(SIDE, SIDE, SPP, fo, 0)?;
         let padded = PaddedSobol::new(SIDE, SIDE, SPP, fo, 0)?;
@@ -189,7 +193,7 @@ mod peers {
             peers_set_blue_noise(noise.as_ptr());
         }
 
-        let rows: Vec<Row> = vec![
+        let mut rows: Vec<Row> = vec![
             row("qmckit ZSobol handle", |o| handle(&zsobol, o)),
             row("qmckit ZSobol prepared", |o| prepared(&zsobol, o)),
             row("pbrt ZSobolSampler", |o| peer(0, o)),
@@ -223,6 +227,8 @@ mod peers {
             row("OpenQMC Lattice", |o| peer(14, o)),
             row("OpenQMC LatticeBn", |o| peer(15, o)),
         ];
+
+        rows.retain(|r| r.name.contains(only.as_str()));
 
         // Whole-image agreement: (qmckit row, the row it must equal).
         let pairs = [

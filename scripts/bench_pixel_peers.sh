@@ -3,13 +3,13 @@
 # image, 16 samples a pixel, two 2D draws a sample as f32 (ns per 4D sample, best of N
 # interleaved rounds).
 #
-#   scripts/bench_pixel_peers.sh PBRT_V4_DIR OPENQMC_DIR [ROUNDS] [CPU]
+#   scripts/bench_pixel_peers.sh PBRT_V4_DIR OPENQMC_DIR [ROUNDS] [CPU] [ROWS]
 #
 # PBRT_V4_DIR: a checkout of https://github.com/mmp/pbrt-v4 (src/pbrt is enough; the data
 # files util/pmj02tables.cpp and util/bluenoise.cpp are not used). OPENQMC_DIR: a checkout
 # of https://github.com/AcademySoftwareFoundation/openqmc (include/ is enough). Neither is
 # copied into this repository. ROUNDS defaults to 15, CPU (the core to pin to with taskset)
-# to 1. CXXFLAGS adds flags to the peers' g++ -O3 (e.g. CXXFLAGS=-march=native; then pass
+# to 1; ROWS, a substring, keeps only the rows whose names contain it. CXXFLAGS adds flags to the peers' g++ -O3 (e.g. CXXFLAGS=-march=native; then pass
 # RUSTFLAGS="-C target-cpu=native" too for a like-for-like build).
 #
 # What is built: scripts/bench_pixel_peers/peers.cpp (pbrt's and OpenQMC's samplers behind
@@ -22,6 +22,7 @@ PBRT=${1:?usage: bench_pixel_peers.sh PBRT_V4_DIR OPENQMC_DIR [ROUNDS] [CPU]}
 OQMC=${2:?usage: bench_pixel_peers.sh PBRT_V4_DIR OPENQMC_DIR [ROUNDS] [CPU]}
 ROUNDS=${3:-15}
 CPU=${4:-1}
+ROWS=${5:-}
 HERE=$(cd "$(dirname "$0")" && pwd)
 ROOT=$(cd "$HERE/.." && pwd)
 SRC=$PBRT/src/pbrt
@@ -57,7 +58,7 @@ CARGO_BUILD_JOBS=${CARGO_BUILD_JOBS:-1} cargo rustc --release -p qmckit --exampl
 BIN=$(cargo metadata --format-version 1 --no-deps | sed -n 's/.*"target_directory":"\([^"]*\)".*/\1/p')/release/examples/pixel_peers
 echo "pbrt-v4 $PBRT_COMMIT, OpenQMC $OQMC_COMMIT, $($CXX --version | head -1) -O3 ${CXXFLAGS:-}, $(rustc --version)"
 if command -v taskset >/dev/null; then
-    taskset -c "$CPU" "$BIN" "$ROUNDS"
+    taskset -c "$CPU" "$BIN" "$ROUNDS" "$ROWS"
 else
-    "$BIN" "$ROUNDS"
+    "$BIN" "$ROUNDS" "$ROWS"
 fi

@@ -38,9 +38,13 @@
 //! [`HaltonSampler`] and [`StratifiedSampler`] compute their floats as pbrt does, in `f32`
 //! arithmetic ([`PixelSampler::value_1d_f32`]); their 0.32 fractions are the exact values
 //! those floats round. [`pbrt_f32`] converts a 0.32 fraction as pbrt does (`min(float(v) * 2^-32, 1 - 2^-24)`);
-//! the `*_f32` draws return pbrt's floats. For ZSobol, [`ZSobol::pixel_dimension`] is the
-//! batch path of one pixel and one dimension over all its samples (the digits above the
-//! sample's and both scramble keys computed once; bit-identical).
+//! the `*_f32` draws return pbrt's floats. The batch path of one pixel and one dimension
+//! over all its samples is [`PixelSampler::fill_2d`] (and `fill_1d`, `fill_2d_f32`,
+//! `fill_1d_f32`): every sampler computes what depends only on `(pixel, dimension)` once
+//! (hashes, keys, ZSobol's pixel digits, the image-plane Sobol' system, Halton's pixel
+//! index and digit tables, the stratified stream's jump) and fills the samples in one pass,
+//! the Sobol' samplers in the bit-reversed domain; bit-identical to the handle's draws.
+//! [`ZSobol::pixel_dimension`] is the per-sample form of ZSobol's.
 //!
 //! A renderer's loop: for each pixel, for each sample, start, then draw.
 //!
