@@ -42,6 +42,9 @@ const MAX_RESOLUTION: u32 = 128;
 /// pbrt-v4. Any `spp >= 1`. Cost: per start, `j + k` divisions; per value `n ≈ 24 / log2 b`
 /// digit steps (one 64-bit division each), plus one MurmurHash and one permutation per digit
 /// for `PermuteDigits`, one `MixBits` and one permutation per digit for `Owen`.
+/// The prepared fills ([`PixelSampler::fill_2d`]) find the pixel's Halton index once
+/// (sample `i` adds `i 2^j 3^k`) and, for `PermuteDigits`, hash each digit's permutation
+/// key once per dimension instead of once per value.
 ///
 /// ```
 /// use qmckit::pixel::{HaltonSampler, PixelSampler, Randomization};
@@ -158,6 +161,149 @@ impl HaltonSampler {
     }
 }
 
+/// Entries of a prepared `PermuteDigits` fill's digit-permutation table (`base` entries
+/// per digit); a dimension whose table would not fit permutes as the handle does.
+const TABLE_ENTRIES: usize = 512;
+
+/// `floor(2^64 / b) + 1`: `(a M) >> 64` is `a / b` for every `a < 2^32` and `2 <= b <
+/// 2^32` (the error `a (M - 2^64 / b) / 2^64 < 2^-32` stays below `1 / b`).
+const fn reciprocal(b: u64) -> u128 {
+    (u64::MAX / b) as u128 + 1
+}
+
+impl HaltonSampler {
+    /// The prepared fill: `value(h, d)` for the Halton indices `h` of samples
+    /// `0 .. out.len()` of pixel `(x, y)` (`h0 + i 2^j 3^k`, `h0` found once), with
+    /// `d` the dimension through the counter rule for a request of `width` values.
+    #[inline]
+    fn fill_with<T>(
+        &self,
+        x: u32,
+        y: u32,
+        dim: usize,
+        width: usize,
+        out: &mut [T],
+        value: impl Fn(u64, usize) -> T,
+    ) -> Result<()> {
+        self.grid.check_fill(x, y, out.len())?;
+        let d = self.counter_dimension(dim, width);
+        let h0 = self.pixel_key(x, y, 0);
+        let stride = self.scales[0] * self.scales[1];
+        for (i, o) in out.iter_mut().enumerate() {
+            *o = value(h0 + i as u64 * stride, d);
+        }
+        Ok(())
+    }
+
+    /// `PermuteDigits`' digit permutations of dimension `dim` for the first digits, as a
+    /// table (`table[k base + v]` is digit `k`'s image of `v`), or `None` when they do not
+    /// fit [`TABLE_ENTRIES`].
+    fn digit_table(&self, dim: usize) -> Option<[u16; TABLE_ENTRIES]> {
+        let base = PRIMES[dim] as usize;
+        let digits = permute_digit_count(base as u64);
+        if base * digits > TABLE_ENTRIES {
+            return None;
+        }
+        let mut table = [0u16; TABLE_ENTRIES];
+        for (k, row) in table.chunks_exact_mut(base).take(digits).enumerate() {
+            let key = digit_hash(base as u32, k as u32, self.seed) as u32;
+            for (v, t) in row.iter_mut().enumerate() {
+                *t = permutation_element(v as u32, base as u32, key) as u16;
+            }
+        }
+        Some(table)
+    }
+
+    /// Dimension `dim` of Halton index `h < 2^32` under `PermuteDigits`, the digit
+    /// permutations read from `table` and the quotients by reciprocal multiplication.
+    #[inline]
+    fn permuted_small(&self, h: u64, dim: usize, table: &[u16; TABLE_ENTRIES]) -> (u32, f32) {
+        let base = PRIMES[dim] as u64;
+        let m = reciprocal(base);
+        digits_by(
+            base,
+            h,
+            Stop::Permute,
+            |a| ((a as u128 * m) >> 64) as u64,
+            |k, digit, _| {
+                let at = (k as u64 * base + digit as u64) as usize;
+                table.get(at).copied().unwrap_or(0) as u32
+            },
+        )
+    }
+
+    /// The prepared pair fill: the `(R, float)` pairs of dimensions `d, d + 1` through
+    /// `pick` (the fraction or pbrt's float).
+    #[inline]
+    fn fill_pairs<T: Copy>(
+        &self,
+        x: u32,
+        y: u32,
+        dim: usize,
+        out: &mut [[T; 2]],
+        pick: impl Fn((u32, f32)) -> T,
+    ) -> Result<()> {
+        let d = self.counter_dimension(dim, 2);
+        if let (Randomization::PermuteDigits, Some(t0), Some(t1), true) = (
+            self.randomize,
+            self.digit_table(d),
+            self.digit_table(d + 1),
+            self.small_indices(out.len()),
+        ) {
+            return self.fill_with(x, y, dim, 2, out, |h, d| {
+                [
+                    pick(self.permuted_small(h, d, &t0)),
+                    pick(self.permuted_small(h, d + 1, &t1)),
+                ]
+            });
+        }
+        self.fill_with(x, y, dim, 2, out, |h, d| {
+            [pick(self.dimension(h, d)), pick(self.dimension(h, d + 1))]
+        })
+    }
+
+    /// The prepared 1D fill.
+    #[inline]
+    fn fill_values<T: Copy>(
+        &self,
+        x: u32,
+        y: u32,
+        dim: usize,
+        out: &mut [T],
+        pick: impl Fn((u32, f32)) -> T,
+    ) -> Result<()> {
+        let d = self.counter_dimension(dim, 1);
+        if let (Randomization::PermuteDigits, Some(t), true) = (
+            self.randomize,
+            self.digit_table(d),
+            self.small_indices(out.len()),
+        ) {
+            return self.fill_with(x, y, dim, 1, out, |h, d| {
+                pick(self.permuted_small(h, d, &t))
+            });
+        }
+        self.fill_with(x, y, dim, 1, out, |h, d| pick(self.dimension(h, d)))
+    }
+
+    /// Whether the Halton indices of `n` samples of any pixel stay below `2^32`.
+    fn small_indices(&self, n: usize) -> bool {
+        let stride = self.scales[0] * self.scales[1];
+        (n as u64).saturating_mul(stride) <= 1 << 32
+    }
+}
+
+/// The digits pbrt's `ScrambledRadicalInverse` takes in base `b`: while
+/// `1 - (b - 1) fl(b^-n) < 1` in `f32` (the index's value does not matter).
+fn permute_digit_count(base: u64) -> usize {
+    let inv_base = 1.0f32 / base as f32;
+    let (mut inv_m, mut n) = (1.0f32, 0);
+    while 1.0 - (base - 1) as f32 * inv_m < 1.0 && n < 64 {
+        inv_m *= inv_base;
+        n += 1;
+    }
+    n
+}
+
 /// pbrt's `Hash(base, digitIndex, seed)`: MurmurHash64A of the 12 bytes for a 32-bit seed,
 /// of 16 bytes (the seed's 64 bits) above.
 fn digit_hash(base: u32, k: u32, seed: u64) -> u64 {
@@ -211,6 +357,7 @@ enum Stop {
 
 /// The 0.32 truncation of `R / b^n` and pbrt's `f32` `min(float(R) * fl(b^-n), 1 - 2^-24)`,
 /// with `fl(b^-n)` the product of `n` factors `fl(1 / b)` rounded at each step.
+#[inline]
 fn finish(reversed: u64, power: u128, inv_m: f32) -> (u32, f32) {
     let exact = ((reversed as u128) << 32) / power;
     let exact = if exact > u32::MAX as u128 {
@@ -247,7 +394,20 @@ fn radical_inverse(base: u64, mut a: u64) -> (u32, f32) {
 
 /// A randomized radical inverse: digit `k` (value `v`, the reversed digits so far `r`)
 /// becomes `permute(k, v, r)`, for as many digits as `stop` allows.
-fn digits(base: u64, mut a: u64, stop: Stop, permute: impl Fn(u32, u32, u64) -> u32) -> (u32, f32) {
+#[inline]
+fn digits(base: u64, a: u64, stop: Stop, permute: impl Fn(u32, u32, u64) -> u32) -> (u32, f32) {
+    digits_by(base, a, stop, |a| a / base, permute)
+}
+
+/// [`digits`] with the quotient `a / base` computed by `div` (exact for the indices given).
+#[inline]
+fn digits_by(
+    base: u64,
+    mut a: u64,
+    stop: Stop,
+    div: impl Fn(u64) -> u64,
+    permute: impl Fn(u32, u32, u64) -> u32,
+) -> (u32, f32) {
     let limit = u64::MAX / base - base;
     let inv_base = 1.0f32 / base as f32;
     let (mut inv_m, mut power, mut reversed, mut k) = (1.0f32, 1u128, 0u64, 0u32);
@@ -259,7 +419,7 @@ fn digits(base: u64, mut a: u64, stop: Stop, permute: impl Fn(u32, u32, u64) -> 
         if !more || reversed >= limit {
             break;
         }
-        let next = a / base;
+        let next = div(a);
         let digit = (a - next * base) as u32;
         reversed = reversed * base + permute(k, digit, reversed) as u64;
         inv_m *= inv_base;
@@ -273,6 +433,22 @@ fn digits(base: u64, mut a: u64, stop: Stop, permute: impl Fn(u32, u32, u64) -> 
 impl PixelSampler for HaltonSampler {
     fn grid(&self) -> PixelGrid {
         self.grid
+    }
+
+    fn fill_2d(&self, x: u32, y: u32, dim: usize, out: &mut [[u32; 2]]) -> Result<()> {
+        self.fill_pairs(x, y, dim, out, |v| v.0)
+    }
+
+    fn fill_2d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [[f32; 2]]) -> Result<()> {
+        self.fill_pairs(x, y, dim, out, |v| v.1)
+    }
+
+    fn fill_1d(&self, x: u32, y: u32, dim: usize, out: &mut [u32]) -> Result<()> {
+        self.fill_values(x, y, dim, out, |v| v.0)
+    }
+
+    fn fill_1d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [f32]) -> Result<()> {
+        self.fill_values(x, y, dim, out, |v| v.1)
     }
 
     /// The Halton index `h` of the sample.

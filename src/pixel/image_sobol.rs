@@ -2,10 +2,12 @@
 //! pixel found by solving for their indices (Grünschloss, Raab & Keller 2012, "Enumerating
 //! quasi-Monte Carlo point sequences in elementary intervals").
 
+use super::prepared::{CHUNK, randomize_pairs, randomize_values};
 use super::{
     F32_ONE_MINUS_EPSILON, PixelGrid, PixelPoint, PixelSampler, Randomization, pbrt_f32,
     seed_hash2, sobol0, sobol1,
 };
+use crate::bits::reverse_bits;
 use crate::digital::sobol::SobolDimension;
 use crate::error::{Error, Result};
 
@@ -47,6 +49,13 @@ pub const IMAGE_SOBOL_DIMS: usize = {
 /// `O(m + log2 spp)` XORs for the index (pbrt's `SobolIntervalToIndex`, once); per value one
 /// Sobol' value (32 AND/XOR), one MurmurHash and the scramble.
 ///
+/// The prepared fills ([`PixelSampler::fill_2d`]) use that the index is linear over GF(2)
+/// in the pixel code and the sample's frame: sample `i`'s index is `l(p) ^ e(i)` with
+/// `e(i)` the XOR of one column per set bit of `i`, so its Sobol' value in dimension `d`
+/// is `S_d(l(p)) ^ XOR of S_d(e_c)`. Per pixel and dimension: the system solved once,
+/// `S_d` of it and of the `log2 spp` frame columns, the hash; per sample one XOR (the
+/// table doubles over the frame bits) and the scramble in the bit-reversed domain.
+///
 /// ```
 /// use qmckit::pixel::{ImageSobol, PixelSampler, Randomization};
 /// let s = ImageSobol::new(16, 9, 4, Randomization::FastOwen, 0)?;
@@ -67,6 +76,9 @@ pub struct ImageSobol {
     frame_cols: [u32; 32],
     /// The index `l < 2^2m` with `f(l) = 2^c`.
     inverse: [u32; 32],
+    /// What sample bit `c` adds to the index: `2^(2m + c) ^ l(frame_cols[c])` (zero past
+    /// the 32 bits), so sample `i`'s index is `l(p) ^ XOR of these` over its set bits.
+    frame_index: [u32; 32],
 }
 
 /// The pixel code of Sobol' index `i` on the `2^m` grid:
@@ -140,6 +152,12 @@ impl ImageSobol {
                 }
             }
         }
+        let frame_index = core::array::from_fn(|c| {
+            let (Some(&f), true) = (frame_cols.get(c), (c as u32) + 2 * m < 32) else {
+                return 0;
+            };
+            product(&comb, f) ^ (1u32 << (2 * m + c as u32))
+        });
         Ok(ImageSobol {
             grid,
             randomize,
@@ -147,6 +165,7 @@ impl ImageSobol {
             m,
             frame_cols,
             inverse: comb,
+            frame_index,
         })
     }
 
@@ -195,9 +214,127 @@ impl ImageSobol {
     }
 }
 
+/// `S(i)`: the XOR of the Sobol' columns `cols[b]` over the set bits `b` of `i` (the
+/// matrix-vector product over GF(2)), branch-free.
+#[inline]
+fn product(cols: &[u32; 32], i: u32) -> u32 {
+    cols.iter()
+        .enumerate()
+        .fold(0, |v, (b, &c)| v ^ (c & 0u32.wrapping_sub((i >> b) & 1)))
+}
+
+impl ImageSobol {
+    /// The reversed-domain Sobol' values of dimension `d` (`< IMAGE_SOBOL_DIMS`) of samples
+    /// `start .. start + out.len()` of the pixel whose frame-0 index is `l0`, into `out`:
+    /// the pixel's value, the chunk's high frame bits, then the table doubled over the low
+    /// ones.
+    fn reversed_values(&self, d: usize, l0: u32, start: u32, out: &mut [u32]) {
+        let cols = match SobolDimension::new(d) {
+            Ok(s) => *s.directions(),
+            Err(_) => [0; 32], // unreachable: `counter_dimension` keeps `d` in the table
+        };
+        // Only the sample bits in use: those of the chunk's last sample.
+        let last = start.saturating_add(out.len().saturating_sub(1) as u32);
+        let bits = (32 - last.leading_zeros()) as usize;
+        let mut w = [0u32; 32];
+        for (wc, &e) in w.iter_mut().zip(&self.frame_index).take(bits) {
+            *wc = reverse_bits(product(&cols, e));
+        }
+        let v0 = reverse_bits(product(&cols, l0));
+        let first = w.iter().take(bits).enumerate().fold(v0, |v, (c, &wc)| {
+            v ^ (wc & 0u32.wrapping_sub((start >> c) & 1))
+        });
+        if let Some(o) = out.first_mut() {
+            *o = first;
+        }
+        // `start` is a multiple of CHUNK, so the low bits of the chunk's samples are `k`.
+        let mut len = 1;
+        for &wc in &w {
+            if len >= out.len() {
+                break;
+            }
+            let (lo, hi) = out.split_at_mut(len);
+            let n = len.min(hi.len());
+            for (h, &l) in hi[..n].iter_mut().zip(lo.iter()) {
+                *h = l ^ wc;
+            }
+            len *= 2;
+        }
+    }
+
+    /// The prepared pair fill at dimensions `d, d + 1` (`d` through the counter rule).
+    #[inline]
+    fn fill_pairs<T>(
+        &self,
+        x: u32,
+        y: u32,
+        dim: usize,
+        out: &mut [[T; 2]],
+        conv: impl Fn(u32) -> T + Copy,
+    ) -> Result<()> {
+        self.grid.check_fill(x, y, out.len())?;
+        let d = self.counter_dimension(dim, 2);
+        let keys = [
+            seed_hash2(d as u32, self.seed) as u32,
+            seed_hash2(d.wrapping_add(1) as u32, self.seed) as u32,
+        ];
+        let l0 = self.interval_to_index(0, x, y) as u32;
+        let (mut a, mut b) = ([0u32; CHUNK], [0u32; CHUNK]);
+        for (c, chunk) in out.chunks_mut(CHUNK).enumerate() {
+            let start = (c * CHUNK) as u32;
+            let (a, b) = (&mut a[..chunk.len()], &mut b[..chunk.len()]);
+            self.reversed_values(d, l0, start, a);
+            self.reversed_values(d.wrapping_add(1), l0, start, b);
+            let (a, b) = (&*a, &*b);
+            randomize_pairs(self.randomize, keys, chunk, |k| [a[k], b[k]], conv);
+        }
+        Ok(())
+    }
+
+    /// The prepared 1D fill.
+    #[inline]
+    fn fill_values<T>(
+        &self,
+        x: u32,
+        y: u32,
+        dim: usize,
+        out: &mut [T],
+        conv: impl Fn(u32) -> T + Copy,
+    ) -> Result<()> {
+        self.grid.check_fill(x, y, out.len())?;
+        let d = self.counter_dimension(dim, 1);
+        let key = seed_hash2(d as u32, self.seed) as u32;
+        let l0 = self.interval_to_index(0, x, y) as u32;
+        let mut a = [0u32; CHUNK];
+        for (c, chunk) in out.chunks_mut(CHUNK).enumerate() {
+            let a = &mut a[..chunk.len()];
+            self.reversed_values(d, l0, (c * CHUNK) as u32, a);
+            let a = &*a;
+            randomize_values(self.randomize, key, chunk, |k| a[k], conv);
+        }
+        Ok(())
+    }
+}
+
 impl PixelSampler for ImageSobol {
     fn grid(&self) -> PixelGrid {
         self.grid
+    }
+
+    fn fill_2d(&self, x: u32, y: u32, dim: usize, out: &mut [[u32; 2]]) -> Result<()> {
+        self.fill_pairs(x, y, dim, out, |v| v)
+    }
+
+    fn fill_2d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [[f32; 2]]) -> Result<()> {
+        self.fill_pairs(x, y, dim, out, pbrt_f32)
+    }
+
+    fn fill_1d(&self, x: u32, y: u32, dim: usize, out: &mut [u32]) -> Result<()> {
+        self.fill_values(x, y, dim, out, |v| v)
+    }
+
+    fn fill_1d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [f32]) -> Result<()> {
+        self.fill_values(x, y, dim, out, pbrt_f32)
     }
 
     /// The Sobol' index of the sample, `SobolIntervalToIndex(m, index, (x, y))`.

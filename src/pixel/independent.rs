@@ -1,6 +1,6 @@
 //! Independent uniform values per pixel: the white-noise baseline of the pixel samplers.
 
-use super::{PixelGrid, PixelPoint, PixelSampler};
+use super::{PixelGrid, PixelPoint, PixelSampler, pbrt_f32};
 use crate::error::Result;
 use crate::hash::{hash3, mix64};
 
@@ -49,6 +49,33 @@ impl IndependentPixels {
 impl PixelSampler for IndependentPixels {
     fn grid(&self) -> PixelGrid {
         self.grid
+    }
+
+    /// The pixel hash once, one `hash3` a value.
+    fn fill_2d(&self, x: u32, y: u32, dim: usize, out: &mut [[u32; 2]]) -> Result<()> {
+        self.grid.check_fill(x, y, out.len())?;
+        let key = self.pixel_key(x, y, 0);
+        let c = (dim as u64).wrapping_mul(2);
+        for (i, o) in (0u64..).zip(out.iter_mut()) {
+            *o = [
+                (hash3(key, i, c) >> 32) as u32,
+                (hash3(key, i, c.wrapping_add(1)) >> 32) as u32,
+            ];
+        }
+        Ok(())
+    }
+
+    fn fill_2d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [[f32; 2]]) -> Result<()> {
+        self.grid.check_fill(x, y, out.len())?;
+        let key = self.pixel_key(x, y, 0);
+        let c = (dim as u64).wrapping_mul(2);
+        for (i, o) in (0u64..).zip(out.iter_mut()) {
+            *o = [
+                pbrt_f32((hash3(key, i, c) >> 32) as u32),
+                pbrt_f32((hash3(key, i, c.wrapping_add(1)) >> 32) as u32),
+            ];
+        }
+        Ok(())
     }
 
     /// `seed_pixel = mix64(seed ^ (x << 32 | y))`.

@@ -40,9 +40,13 @@
 //! [`HaltonSampler`] and [`StratifiedSampler`] compute their floats as pbrt does, in `f32`
 //! arithmetic ([`PixelSampler::value_1d_f32`]); their 0.32 fractions are the exact values
 //! those floats round. [`pbrt_f32`] converts a 0.32 fraction as pbrt does (`min(float(v) * 2^-32, 1 - 2^-24)`);
-//! the `*_f32` draws return pbrt's floats. For ZSobol, [`ZSobol::pixel_dimension`] is the
-//! batch path of one pixel and one dimension over all its samples (the digits above the
-//! sample's and both scramble keys computed once; bit-identical).
+//! the `*_f32` draws return pbrt's floats. The batch path of one pixel and one dimension
+//! over all its samples is [`PixelSampler::fill_2d`] (and `fill_1d`, `fill_2d_f32`,
+//! `fill_1d_f32`): every sampler computes what depends only on `(pixel, dimension)` once
+//! (hashes, keys, ZSobol's pixel digits, the image-plane Sobol' system, Halton's pixel
+//! index and digit tables, the stratified stream's jump) and fills the samples in one pass,
+//! the Sobol' samplers in the bit-reversed domain; bit-identical to the handle's draws.
+//! [`ZSobol::pixel_dimension`] is the per-sample form of ZSobol's.
 //!
 //! [`domain`] derives dimensions by key instead of by counter ([`Domain`]: `new_domain(key)`,
 //! `split`, `chain`), for path tracers; its bits are documented as stable.
@@ -84,6 +88,8 @@ mod independent;
 mod padded;
 pub mod pmj02bn;
 mod pmj_pixels;
+mod prepared;
+mod seed_hash;
 mod stratified;
 mod zsobol;
 
@@ -106,6 +112,7 @@ pub use zsobol::{ZSobol, ZSobolPixelDim};
 use crate::bits::reverse_bits;
 use crate::error::{Error, Result};
 use crate::randomize::{FastOwenScrambler, OwenHash, PbrtOwenScrambler};
+pub(crate) use seed_hash::{seed_hash2, seed_hash4};
 
 /// How a pbrt sampler randomizes its Sobol' values (pbrt-v4's `RandomizeStrategy`), each keyed
 /// by a 32-bit hash of the dimension (and pixel) and the seed.
@@ -252,6 +259,25 @@ impl PixelGrid {
         Ok(())
     }
 
+    /// Checks that `(x, y)` is in the image and that `count <= spp` samples are asked for
+    /// (the fill paths' one check).
+    ///
+    /// # Errors
+    /// As [`check`](Self::check); [`Error::BufferLength`] for `count > spp`.
+    #[inline]
+    pub const fn check_fill(&self, x: u32, y: u32, count: usize) -> Result<()> {
+        if let Err(e) = self.check(x, y, 0) {
+            return Err(e);
+        }
+        if count > self.spp as usize {
+            return Err(Error::BufferLength {
+                expected: self.spp as usize,
+                got: count,
+            });
+        }
+        Ok(())
+    }
+
     /// `RoundUpPow2(max(width, height))`, the side of the square power-of-two grid pbrt's
     /// Sobol' samplers lay over the image.
     pub const fn pow2_side(&self) -> u32 {
@@ -278,6 +304,18 @@ pub struct PixelPoint {
 }
 
 impl PixelPoint {
+    /// The point of sample `index` of pixel `(x, y)` with the sampler's key, unchecked (the
+    /// fill paths check the pixel and the count once).
+    #[inline]
+    fn new<S: PixelSampler + ?Sized>(sampler: &S, x: u32, y: u32, index: u32) -> Self {
+        PixelPoint {
+            x,
+            y,
+            index,
+            key: sampler.pixel_key(x, y, index),
+        }
+    }
+
     /// The pixel's column.
     pub const fn x(&self) -> u32 {
         self.x
@@ -391,6 +429,80 @@ pub trait PixelSampler {
         true
     }
 
+    /// The pixel's samples at one dimension pair, prepared: `out[i]` becomes the pair
+    /// pbrt's `Get2D` returns for sample `i` of pixel `(x, y)` with the counter at `dim`
+    /// (`start_pixel_sample(x, y, i)?.with_dimension(dim).get_2d()`), for `i <
+    /// out.len() <= spp`. The samplers override it with one pass over the samples that
+    /// computes what depends on `(pixel, dimension)` once (the default runs the handle's
+    /// draws). Bit-identical to the handle.
+    ///
+    /// ```
+    /// use qmckit::pixel::{PaddedSobol, PixelSampler, Randomization};
+    /// let p = PaddedSobol::new(64, 64, 16, Randomization::FastOwen, 1)?;
+    /// let mut out = [[0u32; 2]; 16];
+    /// p.fill_2d(9, 40, 6, &mut out)?;
+    /// for (i, v) in (0..16).zip(out) {
+    ///     assert_eq!(v, p.start_pixel_sample(9, 40, i)?.with_dimension(6).get_2d());
+    /// }
+    /// # Ok::<(), qmckit::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// As [`PixelGrid::check`] for the pixel; [`Error::BufferLength`] when `out` holds
+    /// more than `spp` samples.
+    fn fill_2d(&self, x: u32, y: u32, dim: usize, out: &mut [[u32; 2]]) -> Result<()> {
+        self.grid().check_fill(x, y, out.len())?;
+        let d = self.counter_dimension(dim, 2);
+        for (i, o) in (0u32..).zip(out.iter_mut()) {
+            let at = PixelPoint::new(self, x, y, i);
+            *o = self.value_2d(&at, d);
+        }
+        Ok(())
+    }
+
+    /// [`fill_2d`](Self::fill_2d) as pbrt's `f32`s (`get_2d_f32`).
+    ///
+    /// # Errors
+    /// As [`fill_2d`](Self::fill_2d).
+    fn fill_2d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [[f32; 2]]) -> Result<()> {
+        self.grid().check_fill(x, y, out.len())?;
+        let d = self.counter_dimension(dim, 2);
+        for (i, o) in (0u32..).zip(out.iter_mut()) {
+            let at = PixelPoint::new(self, x, y, i);
+            *o = self.value_2d_f32(&at, d);
+        }
+        Ok(())
+    }
+
+    /// The 1D values of the pixel's samples with the counter at `dim`: `out[i]` is
+    /// `start_pixel_sample(x, y, i)?.with_dimension(dim).get_1d()`, `i < out.len() <= spp`.
+    ///
+    /// # Errors
+    /// As [`fill_2d`](Self::fill_2d).
+    fn fill_1d(&self, x: u32, y: u32, dim: usize, out: &mut [u32]) -> Result<()> {
+        self.grid().check_fill(x, y, out.len())?;
+        let d = self.counter_dimension(dim, 1);
+        for (i, o) in (0u32..).zip(out.iter_mut()) {
+            let at = PixelPoint::new(self, x, y, i);
+            *o = self.value_1d(&at, d);
+        }
+        Ok(())
+    }
+
+    /// [`fill_1d`](Self::fill_1d) as pbrt's `f32`s (`get_1d_f32`).
+    ///
+    /// # Errors
+    /// As [`fill_2d`](Self::fill_2d).
+    fn fill_1d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [f32]) -> Result<()> {
+        self.grid().check_fill(x, y, out.len())?;
+        let d = self.counter_dimension(dim, 1);
+        for (i, o) in (0u32..).zip(out.iter_mut()) {
+            let at = PixelPoint::new(self, x, y, i);
+            *o = self.value_1d_f32(&at, d);
+        }
+        Ok(())
+    }
+
     /// pbrt's `StartPixelSample(p, index)`: checks `(x, y)` and `index` once, does the
     /// per-pixel precomputation, and returns the handle whose draws cannot fail, with the
     /// dimension counter at 0 ([`PixelSample::with_dimension`] sets it).
@@ -451,6 +563,18 @@ macro_rules! forward_pixel_sampler {
             }
             fn pixel_2d_moves_counter(&self) -> bool {
                 (**self).pixel_2d_moves_counter()
+            }
+            fn fill_2d(&self, x: u32, y: u32, dim: usize, out: &mut [[u32; 2]]) -> Result<()> {
+                (**self).fill_2d(x, y, dim, out)
+            }
+            fn fill_2d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [[f32; 2]]) -> Result<()> {
+                (**self).fill_2d_f32(x, y, dim, out)
+            }
+            fn fill_1d(&self, x: u32, y: u32, dim: usize, out: &mut [u32]) -> Result<()> {
+                (**self).fill_1d(x, y, dim, out)
+            }
+            fn fill_1d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [f32]) -> Result<()> {
+                (**self).fill_1d_f32(x, y, dim, out)
             }
         }
     )*};
@@ -599,41 +723,4 @@ impl<'a, S: PixelSampler + ?Sized> PixelSample<'a, S> {
             self.dim = self.dim.wrapping_add(2);
         }
     }
-}
-
-/// pbrt's `Hash(a, seed)` with a 64-bit seed: MurmurHash64A of the 8 bytes `(a, seed)` for
-/// `seed < 2^32` (pbrt's `int` seed, bit-identical), of the 12 bytes `(a, seed as u64)`
-/// above, so distinct seeds stay distinct.
-#[inline]
-pub(crate) const fn seed_hash2(a: u32, seed: u64) -> u64 {
-    if seed >> 32 == 0 {
-        return crate::hash::pbrt::hash2(a, seed as u32);
-    }
-    let (a, s) = (a.to_le_bytes(), seed.to_le_bytes());
-    let b = [
-        a[0], a[1], a[2], a[3], s[0], s[1], s[2], s[3], s[4], s[5], s[6], s[7],
-    ];
-    crate::hash::pbrt::murmur_hash64a(&b, 0)
-}
-
-/// pbrt's `Hash(p, dim, seed)` with a 64-bit seed: [`hash4`](crate::hash::pbrt::hash4) of
-/// the 16 bytes for `seed < 2^32`, MurmurHash64A of the 20 bytes `(x, y, dim, seed as
-/// u64)` above. `dim` is the dimension's low 32 bits (pbrt's `int`).
-#[inline]
-pub(crate) const fn seed_hash4(x: u32, y: u32, dim: usize, seed: u64) -> u64 {
-    let d = dim as u32;
-    if seed >> 32 == 0 {
-        return crate::hash::pbrt::hash4(x, y, d, seed as u32);
-    }
-    let (x, y, d, s) = (
-        x.to_le_bytes(),
-        y.to_le_bytes(),
-        d.to_le_bytes(),
-        seed.to_le_bytes(),
-    );
-    let b = [
-        x[0], x[1], x[2], x[3], y[0], y[1], y[2], y[3], d[0], d[1], d[2], d[3], s[0], s[1], s[2],
-        s[3], s[4], s[5], s[6], s[7],
-    ];
-    crate::hash::pbrt::murmur_hash64a(&b, 0)
 }

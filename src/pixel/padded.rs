@@ -1,7 +1,12 @@
 //! pbrt-v4's `PaddedSobolSampler`: Sobol' dimensions (0, 1) re-used for every dimension
 //! pair, decorrelated by a hashed per-pixel, per-dimension index permutation and scramble.
 
-use super::{PixelGrid, PixelPoint, PixelSampler, Randomization, seed_hash4, sobol0, sobol1};
+use super::prepared::{
+    CHUNK, permutation_fill, randomize_pairs, randomize_values, sobol1_reversed,
+};
+use super::{
+    PixelGrid, PixelPoint, PixelSampler, Randomization, pbrt_f32, seed_hash4, sobol0, sobol1,
+};
 use crate::error::Result;
 use crate::hash::pbrt::permutation_element;
 
@@ -14,7 +19,9 @@ use crate::hash::pbrt::permutation_element;
 /// noise across pixels). Any `spp >= 1`; any dimension (it only feeds the hash, its low 32
 /// bits as pbrt's `int`). Cost: nothing to precompute per pixel (the hash needs the
 /// dimension); per value one MurmurHash, one permutation (about 20 multiplications) and the
-/// scramble.
+/// scramble. The prepared fills ([`PixelSampler::fill_2d`]) hash `(pixel, dimension)`
+/// once and run the permutation (one branch-free round for a power-of-two `spp`) and the
+/// scramble in the bit-reversed domain over the pixel's samples.
 ///
 /// ```
 /// use qmckit::pixel::{PaddedSobol, PixelSampler, Randomization};
@@ -62,7 +69,77 @@ impl PaddedSobol {
     }
 }
 
+impl PaddedSobol {
+    /// The prepared pair fill: the hash once, then per chunk of samples the permuted
+    /// indices and the randomized pairs, converted by `conv`.
+    #[inline]
+    fn fill_pairs<T>(
+        &self,
+        x: u32,
+        y: u32,
+        dim: usize,
+        out: &mut [[T; 2]],
+        conv: impl Fn(u32) -> T + Copy,
+    ) -> Result<()> {
+        self.grid.check_fill(x, y, out.len())?;
+        let h = seed_hash4(x, y, dim, self.seed);
+        let keys = [h as u32, (h >> 32) as u32];
+        let mut perm = [0u32; CHUNK];
+        for (c, chunk) in out.chunks_mut(CHUNK).enumerate() {
+            let perm = &mut perm[..chunk.len()];
+            permutation_fill((c * CHUNK) as u32, self.grid.spp, keys[0], perm);
+            let perm = &*perm;
+            randomize_pairs(
+                self.randomize,
+                keys,
+                chunk,
+                |k| [perm[k], sobol1_reversed(perm[k])],
+                conv,
+            );
+        }
+        Ok(())
+    }
+
+    /// The prepared 1D fill (Sobol' dimension 0, the high key).
+    #[inline]
+    fn fill_values<T>(
+        &self,
+        x: u32,
+        y: u32,
+        dim: usize,
+        out: &mut [T],
+        conv: impl Fn(u32) -> T + Copy,
+    ) -> Result<()> {
+        self.grid.check_fill(x, y, out.len())?;
+        let h = seed_hash4(x, y, dim, self.seed);
+        let mut perm = [0u32; CHUNK];
+        for (c, chunk) in out.chunks_mut(CHUNK).enumerate() {
+            let perm = &mut perm[..chunk.len()];
+            permutation_fill((c * CHUNK) as u32, self.grid.spp, h as u32, perm);
+            let perm = &*perm;
+            randomize_values(self.randomize, (h >> 32) as u32, chunk, |k| perm[k], conv);
+        }
+        Ok(())
+    }
+}
+
 impl PixelSampler for PaddedSobol {
+    fn fill_2d(&self, x: u32, y: u32, dim: usize, out: &mut [[u32; 2]]) -> Result<()> {
+        self.fill_pairs(x, y, dim, out, |v| v)
+    }
+
+    fn fill_2d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [[f32; 2]]) -> Result<()> {
+        self.fill_pairs(x, y, dim, out, pbrt_f32)
+    }
+
+    fn fill_1d(&self, x: u32, y: u32, dim: usize, out: &mut [u32]) -> Result<()> {
+        self.fill_values(x, y, dim, out, |v| v)
+    }
+
+    fn fill_1d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [f32]) -> Result<()> {
+        self.fill_values(x, y, dim, out, pbrt_f32)
+    }
+
     fn grid(&self) -> PixelGrid {
         self.grid
     }

@@ -3,7 +3,8 @@
 //! per-pixel, per-dimension permutation of aligned blocks of the same table, shifted by a
 //! blue-noise value, for the other dimensions.
 
-use super::{PixelGrid, PixelPoint, PixelSampler, seed_hash4};
+use super::prepared::{CHUNK, permutation_fill};
+use super::{PixelGrid, PixelPoint, PixelSampler, pbrt_f32, seed_hash4};
 use crate::blue_noise::mask64::MASK64;
 use crate::error::{Error, Result};
 use crate::hash::pbrt::{mix_bits, permutation_element};
@@ -120,7 +121,10 @@ const fn blue_noise(seed: u64, t: u32, x: u32, y: u32) -> u32 {
 /// hashed offset (pbrt ships 48 textures of 128x128). Any `spp` in `1..=65536`; any
 /// dimension (its low 32 bits feed the hashes, as pbrt's `int`).
 /// Cost: the tile entry once per start; one MurmurHash, one permutation and two mask reads
-/// a value; `O(1)` position.
+/// a value; `O(1)` position. The prepared fills ([`PixelSampler::fill_2d`]) hash, pick
+/// the block and read the blue noise once per pixel and dimension; per sample one
+/// permutation (a branch-free round for a power-of-two `spp`), one table read and the
+/// shift, and the 1D division by `spp` is a shift for a power of two.
 ///
 /// ```
 /// use qmckit::pixel::{PixelSampler, Pmj02BnPixels, pmj02bn};
@@ -189,9 +193,97 @@ impl<'t> Pmj02BnPixels<'t> {
     }
 }
 
+impl Pmj02BnPixels<'_> {
+    /// The prepared pair fill (the counter read as `max(dim, 2)`), converted by `conv`.
+    #[inline]
+    fn fill_pairs<T>(
+        &self,
+        x: u32,
+        y: u32,
+        dim: usize,
+        out: &mut [[T; 2]],
+        conv: impl Fn(u32) -> T + Copy,
+    ) -> Result<()> {
+        self.grid.check_fill(x, y, out.len())?;
+        let d = dim.max(2);
+        let h = seed_hash4(x, y, d, self.seed);
+        let block = self.grid.spp.next_power_of_two() as u64;
+        let first = (((h >> 32) * (TABLE_LEN as u64 / block)) >> 32) * block;
+        // The block lies in the table: `first + block <= TABLE_LEN`.
+        let table = self
+            .table
+            .get(first as usize..(first + block) as usize)
+            .unwrap_or(&[]);
+        let t = d as u32;
+        let (n0, n1) = (
+            blue_noise(self.seed, t, x, y),
+            blue_noise(self.seed, t.wrapping_add(1), x, y),
+        );
+        let mut perm = [0u32; CHUNK];
+        for (c, chunk) in out.chunks_mut(CHUNK).enumerate() {
+            let perm = &mut perm[..chunk.len()];
+            permutation_fill((c * CHUNK) as u32, self.grid.spp, h as u32, perm);
+            for (o, &i) in chunk.iter_mut().zip(perm.iter()) {
+                let p = table.get(i as usize).copied().unwrap_or([0, 0]);
+                *o = [conv(p[0].wrapping_add(n0)), conv(p[1].wrapping_add(n1))];
+            }
+        }
+        Ok(())
+    }
+
+    /// The prepared 1D fill, `(PermutationElement(i) 2^32 + blue noise) / spp`.
+    #[inline]
+    fn fill_values<T>(
+        &self,
+        x: u32,
+        y: u32,
+        dim: usize,
+        out: &mut [T],
+        conv: impl Fn(u32) -> T + Copy,
+    ) -> Result<()> {
+        self.grid.check_fill(x, y, out.len())?;
+        let d = dim.max(2);
+        let h = seed_hash4(x, y, d, self.seed);
+        let noise = blue_noise(self.seed, d as u32, x, y) as u64;
+        let spp = self.grid.spp;
+        let mut perm = [0u32; CHUNK];
+        for (c, chunk) in out.chunks_mut(CHUNK).enumerate() {
+            let perm = &mut perm[..chunk.len()];
+            permutation_fill((c * CHUNK) as u32, spp, h as u32, perm);
+            if spp.is_power_of_two() {
+                let shift = spp.trailing_zeros();
+                for (o, &i) in chunk.iter_mut().zip(perm.iter()) {
+                    *o = conv(((((i as u64) << 32) + noise) >> shift) as u32);
+                }
+            } else {
+                for (o, &i) in chunk.iter_mut().zip(perm.iter()) {
+                    *o = conv(((((i as u64) << 32) + noise) / spp as u64) as u32);
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
 impl PixelSampler for Pmj02BnPixels<'_> {
     fn grid(&self) -> PixelGrid {
         self.grid
+    }
+
+    fn fill_2d(&self, x: u32, y: u32, dim: usize, out: &mut [[u32; 2]]) -> Result<()> {
+        self.fill_pairs(x, y, dim, out, |v| v)
+    }
+
+    fn fill_2d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [[f32; 2]]) -> Result<()> {
+        self.fill_pairs(x, y, dim, out, pbrt_f32)
+    }
+
+    fn fill_1d(&self, x: u32, y: u32, dim: usize, out: &mut [u32]) -> Result<()> {
+        self.fill_values(x, y, dim, out, |v| v)
+    }
+
+    fn fill_1d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [f32]) -> Result<()> {
+        self.fill_values(x, y, dim, out, pbrt_f32)
     }
 
     /// The sample's entry in the tile: `(pixel in the tile) per_pixel + index`.

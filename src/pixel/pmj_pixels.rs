@@ -1,7 +1,8 @@
 //! PMJ02 as a pixel sampler: a seeded PMJ02 sequence per pixel and dimension, its first
 //! `spp` points visited through a hashed permutation.
 
-use super::{PixelGrid, PixelPoint, PixelSampler, seed_hash4};
+use super::prepared::{CHUNK, permutation_fill};
+use super::{PixelGrid, PixelPoint, PixelSampler, pbrt_f32, seed_hash4};
 use crate::error::Result;
 use crate::hash::pbrt::permutation_element;
 use crate::pmj::Pmj02;
@@ -13,7 +14,8 @@ use crate::pmj::Pmj02;
 /// per-dimension index permutation), with a generated sequence per pixel instead of pbrt's
 /// shipped tables and blue-noise shifts. With `spp = 2^m` each pixel's samples are a
 /// (0, m, 2)-net in every dimension pair. Any dimension (it only feeds the hash). Cost:
-/// one MurmurHash, one permutation and `2 log2(spp)` hashes a 2D value.
+/// one MurmurHash, one permutation and `2 log2(spp)` hashes a 2D value; the prepared fills
+/// ([`PixelSampler::fill_2d`]) hash and seed once per pixel and dimension.
 ///
 /// ```
 /// use qmckit::pixel::{PixelSampler, Pmj02Pixels};
@@ -56,9 +58,54 @@ impl Pmj02Pixels {
     }
 }
 
+impl Pmj02Pixels {
+    /// The prepared fill: the hash and the sequence once, `value(sequence, permuted i)`
+    /// per sample.
+    #[inline]
+    fn fill_with<T>(
+        &self,
+        x: u32,
+        y: u32,
+        dim: usize,
+        out: &mut [T],
+        value: impl Fn(&Pmj02, u32) -> T,
+    ) -> Result<()> {
+        self.grid.check_fill(x, y, out.len())?;
+        let h = seed_hash4(x, y, dim, self.seed);
+        let p = Pmj02::new(h);
+        let mut perm = [0u32; CHUNK];
+        for (c, chunk) in out.chunks_mut(CHUNK).enumerate() {
+            let perm = &mut perm[..chunk.len()];
+            permutation_fill((c * CHUNK) as u32, self.grid.spp, h as u32, perm);
+            for (o, &i) in chunk.iter_mut().zip(perm.iter()) {
+                *o = value(&p, i);
+            }
+        }
+        Ok(())
+    }
+}
+
 impl PixelSampler for Pmj02Pixels {
     fn grid(&self) -> PixelGrid {
         self.grid
+    }
+
+    fn fill_2d(&self, x: u32, y: u32, dim: usize, out: &mut [[u32; 2]]) -> Result<()> {
+        self.fill_with(x, y, dim, out, |p, i| [p.value(i, 0), p.value(i, 1)])
+    }
+
+    fn fill_2d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [[f32; 2]]) -> Result<()> {
+        self.fill_with(x, y, dim, out, |p, i| {
+            [pbrt_f32(p.value(i, 0)), pbrt_f32(p.value(i, 1))]
+        })
+    }
+
+    fn fill_1d(&self, x: u32, y: u32, dim: usize, out: &mut [u32]) -> Result<()> {
+        self.fill_with(x, y, dim, out, |p, i| p.value(i, 0))
+    }
+
+    fn fill_1d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [f32]) -> Result<()> {
+        self.fill_with(x, y, dim, out, |p, i| pbrt_f32(p.value(i, 0)))
     }
 
     fn value_1d(&self, at: &PixelPoint, dim: usize) -> u32 {

@@ -1,6 +1,7 @@
 //! pbrt-v4's `StratifiedSampler`: per pixel and dimension, the samples permuted over the
 //! strata of `[0, 1)` or of an `xs x ys` grid, jittered by a PCG32 stream.
 
+use super::prepared::{CHUNK, permutation_fill};
 use super::{PixelGrid, PixelPoint, PixelSampler, pbrt_f32, seed_hash4};
 use crate::error::{Error, Result};
 use crate::hash::pbrt::{mix_bits, murmur_hash64a, permutation_element};
@@ -25,6 +26,10 @@ const PCG_MULT: u64 = 0x5851_f42d_4c95_7f2d;
 /// truncations of `(s + u 2^-32) / n` (`u = 2^31` unjittered), which the floats round.
 /// Cost: nothing per start but one MurmurHash; per value one MurmurHash, one permutation and
 /// a PCG32 jump, `O(log2(65536 i + d))` 64-bit multiplications.
+/// The prepared fills ([`PixelSampler::fill_2d`]) hash once per pixel and dimension, jump
+/// the stream once to sample 0 and then from sample to sample by one precomputed affine
+/// step (`65536` draws: one multiplication and one addition), and permute the strata
+/// branch-free for a power-of-two `spp`.
 ///
 /// ```
 /// use qmckit::pixel::{PixelSampler, StratifiedSampler};
@@ -141,6 +146,47 @@ impl StratifiedSampler {
     }
 }
 
+impl StratifiedSampler {
+    /// The prepared fill of samples `0 .. out.len()` of pixel `(x, y)` at dimension `dim`:
+    /// `value(stratum, [u, v])` per sample, the strata from one hash and the stream
+    /// values `u, v` at `65536 i + d` from one jump and an affine step per sample.
+    #[inline]
+    fn fill_with<T>(
+        &self,
+        x: u32,
+        y: u32,
+        dim: usize,
+        out: &mut [T],
+        value: impl Fn(u32, [u32; 2]) -> T,
+    ) -> Result<()> {
+        self.grid.check_fill(x, y, out.len())?;
+        let h = seed_hash4(x, y, dim, self.seed);
+        let mut pcg = Pcg32::sequence(self.pixel_key(x, y, 0));
+        // pbrt's `int` dimension, widened with its sign.
+        pcg.advance(dim as u32 as i32 as i64 as u64);
+        let step = pcg.jump(65536);
+        let mut perm = [0u32; CHUNK];
+        for (c, chunk) in out.chunks_mut(CHUNK).enumerate() {
+            let perm = &mut perm[..chunk.len()];
+            permutation_fill((c * CHUNK) as u32, self.grid.spp, h as u32, perm);
+            for (o, &s) in chunk.iter_mut().zip(perm.iter()) {
+                let offsets = if self.jitter {
+                    let mut p = Pcg32 {
+                        state: pcg.state,
+                        inc: pcg.inc,
+                    };
+                    [p.next_u32(), p.next_u32()]
+                } else {
+                    [1 << 31; 2]
+                };
+                *o = value(s, offsets);
+                pcg.state = step.0.wrapping_mul(pcg.state).wrapping_add(step.1);
+            }
+        }
+        Ok(())
+    }
+}
+
 /// The exact 0.32 truncation of `(s + u 2^-32) / n`.
 fn fraction(s: u32, u: u32, n: u32) -> u32 {
     ((((s as u64) << 32) | u as u64) / n as u64) as u32
@@ -172,8 +218,9 @@ impl Pcg32 {
         xorshifted.rotate_right((old >> 59) as u32)
     }
 
-    /// `delta` steps at once (Brown 1994's jump: the affine map squared per bit).
-    fn advance(&mut self, mut delta: u64) {
+    /// The affine map `state -> a state + c` of `delta` steps (Brown 1994: the one-step
+    /// map squared per bit of `delta`), `(a, c)`.
+    fn jump(&self, mut delta: u64) -> (u64, u64) {
         let (mut cur_mult, mut cur_plus) = (PCG_MULT, self.inc);
         let (mut acc_mult, mut acc_plus) = (1u64, 0u64);
         while delta > 0 {
@@ -185,13 +232,50 @@ impl Pcg32 {
             cur_mult = cur_mult.wrapping_mul(cur_mult);
             delta >>= 1;
         }
-        self.state = acc_mult.wrapping_mul(self.state).wrapping_add(acc_plus);
+        (acc_mult, acc_plus)
+    }
+
+    /// `delta` steps at once (Brown 1994's jump: the affine map squared per bit).
+    fn advance(&mut self, delta: u64) {
+        let (a, c) = self.jump(delta);
+        self.state = a.wrapping_mul(self.state).wrapping_add(c);
     }
 }
 
 impl PixelSampler for StratifiedSampler {
     fn grid(&self) -> PixelGrid {
         self.grid
+    }
+
+    fn fill_2d(&self, x: u32, y: u32, dim: usize, out: &mut [[u32; 2]]) -> Result<()> {
+        let (xs, ys) = (self.xs, self.ys);
+        self.fill_with(x, y, dim, out, |s, [u, v]| {
+            [fraction(s % xs, u, xs), fraction(s / xs, v, ys)]
+        })
+    }
+
+    fn fill_2d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [[f32; 2]]) -> Result<()> {
+        let (xs, ys, jitter) = (self.xs, self.ys, self.jitter);
+        self.fill_with(x, y, dim, out, |s, o| {
+            let [dx, dy] = if jitter { o.map(pbrt_f32) } else { [0.5; 2] };
+            [
+                ((s % xs) as f32 + dx) / xs as f32,
+                ((s / xs) as f32 + dy) / ys as f32,
+            ]
+        })
+    }
+
+    fn fill_1d(&self, x: u32, y: u32, dim: usize, out: &mut [u32]) -> Result<()> {
+        let n = self.grid.spp;
+        self.fill_with(x, y, dim, out, |s, [u, _]| fraction(s, u, n))
+    }
+
+    fn fill_1d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [f32]) -> Result<()> {
+        let (n, jitter) = (self.grid.spp, self.jitter);
+        self.fill_with(x, y, dim, out, |s, [u, _]| {
+            let delta = if jitter { pbrt_f32(u) } else { 0.5 };
+            (s as f32 + delta) / n as f32
+        })
     }
 
     /// The pixel's PCG32 sequence index, pbrt's `Hash(p, seed)`.

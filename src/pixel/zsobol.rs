@@ -2,7 +2,10 @@
 //! "Screen-space blue-noise diffusion of Monte Carlo sampling error via hierarchical ordering
 //! of pixels"), bit-identical to pbrt-v4's `ZSobolSampler`.
 
-use super::{PixelGrid, PixelPoint, PixelSampler, Randomization, seed_hash2, sobol0, sobol1};
+use super::prepared::{CHUNK, randomize_pairs, randomize_values, sobol1_reversed};
+use super::{
+    PixelGrid, PixelPoint, PixelSampler, Randomization, pbrt_f32, seed_hash2, sobol0, sobol1,
+};
 use crate::error::{Error, Result};
 use crate::hash::pbrt::mix_bits;
 
@@ -52,7 +55,12 @@ const fn spread(v: u32) -> u64 {
 /// is blue noise across the image. Any resolution (`RoundUpPow2(max(w, h))` sets the digit
 /// count), power-of-two `spp`, `2 log2(side) + log2(spp) <= 64`.
 /// Cost: the Morton index once per [`start_pixel_sample`](PixelSampler::start_pixel_sample);
-/// per value, `log4(side^2 spp)` [`mix_bits`] plus one MurmurHash and the scramble.
+/// per value, `log4(side^2 spp)` [`mix_bits`] plus one MurmurHash and the scramble. The
+/// prepared fills ([`PixelSampler::fill_2d`]) permute the pixel's digits and hash the
+/// keys once per pixel and dimension, then the sample digits as a tree (`ceil(spp / 3)`
+/// [`mix_bits`] for the pixel's `spp` samples, plus `spp` more for the last bit of an odd
+/// `log2(spp)`), and scramble in the bit-reversed domain (Sobol' dimension 0 reversed is
+/// the index itself): about `1/3` of a [`mix_bits`] and two bit reversals a 2D value.
 ///
 /// ```
 /// use qmckit::pixel::{PixelSampler, Randomization, ZSobol};
@@ -278,9 +286,132 @@ impl ZSobolPixelDim<'_> {
     }
 }
 
+impl ZSobol {
+    /// The sample part of the permuted Morton indices (the digits below
+    /// [`low_digits`](Self::low_digits), with the hashed last bit of an odd `log2(spp)`)
+    /// of samples `start .. start + out.len()` of the pixel whose Morton index is `base`
+    /// (its low `log2 spp` bits zero), into `out`. Digit `i` of every sample in a block of
+    /// `4^(i+1)` samples (shift `2 i - odd`) is permuted by the same hashed permutation,
+    /// so each block costs one [`mix_bits`] and each of its four digit values one masked
+    /// OR over a run of samples: no data-dependent branch.
+    fn low_indices(&self, base: u64, salt: u64, start: u32, out: &mut [u32]) {
+        out.iter_mut().for_each(|o| *o = 0);
+        let odd = self.log2_spp & 1;
+        let (start, end) = (start as u64, start as u64 + out.len() as u64);
+        let mut i = self.low_digits();
+        while i > odd {
+            i -= 1;
+            let shift = 2 * i - odd;
+            let seg = 1u64 << shift;
+            let mut b0 = start & !((seg << 2) - 1);
+            while b0 < end {
+                let higher = (base | b0) >> (shift + 2);
+                let row = &PERMUTATIONS_24[((mix_bits(higher ^ salt) >> 24) % 24) as usize];
+                for (digit, &v) in row.iter().enumerate() {
+                    let s0 = b0 + digit as u64 * seg;
+                    let lo = s0.max(start).min(end) - start;
+                    let hi = (s0 + seg).max(start).min(end) - start;
+                    let v = (v as u32) << shift;
+                    if let Some(run) = out.get_mut(lo as usize..hi as usize) {
+                        run.iter_mut().for_each(|o| *o |= v);
+                    }
+                }
+                b0 += seg << 2;
+            }
+        }
+        if odd == 1 {
+            for (k, o) in out.iter_mut().enumerate() {
+                let m = base | (start + k as u64);
+                *o |= ((m & 1) ^ (mix_bits((m >> 1) ^ salt) & 1)) as u32;
+            }
+        }
+    }
+
+    /// The prepared fills' per-pixel part: the Morton base, the salt and the permuted
+    /// pixel digits as reversed-domain constants of Sobol' dimensions 0 and 1.
+    #[inline]
+    fn pixel_constants(&self, x: u32, y: u32, dim: usize) -> (u64, u64, [u32; 2]) {
+        let base = self.morton(x, y, 0);
+        let salt = Self::salt(dim);
+        let high = self.permute_digits(base, salt, self.low_digits(), self.digits);
+        // Sobol' 0 reversed is the low 32 bits of the index; Sobol' 1 reversed is linear.
+        let r1 = sobol1_reversed(high as u32) ^ sobol1_reversed((high >> 32) as u32);
+        (base, salt, [high as u32, r1])
+    }
+
+    /// The prepared pair fill, converted by `conv`.
+    #[inline]
+    fn fill_pairs<T>(
+        &self,
+        x: u32,
+        y: u32,
+        dim: usize,
+        out: &mut [[T; 2]],
+        conv: impl Fn(u32) -> T + Copy,
+    ) -> Result<()> {
+        self.grid.check_fill(x, y, out.len())?;
+        let (base, salt, [c0, c1]) = self.pixel_constants(x, y, dim);
+        let h = self.key_2d(dim);
+        let keys = [h as u32, (h >> 32) as u32];
+        let mut low = [0u32; CHUNK];
+        for (c, chunk) in out.chunks_mut(CHUNK).enumerate() {
+            let low = &mut low[..chunk.len()];
+            self.low_indices(base, salt, (c * CHUNK) as u32, low);
+            let low = &*low;
+            randomize_pairs(
+                self.randomize,
+                keys,
+                chunk,
+                |k| [c0 | low[k], c1 ^ sobol1_reversed(low[k])],
+                conv,
+            );
+        }
+        Ok(())
+    }
+
+    /// The prepared 1D fill, converted by `conv`.
+    #[inline]
+    fn fill_values<T>(
+        &self,
+        x: u32,
+        y: u32,
+        dim: usize,
+        out: &mut [T],
+        conv: impl Fn(u32) -> T + Copy,
+    ) -> Result<()> {
+        self.grid.check_fill(x, y, out.len())?;
+        let (base, salt, [c0, _]) = self.pixel_constants(x, y, dim);
+        let key = self.key_1d(dim);
+        let mut low = [0u32; CHUNK];
+        for (c, chunk) in out.chunks_mut(CHUNK).enumerate() {
+            let low = &mut low[..chunk.len()];
+            self.low_indices(base, salt, (c * CHUNK) as u32, low);
+            let low = &*low;
+            randomize_values(self.randomize, key, chunk, |k| c0 | low[k], conv);
+        }
+        Ok(())
+    }
+}
+
 impl PixelSampler for ZSobol {
     fn grid(&self) -> PixelGrid {
         self.grid
+    }
+
+    fn fill_2d(&self, x: u32, y: u32, dim: usize, out: &mut [[u32; 2]]) -> Result<()> {
+        self.fill_pairs(x, y, dim, out, |v| v)
+    }
+
+    fn fill_2d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [[f32; 2]]) -> Result<()> {
+        self.fill_pairs(x, y, dim, out, pbrt_f32)
+    }
+
+    fn fill_1d(&self, x: u32, y: u32, dim: usize, out: &mut [u32]) -> Result<()> {
+        self.fill_values(x, y, dim, out, |v| v)
+    }
+
+    fn fill_1d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [f32]) -> Result<()> {
+        self.fill_values(x, y, dim, out, pbrt_f32)
     }
 
     /// The Morton index `(EncodeMorton2(x, y) << log2 spp) | index`.

@@ -12,6 +12,7 @@ mod blue_noise;
 mod compiled;
 mod domain;
 mod halton_stratified;
+mod prepared;
 
 use crate::common::first_net_failure;
 use qmckit::Error;
