@@ -29,6 +29,9 @@ pub struct BlueNoiseArgs {
     /// gaussian-blue-noise: gradient-descent iterations [default: 500].
     #[arg(long, value_name = "I")]
     pub iterations: Option<u32>,
+    /// kde-blue-noise: the temperature T [default: 0.01].
+    #[arg(long, value_name = "T")]
+    pub temperature: Option<f64>,
     /// The time budget of the blue-noise sets and of pmj02bn ('inf': no limit)
     /// [default: 10].
     #[arg(long, value_name = "SECONDS")]
@@ -56,6 +59,7 @@ impl BlueNoiseArgs {
             ("--maximal", self.maximal),
             ("--candidates", self.candidates.is_some()),
             ("--iterations", self.iterations.is_some()),
+            ("--temperature", self.temperature.is_some()),
             ("--max-seconds", self.max_seconds.is_some() && !budgeted),
         ]
         .into_iter()
@@ -107,6 +111,9 @@ pub fn build(
                 "{name} is two-dimensional: -d must be 2"
             )));
         }
+    }
+    if args.temperature.is_some() {
+        return refuse("--temperature");
     }
     if kind != Kind::Gaussian && args.iterations.is_some() {
         return refuse("--iterations");

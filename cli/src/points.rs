@@ -52,8 +52,13 @@ not apply):
                        points a site), any -d to 64: -n N, --iterations I, --torus
   sot                  sliced optimal transport in the cube, any -d to 64: -n N,
                        --iterations I
+  step-blue-noise, single-peak-blue-noise
+                       spectrum-controlled blue noise on the torus (Heck et al. 2013),
+                       -d 1 to 6: -n N, --iterations I
+  kde-blue-noise       kernel-density blue noise on the torus (Fattal 2011), -d 1 to 5:
+                       -n N, --iterations I (sweeps), --temperature T
   --max-seconds S refuses, before starting, a set whose estimated time exceeds S
-  (also pmj02bn, lloyd, ccvt, sot).
+  (also pmj02bn and the sets above).
 
 Other sets: cmj (Kensler's correlated multi-jitter, --total N, -d any, --seed);
 hex (hexagonal grid on the torus, 2D, --total N even; --scramble shift for a random
@@ -269,6 +274,7 @@ impl PointsArgs {
                     maximal: self.blue.maximal,
                     candidates: self.blue.candidates,
                     iterations: self.blue.iterations,
+                    temperature: self.blue.temperature,
                 }
             } else {
                 BlueNoiseOptions::default()
@@ -277,13 +283,19 @@ impl PointsArgs {
     }
 }
 
-/// `true` for the relaxed sets built whole through the catalog (lloyd, ccvt, sot), which
-/// take `--iterations`, `--max-seconds` and (lloyd, ccvt) `--torus`; the catalog refuses
-/// the other blue-noise options for them.
+/// `true` for the relaxed sets built whole through the catalog (lloyd, ccvt, sot,
+/// step-blue-noise, single-peak-blue-noise, kde-blue-noise), which take `--iterations`,
+/// `--max-seconds`, (lloyd, ccvt) `--torus` and (kde-blue-noise) `--temperature`; the
+/// catalog refuses the other blue-noise options for them.
 pub fn is_relaxed(sampler: SamplerName) -> bool {
     matches!(
         sampler.kind,
-        SamplerKind::Lloyd | SamplerKind::Ccvt | SamplerKind::Sot
+        SamplerKind::Lloyd
+            | SamplerKind::Ccvt
+            | SamplerKind::Sot
+            | SamplerKind::StepBlueNoise
+            | SamplerKind::SinglePeakBlueNoise
+            | SamplerKind::KdeBlueNoise
     )
 }
 
@@ -486,6 +498,7 @@ pub fn run(args: &PointsArgs) -> Result<(), Failure> {
                 match option {
                     "--max-seconds" => whole,
                     "--iterations" | "--torus" => blue_noise_kind(e).is_some() || is_relaxed(e),
+                    "--temperature" => e.kind == SamplerKind::KdeBlueNoise,
                     _ => blue_noise_kind(e).is_some(),
                 }
             })

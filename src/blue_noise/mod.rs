@@ -8,6 +8,12 @@
 //! * [`Lloyd`] — Lloyd relaxation and capacity-constrained Voronoi tessellations (CCVT,
 //!   Balzer, Schlömer & Deussen 2009) in any dimension, in the cube or on the torus.
 //! * [`Sot`] — sliced optimal transport sampling (Paulin et al. 2020) in the cube.
+//! * [`SpectralBlueNoise`] — step and single-peak blue noise (Heck, Schlömer & Deussen
+//!   2013): a target radial spectrum, its pair correlation by the Hankel transform, points
+//!   by gradient descent on the mismatch, on the torus in 1 to 6 dimensions.
+//! * [`KdeBlueNoise`] — kernel-density blue noise (Fattal 2011): a Gibbs sample at
+//!   temperature `T` of the model whose energy is the kernel density estimate's mismatch,
+//!   on the torus in 1 to 5 dimensions.
 //! * [`VoidAndCluster`] — Ulichney's void-and-cluster rank masks, toroidal, up to 2048².
 //! * [`mask64`] — a 64×64 void-and-cluster rank mask as a static table, in `no_std` too.
 //!
@@ -20,6 +26,8 @@
 pub mod mask64;
 
 #[cfg(feature = "analysis")]
+mod bessel;
+#[cfg(feature = "analysis")]
 pub mod best_candidate;
 #[cfg(feature = "analysis")]
 mod bridson;
@@ -27,6 +35,8 @@ mod bridson;
 pub mod gaussian;
 #[cfg(feature = "analysis")]
 mod grid;
+#[cfg(feature = "analysis")]
+pub mod kde;
 #[cfg(feature = "analysis")]
 mod kdtree;
 #[cfg(feature = "analysis")]
@@ -44,7 +54,11 @@ mod shell;
 #[cfg(feature = "analysis")]
 pub mod sot;
 #[cfg(feature = "analysis")]
+pub mod spectral;
+#[cfg(feature = "analysis")]
 mod tiles;
+#[cfg(feature = "analysis")]
+mod torus_cells;
 #[cfg(feature = "analysis")]
 mod tournament;
 #[cfg(feature = "analysis")]
@@ -55,6 +69,8 @@ pub use best_candidate::BestCandidate;
 #[cfg(feature = "analysis")]
 pub use gaussian::GaussianBlueNoise;
 #[cfg(feature = "analysis")]
+pub use kde::KdeBlueNoise;
+#[cfg(feature = "analysis")]
 pub use lloyd::{Lloyd, LloydTrace};
 #[cfg(feature = "analysis")]
 pub use point_set::PointSet;
@@ -62,5 +78,7 @@ pub use point_set::PointSet;
 pub use poisson::PoissonDisk;
 #[cfg(feature = "analysis")]
 pub use sot::Sot;
+#[cfg(feature = "analysis")]
+pub use spectral::SpectralBlueNoise;
 #[cfg(feature = "analysis")]
 pub use void_and_cluster::{RankMask, VoidAndCluster};

@@ -379,7 +379,12 @@ fn construct(
             &p.budget,
         )?),
         #[cfg(feature = "analysis")]
-        S::Lloyd | S::Ccvt | S::Sot => Box::new(super::whole::relaxed(
+        S::Lloyd
+        | S::Ccvt
+        | S::Sot
+        | S::StepBlueNoise
+        | S::SinglePeakBlueNoise
+        | S::KdeBlueNoise => Box::new(super::whole::relaxed(
             sampler.kind,
             &p.blue_noise,
             needed(sampler, p)?,
@@ -394,7 +399,10 @@ fn construct(
         | S::GaussianBlueNoise
         | S::Lloyd
         | S::Ccvt
-        | S::Sot => {
+        | S::Sot
+        | S::StepBlueNoise
+        | S::SinglePeakBlueNoise
+        | S::KdeBlueNoise => {
             return Err(super::whole::unavailable(sampler.name));
         }
         S::Lattice | S::Kronecker | S::Faure | S::Hex => {

@@ -96,6 +96,9 @@ pub fn examples() -> Vec<(&'static SamplerEntry, Params)> {
         ("lloyd", p().with_points(24)),
         ("ccvt", Params::dims(3).with_points(16)),
         ("sot", p().with_points(20)),
+        ("step-blue-noise", p().with_points(160)),
+        ("single-peak-blue-noise", p().with_points(160)),
+        ("kde-blue-noise", p().with_points(160)),
     ]);
     v.into_iter()
         .filter_map(|(name, params)| {

@@ -17,8 +17,11 @@ pub struct BlueNoiseOptions {
     /// (default 10).
     pub candidates: Option<u32>,
     /// gaussian-blue-noise: gradient-descent iterations (default 500); lloyd, ccvt
-    /// (default 30), sot (default 100): their iterations.
+    /// (default 30), sot (default 100), step-blue-noise and single-peak-blue-noise
+    /// (default 1000): their iterations; kde-blue-noise: its sweeps (default 200).
     pub iterations: Option<u32>,
+    /// kde-blue-noise: the temperature (default 0.01).
+    pub temperature: Option<f64>,
 }
 
 impl BlueNoiseOptions {
@@ -44,8 +47,23 @@ impl BlueNoiseOptions {
             (
                 "iterations",
                 self.iterations.is_some()
-                    && !matches!(kind, S::GaussianBlueNoise | S::Lloyd | S::Ccvt | S::Sot),
-                "only gaussian-blue-noise, lloyd, ccvt and sot take it",
+                    && !matches!(
+                        kind,
+                        S::GaussianBlueNoise
+                            | S::Lloyd
+                            | S::Ccvt
+                            | S::Sot
+                            | S::StepBlueNoise
+                            | S::SinglePeakBlueNoise
+                            | S::KdeBlueNoise
+                    ),
+                "only gaussian-blue-noise, lloyd, ccvt, sot, step-blue-noise, \
+                 single-peak-blue-noise and kde-blue-noise take it",
+            ),
+            (
+                "temperature",
+                self.temperature.is_some() && kind != S::KdeBlueNoise,
+                "only kde-blue-noise takes it",
             ),
         ]
         .into_iter()
@@ -130,9 +148,9 @@ mod built {
         })
     }
 
-    /// The relaxed sets: lloyd, ccvt (on the torus if `opts.torus`) and sot, `n`
-    /// points of `dims`, their iterations from `opts` (else their defaults), within
-    /// `budget`.
+    /// The relaxed sets: lloyd, ccvt (on the torus if `opts.torus`), sot, the spectral
+    /// sets and kde-blue-noise, `n` points of `dims`, their iterations (and temperature)
+    /// from `opts` (else their defaults), within `budget`.
     pub(in crate::catalog) fn relaxed(
         kind: SamplerKind,
         opts: &BlueNoiseOptions,
@@ -141,8 +159,34 @@ mod built {
         seed: u64,
         budget: &Budget,
     ) -> Result<PointSet, CatalogError> {
-        use crate::blue_noise::{Lloyd, Sot};
+        use crate::blue_noise::spectral::Profile;
+        use crate::blue_noise::{KdeBlueNoise, Lloyd, Sot, SpectralBlueNoise};
         let budget = budget.started();
+        if matches!(
+            kind,
+            SamplerKind::StepBlueNoise | SamplerKind::SinglePeakBlueNoise
+        ) {
+            let profile = if kind == SamplerKind::StepBlueNoise {
+                Profile::step(dims)?
+            } else {
+                Profile::single_peak(dims)?
+            };
+            let mut s = SpectralBlueNoise::new(n, dims, profile)?.seed(seed);
+            if let Some(i) = opts.iterations {
+                s = s.iterations(i)?;
+            }
+            return Ok(s.generate(&budget)?);
+        }
+        if kind == SamplerKind::KdeBlueNoise {
+            let mut k = KdeBlueNoise::new(n, dims)?.seed(seed);
+            if let Some(i) = opts.iterations {
+                k = k.sweeps(i)?;
+            }
+            if let Some(t) = opts.temperature {
+                k = k.temperature(t)?;
+            }
+            return Ok(k.generate(&budget)?);
+        }
         Ok(if kind == SamplerKind::Sot {
             let mut s = Sot::new(n, dims)?.seed(seed);
             if let Some(i) = opts.iterations {
