@@ -133,7 +133,7 @@ pub enum Profile {
 
 /// The volume of the unit ball of `R^d`: `V_0 = 1`, `V_1 = 2`, `V_d = V_{d-2} 2 pi / d`.
 pub fn ball_volume(d: usize) -> f64 {
-    let mut v = if d % 2 == 0 { 1.0 } else { 2.0 };
+    let mut v = if d.is_multiple_of(2) { 1.0 } else { 2.0 };
     let mut k = d % 2;
     while k + 2 <= d {
         k += 2;
@@ -398,7 +398,9 @@ impl SpectralBlueNoise {
     /// The estimated running time: iterations times `N` times the pairs visited a point,
     /// twice (the estimate and the gradient), at a rate per core on two cores.
     pub fn cost(&self) -> Cost {
-        let work = f64::from(self.iterations) * self.n as f64 * (self.visits() * 2.0 + 50.0);
+        // Per iteration: the pairs, twice, and the force table (about 2e4 kernel values).
+        let work =
+            f64::from(self.iterations) * (self.n as f64 * (self.visits() * 2.0 + 50.0) + 2e4);
         Cost::parallel(work, PAIRS)
     }
 
@@ -626,12 +628,17 @@ impl Estimator {
         (0..len)
             .map(|t| {
                 let rho = t as f64 * TABLE_STEP;
-                g.iter()
-                    .zip(&self.target)
-                    .zip(&self.scale)
-                    .enumerate()
-                    .map(|(b, ((gb, tb), cb))| {
+                // The bins within the kernel's support, 5h.
+                let lo = ((rho - 5.0 * H) / DELTA - 0.5).ceil().max(0.0) as usize;
+                let hi = (((rho + 5.0 * H) / DELTA - 0.5).floor().max(0.0) as usize).min(BINS - 1);
+                (lo..=hi)
+                    .map(|b| {
                         let x = (b as f64 + 0.5) * DELTA - rho;
+                        let (gb, tb, cb) = (
+                            g.get(b).copied().unwrap_or(0.0),
+                            self.target.get(b).copied().unwrap_or(0.0),
+                            self.scale.get(b).copied().unwrap_or(0.0),
+                        );
                         if x.abs() > 5.0 * H {
                             return 0.0;
                         }

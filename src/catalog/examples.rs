@@ -87,6 +87,15 @@ pub fn examples() -> Vec<(&'static SamplerEntry, Params)> {
         ("cmj", p().with_points(10)),
         ("hex", p().with_points(56)),
     ];
+    // The slow sets with few iterations (a quick example; the defaults are in the entries).
+    #[cfg(feature = "analysis")]
+    let few = |n: u64| Params {
+        blue_noise: super::BlueNoiseOptions {
+            iterations: Some(30),
+            ..Default::default()
+        },
+        ..p().with_points(n)
+    };
     #[cfg(feature = "analysis")]
     v.extend([
         ("pmj02bn", p().with_points(256)),
@@ -96,9 +105,9 @@ pub fn examples() -> Vec<(&'static SamplerEntry, Params)> {
         ("lloyd", p().with_points(24)),
         ("ccvt", Params::dims(3).with_points(16)),
         ("sot", p().with_points(20)),
-        ("step-blue-noise", p().with_points(160)),
-        ("single-peak-blue-noise", p().with_points(160)),
-        ("kde-blue-noise", p().with_points(160)),
+        ("step-blue-noise", few(160)),
+        ("single-peak-blue-noise", few(160)),
+        ("kde-blue-noise", few(160)),
     ]);
     v.into_iter()
         .filter_map(|(name, params)| {
