@@ -38,10 +38,10 @@
 //!
 //! ## Range and cost
 //!
-//! Dimensions 1 to 5 (past 5 the cut-off window needs more points than the limit), at
-//! most 2^22 points and at least `(2 r_cut)^d`, `r_cut = 6 sigma +
-//! sqrt(d)` mean spacings (the pair sum is cut where its term is below `e^-9`, plus the
-//! candidates' reach; the window must fit in half the torus: 128 points in 2D). A sweep
+//! Dimensions 1 to 5, 2 to 2^22 points. The pair sum is cut where its term is below
+//! `e^-9` (`6 sigma` mean spacings) and each pair is counted at its nearest image; when the
+//! cut-off reaches past half the torus (fewer than `(2 r_cut)^d` points, `r_cut = 6 sigma +
+//! sqrt(d)`: 128 in 2D) that is an approximation of the periodic energy. A sweep
 //! costs `N C m` kernel terms for the `m` points within the cut-off (found by cell
 //! lists), one core; estimated against a [`Budget`] ([`KdeBlueNoise::cost`]) and stopped
 //! at its deadline (read every 4096 points).
@@ -100,8 +100,7 @@ impl KdeBlueNoise {
     ///
     /// # Errors
     /// [`Error::ZeroPoints`], [`Error::TooManyPoints`], [`Error::ZeroDimensions`],
-    /// [`Error::DimensionOutOfRange`]; [`Error::InvalidParameter`] for fewer points than
-    /// the cut-off window needs (module documentation).
+    /// [`Error::DimensionOutOfRange`]; [`Error::InvalidParameter`] for one point.
     pub fn new(n: u64, dims: usize) -> Result<Self> {
         if n == 0 {
             return Err(Error::ZeroPoints);
@@ -129,22 +128,17 @@ impl KdeBlueNoise {
             sweeps: 200,
             seed: 0,
         };
-        k.fits()?;
+        if n < 2 {
+            return Err(Error::InvalidParameter {
+                what: "kernel-density blue noise needs at least two points",
+            });
+        }
         Ok(k)
     }
 
     /// The cut-off window (pairs plus the candidates' reach) in mean spacings.
     fn reach(&self) -> f64 {
         CUT_SIGMAS * self.sigma + 2.0 * WINDOW * (self.dims as f64).sqrt()
-    }
-
-    fn fits(&self) -> Result<()> {
-        if (self.n as f64) < (2.0 * self.reach()).powi(self.dims as i32).max(2.0) {
-            return Err(Error::InvalidParameter {
-                what: "kernel-density blue noise needs at least (2 r_cut)^d points (the cut-off window must fit in half the torus)",
-            });
-        }
-        Ok(())
     }
 
     /// The temperature `T` (0 to 100; 0 is greedy descent).
@@ -164,8 +158,7 @@ impl KdeBlueNoise {
     /// The kernel width `sigma` in mean spacings (0.25 to 1.5).
     ///
     /// # Errors
-    /// [`Error::InvalidParameter`] outside that range, or when the wider cut-off window no
-    /// longer fits the torus.
+    /// [`Error::InvalidParameter`] outside that range.
     pub fn sigma(mut self, sigma: f64) -> Result<Self> {
         if !(sigma.is_finite() && (0.25..=1.5).contains(&sigma)) {
             return Err(Error::InvalidParameter {
@@ -173,7 +166,6 @@ impl KdeBlueNoise {
             });
         }
         self.sigma = sigma;
-        self.fits()?;
         Ok(self)
     }
 

@@ -60,10 +60,12 @@
 //!
 //! ## Range and cost
 //!
-//! Dimensions 1 to 6 and `(2 rho_cut)^d <= N <= 2^22` points, so that the correlation
-//! window `rho_cut = rho_max + 4h = 6.16` mean spacings fits in half the torus: 152 points
-//! in 2D, 1870 in 3D, 3.5 million in 6D. The Hankel relation holds in every dimension;
-//! past 6 the window needs more points than the limit. Each iteration
+//! Dimensions 1 to 6, 2 to 2^22 points. The correlation window `rho_cut = rho_max + 4h =
+//! 6.16` mean spacings must fit in half the torus, which takes `(2 rho_cut)^d` points (152
+//! in 2D, 1870 in 3D, 3.5 million in 6D); smaller sets use a shorter range
+//! `rho_max = 0.5 N^(1/d) - 4h` (so they control the pair correlation, and the spectrum,
+//! less finely). The Hankel relation holds in every dimension; past 6 even 2^22 points
+//! leave less than the full window. Each iteration
 //! visits the pairs within `rho_cut s` by cell lists: `O(N V_d rho_cut^d 3^d / 2^d)` pair
 //! terms of about ten kernel values, in parallel (rayon, in chunks of fixed size so the
 //! result does not depend on the thread count). Estimated against a [`Budget`]
@@ -101,10 +103,16 @@ pub const SPECTRAL_MAX_DIMS: usize = 6;
 /// Bin width and kernel width of the pair correlation estimate, in mean spacings.
 const DELTA: f64 = 0.04;
 const H: f64 = 0.04;
-/// The estimate's range, in mean spacings.
+/// The estimate's range, in mean spacings (the pair cut-off adds the kernel's support,
+/// `4h`).
 const RHO_MAX: f64 = 6.0;
-/// The pair cut-off: the range plus the kernel's support.
-const RHO_CUT: f64 = RHO_MAX + 4.0 * H;
+
+/// The estimate's range for `n` points in `d` dimensions: [`RHO_MAX`], or less for small
+/// sets, so that the pair cut-off `range + 4h` stays within half the torus
+/// (`0.5 N^(1/d)` mean spacings).
+fn range(n: u64, d: usize) -> f64 {
+    RHO_MAX.min(0.5 * (n as f64).powf(1.0 / d as f64) - 4.0 * H)
+}
 /// Points a chunk of the parallel loops (fixed: the sums do not depend on the threads).
 const CHUNK: usize = 1024;
 
@@ -330,9 +338,8 @@ impl SpectralBlueNoise {
     ///
     /// # Errors
     /// [`Error::ZeroPoints`], [`Error::TooManyPoints`], [`Error::ZeroDimensions`],
-    /// [`Error::DimensionOutOfRange`]; [`Error::InvalidParameter`] for fewer than
-    /// `(2 rho_cut)^d` points (the correlation window would wrap around the torus), a bad
-    /// or an unrealizable profile.
+    /// [`Error::DimensionOutOfRange`]; [`Error::InvalidParameter`] for one point, a bad or
+    /// an unrealizable profile.
     pub fn new(n: u64, dims: usize, profile: Profile) -> Result<Self> {
         if n == 0 {
             return Err(Error::ZeroPoints);
@@ -344,9 +351,9 @@ impl SpectralBlueNoise {
             });
         }
         check_dims(dims)?;
-        if (n as f64) < (2.0 * RHO_CUT).powi(dims as i32) {
+        if n < 2 || range(n, dims) < 4.0 * DELTA {
             return Err(Error::InvalidParameter {
-                what: "spectral blue noise needs at least 12.32^d points (its correlation window must fit in half the torus)",
+                what: "spectral blue noise needs at least two points",
             });
         }
         profile.validate()?;
@@ -384,7 +391,7 @@ impl SpectralBlueNoise {
     fn visits(&self) -> f64 {
         let n = self.n as f64;
         let d = self.dims as i32;
-        let cut = RHO_CUT * n.powf(-1.0 / self.dims as f64);
+        let cut = (range(self.n, self.dims) + 4.0 * H) * n.powf(-1.0 / self.dims as f64);
         let g = (1.0 / cut)
             .floor()
             .min((2.0 * n).powf(1.0 / self.dims as f64).floor());
@@ -496,13 +503,16 @@ struct Estimator {
     s: f64,
     /// The pair cut-off in unit lengths.
     cut: f64,
+    /// The pair cut-off in mean spacings.
+    rho_cut: f64,
+    /// Bins of the estimate.
+    bins: usize,
     /// `c_b` of each bin.
     scale: Vec<f64>,
     /// The smoothed target `Gbar_b`.
     target: Vec<f64>,
 }
 
-const BINS: usize = (RHO_MAX / DELTA) as usize;
 /// Table spacing of `psi`.
 const TABLE_STEP: f64 = DELTA / 8.0;
 
@@ -522,18 +532,21 @@ impl Estimator {
         let s = (n as f64).powf(-1.0 / d as f64);
         let sphere = d as f64 * ball_volume(d);
         let rho = |b: usize| (b as f64 + 0.5) * DELTA;
-        let scale = (0..BINS)
+        let range = range(n as u64, d);
+        let bins = ((range / DELTA) as usize).max(1);
+        let rho_cut = range + 4.0 * H;
+        let scale = (0..bins)
             .map(|b| 1.0 / ((n as f64 - 1.0) * sphere * rho(b).powi(d as i32 - 1)))
             .collect();
         // Gbar_b = int k_h(rho_b - t) (t / rho_b)^(d-1) G_0(t) dt, midpoint rule on t > 0.
         let dt = H / 8.0;
-        let ts: Vec<(f64, f64)> = (0..((RHO_CUT + 4.0 * H) / dt) as usize)
+        let ts: Vec<(f64, f64)> = (0..((rho_cut + 4.0 * H) / dt) as usize)
             .map(|i| {
                 let t = (i as f64 + 0.5) * dt;
                 (t, profile.pcf_unchecked(d, t))
             })
             .collect();
-        let target = (0..BINS)
+        let target = (0..bins)
             .map(|b| {
                 let r = rho(b);
                 ts.iter()
@@ -545,7 +558,9 @@ impl Estimator {
             n,
             d,
             s,
-            cut: RHO_CUT * s,
+            cut: rho_cut * s,
+            rho_cut,
+            bins,
             scale,
             target,
         }
@@ -585,12 +600,12 @@ impl Estimator {
             .into_par_iter()
             .map(|c| -> Result<Vec<f64>> {
                 budget.check_deadline("spectral blue noise")?;
-                let mut h = vec![0.0f64; BINS];
+                let mut h = vec![0.0f64; self.bins];
                 for i in c * CHUNK..((c + 1) * CHUNK).min(self.n) {
                     self.pairs(pts, cells, i, |_, rho| {
                         let lo = ((rho - 4.0 * H) / DELTA - 0.5).ceil().max(0.0) as usize;
                         let hi = (((rho + 4.0 * H) / DELTA - 0.5).floor().max(0.0) as usize)
-                            .min(BINS - 1);
+                            .min(self.bins - 1);
                         for b in lo..=hi {
                             if let Some(v) = h.get_mut(b) {
                                 *v += kernel((b as f64 + 0.5) * DELTA - rho);
@@ -601,7 +616,7 @@ impl Estimator {
                 Ok(h)
             })
             .collect::<Result<Vec<_>>>()?;
-        let mut g = vec![0.0f64; BINS];
+        let mut g = vec![0.0f64; self.bins];
         for part in &parts {
             for (a, b) in g.iter_mut().zip(part) {
                 *a += b;
@@ -624,13 +639,14 @@ impl Estimator {
 
     /// `psi` on `[0, rho_cut]` at spacing [`TABLE_STEP`].
     fn force_table(&self, g: &[f64]) -> Vec<f64> {
-        let len = (RHO_CUT / TABLE_STEP) as usize + 2;
+        let len = (self.rho_cut / TABLE_STEP) as usize + 2;
         (0..len)
             .map(|t| {
                 let rho = t as f64 * TABLE_STEP;
                 // The bins within the kernel's support, 5h.
                 let lo = ((rho - 5.0 * H) / DELTA - 0.5).ceil().max(0.0) as usize;
-                let hi = (((rho + 5.0 * H) / DELTA - 0.5).floor().max(0.0) as usize).min(BINS - 1);
+                let hi =
+                    (((rho + 5.0 * H) / DELTA - 0.5).floor().max(0.0) as usize).min(self.bins - 1);
                 (lo..=hi)
                     .map(|b| {
                         let x = (b as f64 + 0.5) * DELTA - rho;

@@ -656,7 +656,7 @@ pub static SAMPLERS: &[SamplerEntry] = &[
                 "points",
                 "the set size N",
                 "none: needed",
-                "12.32^d to 2^22 (152 in 2D)",
+                "2 to 2^22 (below 12.32^d a shorter correlation range)",
             ),
             SEED,
             param("iterations", "descent iterations", "1000", "0 to 10^5"),
@@ -684,7 +684,7 @@ pub static SAMPLERS: &[SamplerEntry] = &[
                 "points",
                 "the set size N",
                 "none: needed",
-                "12.32^d to 2^22 (152 in 2D)",
+                "2 to 2^22 (below 12.32^d a shorter correlation range)",
             ),
             SEED,
             param("iterations", "descent iterations", "1000", "0 to 10^5"),
@@ -705,12 +705,7 @@ pub static SAMPLERS: &[SamplerEntry] = &[
         math: "p(X) ∝ exp(-E/T), E = sum_{i<j} exp(-|x_i - x_j|^2 / (4 sigma^2 s^2)), heat-bath local updates (Fattal 2011)",
         params: &[
             param("dims", "coordinates of each point", "2", "1 to 5"),
-            param(
-                "points",
-                "the set size N",
-                "none: needed",
-                "(2 r_cut)^d to 2^22 (128 in 2D)",
-            ),
+            param("points", "the set size N", "none: needed", "2 to 2^22"),
             SEED,
             param("iterations", "sweeps of local updates", "200", "0 to 10^5"),
             param(
