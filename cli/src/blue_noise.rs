@@ -33,6 +33,9 @@ pub struct BlueNoiseArgs {
     /// 2D subspace (the projections are spread too).
     #[arg(long)]
     pub projective: bool,
+    /// kde-blue-noise: the temperature T [default: 0.01].
+    #[arg(long, value_name = "T")]
+    pub temperature: Option<f64>,
     /// The time budget of the blue-noise sets and of pmj02bn ('inf': no limit)
     /// [default: 10].
     #[arg(long, value_name = "SECONDS")]
@@ -61,6 +64,7 @@ impl BlueNoiseArgs {
             ("--candidates", self.candidates.is_some()),
             ("--iterations", self.iterations.is_some()),
             ("--projective", self.projective),
+            ("--temperature", self.temperature.is_some()),
             ("--max-seconds", self.max_seconds.is_some() && !budgeted),
         ]
         .into_iter()
@@ -115,6 +119,9 @@ pub fn build(
     }
     if args.projective {
         return refuse("--projective");
+    }
+    if args.temperature.is_some() {
+        return refuse("--temperature");
     }
     if kind != Kind::Gaussian && args.iterations.is_some() {
         return refuse("--iterations");

@@ -63,9 +63,14 @@ not apply):
                        Owen-scrambled Sobol' net rearranged by a look-up table, still a net
   penrose              Penrose-tiling sampling (Ostromoukhov et al. 2004), 2D: -n N (the
                        N points of lowest rank), --seed (rotation and offset)
+  step-blue-noise, single-peak-blue-noise
+                       spectrum-controlled blue noise on the torus (Heck et al. 2013),
+                       -d 1 to 6: -n N, --iterations I
+  kde-blue-noise       kernel-density blue noise on the torus (Fattal 2011), -d 1 to 5:
+                       -n N, --iterations I (sweeps), --temperature T
   --max-seconds S refuses, before starting, a set whose estimated time exceeds S
   (also pmj02bn, lloyd, ccvt, sot, projective-blue-noise, forced-random, bnot, ldbn,
-  penrose).
+  penrose, step-blue-noise, single-peak-blue-noise, kde-blue-noise).
 
 Other sets: cmj (Kensler's correlated multi-jitter, --total N, -d any, --seed);
 cascaded-sobol (Paulin et al.'s cascaded Sobol', --total N a power of two, -d to 65536,
@@ -291,6 +296,7 @@ impl PointsArgs {
                     candidates: self.blue.candidates,
                     iterations: self.blue.iterations,
                     projective: self.blue.projective,
+                    temperature: self.blue.temperature,
                 }
             } else {
                 BlueNoiseOptions::default()
@@ -300,8 +306,9 @@ impl PointsArgs {
 }
 
 /// `true` for the relaxed sets built whole through the catalog (lloyd, ccvt, sot,
-/// projective-blue-noise, forced-random, bnot), which take `--max-seconds` and (lloyd,
-/// ccvt, sot, bnot) `--iterations`, (lloyd, ccvt, bnot) `--torus`, (sot) `--projective`; the catalog refuses the
+/// projective-blue-noise, forced-random, bnot, step-blue-noise, single-peak-blue-noise,
+/// kde-blue-noise), which take `--max-seconds` and (lloyd,
+/// ccvt, sot, bnot) `--iterations`, (lloyd, ccvt, bnot) `--torus`, (sot) `--projective`, (kde-blue-noise) `--temperature`; the catalog refuses the
 /// other blue-noise options for them.
 pub fn is_relaxed(sampler: SamplerName) -> bool {
     matches!(
@@ -312,6 +319,9 @@ pub fn is_relaxed(sampler: SamplerName) -> bool {
             | SamplerKind::ProjectiveBlueNoise
             | SamplerKind::ForcedRandom
             | SamplerKind::Bnot
+            | SamplerKind::StepBlueNoise
+            | SamplerKind::SinglePeakBlueNoise
+            | SamplerKind::KdeBlueNoise
     )
 }
 
@@ -518,6 +528,7 @@ pub fn run(args: &PointsArgs) -> Result<(), Failure> {
                     "--max-seconds" => whole,
                     "--iterations" | "--torus" => blue_noise_kind(e).is_some() || is_relaxed(e),
                     "--projective" => e.kind == SamplerKind::Sot,
+                    "--temperature" => e.kind == SamplerKind::KdeBlueNoise,
                     _ => blue_noise_kind(e).is_some(),
                 }
             })

@@ -22,6 +22,12 @@
 //! * [`Penrose`] — one sample a tile of a subdivided Penrose tiling, ranked for
 //!   thresholding (Ostromoukhov, Donohue & Jodoin 2004); [`penrose::importance`] samples a
 //!   density; [`penrose_train`] makes its correction table.
+//! * [`SpectralBlueNoise`] — step and single-peak blue noise (Heck, Schlömer & Deussen
+//!   2013): a target radial spectrum, its pair correlation by the Hankel transform, points
+//!   by gradient descent on the mismatch, on the torus in 1 to 6 dimensions.
+//! * [`KdeBlueNoise`] — kernel-density blue noise (Fattal 2011): a Gibbs sample at
+//!   temperature `T` of the model whose energy is the kernel density estimate's mismatch,
+//!   on the torus in 1 to 5 dimensions.
 //! * [`VoidAndCluster`] — Ulichney's void-and-cluster rank masks, toroidal, up to 2048².
 //! * [`mask64`] — a 64×64 void-and-cluster rank mask as a static table, in `no_std` too.
 //!
@@ -34,6 +40,8 @@
 pub mod mask64;
 
 #[cfg(feature = "analysis")]
+mod bessel;
+#[cfg(feature = "analysis")]
 pub mod best_candidate;
 #[cfg(feature = "analysis")]
 pub mod bnot;
@@ -45,6 +53,8 @@ pub mod forced_random;
 pub mod gaussian;
 #[cfg(feature = "analysis")]
 mod grid;
+#[cfg(feature = "analysis")]
+pub mod kde;
 #[cfg(feature = "analysis")]
 mod kdtree;
 #[cfg(feature = "analysis")]
@@ -72,7 +82,11 @@ mod shell;
 #[cfg(feature = "analysis")]
 pub mod sot;
 #[cfg(feature = "analysis")]
+pub mod spectral;
+#[cfg(feature = "analysis")]
 mod tiles;
+#[cfg(feature = "analysis")]
+mod torus_cells;
 #[cfg(feature = "analysis")]
 mod tournament;
 #[cfg(feature = "analysis")]
@@ -89,6 +103,8 @@ pub use forced_random::ForcedRandom;
 #[cfg(feature = "analysis")]
 pub use gaussian::GaussianBlueNoise;
 #[cfg(feature = "analysis")]
+pub use kde::KdeBlueNoise;
+#[cfg(feature = "analysis")]
 pub use ldbn::Ldbn;
 #[cfg(feature = "analysis")]
 pub use lloyd::{Lloyd, LloydTrace};
@@ -102,5 +118,7 @@ pub use poisson::PoissonDisk;
 pub use projective::{ProjectiveBlueNoise, ProjectiveSet};
 #[cfg(feature = "analysis")]
 pub use sot::Sot;
+#[cfg(feature = "analysis")]
+pub use spectral::SpectralBlueNoise;
 #[cfg(feature = "analysis")]
 pub use void_and_cluster::{RankMask, VoidAndCluster};

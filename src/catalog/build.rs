@@ -383,16 +383,22 @@ fn construct(
         #[cfg(feature = "analysis")]
         S::Penrose => Box::new(super::whole::tiled(needed(sampler, p)?, seed, &p.budget)?),
         #[cfg(feature = "analysis")]
-        S::Lloyd | S::Ccvt | S::Sot | S::Bnot | S::ProjectiveBlueNoise | S::ForcedRandom => {
-            Box::new(super::whole::relaxed(
-                sampler.kind,
-                &p.blue_noise,
-                needed(sampler, p)?,
-                d,
-                seed,
-                &p.budget,
-            )?)
-        }
+        S::Lloyd
+        | S::Ccvt
+        | S::Sot
+        | S::Bnot
+        | S::ProjectiveBlueNoise
+        | S::ForcedRandom
+        | S::StepBlueNoise
+        | S::SinglePeakBlueNoise
+        | S::KdeBlueNoise => Box::new(super::whole::relaxed(
+            sampler.kind,
+            &p.blue_noise,
+            needed(sampler, p)?,
+            d,
+            seed,
+            &p.budget,
+        )?),
         #[cfg(feature = "analysis")]
         S::Ldbn => {
             Box::new(crate::blue_noise::Ldbn::new(needed(sampler, p)?, seed)?.generate(&p.budget)?)
@@ -409,7 +415,10 @@ fn construct(
         | S::Bnot
         | S::ProjectiveBlueNoise
         | S::Penrose
-        | S::ForcedRandom => {
+        | S::ForcedRandom
+        | S::StepBlueNoise
+        | S::SinglePeakBlueNoise
+        | S::KdeBlueNoise => {
             return Err(super::whole::unavailable(sampler.name));
         }
         S::Lattice | S::Kronecker | S::Faure | S::Hex => {

@@ -88,6 +88,15 @@ pub fn examples() -> Vec<(&'static SamplerEntry, Params)> {
         ("cascaded-sobol", Params::dims(4).with_points(64)),
         ("hex", p().with_points(56)),
     ];
+    // The slow sets with few iterations (a quick example; the defaults are in the entries).
+    #[cfg(feature = "analysis")]
+    let few = |n: u64| Params {
+        blue_noise: super::BlueNoiseOptions {
+            iterations: Some(30),
+            ..Default::default()
+        },
+        ..p().with_points(n)
+    };
     #[cfg(feature = "analysis")]
     v.extend([
         ("pmj02bn", p().with_points(256)),
@@ -102,6 +111,9 @@ pub fn examples() -> Vec<(&'static SamplerEntry, Params)> {
         ("forced-random", p().with_points(100)),
         ("ldbn", p().with_points(256)),
         ("penrose", p().with_points(100)),
+        ("step-blue-noise", few(160)),
+        ("single-peak-blue-noise", few(160)),
+        ("kde-blue-noise", few(160)),
     ]);
     v.into_iter()
         .filter_map(|(name, params)| {

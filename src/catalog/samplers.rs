@@ -61,6 +61,12 @@ pub enum SamplerKind {
     Ldbn,
     /// Penrose-tiling sampling (ranked subdivision), built whole.
     Penrose,
+    /// Step blue noise (spectrum-controlled), built whole.
+    StepBlueNoise,
+    /// Single-peak blue noise (spectrum-controlled), built whole.
+    SinglePeakBlueNoise,
+    /// Kernel-density blue noise at a temperature, built whole.
+    KdeBlueNoise,
 }
 
 /// What a construction is, as far as randomizers care ([`super::applies`]).
@@ -80,7 +86,8 @@ pub enum Family {
     /// latin, pmj02, pmj02bn, cmj, cascaded-sobol).
     Random,
     /// Blue-noise sets built whole (poisson, best-candidate, gaussian-blue-noise, lloyd,
-    /// ccvt, sot, projective-blue-noise, forced-random, bnot, ldbn, penrose).
+    /// ccvt, sot, projective-blue-noise, forced-random, bnot, ldbn, penrose,
+    /// step-blue-noise, single-peak-blue-noise, kde-blue-noise).
     BlueNoise,
 }
 
@@ -97,7 +104,8 @@ impl Family {
             }
             Family::BlueNoise => {
                 "blue-noise sets (poisson, best-candidate, gaussian-blue-noise, lloyd, ccvt, sot, \
-                 projective-blue-noise, forced-random, bnot, ldbn, penrose)"
+                 projective-blue-noise, forced-random, bnot, ldbn, penrose, \
+                 step-blue-noise, single-peak-blue-noise, kde-blue-noise)"
             }
         }
     }
@@ -148,7 +156,10 @@ impl SamplerKind {
             | SamplerKind::ProjectiveBlueNoise
             | SamplerKind::ForcedRandom
             | SamplerKind::Ldbn
-            | SamplerKind::Penrose => Family::BlueNoise,
+            | SamplerKind::Penrose
+            | SamplerKind::StepBlueNoise
+            | SamplerKind::SinglePeakBlueNoise
+            | SamplerKind::KdeBlueNoise => Family::BlueNoise,
         }
     }
 
@@ -174,7 +185,10 @@ impl SamplerKind {
             | SamplerKind::ProjectiveBlueNoise
             | SamplerKind::ForcedRandom
             | SamplerKind::Ldbn
-            | SamplerKind::Penrose => Size::Whole,
+            | SamplerKind::Penrose
+            | SamplerKind::StepBlueNoise
+            | SamplerKind::SinglePeakBlueNoise
+            | SamplerKind::KdeBlueNoise => Size::Whole,
             _ => Size::Sequence,
         }
     }
@@ -811,5 +825,87 @@ pub static SAMPLERS: &[SamplerEntry] = &[
             ),
         ],
         item: "qmckit::blue_noise::Penrose",
+    },
+    Entry {
+        kind: SamplerKind::StepBlueNoise,
+        name: "step-blue-noise",
+        aliases: &[alias(
+            "step",
+            "Heck, Schlömer & Deussen 2013's step blue noise",
+        )],
+        summary: "spectrum-controlled blue noise, step profile: power 0 below |k| = 0.5 sqrt(N) (2D), 1 above; torus, 1 to 6 dimensions, built whole",
+        math: "G_0 = 1 - (u_0/rho)^(d/2) J_{d/2}(2 pi u_0 rho) (Hankel transform of the step); gradient descent on sum_b rho_b^(d-1) (G_b - G_0b)^2 (Heck, Schlömer & Deussen 2013)",
+        params: &[
+            param("dims", "coordinates of each point", "2", "1 to 6"),
+            param(
+                "points",
+                "the set size N",
+                "none: needed",
+                "2 to 2^22 (below 12.32^d a shorter correlation range)",
+            ),
+            SEED,
+            param("iterations", "descent iterations", "1000", "0 to 10^5"),
+            param(
+                "budget",
+                "time budget of the construction",
+                "10 s",
+                "positive seconds",
+            ),
+        ],
+        item: "qmckit::blue_noise::spectral::Profile::step",
+    },
+    Entry {
+        kind: SamplerKind::SinglePeakBlueNoise,
+        name: "single-peak-blue-noise",
+        aliases: &[alias(
+            "single-peak",
+            "Heck, Schlömer & Deussen 2013's single-peak blue noise",
+        )],
+        summary: "spectrum-controlled blue noise, single peak: power 0 below, a smoothed peak at |k| = 0.75 sqrt(N) (2D), 1 above; torus, 1 to 6 dimensions, built whole",
+        math: "P = G_sigma * (p_0 delta(u - u_0) + H(u - u_0)), p_0 = 0.3, sigma = 0.08; its G_0 by the d-dimensional Hankel transform; gradient descent on the PCF mismatch (Heck, Schlömer & Deussen 2013)",
+        params: &[
+            param("dims", "coordinates of each point", "2", "1 to 6"),
+            param(
+                "points",
+                "the set size N",
+                "none: needed",
+                "2 to 2^22 (below 12.32^d a shorter correlation range)",
+            ),
+            SEED,
+            param("iterations", "descent iterations", "1000", "0 to 10^5"),
+            param(
+                "budget",
+                "time budget of the construction",
+                "10 s",
+                "positive seconds",
+            ),
+        ],
+        item: "qmckit::blue_noise::spectral::Profile::single_peak",
+    },
+    Entry {
+        kind: SamplerKind::KdeBlueNoise,
+        name: "kde-blue-noise",
+        aliases: &[alias("fattal", "Fattal 2011, kernel density model")],
+        summary: "kernel-density blue noise: a Gibbs sample at temperature T of the KDE-mismatch energy; torus, 1 to 5 dimensions, built whole",
+        math: "p(X) ∝ exp(-E/T), E = sum_{i<j} exp(-|x_i - x_j|^2 / (4 sigma^2 s^2)), heat-bath local updates (Fattal 2011)",
+        params: &[
+            param("dims", "coordinates of each point", "2", "1 to 5"),
+            param("points", "the set size N", "none: needed", "2 to 2^22"),
+            SEED,
+            param("iterations", "sweeps of local updates", "200", "0 to 10^5"),
+            param(
+                "temperature",
+                "the temperature T (energy units of one pair's overlap)",
+                "0.01",
+                "0 to 100",
+            ),
+            param(
+                "budget",
+                "time budget of the construction",
+                "10 s",
+                "positive seconds",
+            ),
+        ],
+        item: "qmckit::blue_noise::KdeBlueNoise",
     },
 ];

@@ -17,10 +17,14 @@ pub struct BlueNoiseOptions {
     /// (default 10).
     pub candidates: Option<u32>,
     /// gaussian-blue-noise: gradient-descent iterations (default 500); lloyd, ccvt
-    /// (default 30), sot (default 100), bnot (default 50): their iterations.
+    /// (default 30), sot (default 100), bnot (default 50), step-blue-noise and
+    /// single-peak-blue-noise (default 1000): their iterations; kde-blue-noise: its sweeps
+    /// (default 200).
     pub iterations: Option<u32>,
     /// sot: projective sampling (half the directions in the 1D and 2D axis subspaces).
     pub projective: bool,
+    /// kde-blue-noise: the temperature (default 0.01).
+    pub temperature: Option<f64>,
 }
 
 impl BlueNoiseOptions {
@@ -48,14 +52,27 @@ impl BlueNoiseOptions {
                 self.iterations.is_some()
                     && !matches!(
                         kind,
-                        S::GaussianBlueNoise | S::Lloyd | S::Ccvt | S::Sot | S::Bnot
+                        S::GaussianBlueNoise
+                            | S::Lloyd
+                            | S::Ccvt
+                            | S::Sot
+                            | S::Bnot
+                            | S::StepBlueNoise
+                            | S::SinglePeakBlueNoise
+                            | S::KdeBlueNoise
                     ),
-                "only gaussian-blue-noise, lloyd, ccvt, sot and bnot take it",
+                "only gaussian-blue-noise, lloyd, ccvt, sot, bnot, step-blue-noise, \
+                 single-peak-blue-noise and kde-blue-noise take it",
             ),
             (
                 "projective",
                 self.projective && kind != S::Sot,
                 "only sot takes it; projective-blue-noise is always projective",
+            ),
+            (
+                "temperature",
+                self.temperature.is_some() && kind != S::KdeBlueNoise,
+                "only kde-blue-noise takes it",
             ),
         ]
         .into_iter()
@@ -143,7 +160,9 @@ mod built {
     /// The relaxed sets: lloyd, ccvt, bnot (2D; on the torus if `opts.torus`) and sot
     /// (projective if `opts.projective`), `n` points of `dims`, their iterations from
     /// `opts` (else their defaults), within `budget`; and projective-blue-noise, `n`
-    /// points of `dims` within `budget`; forced-random, `n` points of the constant density.
+    /// points of `dims` within `budget`; forced-random, `n` points of the constant density; the spectral sets
+    /// and kde-blue-noise, `n` points of `dims`, their iterations (and temperature) from
+    /// `opts`.
     pub(in crate::catalog) fn relaxed(
         kind: SamplerKind,
         opts: &BlueNoiseOptions,
@@ -152,8 +171,36 @@ mod built {
         seed: u64,
         budget: &Budget,
     ) -> Result<PointSet, CatalogError> {
-        use crate::blue_noise::{Bnot, ForcedRandom, Lloyd, ProjectiveBlueNoise, Sot};
+        use crate::blue_noise::spectral::Profile;
+        use crate::blue_noise::{
+            Bnot, ForcedRandom, KdeBlueNoise, Lloyd, ProjectiveBlueNoise, Sot, SpectralBlueNoise,
+        };
         let budget = budget.started();
+        if matches!(
+            kind,
+            SamplerKind::StepBlueNoise | SamplerKind::SinglePeakBlueNoise
+        ) {
+            let profile = if kind == SamplerKind::StepBlueNoise {
+                Profile::step(dims)?
+            } else {
+                Profile::single_peak(dims)?
+            };
+            let mut s = SpectralBlueNoise::new(n, dims, profile)?.seed(seed);
+            if let Some(i) = opts.iterations {
+                s = s.iterations(i)?;
+            }
+            return Ok(s.generate(&budget)?);
+        }
+        if kind == SamplerKind::KdeBlueNoise {
+            let mut k = KdeBlueNoise::new(n, dims)?.seed(seed);
+            if let Some(i) = opts.iterations {
+                k = k.sweeps(i)?;
+            }
+            if let Some(t) = opts.temperature {
+                k = k.temperature(t)?;
+            }
+            return Ok(k.generate(&budget)?);
+        }
         Ok(if kind == SamplerKind::ForcedRandom {
             ForcedRandom::new(n)?.seed(seed).generate(&budget)?
         } else if kind == SamplerKind::Bnot {

@@ -37,6 +37,7 @@ mod randomize;
 #[cfg(feature = "analysis")]
 mod relaxation;
 mod samplers;
+mod spectral;
 mod spectrum;
 mod star_discrepancy;
 mod star_lower;

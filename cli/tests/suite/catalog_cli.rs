@@ -97,6 +97,12 @@ fn command(name: &str, r: &str, p: &Params, n: u64) -> Vec<String> {
     if p.order == Order::Gray {
         push("--order", "gray".into());
     }
+    if let Some(i) = p.blue_noise.iterations {
+        push("--iterations", i.to_string());
+    }
+    if let Some(t) = p.blue_noise.temperature {
+        push("--temperature", t.to_string());
+    }
     let s = catalog::sampler(name).unwrap();
     let random = (s.kind.is_random() && !p.centered) || r != "none";
     if random {
