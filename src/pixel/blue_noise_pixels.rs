@@ -82,7 +82,7 @@ pub const BLUE_NOISE_LATTICE_GENERATOR: u32 = 0x4613;
 
 /// Blue-noise Owen-scrambled Sobol': pixel `(x, y)`'s dimension pair `d` is the [`Domain`]
 /// `new_domain(d)` of its root over an optimized key table
-/// ([`DomainBase::OwenSobolTable`]). See the [module documentation](self).
+/// ([`DomainBase::OwenSobolTable`]). See the [pixel module](crate::pixel).
 ///
 /// ```
 /// use qmckit::pixel::{BlueNoiseSobol, PixelSampler};
@@ -189,7 +189,7 @@ impl PixelSampler for BlueNoiseSobol<'_> {
 /// Blue-noise rank-1 lattice: pixel `(x, y)`'s dimension pair `d` is the lattice
 /// `(rev(j), rev(j) g)` ([`BLUE_NOISE_LATTICE_GENERATOR`]) shifted by the pixel's cell of
 /// an optimized shift table at the offset of [`Domain`] `new_domain(d)`
-/// ([`DomainBase::LatticeTable`]). See the [module documentation](self).
+/// ([`DomainBase::LatticeTable`]). See the [pixel module](crate::pixel).
 ///
 /// ```
 /// use qmckit::pixel::{BlueNoiseLattice, PixelSampler};

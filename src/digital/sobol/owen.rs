@@ -15,9 +15,9 @@
 //! hashes. Dimensions from 4 on are evaluated from the direction numbers (32 AND/XOR steps).
 
 use super::{SOBOL_DIRECTIONS, SOBOL_MAX_DIMS, Sobol, SobolDimension, byte_tables};
-use crate::bits::{reverse_bits, to_f32, to_f32_lanes};
 #[cfg(target_pointer_width = "64")]
 use crate::bits::to_f32_lz;
+use crate::bits::{reverse_bits, to_f32, to_f32_lanes};
 use crate::dispatch::{self, Kernel};
 use crate::error::{Error, Result};
 use crate::randomize::{FastOwen, FastOwenScrambler, OwenHash, Scrambled, dimension_seed};
