@@ -28,7 +28,7 @@ sets() {
 : >"$TMP/pcf"
 for spec in "cmj cmj" "hex hex" "lloyd lloyd" "ccvt ccvt" "sot sot" \
     "sot sot-projective --projective" "projective-blue-noise projective-blue-noise" \
-    "forced-random forced-random"; do
+    "forced-random forced-random" "penrose penrose"; do
     # shellcheck disable=SC2086
     set -- $spec
     name=$1

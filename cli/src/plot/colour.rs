@@ -43,7 +43,7 @@ pub(crate) fn diverging(t: f64) -> RGBColor {
 }
 
 /// Distinct colours for curves and groups.
-pub(crate) const PALETTE: [RGBColor; 8] = [
+pub(crate) const PALETTE: [RGBColor; 10] = [
     RGBColor(31, 119, 180),
     RGBColor(214, 39, 40),
     RGBColor(44, 160, 44),
@@ -52,4 +52,6 @@ pub(crate) const PALETTE: [RGBColor; 8] = [
     RGBColor(140, 86, 75),
     RGBColor(227, 119, 194),
     RGBColor(23, 190, 207),
+    RGBColor(188, 189, 34),
+    RGBColor(64, 64, 64),
 ];
