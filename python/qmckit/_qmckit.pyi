@@ -53,6 +53,7 @@ def catalog_set(
     iterations: Optional[int] = None,
     torus: bool = False,
     projective: bool = False,
+    temperature: Optional[float] = None,
 ) -> NativeSampler: ...
 def poisson_disk(
     d: int, radius: float, candidates: int = 30, seed: int = 0, surface: bool = False

@@ -474,12 +474,13 @@ pub fn pmj02bn(py: Python<'_>, n: usize, seed: u64) -> PyResult<NativeSampler> {
 
 /// The `n`-point set of any finite catalog sampler (`qmckit::catalog::SAMPLERS` of size
 /// `Set` or `Whole`: stratified, latin, hammersley, lp, cmj, hex, pmj02bn, the blue-noise
-/// sets, lloyd, ccvt, sot, bnot, projective-blue-noise, penrose), by name or alias, unrandomized, in `d`
-/// dimensions (the construction's default when `None`), with the construction's `seed`,
-/// and for the relaxed sets their `iterations`, `torus` and (sot) `projective`: the same
-/// bits as `qmckit points NAME -n N`.
+/// sets, lloyd, ccvt, sot, bnot, projective-blue-noise, forced-random, ldbn, penrose, the
+/// spectral and kernel-density sets), by name or alias, unrandomized, in `d` dimensions
+/// (the construction's default when `None`), with the construction's `seed`, and for the
+/// relaxed sets their `iterations`, `torus`, (sot) `projective` and (kde-blue-noise)
+/// `temperature`: the same bits as `qmckit points NAME -n N`.
 #[pyfunction]
-#[pyo3(signature = (name, n, d=None, seed=0, iterations=None, torus=false, projective=false))]
+#[pyo3(signature = (name, n, d=None, seed=0, iterations=None, torus=false, projective=false, temperature=None))]
 #[allow(clippy::too_many_arguments)] // the keyword arguments of the Python function
 pub fn catalog_set(
     py: Python<'_>,
@@ -490,6 +491,7 @@ pub fn catalog_set(
     iterations: Option<u32>,
     torus: bool,
     projective: bool,
+    temperature: Option<f64>,
 ) -> PyResult<NativeSampler> {
     use qmckit::catalog::{self, BlueNoiseOptions, Params, Size};
     let entry = catalog::sampler(name).map_err(|e| value_error(e.to_string()))?;
@@ -507,6 +509,7 @@ pub fn catalog_set(
             iterations,
             torus,
             projective,
+            temperature,
             ..BlueNoiseOptions::default()
         },
         ..Params::default()

@@ -415,7 +415,8 @@ def test_catalog_set_gives_the_command_s_finite_sets():
     from qmckit import _qmckit as q
 
     for name, d in [("cmj", 2), ("cmj", 3), ("hex", 2), ("lloyd", 2), ("ccvt", 3), ("sot", 2), ("bnot", 2),
-                    ("projective-blue-noise", 3)]:
+                    ("projective-blue-noise", 3), ("forced-random", 2), ("ldbn", 2), ("penrose", 2),
+                    ("kde-blue-noise", 2)]:
         s = q.catalog_set(name, 16, d=d, seed=3)
         assert (s.len, s.dims) == (16, d)
         out = np.empty((16, d), dtype=np.uint32)
@@ -432,3 +433,10 @@ def test_catalog_set_gives_the_command_s_finite_sets():
     for bad in [("sobol", 16), ("hex", 15), ("lloyd", 0)]:
         with pytest.raises(ValueError):
             q.catalog_set(*bad)
+    # The kernel-density set's temperature reaches the construction; other sets refuse it.
+    cold, hot = (np.empty((64, 2), dtype=np.uint32) for _ in range(2))
+    q.catalog_set("kde-blue-noise", 64, seed=1, temperature=0.002).fill(0, cold)
+    q.catalog_set("kde-blue-noise", 64, seed=1, temperature=2.0).fill(0, hot)
+    assert (cold != hot).any()
+    with pytest.raises(ValueError):
+        q.catalog_set("lloyd", 16, temperature=0.1)
