@@ -422,5 +422,41 @@ mod built {
         fn pixel_2d_moves_counter(&self) -> bool {
             self.on().pixel_2d_moves_counter()
         }
+
+        // The prepared per-pixel fills of the borrowing sampler (the defaults would go
+        // value by value).
+        fn fill_2d(
+            &self,
+            x: u32,
+            y: u32,
+            dim: usize,
+            out: &mut [[u32; 2]],
+        ) -> crate::error::Result<()> {
+            self.on().fill_2d(x, y, dim, out)
+        }
+
+        fn fill_2d_f32(
+            &self,
+            x: u32,
+            y: u32,
+            dim: usize,
+            out: &mut [[f32; 2]],
+        ) -> crate::error::Result<()> {
+            self.on().fill_2d_f32(x, y, dim, out)
+        }
+
+        fn fill_1d(&self, x: u32, y: u32, dim: usize, out: &mut [u32]) -> crate::error::Result<()> {
+            self.on().fill_1d(x, y, dim, out)
+        }
+
+        fn fill_1d_f32(
+            &self,
+            x: u32,
+            y: u32,
+            dim: usize,
+            out: &mut [f32],
+        ) -> crate::error::Result<()> {
+            self.on().fill_1d_f32(x, y, dim, out)
+        }
     }
 }

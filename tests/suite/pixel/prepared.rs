@@ -200,3 +200,22 @@ fn fills_check_the_pixel_and_the_length() {
     assert!(p.fill_1d(0, 0, 0, &mut [0u32; 5]).is_err());
     assert!(p.fill_1d(0, 0, 0, &mut []).is_ok());
 }
+
+/// Every catalog pixel sampler, boxed as the command and the Python package build it: its
+/// fills (forwarded to the prepared paths, or the trait's defaults) equal its handle.
+#[test]
+fn boxed_catalog_samplers_fill_as_their_handles() {
+    use qmckit::catalog::{self, PixelParams};
+    for entry in catalog::PIXEL_SAMPLERS {
+        let p = PixelParams {
+            width: 8,
+            height: 4,
+            spp: 16,
+            seed: 5,
+        };
+        let s = catalog::build_pixel(entry, None, &p).unwrap();
+        for (x, y) in [(0, 0), (7, 3), (3, 1)] {
+            check(&s, x, y, entry.name);
+        }
+    }
+}
