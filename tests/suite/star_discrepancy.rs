@@ -736,7 +736,7 @@ fn extreme_within_a_budget() {
             max: 1503
         })
     );
-    assert!(start.elapsed().as_secs_f64() < 0.1);
+    assert!(start.elapsed().as_secs_f64() < 0.5);
     // Within it, the same value as extreme_2d: one point, the degenerate closed box on it
     // holds it with volume 0, so D = 1.
     let one = Points::new(&[0.5, 0.5], 2).unwrap();

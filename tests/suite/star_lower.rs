@@ -91,5 +91,5 @@ fn threshold_accepting_is_budgeted() {
         star_lower_bound(p, 0, 1_000_000_000, &Budget::DEFAULT),
         Err(qmckit::Error::OverBudget { .. })
     ));
-    assert!(start.elapsed().as_secs_f64() < 0.1);
+    assert!(start.elapsed().as_secs_f64() < 0.5);
 }
