@@ -97,6 +97,7 @@
 //! table read, a nested permutation and 2 Owen scrambles (lattice: 2 multiply-adds).
 //! No allocation, no `std`.
 
+use super::prepared::sobol1_reversed;
 use super::{pbrt_f32, sobol0, sobol1};
 use crate::bits::reverse_bits;
 use crate::error::{Error, Result};
@@ -403,6 +404,96 @@ impl<'t> Domain<'t> {
     #[inline]
     pub const fn draw_1d_f32(&self) -> f32 {
         pbrt_f32(self.draw_1d())
+    }
+}
+
+/// The prepared fill of one domain state over a pixel's samples: `out[i]` is the
+/// [`Domain::draw_2d`] (converted by `conv`) of the domain with state `state` at sample
+/// `i` of `len` in pixel `(x, y)`, for `i < out.len() <= len`. What depends on the pixel
+/// and the state (the key `k`, the shuffle key, `mix(k)`) is computed once; per sample
+/// the loop works in the bit-reversed domain: `rev(j) = vegdahl(rev(i), ks) & rev(mask)`,
+/// Sobol' dimension 0 reversed is `j` and dimension 1 reversed its superset-XOR
+/// transform, so an Owen-scrambled pair costs three scrambles and three reversals, and a
+/// lattice pair one scramble and no reversal besides the index's; no branch, no division.
+/// Bit-identical to the draws (tested).
+#[inline(always)]
+pub(crate) fn fill_pairs<T>(
+    base: DomainBase<'_>,
+    pixel: (u32, u32),
+    len: u64,
+    state: u64,
+    out: &mut [[T; 2]],
+    conv: impl Fn(u32) -> T,
+) {
+    let d = Domain::from_parts(base, pixel, 0, len, state);
+    let k = d.key();
+    let m = if len <= 1 {
+        0
+    } else {
+        64 - (len - 1).leading_zeros()
+    };
+    let mask = if m >= 32 { u32::MAX } else { (1u32 << m) - 1 };
+    let rmask = reverse_bits(mask);
+    let ks = hash3(state, k, TAG_SHUFFLE) as u32;
+    match base {
+        DomainBase::OwenSobol | DomainBase::OwenSobolTable(_) => {
+            let o = mix64(k);
+            let (ka, kb) = (o as u32, (o >> 32) as u32);
+            for (i, v) in (0u32..).zip(out.iter_mut()) {
+                let j = reverse_bits(vegdahl(reverse_bits(i), ks) & rmask);
+                *v = [
+                    conv(reverse_bits(vegdahl(j, ka))),
+                    conv(reverse_bits(vegdahl(sobol1_reversed(j), kb))),
+                ];
+            }
+        }
+        DomainBase::LatticeTable(_, g) => {
+            let (sx, sy) = (k as u32, (k >> 32) as u32);
+            for (i, v) in (0u32..).zip(out.iter_mut()) {
+                let r = vegdahl(reverse_bits(i), ks) & rmask;
+                *v = [
+                    conv(r.wrapping_add(sx)),
+                    conv(r.wrapping_mul(g).wrapping_add(sy)),
+                ];
+            }
+        }
+    }
+}
+
+/// [`fill_pairs`]' first coordinates: `out[i]` is the [`Domain::draw_1d`] of sample `i`.
+#[inline(always)]
+pub(crate) fn fill_values<T>(
+    base: DomainBase<'_>,
+    pixel: (u32, u32),
+    len: u64,
+    state: u64,
+    out: &mut [T],
+    conv: impl Fn(u32) -> T,
+) {
+    let d = Domain::from_parts(base, pixel, 0, len, state);
+    let k = d.key();
+    let m = if len <= 1 {
+        0
+    } else {
+        64 - (len - 1).leading_zeros()
+    };
+    let mask = if m >= 32 { u32::MAX } else { (1u32 << m) - 1 };
+    let rmask = reverse_bits(mask);
+    let ks = hash3(state, k, TAG_SHUFFLE) as u32;
+    match base {
+        DomainBase::OwenSobol | DomainBase::OwenSobolTable(_) => {
+            let ka = mix64(k) as u32;
+            for (i, v) in (0u32..).zip(out.iter_mut()) {
+                let j = reverse_bits(vegdahl(reverse_bits(i), ks) & rmask);
+                *v = conv(reverse_bits(vegdahl(j, ka)));
+            }
+        }
+        DomainBase::LatticeTable(..) => {
+            let sx = k as u32;
+            for (i, v) in (0u32..).zip(out.iter_mut()) {
+                *v = conv((vegdahl(reverse_bits(i), ks) & rmask).wrapping_add(sx));
+            }
+        }
     }
 }
 
