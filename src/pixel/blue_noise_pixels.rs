@@ -64,6 +64,40 @@ impl Roots {
     }
 }
 
+/// The prepared fills of a table sampler (a `base()`, `grid` and `roots`): the dimension
+/// pair's state once, then [`fill_pairs`] or [`fill_values`] over the pixel's samples.
+macro_rules! table_fills {
+    () => {
+        fn fill_2d(&self, x: u32, y: u32, dim: usize, out: &mut [[u32; 2]]) -> Result<()> {
+            self.grid.check_fill(x, y, out.len())?;
+            let (spp, state) = (self.grid.spp as u64, self.roots.state(dim));
+            fill_pairs(self.base(), (x, y), spp, state, out, |v| v);
+            Ok(())
+        }
+
+        fn fill_2d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [[f32; 2]]) -> Result<()> {
+            self.grid.check_fill(x, y, out.len())?;
+            let (spp, state) = (self.grid.spp as u64, self.roots.state(dim));
+            fill_pairs(self.base(), (x, y), spp, state, out, pbrt_f32);
+            Ok(())
+        }
+
+        fn fill_1d(&self, x: u32, y: u32, dim: usize, out: &mut [u32]) -> Result<()> {
+            self.grid.check_fill(x, y, out.len())?;
+            let (spp, state) = (self.grid.spp as u64, self.roots.state(dim));
+            fill_values(self.base(), (x, y), spp, state, out, |v| v);
+            Ok(())
+        }
+
+        fn fill_1d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [f32]) -> Result<()> {
+            self.grid.check_fill(x, y, out.len())?;
+            let (spp, state) = (self.grid.spp as u64, self.roots.state(dim));
+            fill_values(self.base(), (x, y), spp, state, out, pbrt_f32);
+            Ok(())
+        }
+    };
+}
+
 /// The side of the shipped tiles, 64.
 pub const BLUE_NOISE_TILE_SIDE: u32 = 64;
 
@@ -181,6 +215,11 @@ impl<'t> BlueNoiseSobol<'t> {
         Ok(self.root_of(x, y, index))
     }
 
+    /// The domains' base: the key table.
+    const fn base(&self) -> DomainBase<'t> {
+        DomainBase::OwenSobolTable(self.table)
+    }
+
     const fn root_of(&self, x: u32, y: u32, index: u32) -> Domain<'t> {
         Domain::from_parts(
             DomainBase::OwenSobolTable(self.table),
@@ -209,61 +248,7 @@ impl PixelSampler for BlueNoiseSobol<'_> {
         self.grid
     }
 
-    fn fill_2d(&self, x: u32, y: u32, dim: usize, out: &mut [[u32; 2]]) -> Result<()> {
-        self.grid.check_fill(x, y, out.len())?;
-        let state = self.roots.state(dim);
-        fill_pairs(
-            DomainBase::OwenSobolTable(self.table),
-            (x, y),
-            self.grid.spp as u64,
-            state,
-            out,
-            |v| v,
-        );
-        Ok(())
-    }
-
-    fn fill_2d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [[f32; 2]]) -> Result<()> {
-        self.grid.check_fill(x, y, out.len())?;
-        let state = self.roots.state(dim);
-        fill_pairs(
-            DomainBase::OwenSobolTable(self.table),
-            (x, y),
-            self.grid.spp as u64,
-            state,
-            out,
-            pbrt_f32,
-        );
-        Ok(())
-    }
-
-    fn fill_1d(&self, x: u32, y: u32, dim: usize, out: &mut [u32]) -> Result<()> {
-        self.grid.check_fill(x, y, out.len())?;
-        let state = self.roots.state(dim);
-        fill_values(
-            DomainBase::OwenSobolTable(self.table),
-            (x, y),
-            self.grid.spp as u64,
-            state,
-            out,
-            |v| v,
-        );
-        Ok(())
-    }
-
-    fn fill_1d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [f32]) -> Result<()> {
-        self.grid.check_fill(x, y, out.len())?;
-        let state = self.roots.state(dim);
-        fill_values(
-            DomainBase::OwenSobolTable(self.table),
-            (x, y),
-            self.grid.spp as u64,
-            state,
-            out,
-            pbrt_f32,
-        );
-        Ok(())
-    }
+    table_fills!();
 
     #[inline]
     fn value_1d(&self, at: &PixelPoint, dim: usize) -> u32 {
@@ -356,6 +341,11 @@ impl<'t> BlueNoiseLattice<'t> {
         ))
     }
 
+    /// The domains' base: the shift table and the generator.
+    const fn base(&self) -> DomainBase<'t> {
+        DomainBase::LatticeTable(self.table, self.generator)
+    }
+
     #[inline]
     const fn dimension(&self, at: &PixelPoint, dim: usize) -> Domain<'t> {
         Domain::from_parts(
@@ -373,61 +363,7 @@ impl PixelSampler for BlueNoiseLattice<'_> {
         self.grid
     }
 
-    fn fill_2d(&self, x: u32, y: u32, dim: usize, out: &mut [[u32; 2]]) -> Result<()> {
-        self.grid.check_fill(x, y, out.len())?;
-        let state = self.roots.state(dim);
-        fill_pairs(
-            DomainBase::LatticeTable(self.table, self.generator),
-            (x, y),
-            self.grid.spp as u64,
-            state,
-            out,
-            |v| v,
-        );
-        Ok(())
-    }
-
-    fn fill_2d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [[f32; 2]]) -> Result<()> {
-        self.grid.check_fill(x, y, out.len())?;
-        let state = self.roots.state(dim);
-        fill_pairs(
-            DomainBase::LatticeTable(self.table, self.generator),
-            (x, y),
-            self.grid.spp as u64,
-            state,
-            out,
-            pbrt_f32,
-        );
-        Ok(())
-    }
-
-    fn fill_1d(&self, x: u32, y: u32, dim: usize, out: &mut [u32]) -> Result<()> {
-        self.grid.check_fill(x, y, out.len())?;
-        let state = self.roots.state(dim);
-        fill_values(
-            DomainBase::LatticeTable(self.table, self.generator),
-            (x, y),
-            self.grid.spp as u64,
-            state,
-            out,
-            |v| v,
-        );
-        Ok(())
-    }
-
-    fn fill_1d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [f32]) -> Result<()> {
-        self.grid.check_fill(x, y, out.len())?;
-        let state = self.roots.state(dim);
-        fill_values(
-            DomainBase::LatticeTable(self.table, self.generator),
-            (x, y),
-            self.grid.spp as u64,
-            state,
-            out,
-            pbrt_f32,
-        );
-        Ok(())
-    }
+    table_fills!();
 
     #[inline]
     fn value_1d(&self, at: &PixelPoint, dim: usize) -> u32 {

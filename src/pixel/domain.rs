@@ -354,12 +354,7 @@ impl<'t> Domain<'t> {
     /// SHUFFLE)`.
     #[inline]
     const fn sequence_index(&self, k: u64) -> u32 {
-        let m = if self.len <= 1 {
-            0
-        } else {
-            64 - (self.len - 1).leading_zeros()
-        };
-        let mask = if m >= 32 { u32::MAX } else { (1u32 << m) - 1 };
+        let mask = index_mask(self.len);
         let ks = hash3(self.state, k, TAG_SHUFFLE) as u32;
         reverse_bits(vegdahl(reverse_bits(self.index), ks)) & mask
     }
@@ -407,6 +402,27 @@ impl<'t> Domain<'t> {
     }
 }
 
+/// `2^m - 1`, `m = ceil(log2 len)` (all ones for `m >= 32`): the mask of the nested
+/// permutation's block.
+#[inline]
+const fn index_mask(len: u64) -> u32 {
+    let m = if len <= 1 {
+        0
+    } else {
+        64 - (len - 1).leading_zeros()
+    };
+    if m >= 32 { u32::MAX } else { (1u32 << m) - 1 }
+}
+
+/// What a prepared fill computes once for a pixel and a state: the key `k`, the shuffle
+/// key `low32 H(s, k, SHUFFLE)` and the reversed index mask `rev(2^m - 1)`.
+#[inline(always)]
+const fn prepare(base: DomainBase<'_>, pixel: (u32, u32), len: u64, state: u64) -> (u64, u32, u32) {
+    let k = Domain::from_parts(base, pixel, 0, len, state).key();
+    let ks = hash3(state, k, TAG_SHUFFLE) as u32;
+    (k, ks, reverse_bits(index_mask(len)))
+}
+
 /// The prepared fill of one domain state over a pixel's samples: `out[i]` is the
 /// [`Domain::draw_2d`] (converted by `conv`) of the domain with state `state` at sample
 /// `i` of `len` in pixel `(x, y)`, for `i < out.len() <= len`. What depends on the pixel
@@ -425,16 +441,7 @@ pub(crate) fn fill_pairs<T>(
     out: &mut [[T; 2]],
     conv: impl Fn(u32) -> T,
 ) {
-    let d = Domain::from_parts(base, pixel, 0, len, state);
-    let k = d.key();
-    let m = if len <= 1 {
-        0
-    } else {
-        64 - (len - 1).leading_zeros()
-    };
-    let mask = if m >= 32 { u32::MAX } else { (1u32 << m) - 1 };
-    let rmask = reverse_bits(mask);
-    let ks = hash3(state, k, TAG_SHUFFLE) as u32;
+    let (k, ks, rmask) = prepare(base, pixel, len, state);
     match base {
         DomainBase::OwenSobol | DomainBase::OwenSobolTable(_) => {
             let o = mix64(k);
@@ -470,16 +477,7 @@ pub(crate) fn fill_values<T>(
     out: &mut [T],
     conv: impl Fn(u32) -> T,
 ) {
-    let d = Domain::from_parts(base, pixel, 0, len, state);
-    let k = d.key();
-    let m = if len <= 1 {
-        0
-    } else {
-        64 - (len - 1).leading_zeros()
-    };
-    let mask = if m >= 32 { u32::MAX } else { (1u32 << m) - 1 };
-    let rmask = reverse_bits(mask);
-    let ks = hash3(state, k, TAG_SHUFFLE) as u32;
+    let (k, ks, rmask) = prepare(base, pixel, len, state);
     match base {
         DomainBase::OwenSobol | DomainBase::OwenSobolTable(_) => {
             let ka = mix64(k) as u32;
