@@ -56,7 +56,7 @@ def main():
     except FileNotFoundError:
         refused = []
     for lab, tool, why in refused:
-        print(f"\n{lab}: {tool}'s output was refused by the point-file parser: {why}")
+        print(f"\n{lab}: no statistics for {tool}: {why}")
 
     print("\nTime per point in ns (median of the rounds; whole process wall time, text output "
           "included), and qmckit/UTK (below 1: qmckit faster).\n")
