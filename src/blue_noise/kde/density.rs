@@ -80,7 +80,7 @@ impl KdeBlueNoise {
     /// ```
     /// use qmckit::blue_noise::KdeBlueNoise;
     /// use qmckit::work::Budget;
-    /// // Three times the density on the right half (a smooth step): about 3/4 of the points.
+    /// // The density is 1 at x = 0 and 3 at x = 1/2.
     /// let d = |x: &[f64]| 2.0 - (std::f64::consts::TAU * x[0]).cos();
     /// let set = KdeBlueNoise::new(256, 2)?.sweeps(20)?.seed(1).sample(&d, &Budget::DEFAULT)?;
     /// assert_eq!(set.count(), 256);
