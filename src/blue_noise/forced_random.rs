@@ -28,7 +28,9 @@
 //! ## Range and cost
 //!
 //! `N` from 1 to 2^22, `R` from 16 to 1024 (default 128). The matrix costs what
-//! [`super::VoidAndCluster::cost`] says (128 x 128: about 0.1 s); the sampling evaluates `f`
+//! [`super::VoidAndCluster::cost`] says (128 x 128: about 0.1 s); for the constant density
+//! with `N <= R^2 / 10` only its initial pattern is built and ranked, which skips the
+//! filling of the other nine tenths, most of that cost; the sampling evaluates `f`
 //! at the `G^2 <= 2^26` cell centres (one pass, one more per doubling of `k`) and is
 //! linear in them; estimated with the matrix against a [`Budget`], stopped at its
 //! deadline. Memory `G^2` values.
@@ -127,7 +129,15 @@ impl ForcedRandom {
     /// # Errors
     /// As [`ForcedRandom::sample`].
     pub fn generate(&self, budget: &Budget) -> Result<PointSet> {
-        self.sample(&|_| 1.0, budget)
+        // Constant density, N <= R^2 / 4: the grid is the matrix and only the cells of rank
+        // below N are taken, so only those ranks are built.
+        let r2 = self.side * self.side;
+        let limit = if self.n as usize <= r2 / 4 {
+            self.n as usize
+        } else {
+            r2
+        };
+        self.sample_ranked(&|_| 1.0, limit, budget)
     }
 
     /// About `n` points following `density` (finite, non-negative, not zero everywhere on
@@ -139,12 +149,22 @@ impl ForcedRandom {
     /// when no cell passes; [`Error::OverBudget`], [`Error::TooLarge`],
     /// [`Error::OutOfTime`].
     pub fn sample(&self, density: &dyn Fn([f64; 2]) -> f64, budget: &Budget) -> Result<PointSet> {
+        self.sample_ranked(density, self.side * self.side, budget)
+    }
+
+    /// [`ForcedRandom::sample`] with the matrix's ranks built only below `limit` (the
+    /// others never pass: callers make sure no cell needs them).
+    fn sample_ranked(
+        &self,
+        density: &dyn Fn([f64; 2]) -> f64,
+        limit: usize,
+        budget: &Budget,
+    ) -> Result<PointSet> {
         const WHAT: &str = "forced random sampling";
         let budget = budget.started();
         budget.check(WHAT, self.cost())?;
         let r = self.side;
-        let mask = self.matrix.seed(self.seed).generate(&budget)?;
-        let ranks = mask.ranks();
+        let ranks = self.matrix.seed(self.seed).ranks_below(limit, &budget)?;
         let n = self.n as f64;
         let mut pacer = budget.pacer(WHAT);
         // The grid: the smallest power-of-two number of tiles with every t_c <= 1/4.

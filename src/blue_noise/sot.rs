@@ -18,12 +18,27 @@
 //! ## The target
 //!
 //! `P_theta nu` is the law of `sum_k theta_k U_k` (a convolution of uniforms, an
-//! Irwin–Hall-like spline); as in the paper's implementation it is represented by a
-//! large projected sample of the cube rather than its closed form: `M = c N` points
-//! (`c` = samples a point, default 16) of the Owen-scrambled Sobol' sequence
-//! ([`crate::Sobol`] with [`crate::randomize::FastOwen`] from the seed), fixed for the
-//! run. Projected and sorted, its `k`-th block of `c` consecutive values has mean `t_k`
-//! (the exact 1D transport plan between the `N` points and the `M`-point sample).
+//! Irwin–Hall-like spline). When `theta` has at most two non-zero components (every
+//! direction in 1D and 2D, the axis and plane directions of the projective variant) the
+//! target of the `k`-th of `N` sorted points is the exact quantile
+//! `t_k = F^-1((k + 1/2) / N)` of that law: with `a <= b` the two absolute components and
+//! `o` the sum of the negative ones, `<theta, U> - o = a U + b V` has the trapezoidal
+//! density of height `1/b` on `[a, b]` and linear ramps on `[0, a]` and `[b, a + b]`, so
+//!
+//! ```text
+//! F^-1(p) - o = sqrt(2 a b p)                 for p <= a / (2 b),
+//!               b p + a / 2                   for a / (2 b) < p <= 1 - a / (2 b),
+//!               a + b - sqrt(2 a b (1 - p))   above
+//! ```
+//!
+//! ([`square_quantile`]; `a = 0` is the uniform law on `[0, b]`). For other directions
+//! (`d > 2`) the law is represented, as in the paper's implementation, by a large
+//! projected sample of the cube: `M = c N` points (`c` = samples a point, default 16) of
+//! the Owen-scrambled Sobol' sequence ([`crate::Sobol`] with
+//! [`crate::randomize::FastOwen`] from the seed), fixed for the run. Projected and sorted,
+//! its `k`-th block of `c` consecutive values has mean `t_k` (the exact 1D transport plan
+//! between the `N` points and the `M`-point sample). In 1D and 2D no sample is built and
+//! `c` changes nothing.
 //!
 //! ## The projective variant
 //!
@@ -42,9 +57,10 @@
 //!
 //! ## Cost
 //!
-//! `iterations L (N d + M d + N log N + M log M)` per run; estimated ([`Sot::cost`])
-//! against a [`Budget`] and stopped at its deadline (checked once a direction). Memory
-//! `(N + M) d` values.
+//! `iterations L (N d + N log N)` per run in 1D and 2D (a sort of the projected points
+//! and `N` closed-form quantiles a direction); for `d > 2` each sampled direction adds
+//! `M d + M log M`. Estimated ([`Sot::cost`]) against a [`Budget`] and stopped at its
+//! deadline (checked once a direction). Memory `N d` values, `(N + M) d` for `d > 2`.
 //!
 //! ```
 //! use qmckit::blue_noise::Sot;
@@ -148,7 +164,8 @@ impl Sot {
         Ok(self)
     }
 
-    /// Target samples a point, `c` (1 to 1024).
+    /// Target samples a point, `c` (1 to 1024); used only for `d > 2`, where directions
+    /// with more than two non-zero components take the sampled target.
     ///
     /// # Errors
     /// [`Error::InvalidParameter`] outside that range.
@@ -175,11 +192,16 @@ impl Sot {
         self
     }
 
-    /// The estimated running time: `iterations L (N + M) (d + log2 M)` values.
+    /// The estimated running time: `iterations L (N + M) (d + log2 M)` values, `M = 0`
+    /// in 1D and 2D (closed-form targets).
     pub fn cost(&self) -> Cost {
         let n = self.n as f64;
-        let m = n * f64::from(self.per_point);
-        let work = (n + m) * (self.dims as f64 + m.log2().max(1.0));
+        let m = if self.dims > 2 {
+            n * f64::from(self.per_point)
+        } else {
+            0.0
+        };
+        let work = (n + m) * (self.dims as f64 + (n + m).log2().max(1.0));
         Cost::steps(
             f64::from(self.iterations) * f64::from(self.batch) * work,
             VALUES,
@@ -208,19 +230,24 @@ impl Sot {
         budget.check(WHAT, self.cost())?;
         let (n, d) = (self.n as usize, self.dims);
         let c = self.per_point as usize;
-        let m = n * c;
         let mut rng = Rng::new(self.seed, 0x534F_5453_414D_504C); // "SOTSAMPL"
         let mut pts = crate::size::vec_zeroed::<f64>(crate::size::coordinates(n as u64, d)?)?;
         pts.iter_mut().for_each(|x| *x = rng.unit());
-        // The target: M Owen-scrambled Sobol' points (M <= 2^30 by the limits above).
-        let sobol = Scrambled::new(Sobol::new(d)?, FastOwen::new(self.seed));
-        let mut raw = crate::size::vec_zeroed::<u32>(crate::size::coordinates(m as u64, d)?)?;
-        sobol.fill(0, &mut raw)?;
-        let target: Vec<f64> = raw.iter().map(|&u| crate::bits::to_f64(u)).collect();
-        drop(raw);
+        // The sampled target, for directions with more than two non-zero components
+        // (d > 2 only): M Owen-scrambled Sobol' points (M <= 2^30 by the limits above).
+        let m = if d > 2 { n * c } else { 0 };
+        let target: Vec<f64> = if m > 0 {
+            let sobol = Scrambled::new(Sobol::new(d)?, FastOwen::new(self.seed));
+            let mut raw = crate::size::vec_zeroed::<u32>(crate::size::coordinates(m as u64, d)?)?;
+            sobol.fill(0, &mut raw)?;
+            raw.iter().map(|&u| crate::bits::to_f64(u)).collect()
+        } else {
+            Vec::new()
+        };
         let mut theta = vec![0.0f64; d];
         let mut proj = crate::size::vec_zeroed::<(f64, u32)>(n)?;
         let mut tproj = crate::size::vec_zeroed::<f64>(m)?;
+        let mut exact = crate::size::vec_zeroed::<f64>(n)?;
         let mut step = crate::size::vec_zeroed::<f64>(pts.len())?;
         let inv_batch = 1.0 / f64::from(self.batch);
         let subspaces = if self.projective {
@@ -242,13 +269,18 @@ impl Sot {
                 for (k, (p, x)) in proj.iter_mut().zip(pts.chunks_exact(d)).enumerate() {
                     *p = (dot(x, &theta), k as u32);
                 }
-                for (t, y) in tproj.iter_mut().zip(target.chunks_exact(d)) {
-                    *t = dot(y, &theta);
+                let closed = exact_targets(&theta, &mut exact);
+                if !closed {
+                    for (t, y) in tproj.iter_mut().zip(target.chunks_exact(d)) {
+                        *t = dot(y, &theta);
+                    }
+                    tproj.sort_unstable_by(f64::total_cmp);
+                    for (e, block) in exact.iter_mut().zip(tproj.chunks_exact(c)) {
+                        *e = block.iter().sum::<f64>() / c as f64;
+                    }
                 }
                 proj.sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
-                tproj.sort_unstable_by(f64::total_cmp);
-                for (&(v, i), block) in proj.iter().zip(tproj.chunks_exact(c)) {
-                    let t = block.iter().sum::<f64>() / c as f64;
+                for (&(v, i), &t) in proj.iter().zip(&exact) {
                     let b = i as usize * d;
                     if let Some(s) = step.get_mut(b..b + d) {
                         for (s, &th) in s.iter_mut().zip(&theta) {
@@ -263,6 +295,67 @@ impl Sot {
         }
         Ok(pts)
     }
+}
+
+/// `F^-1(p)` of `<theta, U>`, `U` uniform in the unit square, `0 < p < 1` (the trapezoid
+/// quantile of the module text; exact up to the rounding of a square root). Cost O(1).
+///
+/// # Errors
+/// [`Error::InvalidParameter`] for `p` outside `(0, 1)`, a non-finite `theta` or `theta = 0`.
+///
+/// ```
+/// use qmckit::blue_noise::sot::square_quantile;
+/// // x + y has the triangular law on [0, 2]: F(1/2) = 1/8.
+/// assert!((square_quantile([1.0, 1.0], 0.125)? - 0.5).abs() < 1e-15);
+/// // x - y on [-1, 1]: the median is 0.
+/// assert!(square_quantile([1.0, -1.0], 0.5)?.abs() < 1e-15);
+/// # Ok::<(), qmckit::Error>(())
+/// ```
+pub fn square_quantile(theta: [f64; 2], p: f64) -> Result<f64> {
+    if !(p > 0.0 && p < 1.0) || !theta.iter().all(|t| t.is_finite()) || theta == [0.0; 2] {
+        return Err(Error::InvalidParameter {
+            what: "the projected square's quantile needs 0 < p < 1 and a finite non-zero theta",
+        });
+    }
+    let offset = theta[0].min(0.0) + theta[1].min(0.0);
+    let (a, b) = (theta[0].abs(), theta[1].abs());
+    Ok(offset + trapezoid_quantile(a.min(b), a.max(b), p))
+}
+
+/// `F^-1(p)` of `a U + b V` for `0 <= a <= b`, `b > 0` (see the module text).
+fn trapezoid_quantile(a: f64, b: f64, p: f64) -> f64 {
+    let tail = a / (2.0 * b);
+    if p <= tail {
+        (2.0 * a * b * p).sqrt()
+    } else if p <= 1.0 - tail {
+        b * p + 0.5 * a
+    } else {
+        a + b - (2.0 * a * b * (1.0 - p)).sqrt()
+    }
+}
+
+/// The exact targets `F^-1((k + 1/2) / N)`, `k < N = out.len()`, of the projection of the
+/// uniform cube on `theta` when `theta` has at most two non-zero components (then `true`);
+/// `false` (and `out` untouched) otherwise or for `theta = 0`.
+fn exact_targets(theta: &[f64], out: &mut [f64]) -> bool {
+    let (mut w, mut count, mut offset) = ([0.0f64; 2], 0usize, 0.0f64);
+    for &t in theta.iter().filter(|&&t| t != 0.0) {
+        match w.get_mut(count) {
+            Some(slot) => *slot = t.abs(),
+            None => return false,
+        }
+        count += 1;
+        offset += t.min(0.0);
+    }
+    let (a, b) = (w[0].min(w[1]), w[0].max(w[1]));
+    if b <= 0.0 {
+        return false;
+    }
+    let n = out.len() as f64;
+    for (k, t) in out.iter_mut().enumerate() {
+        *t = offset + trapezoid_quantile(a, b, (k as f64 + 0.5) / n);
+    }
+    true
 }
 
 /// The axis-aligned subspaces of projective SOT: the `d` axes, then (for `d > 2`) the

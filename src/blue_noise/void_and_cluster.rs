@@ -171,6 +171,19 @@ impl VoidAndCluster {
     /// # Errors
     /// [`Error::OverBudget`], [`Error::TooLarge`], [`Error::OutOfTime`].
     pub fn generate(&self, budget: &Budget) -> Result<RankMask> {
+        let ranks = self.ranks_below(self.width * self.height, budget)?;
+        Ok(RankMask {
+            width: self.width,
+            height: self.height,
+            ranks,
+        })
+    }
+
+    /// The ranks of [`generate`](Self::generate) below `limit`, the others `u32::MAX`:
+    /// with `limit` at most the initial pattern's size (`N / 10`) only that pattern is
+    /// ranked and the filling phase, most of the cost, is skipped. The ranks below `limit`
+    /// are the full mask's (the filling phase does not change them).
+    pub(crate) fn ranks_below(&self, limit: usize, budget: &Budget) -> Result<Vec<u32>> {
         let budget = budget.started();
         budget.check("void-and-cluster mask", self.cost())?;
         let mut pacer = budget.pacer("void-and-cluster mask");
@@ -210,6 +223,10 @@ impl VoidAndCluster {
             }
         }
         let mut ranks = crate::size::vec_zeroed::<u32>(n)?;
+        if limit < n {
+            // The cells the filling phase would rank stay unranked.
+            ranks.fill(u32::MAX);
+        }
         let mut removing = state.clone();
         for rank in (0..n1).rev() {
             pacer.tick_n(weight)?;
@@ -220,7 +237,7 @@ impl VoidAndCluster {
             }
         }
         drop(removing);
-        for rank in n1..n {
+        for rank in n1..n.min(limit) {
             pacer.tick_n(weight)?;
             let Some(v) = state.void() else { break };
             state.flip(v, true);
@@ -228,11 +245,13 @@ impl VoidAndCluster {
                 *slot = rank as u32;
             }
         }
-        Ok(RankMask {
-            width: self.width,
-            height: self.height,
-            ranks,
-        })
+        if limit < n {
+            ranks
+                .iter_mut()
+                .filter(|r| **r as usize >= limit)
+                .for_each(|r| *r = u32::MAX);
+        }
+        Ok(ranks)
     }
 }
 

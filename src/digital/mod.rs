@@ -44,8 +44,8 @@
 //! digits scrambled (so Owen's scramble makes each point uniform to 32 bits). Digit
 //! permutations and Owen scrambling keep every `(t, m, s)`-net a `(t, m, s)`-net.
 //!
-//! Cost per value: `K x m` multiply-adds mod `b` (`m` the index digits; 21 x 21 in
-//! base 3) and, scrambled, one hash a digit.
+//! Cost per value: `K x m` multiply-adds (`m` the index's digits; at most 21 x 21 in
+//! base 3), one reduction mod `b` per output digit and, scrambled, one hash a digit.
 //!
 //! ```
 //! use qmckit::Sampler;
@@ -281,13 +281,20 @@ impl<M: AsRef<[u16]>> DigitalNetB<M> {
     /// [`Error::IndexOutOfRange`], [`Error::DimensionOutOfRange`].
     pub fn value(&self, index: u32, dim: usize) -> Result<u64> {
         check(index, self.len, dim, self.dims)?;
-        let mut a = [0u64; MAX_DIGITS];
-        let mut rest = index as u64;
-        for slot in a.iter_mut().take(self.cols) {
-            *slot = rest % self.base as u64;
-            rest /= self.base as u64;
-        }
         let b = self.base as u64;
+        // The index's digits, least significant first; only the `used` lowest can be
+        // non-zero, so the columns past them add nothing.
+        let mut a = [0u64; MAX_DIGITS];
+        let (mut rest, mut used) = (index as u64, 0usize);
+        for slot in a.iter_mut().take(self.cols) {
+            if rest == 0 {
+                break;
+            }
+            *slot = rest % b;
+            rest /= b;
+            used += 1;
+        }
+        let digits = a.get(..used).unwrap_or(&[]);
         let block = self.digits * self.cols;
         let matrix = self
             .matrices
@@ -296,10 +303,13 @@ impl<M: AsRef<[u16]>> DigitalNetB<M> {
             .unwrap_or(&[]);
         let (mut v, mut prefix, mut weight) = (0u64, 0u64, 1u64);
         for (r, row) in matrix.chunks_exact(self.cols).enumerate() {
+            // One reduction a row: each product is below b^2 < 2^32 and a row has at most
+            // 32 of them, so the sum stays below 2^37.
             let y = row
                 .iter()
-                .zip(&a)
-                .fold(0u64, |acc, (&c, &ak)| (acc + c as u64 * ak) % b);
+                .zip(digits)
+                .fold(0u64, |acc, (&c, &ak)| acc + c as u64 * ak)
+                % b;
             let y = self
                 .scramble
                 .digit(self.base, dim, r as u32 + 1, prefix, y as u32) as u64;
@@ -324,6 +334,10 @@ impl<M: AsRef<[u16]>> Sampler for DigitalNetB<M> {
     /// `floor(v 2^32 / b^K)` of [`DigitalNetB::value`].
     fn sample(&self, index: u32, dim: usize) -> Result<u32> {
         let v = self.value(index, dim)?;
+        if self.scale == FULL_RANGE {
+            // Base 2: b^K = 2^32 and the quotient is v itself.
+            return Ok(v as u32);
+        }
         // v < b^K, so the quotient is below 2^32.
         Ok(((v as u128) << 32).wrapping_div(self.scale as u128) as u32)
     }

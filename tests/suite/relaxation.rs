@@ -176,6 +176,58 @@ fn sot_lowers_the_sliced_wasserstein_distance() {
 }
 
 #[test]
+fn sot_square_quantiles_match_a_uniform_sample() {
+    // The closed-form quantile of <theta, U>, U uniform in the square, against a brute
+    // force: the fraction of 2^20 independent uniform points (SplitMix64, not the crate's
+    // generators) whose projection lies below it is p within 5 binomial standard errors.
+    let m = 1usize << 20;
+    let mut state = 0x1234_5678_9ABC_DEF0u64;
+    let mut next = || {
+        state = state.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = state;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let pts: Vec<[f64; 2]> = (0..m).map(|_| [next(), next()]).collect();
+    let thetas = [
+        [1.0, 1.0],
+        [0.6, -0.8],
+        [-0.3, -0.7],
+        [1.0, 0.0],
+        [0.0, -1.0],
+        [0.01, 0.99995],
+        [0.999, 0.0447],
+    ];
+    for theta in thetas {
+        let mut proj: Vec<f64> = pts
+            .iter()
+            .map(|p| theta[0] * p[0] + theta[1] * p[1])
+            .collect();
+        proj.sort_by(f64::total_cmp);
+        for p in [0.001, 0.01, 0.1, 0.3, 0.5, 0.77, 0.95, 0.999] {
+            let q = qmckit::blue_noise::sot::square_quantile(theta, p).unwrap();
+            let below = proj.partition_point(|&y| y < q) as f64 / m as f64;
+            let se = (p * (1.0 - p) / m as f64).sqrt();
+            assert!(
+                (below - p).abs() <= 5.0 * se + 1.0 / m as f64,
+                "theta {theta:?} p {p}: quantile {q}, fraction below {below}"
+            );
+        }
+    }
+    // Exact values: x + y is triangular on [0, 2] (F(s) = s^2 / 2 below 1), x alone uniform.
+    let q = qmckit::blue_noise::sot::square_quantile([1.0, 1.0], 0.02).unwrap();
+    assert!((q - 0.2).abs() < 1e-12);
+    let q = qmckit::blue_noise::sot::square_quantile([1.0, 1.0], 0.98).unwrap();
+    assert!((q - 1.8).abs() < 1e-12);
+    let q = qmckit::blue_noise::sot::square_quantile([0.0, 2.0], 0.3).unwrap();
+    assert!((q - 0.6).abs() < 1e-12);
+    assert!(qmckit::blue_noise::sot::square_quantile([0.0, 0.0], 0.5).is_err());
+    assert!(qmckit::blue_noise::sot::square_quantile([1.0, 1.0], 1.0).is_err());
+    assert!(qmckit::blue_noise::sot::square_quantile([f64::NAN, 1.0], 0.5).is_err());
+}
+
+#[test]
 fn relaxed_sets_refuse_bad_parameters() {
     assert!(Lloyd::new(0, 2).is_err());
     assert!(Lloyd::new(10, 0).is_err());
