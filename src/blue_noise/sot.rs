@@ -245,7 +245,12 @@ impl Sot {
             Vec::new()
         };
         let mut theta = vec![0.0f64; d];
-        let mut proj = crate::size::vec_zeroed::<(f64, u32)>(n)?;
+        let mut values = crate::size::vec_zeroed::<f64>(n)?;
+        let mut keys = crate::size::vec_zeroed::<u64>(n)?;
+        // The sort key: the projection's bits in an order-preserving u64, its lowest
+        // `low` bits (below 2^-32 of the value) replaced by the point's index.
+        let low = (usize::BITS - (n.max(2) - 1).leading_zeros()).min(20);
+        let mask = (1u64 << low) - 1;
         let mut tproj = crate::size::vec_zeroed::<f64>(m)?;
         let mut exact = crate::size::vec_zeroed::<f64>(n)?;
         let mut step = crate::size::vec_zeroed::<f64>(pts.len())?;
@@ -266,8 +271,14 @@ impl Sot {
                 } else {
                     direction(&mut rng, &mut theta);
                 }
-                for (k, (p, x)) in proj.iter_mut().zip(pts.chunks_exact(d)).enumerate() {
-                    *p = (dot(x, &theta), k as u32);
+                for (k, ((v, key), x)) in values
+                    .iter_mut()
+                    .zip(keys.iter_mut())
+                    .zip(pts.chunks_exact(d))
+                    .enumerate()
+                {
+                    *v = dot(x, &theta);
+                    *key = (ordered_bits(*v) & !mask) | k as u64;
                 }
                 let closed = exact_targets(&theta, &mut exact);
                 if !closed {
@@ -279,9 +290,11 @@ impl Sot {
                         *e = block.iter().sum::<f64>() / c as f64;
                     }
                 }
-                proj.sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
-                for (&(v, i), &t) in proj.iter().zip(&exact) {
-                    let b = i as usize * d;
+                keys.sort_unstable();
+                for (&key, &t) in keys.iter().zip(&exact) {
+                    let i = (key & mask) as usize;
+                    let v = values.get(i).copied().unwrap_or(t);
+                    let b = i * d;
                     if let Some(s) = step.get_mut(b..b + d) {
                         for (s, &th) in s.iter_mut().zip(&theta) {
                             *s += (t - v) * th;
@@ -312,7 +325,8 @@ impl Sot {
 /// # Ok::<(), qmckit::Error>(())
 /// ```
 pub fn square_quantile(theta: [f64; 2], p: f64) -> Result<f64> {
-    if !(p > 0.0 && p < 1.0) || !theta.iter().all(|t| t.is_finite()) || theta == [0.0; 2] {
+    let valid = p > 0.0 && p < 1.0 && theta.iter().all(|t| t.is_finite());
+    if !valid || theta == [0.0; 2] {
         return Err(Error::InvalidParameter {
             what: "the projected square's quantile needs 0 < p < 1 and a finite non-zero theta",
         });
@@ -423,6 +437,12 @@ fn direction(rng: &mut Rng, theta: &mut [f64]) {
         .iter_mut()
         .enumerate()
         .for_each(|(k, t)| *t = if k == 0 { 1.0 } else { 0.0 });
+}
+
+/// `x`'s bits mapped so that unsigned order is `f64::total_cmp`'s order.
+fn ordered_bits(x: f64) -> u64 {
+    let b = x.to_bits();
+    if b >> 63 == 1 { !b } else { b | 1 << 63 }
 }
 
 fn dot(a: &[f64], b: &[f64]) -> f64 {

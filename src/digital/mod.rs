@@ -305,11 +305,12 @@ impl<M: AsRef<[u16]>> DigitalNetB<M> {
         for (r, row) in matrix.chunks_exact(self.cols).enumerate() {
             // One reduction a row: each product is below b^2 < 2^32 and a row has at most
             // 32 of them, so the sum stays below 2^37.
-            let y = row
+            let sum = row
                 .iter()
                 .zip(digits)
-                .fold(0u64, |acc, (&c, &ak)| acc + c as u64 * ak)
-                % b;
+                .fold(0u64, |acc, (&c, &ak)| acc + c as u64 * ak);
+            // Base 2 (Faure's s <= 2, Sobol'-like nets) without a division.
+            let y = if b == 2 { sum & 1 } else { sum % b };
             let y = self
                 .scramble
                 .digit(self.base, dim, r as u32 + 1, prefix, y as u32) as u64;
