@@ -83,6 +83,8 @@
 mod blue_noise_pixels;
 pub mod domain;
 mod halton;
+#[cfg(feature = "std")]
+mod halton_tables;
 mod image_sobol;
 mod independent;
 mod padded;
@@ -99,6 +101,8 @@ pub use blue_noise_pixels::{
 };
 pub use domain::Domain;
 pub use halton::{HALTON_PIXEL_DIMS, HaltonSampler};
+#[cfg(feature = "std")]
+pub use halton_tables::PreparedHalton;
 pub use image_sobol::{IMAGE_SOBOL_DIMS, ImageSobol, PBRT_SOBOL_DIMS};
 pub use independent::IndependentPixels;
 pub use padded::PaddedSobol;

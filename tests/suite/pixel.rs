@@ -13,6 +13,7 @@ mod compiled;
 mod domain;
 mod halton_stratified;
 mod prepared;
+mod prepared_halton;
 
 use crate::common::first_net_failure;
 use qmckit::Error;
