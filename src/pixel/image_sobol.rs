@@ -2,7 +2,7 @@
 //! pixel found by solving for their indices (Grünschloss, Raab & Keller 2012, "Enumerating
 //! quasi-Monte Carlo point sequences in elementary intervals").
 
-use super::prepared::{CHUNK, randomize_pairs, randomize_values};
+use super::prepared::{CHUNK, dispatched, randomize_pairs, randomize_values};
 use super::{
     F32_ONE_MINUS_EPSILON, PixelGrid, PixelPoint, PixelSampler, Randomization, pbrt_f32,
     seed_hash2, sobol0, sobol1,
@@ -263,7 +263,7 @@ impl ImageSobol {
     }
 
     /// The prepared pair fill at dimensions `d, d + 1` (`d` through the counter rule).
-    #[inline]
+    #[inline(always)]
     fn fill_pairs<T>(
         &self,
         x: u32,
@@ -292,7 +292,7 @@ impl ImageSobol {
     }
 
     /// The prepared 1D fill.
-    #[inline]
+    #[inline(always)]
     fn fill_values<T>(
         &self,
         x: u32,
@@ -322,19 +322,31 @@ impl PixelSampler for ImageSobol {
     }
 
     fn fill_2d(&self, x: u32, y: u32, dim: usize, out: &mut [[u32; 2]]) -> Result<()> {
-        self.fill_pairs(x, y, dim, out, |v| v)
+        dispatched(
+            #[inline(always)]
+            || self.fill_pairs(x, y, dim, out, |v| v),
+        )
     }
 
     fn fill_2d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [[f32; 2]]) -> Result<()> {
-        self.fill_pairs(x, y, dim, out, pbrt_f32)
+        dispatched(
+            #[inline(always)]
+            || self.fill_pairs(x, y, dim, out, pbrt_f32),
+        )
     }
 
     fn fill_1d(&self, x: u32, y: u32, dim: usize, out: &mut [u32]) -> Result<()> {
-        self.fill_values(x, y, dim, out, |v| v)
+        dispatched(
+            #[inline(always)]
+            || self.fill_values(x, y, dim, out, |v| v),
+        )
     }
 
     fn fill_1d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [f32]) -> Result<()> {
-        self.fill_values(x, y, dim, out, pbrt_f32)
+        dispatched(
+            #[inline(always)]
+            || self.fill_values(x, y, dim, out, pbrt_f32),
+        )
     }
 
     /// The Sobol' index of the sample, `SobolIntervalToIndex(m, index, (x, y))`.

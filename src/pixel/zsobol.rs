@@ -2,7 +2,7 @@
 //! "Screen-space blue-noise diffusion of Monte Carlo sampling error via hierarchical ordering
 //! of pixels"), bit-identical to pbrt-v4's `ZSobolSampler`.
 
-use super::prepared::{CHUNK, randomize_pairs, randomize_values, sobol1_reversed};
+use super::prepared::{CHUNK, dispatched, randomize_pairs, randomize_values, sobol1_reversed};
 use super::{
     PixelGrid, PixelPoint, PixelSampler, Randomization, pbrt_f32, seed_hash2, sobol0, sobol1,
 };
@@ -340,7 +340,7 @@ impl ZSobol {
     }
 
     /// The prepared pair fill, converted by `conv`.
-    #[inline]
+    #[inline(always)]
     fn fill_pairs<T>(
         &self,
         x: u32,
@@ -370,7 +370,7 @@ impl ZSobol {
     }
 
     /// The prepared 1D fill, converted by `conv`.
-    #[inline]
+    #[inline(always)]
     fn fill_values<T>(
         &self,
         x: u32,
@@ -399,19 +399,31 @@ impl PixelSampler for ZSobol {
     }
 
     fn fill_2d(&self, x: u32, y: u32, dim: usize, out: &mut [[u32; 2]]) -> Result<()> {
-        self.fill_pairs(x, y, dim, out, |v| v)
+        dispatched(
+            #[inline(always)]
+            || self.fill_pairs(x, y, dim, out, |v| v),
+        )
     }
 
     fn fill_2d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [[f32; 2]]) -> Result<()> {
-        self.fill_pairs(x, y, dim, out, pbrt_f32)
+        dispatched(
+            #[inline(always)]
+            || self.fill_pairs(x, y, dim, out, pbrt_f32),
+        )
     }
 
     fn fill_1d(&self, x: u32, y: u32, dim: usize, out: &mut [u32]) -> Result<()> {
-        self.fill_values(x, y, dim, out, |v| v)
+        dispatched(
+            #[inline(always)]
+            || self.fill_values(x, y, dim, out, |v| v),
+        )
     }
 
     fn fill_1d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [f32]) -> Result<()> {
-        self.fill_values(x, y, dim, out, pbrt_f32)
+        dispatched(
+            #[inline(always)]
+            || self.fill_values(x, y, dim, out, pbrt_f32),
+        )
     }
 
     /// The Morton index `(EncodeMorton2(x, y) << log2 spp) | index`.
