@@ -45,7 +45,10 @@
 //! `fill_1d_f32`): every sampler computes what depends only on `(pixel, dimension)` once
 //! (hashes, keys, ZSobol's pixel digits, the image-plane Sobol' system, Halton's pixel
 //! index and digit tables, the stratified stream's jump) and fills the samples in one pass,
-//! the Sobol' samplers in the bit-reversed domain; bit-identical to the handle's draws.
+//! the Sobol' samplers in the bit-reversed domain, in the widest vector build the CPU runs
+//! (run-time dispatch; the same bits in every build); bit-identical to the handle's draws.
+//! `PreparedHalton` (`std`) is a [`HaltonSampler`] with its digit permutations tabulated
+//! once for the image, as pbrt's constructor does (the catalog's boxed Halton sampler).
 //! [`ZSobol::pixel_dimension`] is the per-sample form of ZSobol's.
 //!
 //! [`domain`] derives dimensions by key instead of by counter ([`Domain`]: `new_domain(key)`,

@@ -237,41 +237,57 @@ pub(crate) fn randomize_pairs<T>(
     conv: impl Fn(u32) -> T,
 ) {
     match r {
-        Randomization::None => each(out, |k| {
-            let [a, b] = rev(k);
-            [conv(reverse_bits(a)), conv(reverse_bits(b))]
-        }),
+        Randomization::None => each(
+            out,
+            #[inline(always)]
+            |k| {
+                let [a, b] = rev(k);
+                [conv(reverse_bits(a)), conv(reverse_bits(b))]
+            },
+        ),
         Randomization::PermuteDigits => {
             // reverse(a) ^ key = reverse(a ^ reverse(key)).
             let (ka, kb) = (reverse_bits(keys[0]), reverse_bits(keys[1]));
-            each(out, |k| {
-                let [a, b] = rev(k);
-                [conv(reverse_bits(a ^ ka)), conv(reverse_bits(b ^ kb))]
-            })
+            each(
+                out,
+                #[inline(always)]
+                |k| {
+                    let [a, b] = rev(k);
+                    [conv(reverse_bits(a ^ ka)), conv(reverse_bits(b ^ kb))]
+                },
+            )
         }
         Randomization::FastOwen => {
             let sa = FastOwenScrambler::from_key(keys[0], OwenHash::Vegdahl);
             let sb = FastOwenScrambler::from_key(keys[1], OwenHash::Vegdahl);
-            each(out, |k| {
-                let [a, b] = rev(k);
-                [
-                    conv(reverse_bits(sa.scramble_reversed(a))),
-                    conv(reverse_bits(sb.scramble_reversed(b))),
-                ]
-            })
+            each(
+                out,
+                #[inline(always)]
+                |k| {
+                    let [a, b] = rev(k);
+                    [
+                        conv(reverse_bits(sa.scramble_reversed(a))),
+                        conv(reverse_bits(sb.scramble_reversed(b))),
+                    ]
+                },
+            )
         }
         Randomization::Owen => {
             let (sa, sb) = (
                 PbrtOwenScrambler::new(keys[0]),
                 PbrtOwenScrambler::new(keys[1]),
             );
-            each(out, |k| {
-                let [a, b] = rev(k);
-                [
-                    conv(sa.scramble(reverse_bits(a))),
-                    conv(sb.scramble(reverse_bits(b))),
-                ]
-            })
+            each(
+                out,
+                #[inline(always)]
+                |k| {
+                    let [a, b] = rev(k);
+                    [
+                        conv(sa.scramble(reverse_bits(a))),
+                        conv(sb.scramble(reverse_bits(b))),
+                    ]
+                },
+            )
         }
     }
 }
@@ -286,18 +302,34 @@ pub(crate) fn randomize_values<T>(
     conv: impl Fn(u32) -> T,
 ) {
     match r {
-        Randomization::None => each(out, |k| conv(reverse_bits(rev(k)))),
+        Randomization::None => each(
+            out,
+            #[inline(always)]
+            |k| conv(reverse_bits(rev(k))),
+        ),
         Randomization::PermuteDigits => {
             let kr = reverse_bits(key);
-            each(out, |k| conv(reverse_bits(rev(k) ^ kr)))
+            each(
+                out,
+                #[inline(always)]
+                |k| conv(reverse_bits(rev(k) ^ kr)),
+            )
         }
         Randomization::FastOwen => {
             let s = FastOwenScrambler::from_key(key, OwenHash::Vegdahl);
-            each(out, |k| conv(reverse_bits(s.scramble_reversed(rev(k)))))
+            each(
+                out,
+                #[inline(always)]
+                |k| conv(reverse_bits(s.scramble_reversed(rev(k)))),
+            )
         }
         Randomization::Owen => {
             let s = PbrtOwenScrambler::new(key);
-            each(out, |k| conv(s.scramble(reverse_bits(rev(k)))))
+            each(
+                out,
+                #[inline(always)]
+                |k| conv(s.scramble(reverse_bits(rev(k)))),
+            )
         }
     }
 }

@@ -294,6 +294,7 @@ impl ZSobol {
     /// `4^(i+1)` samples (shift `2 i - odd`) is permuted by the same hashed permutation,
     /// so each block costs one [`mix_bits`] and each of its four digit values one masked
     /// OR over a run of samples: no data-dependent branch.
+    #[inline(always)]
     fn low_indices(&self, base: u64, salt: u64, start: u32, out: &mut [u32]) {
         out.iter_mut().for_each(|o| *o = 0);
         let odd = self.log2_spp & 1;
@@ -329,7 +330,7 @@ impl ZSobol {
 
     /// The prepared fills' per-pixel part: the Morton base, the salt and the permuted
     /// pixel digits as reversed-domain constants of Sobol' dimensions 0 and 1.
-    #[inline]
+    #[inline(always)]
     fn pixel_constants(&self, x: u32, y: u32, dim: usize) -> (u64, u64, [u32; 2]) {
         let base = self.morton(x, y, 0);
         let salt = Self::salt(dim);
