@@ -78,73 +78,6 @@ pub(crate) const fn sobol1_reversed(i: u32) -> u32 {
     v ^ ((v >> 16) & 0x0000_ffff)
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// Every build of the prepared fills gives the portable build's bits: each Sobol'
-    /// sampler under each randomization and PMJ02BN, pairs and values, `u32` and `f32`,
-    /// with more samples than a pass and dimensions past the tables.
-    #[cfg(feature = "std")]
-    #[test]
-    fn every_build_fills_the_same() {
-        use super::super::{
-            ImageSobol, PaddedSobol, PixelSampler, Pmj02BnTables, Randomization as R, ZSobol,
-        };
-        fn all<S: PixelSampler>(s: &S, n: usize) -> std::vec::Vec<u32> {
-            let mut v = std::vec::Vec::new();
-            for (x, y) in [(0, 0), (13, 7), (30, 19)] {
-                for d in [0, 2, 5, 63, 1000] {
-                    let (mut a, mut b) = (std::vec![[0u32; 2]; n], std::vec![[0f32; 2]; n]);
-                    let (mut c, mut e) = (std::vec![0u32; n], std::vec![0f32; n]);
-                    s.fill_2d(x, y, d, &mut a).unwrap();
-                    s.fill_2d_f32(x, y, d, &mut b).unwrap();
-                    s.fill_1d(x, y, d, &mut c).unwrap();
-                    s.fill_1d_f32(x, y, d, &mut e).unwrap();
-                    v.extend(a.iter().flatten());
-                    v.extend(b.iter().flatten().map(|f| f.to_bits()));
-                    v.extend(c);
-                    v.extend(e.iter().map(|f| f.to_bits()));
-                }
-            }
-            v
-        }
-        let tables = Pmj02BnTables::new(16, 3).unwrap();
-        let pmj = tables.sampler(31, 20, 3).unwrap();
-        for lv in crate::dispatch::levels() {
-            for r in [R::None, R::PermuteDigits, R::FastOwen, R::Owen] {
-                for spp in [16, 128] {
-                    let z = ZSobol::new(31, 20, spp, r, 7).unwrap();
-                    let p = PaddedSobol::new(31, 20, spp, r, 7).unwrap();
-                    let i = ImageSobol::new(31, 20, spp, r, 7).unwrap();
-                    let n = spp as usize;
-                    let want = at_level(Level::Portable, || [all(&z, n), all(&p, n), all(&i, n)]);
-                    let got = at_level(lv, || [all(&z, n), all(&p, n), all(&i, n)]);
-                    assert!(want == got, "{lv:?} {r:?} spp {spp}");
-                }
-            }
-            let want = at_level(Level::Portable, || all(&pmj, 16));
-            assert!(want == at_level(lv, || all(&pmj, 16)), "{lv:?} pmj02bn");
-        }
-    }
-
-    /// The 16-bit round is the 32-bit one for every power-of-two width up to `2^16`, over
-    /// hashed keys and every index of the small widths.
-    #[test]
-    fn round16_is_the_round() {
-        for b in 0..=16 {
-            let w = (1u32 << b) - 1;
-            for k in 0..64u64 {
-                let p = crate::hash::mix64(k) as u32;
-                for i in (0..=w).step_by((w as usize >> 8) + 1) {
-                    let want = permutation_round(i, w, p);
-                    assert_eq!(permutation_round16(i as u16, w as u16, p) as u32, want);
-                }
-            }
-        }
-    }
-}
-
 /// [`permutation_round`] for `w < 2^16`, in 16-bit arithmetic: every step of the round is
 /// a product, an XOR or a right shift of bits below `w` (`(i & w) >> s`), and the low 16
 /// bits of a product or XOR depend only on the low 16 bits of its operands, so the round
@@ -330,6 +263,73 @@ pub(crate) fn randomize_values<T>(
                 #[inline(always)]
                 |k| conv(s.scramble(reverse_bits(rev(k)))),
             )
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every build of the prepared fills gives the portable build's bits: each Sobol'
+    /// sampler under each randomization and PMJ02BN, pairs and values, `u32` and `f32`,
+    /// with more samples than a pass and dimensions past the tables.
+    #[cfg(feature = "std")]
+    #[test]
+    fn every_build_fills_the_same() {
+        use super::super::{
+            ImageSobol, PaddedSobol, PixelSampler, Pmj02BnTables, Randomization as R, ZSobol,
+        };
+        fn all<S: PixelSampler>(s: &S, n: usize) -> std::vec::Vec<u32> {
+            let mut v = std::vec::Vec::new();
+            for (x, y) in [(0, 0), (13, 7), (30, 19)] {
+                for d in [0, 2, 5, 63, 1000] {
+                    let (mut a, mut b) = (std::vec![[0u32; 2]; n], std::vec![[0f32; 2]; n]);
+                    let (mut c, mut e) = (std::vec![0u32; n], std::vec![0f32; n]);
+                    s.fill_2d(x, y, d, &mut a).unwrap();
+                    s.fill_2d_f32(x, y, d, &mut b).unwrap();
+                    s.fill_1d(x, y, d, &mut c).unwrap();
+                    s.fill_1d_f32(x, y, d, &mut e).unwrap();
+                    v.extend(a.iter().flatten());
+                    v.extend(b.iter().flatten().map(|f| f.to_bits()));
+                    v.extend(c);
+                    v.extend(e.iter().map(|f| f.to_bits()));
+                }
+            }
+            v
+        }
+        let tables = Pmj02BnTables::new(16, 3).unwrap();
+        let pmj = tables.sampler(31, 20, 3).unwrap();
+        for lv in crate::dispatch::levels() {
+            for r in [R::None, R::PermuteDigits, R::FastOwen, R::Owen] {
+                for spp in [16, 128] {
+                    let z = ZSobol::new(31, 20, spp, r, 7).unwrap();
+                    let p = PaddedSobol::new(31, 20, spp, r, 7).unwrap();
+                    let i = ImageSobol::new(31, 20, spp, r, 7).unwrap();
+                    let n = spp as usize;
+                    let want = at_level(Level::Portable, || [all(&z, n), all(&p, n), all(&i, n)]);
+                    let got = at_level(lv, || [all(&z, n), all(&p, n), all(&i, n)]);
+                    assert!(want == got, "{lv:?} {r:?} spp {spp}");
+                }
+            }
+            let want = at_level(Level::Portable, || all(&pmj, 16));
+            assert!(want == at_level(lv, || all(&pmj, 16)), "{lv:?} pmj02bn");
+        }
+    }
+
+    /// The 16-bit round is the 32-bit one for every power-of-two width up to `2^16`, over
+    /// hashed keys and every index of the small widths.
+    #[test]
+    fn round16_is_the_round() {
+        for b in 0..=16 {
+            let w = (1u32 << b) - 1;
+            for k in 0..64u64 {
+                let p = crate::hash::mix64(k) as u32;
+                for i in (0..=w).step_by((w as usize >> 8) + 1) {
+                    let want = permutation_round(i, w, p);
+                    assert_eq!(permutation_round16(i as u16, w as u16, p) as u32, want);
+                }
+            }
         }
     }
 }
