@@ -58,7 +58,9 @@ pub fn pcf_mismatch(
             g[b] += w * c[b] * kernel((b as f64 + 0.5) * D - r);
         }
     }
-    let diff: Vec<f64> = (0..bins).map(|b| g[b] - target((b as f64 + 0.5) * D)).collect();
+    let diff: Vec<f64> = (0..bins)
+        .map(|b| g[b] - target((b as f64 + 0.5) * D))
+        .collect();
     let e = diff.iter().map(|d| d * d).sum();
     for &(i, j, r, d) in &pairs {
         let w = f64::from(u8::from(centres[i])) + f64::from(u8::from(centres[j]));
@@ -82,7 +84,11 @@ pub fn pcf_mismatch(
 }
 
 /// The pairs `(i, j, |p_i - p_j|, p_i - p_j)`, `i < j`, closer than `reach`.
-fn near_pairs(p: &[[f64; 2]], reach: f64, period: Option<f64>) -> Vec<(usize, usize, f64, [f64; 2])> {
+fn near_pairs(
+    p: &[[f64; 2]],
+    reach: f64,
+    period: Option<f64>,
+) -> Vec<(usize, usize, f64, [f64; 2])> {
     let (lo, span) = match period {
         Some(t) => (0.0, t),
         None => {

@@ -109,7 +109,11 @@ impl AaTable {
     /// # Errors
     /// [`Error::InvalidParameter`] for an entry that is not finite or not in `(-1/2, 1/2)`.
     pub fn new(entries: [[f64; 2]; AA_BINS * AA_BINS]) -> Result<Self> {
-        if entries.iter().flatten().any(|d| !(d.abs() < 0.5)) {
+        if entries
+            .iter()
+            .flatten()
+            .any(|d| d.is_nan() || d.abs() >= 0.5)
+        {
             return Err(Error::InvalidParameter {
                 what: "an AA displacement is in cell units, strictly between -1/2 and 1/2",
             });
@@ -234,13 +238,19 @@ mod tests {
             let mut l = row;
             for x in 0..50 {
                 assert_eq!(l, label(s, x, y));
-                l = [l[0].wrapping_add(AA_STEP_X[0]), l[1].wrapping_add(AA_STEP_X[1])];
+                l = [
+                    l[0].wrapping_add(AA_STEP_X[0]),
+                    l[1].wrapping_add(AA_STEP_X[1]),
+                ];
             }
-            row = [row[0].wrapping_add(AA_STEP_Y[0]), row[1].wrapping_add(AA_STEP_Y[1])];
+            row = [
+                row[0].wrapping_add(AA_STEP_Y[0]),
+                row[1].wrapping_add(AA_STEP_Y[1]),
+            ];
         }
         let f = |v: u32| f64::from(v) / 4_294_967_296.0;
-        let (c, s) = (1.0 / ((1.0 + 5f64.sqrt()) / 2.0), 0.0f64);
-        let s = (1.0 - c * c).sqrt() + s;
+        let c = 2.0 / (1.0 + 5f64.sqrt());
+        let s = (1.0 - c * c).sqrt();
         assert!((f(AA_STEP_X[0]) - c).abs() < 1e-9 && (f(AA_STEP_X[1]) - s).abs() < 1e-9);
         assert!((f(AA_STEP_Y[0]) - (1.0 - s)).abs() < 1e-9);
         assert!((f(AA_STEP_Y[1]) - c).abs() < 1e-9);

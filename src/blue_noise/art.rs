@@ -107,7 +107,11 @@ impl ArtTable {
     /// # Errors
     /// [`Error::InvalidParameter`] for an entry that is not finite or not in `(0, 1)`.
     pub fn new(entries: [[f64; 2]; ART_IDS]) -> Result<Self> {
-        if entries.iter().flatten().any(|o| !(*o > 0.0 && *o < 1.0)) {
+        if entries
+            .iter()
+            .flatten()
+            .any(|o| o.is_nan() || *o <= 0.0 || *o >= 1.0)
+        {
             return Err(Error::InvalidParameter {
                 what: "an ART offset is in tile units, strictly between 0 and 1",
             });
@@ -392,7 +396,10 @@ mod tests {
             for t in &level {
                 let ch = t.children(&ART_TABLE);
                 assert_eq!(ch.iter().filter(|c| c.point == t.point).count(), 1);
-                let mut digits: Vec<u64> = ch.iter().map(|c| (c.rank - t.rank) >> (4 * t.level)).collect();
+                let mut digits: Vec<u64> = ch
+                    .iter()
+                    .map(|c| (c.rank - t.rank) >> (4 * t.level))
+                    .collect();
                 digits.sort_unstable();
                 assert!(digits.iter().enumerate().all(|(i, &d)| d == i as u64));
                 for c in &ch {

