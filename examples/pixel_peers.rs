@@ -10,8 +10,8 @@
 //! of the same configuration, value for value (`f32` bits), and every prepared path
 //! against its sampler's handle.
 //!
-//! Arguments: the number of rounds (15), then optionally a substring: only the rows whose
-//! names contain it run. Without the peers (a plain `cargo run --example pixel_peers`) it
+//! Arguments: the number of rounds (15), then optionally substrings separated by `|`: only the rows whose
+//! names contain one run. Without the peers (a plain `cargo run --example pixel_peers`) it
 //! only says how to build.
 
 #[cfg(not(qmckit_peers))]
@@ -37,8 +37,9 @@ mod peers {
     use qmckit::digital::sobol::OwenSobol;
     use qmckit::hash::mix64;
     use qmckit::pixel::{
-        HaltonSampler, ImageSobol, IndependentPixels, PaddedSobol, PixelSampler, Pmj02BnTables,
-        Pmj02Pixels, Randomization, StratifiedSampler, ZSobol,
+        BlueNoiseLattice, BlueNoiseSobol, HaltonSampler, ImageSobol, IndependentPixels,
+        PaddedSobol, PixelSampler, Pmj02BnTables, Pmj02Pixels, Randomization, StratifiedSampler,
+        ZSobol,
     };
 
     const SIDE: u32 = 256;
@@ -170,6 +171,8 @@ mod peers {
         let tables = Pmj02BnTables::new(SPP, 0)?;
         let pmjbn = tables.sampler(SIDE, SIDE, 0)?;
         let owen = OwenSobol::new(4, 0)?;
+        let bn_sobol = BlueNoiseSobol::new(SIDE, SIDE, SPP, 0)?;
+        let bn_lattice = BlueNoiseLattice::new(SIDE, SIDE, SPP, 0)?;
 
         // pbrt's PMJ02BN reads our PMJ02BN sequence and hashed stand-in blue noise. Its
         // constructor buckets the points into pixels after rounding them to `float`; cutting
@@ -217,6 +220,12 @@ mod peers {
             row("qmckit IndependentPixels handle", |o| handle(&indep, o)),
             row("qmckit IndependentPixels prepared", |o| prepared(&indep, o)),
             row("pbrt IndependentSampler", |o| peer(6, o)),
+            row("qmckit BlueNoiseSobol handle", |o| handle(&bn_sobol, o)),
+            row("qmckit BlueNoiseSobol prepared", |o| prepared(&bn_sobol, o)),
+            row("qmckit BlueNoiseLattice handle", |o| handle(&bn_lattice, o)),
+            row("qmckit BlueNoiseLattice prepared", |o| {
+                prepared(&bn_lattice, o)
+            }),
             row("qmckit OwenSobol reseeded per pixel", |o| {
                 owen_sobol(&owen, o)
             }),
@@ -228,7 +237,7 @@ mod peers {
             row("OpenQMC LatticeBn", |o| peer(15, o)),
         ];
 
-        rows.retain(|r| r.name.contains(only.as_str()));
+        rows.retain(|r| only.split('|').any(|o| r.name.contains(o)));
 
         // Whole-image agreement: (qmckit row, the row it must equal).
         let pairs = [
@@ -250,6 +259,14 @@ mod peers {
                 "qmckit Pmj02BnPixels handle",
             ),
             ("qmckit Pmj02Pixels prepared", "qmckit Pmj02Pixels handle"),
+            (
+                "qmckit BlueNoiseSobol prepared",
+                "qmckit BlueNoiseSobol handle",
+            ),
+            (
+                "qmckit BlueNoiseLattice prepared",
+                "qmckit BlueNoiseLattice handle",
+            ),
             (
                 "qmckit IndependentPixels prepared",
                 "qmckit IndependentPixels handle",

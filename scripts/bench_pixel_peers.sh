@@ -9,7 +9,7 @@
 # files util/pmj02tables.cpp and util/bluenoise.cpp are not used). OPENQMC_DIR: a checkout
 # of https://github.com/AcademySoftwareFoundation/openqmc (include/ is enough). Neither is
 # copied into this repository. ROUNDS defaults to 15, CPU (the core to pin to with taskset)
-# to 1; ROWS, a substring, keeps only the rows whose names contain it. CXXFLAGS adds flags to the peers' g++ -O3 (e.g. CXXFLAGS=-march=native; then pass
+# to 1; ROWS, substrings separated by |, keeps only the rows whose names contain one. CXXFLAGS adds flags to the peers' g++ -O3 (e.g. CXXFLAGS=-march=native; then pass
 # RUSTFLAGS="-C target-cpu=native" too for a like-for-like build).
 #
 # What is built: scripts/bench_pixel_peers/peers.cpp (pbrt's and OpenQMC's samplers behind

@@ -126,11 +126,14 @@ pub const fn to_f32_lanes(x: u32) -> f32 {
 }
 
 /// The same function as [`to_f32`] (bit for bit, checked for all 2^32 inputs), for lanes
-/// with a leading-zero count: the `c = max(0, 8 - lz(x))` bits below the 24 leading
-/// significant ones are cleared with one variable shift, and the kept value converts to
-/// `f32` exactly and scales exactly by 2^-32. Cost: a leading-zero count, four integer
-/// operations, one conversion, one multiply (an AVX-512 CD build counts leading zeros in
-/// one instruction a vector; without one, [`to_f32_lanes`] is the cheaper form).
+/// with a leading-zero count `lz = lz(x)`: the window of the 24 bits below and including
+/// the leading one of `x` is `0xFFFF_FF00 >> lz` (bits `8 - lz ..= 31 - lz`; for `lz >= 8`
+/// every bit of `x`, which is then exact; for `x = 0` the shift is out of range and the
+/// window empty), so one variable shift and one AND keep the 24 leading significant bits;
+/// the kept value converts to `f32` exactly and scales exactly by 2^-32. Cost: a
+/// leading-zero count, two integer operations, one conversion, one multiply (an AVX-512 CD
+/// build counts leading zeros in one instruction a vector, and its variable shift gives 0
+/// for counts of 32 or more; without one, [`to_f32_lanes`] is the cheaper form).
 ///
 /// ```
 /// use qmckit::bits::{to_f32, to_f32_lz};
@@ -140,9 +143,11 @@ pub const fn to_f32_lanes(x: u32) -> f32 {
 /// ```
 #[inline]
 pub const fn to_f32_lz(x: u32) -> f32 {
-    let clear = 8u32.saturating_sub(x.leading_zeros());
-    // clear <= 8, so the shift is in range.
-    let kept = x & !((1u32 << clear) - 1);
+    let window = match 0xFFFF_FF00u32.checked_shr(x.leading_zeros()) {
+        Some(w) => w,
+        None => 0, // x = 0
+    };
+    let kept = x & window;
     kept as f32 * (INV_2_POW_32 as f32)
 }
 

@@ -26,6 +26,8 @@ error taken; each curve is the root mean square over the J integrands.
 Families on [0, 1]^d, each with its exact integral:
   gaussian          anisotropic axis-aligned Gaussians, random centre, widths 0.05..0.5
   gaussian-mixture  mixtures of four of them, random weights
+  rotated-gaussian  the same Gaussians with axes rotated by a random angle (a full
+                    covariance), 2D; the reference integral by quadrature to 1e-13
   heaviside         1 on one side of a random hyperplane through a random point (d <= 8;
                     the volume exact by inclusion-exclusion in integers)
   blinn-phong       Blinn-Phong lobes max(0, w.h)^n on the sphere, w from a coordinate
@@ -91,8 +93,13 @@ fn build(
     d: usize,
     n: u64,
     seed: u64,
+    budget: &qmckit::work::Budget,
 ) -> Result<Box<dyn Sampler>, catalog::CatalogError> {
-    let params = Params::dims(d).with_seed(seed);
+    // A set built whole may take the run's whole budget (its deadline bounds the run).
+    let params = Params {
+        budget: *budget,
+        ..Params::dims(d).with_seed(seed)
+    };
     let params = if s.kind.size() == Size::Sequence {
         params
     } else {
@@ -136,11 +143,11 @@ pub fn curves(
         // The sizes the construction makes, checked once each with seed 0.
         let sizes: Vec<u64> = (plan.min_m..=plan.max_m)
             .map(|m| 1u64 << m)
-            .filter(|&n| build(s, r, plan.d, n, 0).is_ok())
+            .filter(|&n| build(s, r, plan.d, n, 0, budget).is_ok())
             .collect();
         if sizes.is_empty() {
             // The catalog's reason, for the smallest size.
-            build(s, r, plan.d, 1 << plan.min_m, 0)?;
+            build(s, r, plan.d, 1 << plan.min_m, 0, budget)?;
         }
         let label = if r.name == "none" {
             s.name.to_string()
@@ -159,7 +166,7 @@ pub fn curves(
             seed: plan.seed,
         };
         let make = |n: u64, seed: u64| -> qmckit::Result<Box<dyn Sampler>> {
-            build(s, r, plan.d, n, seed).map_err(|e| match e {
+            build(s, r, plan.d, n, seed, budget).map_err(|e| match e {
                 catalog::CatalogError::Build(e) => e,
                 _ => qmckit::Error::InvalidParameter {
                     what: "a size the construction refused after accepting it",

@@ -12,6 +12,7 @@ mod poisson;
 mod samplers;
 mod scipy_halton;
 mod sobol_owen;
+mod truncate;
 
 #[pymodule]
 fn _qmckit(m: &Bound<'_, PyModule>) -> PyResult<()> {

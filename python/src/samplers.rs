@@ -22,6 +22,7 @@ use crate::error::{to_py, value_error};
 use crate::fill::{self, SharedSampler};
 use crate::scipy_halton::{Dimension, ScipyHalton};
 use crate::sobol_owen::SobolOwen;
+use crate::truncate::Truncated;
 
 /// Fills of at least this many values run with the GIL released.
 const DETACH_VALUES: usize = 1 << 14;
@@ -305,10 +306,12 @@ pub fn sobol(
             let b = boxed(SobolOwen::new(s, seed, bits));
             return Ok(NativeSampler::points(b, u32::MAX, "Sobol' + Owen"));
         }
-        Some("fast-owen") => (
-            boxed(Scrambled::new(s, FastOwen::new(seed))),
-            "Sobol' + fast Owen",
-        ),
+        // Masks its own values inside the scramble loop (so a `float64` fill is one fused
+        // pass): no mask on top.
+        Some("fast-owen") => {
+            let b = boxed(Scrambled::new(s, Truncated::new(FastOwen::new(seed), mask)));
+            return Ok(NativeSampler::points(b, u32::MAX, "Sobol' + fast Owen"));
+        }
         Some("xor") => (
             boxed(Scrambled::new(s, DigitalShift::new(seed))),
             "Sobol' + digital shift",

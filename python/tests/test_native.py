@@ -350,6 +350,26 @@ def test_sobol_fill_any_split(randomizer):
     assert np.all(raw % 4 == 0)  # bits=30
 
 
+@pytest.mark.filterwarnings("ignore:The balance properties")
+@pytest.mark.parametrize("d", [1, 4, 8, 20, 70])
+@pytest.mark.parametrize("bits", [30, 17, 12])
+def test_fast_owen_bits_truncates_the_32_bit_points(d, bits):
+    """``bits`` keeps the top ``bits`` bits of the 32-bit scrambled points (coordinates
+    are multiples of ``2**-bits``, as SciPy's): the ``float64`` fill (the mask inside the
+    scramble loop), the ``uint32`` fill and the 32-bit points floored to that grid agree,
+    for point widths laid over rows (up to 64 dimensions) and wider ones."""
+    n = 3000
+    full = qmckit.Sobol(d, rng=4, bits=32).random(n)
+    x = qmckit.Sobol(d, rng=4, bits=bits).random(n)
+    np.testing.assert_array_equal(x, np.floor(full * 2**bits) / 2**bits)
+    raw = np.empty((n, d), dtype=np.uint32)
+    qmckit.Sobol(d, rng=4, bits=bits).fill(raw)
+    np.testing.assert_array_equal(x, raw / 2**32)
+    assert np.all(raw % (1 << (32 - bits)) == 0)
+    # Not all zero below the kept bits when bits=32 (the check can fail).
+    assert np.any(full * 2**bits % 1 != 0)
+
+
 # -- LatinHypercube(strength=2) and PoissonDisk(hypersphere="surface") ------------------
 
 

@@ -33,8 +33,10 @@
 //! candidates: the current position and 15 uniform in the cube of half-width `s/2` around
 //! it (a heat-bath step on a random discretization of the conditional; at `T = 0` the best
 //! candidate). The points start uniform at random. Not implemented: the paper's
-//! multi-scale scheme (it speeds up the relaxation of long wavelengths) and non-uniform
-//! targets (density adaptation).
+//! multi-scale scheme (it speeds up the relaxation of long wavelengths).
+//!
+//! Non-uniform targets (the paper's density adaptation, each kernel's width following the
+//! local spacing): [`KdeBlueNoise::sample`] with a density function (module `density`).
 //!
 //! ## Range and cost
 //!
@@ -54,6 +56,10 @@
 //! assert!(KdeBlueNoise::new(256, 2)?.temperature(-1.0).is_err());
 //! # Ok::<(), qmckit::Error>(())
 //! ```
+
+mod density;
+
+pub use density::KDE_MAX_DENSITY_RATIO;
 
 use super::PointSet;
 use super::lloyd::to_fraction;

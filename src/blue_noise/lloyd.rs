@@ -50,6 +50,7 @@
 
 use super::PointSet;
 use super::kdtree::KdTree;
+use super::lloyd_projective::{blend, projection_energy, ranks};
 use super::rng::Rng;
 use crate::work::{Budget, Cost, Rate};
 use crate::{Error, Result};
@@ -77,6 +78,7 @@ pub struct Lloyd {
     torus: bool,
     ccvt: bool,
     seed: u64,
+    projective: f64,
 }
 
 /// What [`Lloyd::run`] reports besides the set.
@@ -90,6 +92,11 @@ pub struct LloydTrace {
     pub counts: Vec<u32>,
     /// The sites, row-major, as `f64` in `[0, 1)`.
     pub sites: Vec<f64>,
+    /// With [`Lloyd::projective`] weight `mu > 0`: the projective energy `E` (the sample
+    /// energy plus `mu` times the projections' term, [`super::lloyd_projective`]) with
+    /// the ranks and cells of the sites before each iteration and after the last; empty
+    /// otherwise.
+    pub projective_energy: Vec<f64>,
 }
 
 impl Lloyd {
@@ -126,7 +133,33 @@ impl Lloyd {
             torus: false,
             ccvt: false,
             seed: 0,
+            projective: 0.0,
         })
+    }
+
+    /// Projective Lloyd: every axis projection pulled towards the midpoints of `N` equal
+    /// intervals with weight `mu` (0 to 100; 0 is Lloyd), the energy and step of
+    /// [`super::lloyd_projective`]. Plain Lloyd only, in the cube: [`Lloyd::run`] refuses
+    /// it with CCVT or on the torus.
+    ///
+    /// # Errors
+    /// [`Error::InvalidParameter`] for `mu` out of range or not finite.
+    ///
+    /// ```
+    /// use qmckit::blue_noise::Lloyd;
+    /// use qmckit::work::Budget;
+    /// let t = Lloyd::new(64, 2)?.projective(2.0)?.iterations(10)?.run(&Budget::DEFAULT)?;
+    /// assert!(t.projective_energy.last() < t.projective_energy.first());
+    /// # Ok::<(), qmckit::Error>(())
+    /// ```
+    pub fn projective(mut self, mu: f64) -> Result<Self> {
+        if !(mu.is_finite() && (0.0..=100.0).contains(&mu)) {
+            return Err(Error::InvalidParameter {
+                what: "the projective Lloyd weight must be 0 to 100",
+            });
+        }
+        self.projective = mu;
+        Ok(self)
     }
 
     /// Iterations (0 to 10^5; 0 returns the random start).
@@ -215,6 +248,12 @@ impl Lloyd {
             "Lloyd relaxation"
         };
         let budget = budget.started();
+        let mu = self.projective;
+        if mu > 0.0 && (self.ccvt || self.torus) {
+            return Err(Error::InvalidParameter {
+                what: "projective Lloyd: plain Lloyd in the cube only (not CCVT, not the torus)",
+            });
+        }
         budget.check(what, self.cost())?;
         let (n, d) = (self.n as usize, self.dims);
         let m = self.samples() as usize;
@@ -234,6 +273,7 @@ impl Lloyd {
             }
         }
         let mut energy = Vec::new();
+        let mut projective_energy = Vec::new();
         let mut nearest = crate::size::vec_zeroed::<u32>(m)?;
         for it in 0..=self.iterations {
             budget.check_deadline(what)?;
@@ -241,6 +281,9 @@ impl Lloyd {
             if !self.ccvt {
                 owner.copy_from_slice(&nearest);
                 energy.push(e);
+                if mu > 0.0 {
+                    projective_energy.push(e + mu * projection_energy(&sites, n, d));
+                }
             } else {
                 energy.push(self.energy(&sites, &dense, &owner));
             }
@@ -253,7 +296,19 @@ impl Lloyd {
                     break;
                 }
             }
-            self.centroids(&mut sites, &dense, &owner)?;
+            if mu > 0.0 {
+                let r = ranks(&sites, n, d);
+                self.centroids(&mut sites, &dense, &owner)?;
+                let mut w = crate::size::vec_zeroed::<f64>(n)?;
+                for &o in &owner {
+                    if let Some(w) = w.get_mut(o as usize) {
+                        *w += 1.0 / m as f64;
+                    }
+                }
+                blend(&mut sites, &w, &r, mu, d);
+            } else {
+                self.centroids(&mut sites, &dense, &owner)?;
+            }
         }
         let mut counts = crate::size::vec_zeroed::<u32>(n)?;
         for &o in &owner {
@@ -265,6 +320,7 @@ impl Lloyd {
             energy,
             counts,
             sites,
+            projective_energy,
         })
     }
 

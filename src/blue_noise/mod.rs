@@ -71,6 +71,7 @@ mod kdtree;
 pub mod ldbn;
 #[cfg(feature = "analysis")]
 pub mod lloyd;
+pub mod lloyd_projective;
 #[cfg(feature = "analysis")]
 pub mod penrose;
 #[cfg(feature = "analysis")]
@@ -111,13 +112,13 @@ pub use art::Art;
 #[cfg(feature = "analysis")]
 pub use best_candidate::BestCandidate;
 #[cfg(feature = "analysis")]
-pub use bnot::{Bnot, BnotTrace};
+pub use bnot::{BNOT_DEFAULT_RESIDUAL, Bnot, BnotTrace};
 #[cfg(feature = "analysis")]
 pub use forced_random::ForcedRandom;
 #[cfg(feature = "analysis")]
 pub use gaussian::GaussianBlueNoise;
 #[cfg(feature = "analysis")]
-pub use kde::KdeBlueNoise;
+pub use kde::{KDE_MAX_DENSITY_RATIO, KdeBlueNoise};
 #[cfg(feature = "analysis")]
 pub use ldbn::Ldbn;
 #[cfg(feature = "analysis")]

@@ -3,7 +3,8 @@
 //!
 //! All the crate's hashes live here:
 //!
-//! * [`mix64`], [`hash3`], [`uniform`], [`permute`]: qmckit's own (splitmix64's finalizer,
+//! * [`mix64`], [`hash3`] (split as [`hash3_key`] and [`hash3_keyed`]), [`uniform`],
+//!   [`permute`]: qmckit's own (splitmix64's finalizer,
 //!   its nesting over arguments, and a keyed bijection of `[0, n)` by cycle walking); the
 //!   blue-noise generator steps [`mix64`] too.
 //! * [`laine_karras`], [`vegdahl`]: the nested hashes of hash-based Owen scrambling
@@ -39,8 +40,27 @@ const WEYL: u64 = 0x9E37_79B9_7F4A_7C15;
 /// or shifting arguments gives unrelated outputs.
 #[inline]
 pub const fn hash3(seed: u64, a: u64, b: u64) -> u64 {
-    let h = mix64(seed.wrapping_add(WEYL));
-    let h = mix64(h ^ a.wrapping_add(WEYL.wrapping_mul(2)));
+    hash3_keyed(hash3_key(seed), a, b)
+}
+
+/// The part of [`hash3`] that depends on the seed alone (its first [`mix64`]), for callers
+/// hashing many `(a, b)` with one seed: `hash3(seed, a, b) == hash3_keyed(hash3_key(seed),
+/// a, b)`.
+///
+/// ```
+/// use qmckit::hash::{hash3, hash3_key, hash3_keyed};
+/// let k = hash3_key(42);
+/// assert!((0..4).all(|d| hash3_keyed(k, d, 7) == hash3(42, d, 7)));
+/// ```
+#[inline]
+pub const fn hash3_key(seed: u64) -> u64 {
+    mix64(seed.wrapping_add(WEYL))
+}
+
+/// [`hash3`] from the seed's part [`hash3_key`]: two [`mix64`] calls.
+#[inline]
+pub const fn hash3_keyed(key: u64, a: u64, b: u64) -> u64 {
+    let h = mix64(key ^ a.wrapping_add(WEYL.wrapping_mul(2)));
     mix64(h ^ b.wrapping_add(WEYL.wrapping_mul(3)))
 }
 

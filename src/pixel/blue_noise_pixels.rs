@@ -25,10 +25,78 @@
 //! sequence); any `spp` works (the pixel reads the first `2^ceil(log2 spp)` points of its
 //! own net through the permutation), the blue noise is best at those counts.
 
-use super::domain::{Domain, DomainBase, KeyTable, ShiftTable, TAG_NEW, TAG_ROOT, Table};
-use super::{PixelGrid, PixelPoint, PixelSampler};
+use super::domain::{
+    Domain, DomainBase, KeyTable, ShiftTable, TAG_NEW, TAG_ROOT, Table, fill_pairs, fill_values,
+};
+use super::{PixelGrid, PixelPoint, PixelSampler, pbrt_f32};
 use crate::error::Result;
 use crate::hash::hash3;
+
+/// A sampler's root state `H(seed, 0, ROOT)` and the states `H(root, d, NEW)` of its first
+/// dimension pairs, hashed once at construction (a fill then hashes only the pixel's
+/// shuffle key).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct Roots {
+    root: u64,
+    first: [u64; 8],
+}
+
+impl Roots {
+    const fn new(seed: u64) -> Self {
+        let root = hash3(seed, 0, TAG_ROOT);
+        let mut first = [0u64; 8];
+        let mut d = 0;
+        while d < first.len() {
+            first[d] = hash3(root, d as u64, TAG_NEW);
+            d += 1;
+        }
+        Roots { root, first }
+    }
+
+    /// `H(root, dim, NEW)`.
+    #[inline]
+    const fn state(&self, dim: usize) -> u64 {
+        if dim < self.first.len() {
+            self.first[dim]
+        } else {
+            hash3(self.root, dim as u64, TAG_NEW)
+        }
+    }
+}
+
+/// The prepared fills of a table sampler (a `base()`, `grid` and `roots`): the dimension
+/// pair's state once, then [`fill_pairs`] or [`fill_values`] over the pixel's samples.
+macro_rules! table_fills {
+    () => {
+        fn fill_2d(&self, x: u32, y: u32, dim: usize, out: &mut [[u32; 2]]) -> Result<()> {
+            self.grid.check_fill(x, y, out.len())?;
+            let (spp, state) = (self.grid.spp as u64, self.roots.state(dim));
+            fill_pairs(self.base(), (x, y), spp, state, out, |v| v);
+            Ok(())
+        }
+
+        fn fill_2d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [[f32; 2]]) -> Result<()> {
+            self.grid.check_fill(x, y, out.len())?;
+            let (spp, state) = (self.grid.spp as u64, self.roots.state(dim));
+            fill_pairs(self.base(), (x, y), spp, state, out, pbrt_f32);
+            Ok(())
+        }
+
+        fn fill_1d(&self, x: u32, y: u32, dim: usize, out: &mut [u32]) -> Result<()> {
+            self.grid.check_fill(x, y, out.len())?;
+            let (spp, state) = (self.grid.spp as u64, self.roots.state(dim));
+            fill_values(self.base(), (x, y), spp, state, out, |v| v);
+            Ok(())
+        }
+
+        fn fill_1d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [f32]) -> Result<()> {
+            self.grid.check_fill(x, y, out.len())?;
+            let (spp, state) = (self.grid.spp as u64, self.roots.state(dim));
+            fill_values(self.base(), (x, y), spp, state, out, pbrt_f32);
+            Ok(())
+        }
+    };
+}
 
 /// The side of the shipped tiles, 64.
 pub const BLUE_NOISE_TILE_SIDE: u32 = 64;
@@ -96,7 +164,7 @@ pub const BLUE_NOISE_LATTICE_GENERATOR: u32 = 0x4613;
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct BlueNoiseSobol<'t> {
     grid: PixelGrid,
-    root: u64,
+    roots: Roots,
     table: KeyTable<'t>,
 }
 
@@ -128,7 +196,7 @@ impl<'t> BlueNoiseSobol<'t> {
         match PixelGrid::new(width, height, spp, false) {
             Ok(grid) => Ok(BlueNoiseSobol {
                 grid,
-                root: hash3(seed, 0, TAG_ROOT),
+                roots: Roots::new(seed),
                 table,
             }),
             Err(e) => Err(e),
@@ -147,13 +215,18 @@ impl<'t> BlueNoiseSobol<'t> {
         Ok(self.root_of(x, y, index))
     }
 
+    /// The domains' base: the key table.
+    const fn base(&self) -> DomainBase<'t> {
+        DomainBase::OwenSobolTable(self.table)
+    }
+
     const fn root_of(&self, x: u32, y: u32, index: u32) -> Domain<'t> {
         Domain::from_parts(
             DomainBase::OwenSobolTable(self.table),
             (x, y),
             index,
             self.grid.spp as u64,
-            self.root,
+            self.roots.root,
         )
     }
 
@@ -165,7 +238,7 @@ impl<'t> BlueNoiseSobol<'t> {
             (at.x(), at.y()),
             at.index(),
             self.grid.spp as u64,
-            hash3(self.root, dim as u64, TAG_NEW),
+            self.roots.state(dim),
         )
     }
 }
@@ -174,6 +247,8 @@ impl PixelSampler for BlueNoiseSobol<'_> {
     fn grid(&self) -> PixelGrid {
         self.grid
     }
+
+    table_fills!();
 
     #[inline]
     fn value_1d(&self, at: &PixelPoint, dim: usize) -> u32 {
@@ -206,7 +281,7 @@ impl PixelSampler for BlueNoiseSobol<'_> {
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct BlueNoiseLattice<'t> {
     grid: PixelGrid,
-    root: u64,
+    roots: Roots,
     table: ShiftTable<'t>,
     generator: u32,
 }
@@ -241,7 +316,7 @@ impl<'t> BlueNoiseLattice<'t> {
         match PixelGrid::new(width, height, spp, false) {
             Ok(grid) => Ok(BlueNoiseLattice {
                 grid,
-                root: hash3(seed, 0, TAG_ROOT),
+                roots: Roots::new(seed),
                 table,
                 generator: generator | 1,
             }),
@@ -262,8 +337,13 @@ impl<'t> BlueNoiseLattice<'t> {
             (x, y),
             index,
             self.grid.spp as u64,
-            self.root,
+            self.roots.root,
         ))
+    }
+
+    /// The domains' base: the shift table and the generator.
+    const fn base(&self) -> DomainBase<'t> {
+        DomainBase::LatticeTable(self.table, self.generator)
     }
 
     #[inline]
@@ -273,7 +353,7 @@ impl<'t> BlueNoiseLattice<'t> {
             (at.x(), at.y()),
             at.index(),
             self.grid.spp as u64,
-            hash3(self.root, dim as u64, TAG_NEW),
+            self.roots.state(dim),
         )
     }
 }
@@ -282,6 +362,8 @@ impl PixelSampler for BlueNoiseLattice<'_> {
     fn grid(&self) -> PixelGrid {
         self.grid
     }
+
+    table_fills!();
 
     #[inline]
     fn value_1d(&self, at: &PixelPoint, dim: usize) -> u32 {

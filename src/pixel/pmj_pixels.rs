@@ -15,7 +15,8 @@ use crate::pmj::Pmj02;
 /// shipped tables and blue-noise shifts. With `spp = 2^m` each pixel's samples are a
 /// (0, m, 2)-net in every dimension pair. Any dimension (it only feeds the hash). Cost:
 /// one MurmurHash, one permutation and `2 log2(spp)` hashes a 2D value; the prepared fills
-/// ([`PixelSampler::fill_2d`]) hash and seed once per pixel and dimension.
+/// ([`PixelSampler::fill_2d`]) hash and seed once per pixel and dimension and, for `spp <=
+/// 256`, generate the pixel's sequence prefix in one pass, two hashes a point.
 ///
 /// ```
 /// use qmckit::pixel::{PixelSampler, Pmj02Pixels};
@@ -58,9 +59,15 @@ impl Pmj02Pixels {
     }
 }
 
+/// The largest `spp` whose sequence prefix a prepared fill generates whole, on the stack
+/// (2 KiB).
+const SEQUENCE: usize = 256;
+
 impl Pmj02Pixels {
-    /// The prepared fill: the hash and the sequence once, `value(sequence, permuted i)`
-    /// per sample.
+    /// The prepared fill: the hash and the sequence once, `value(sequence, permuted i,
+    /// point)` per sample, where `point` is the sequence's point `i` when the fill generated
+    /// the prefix (`spp <=` [`SEQUENCE`], `O(1)` a point), `None` when the value is to be
+    /// computed by random access (`O(log2 spp)` hashes).
     #[inline]
     fn fill_with<T>(
         &self,
@@ -68,17 +75,35 @@ impl Pmj02Pixels {
         y: u32,
         dim: usize,
         out: &mut [T],
-        value: impl Fn(&Pmj02, u32) -> T,
+        value: impl Fn(&Pmj02, u32, Option<[u32; 2]>) -> T,
     ) -> Result<()> {
         self.grid.check_fill(x, y, out.len())?;
         let h = seed_hash4(x, y, dim, self.seed);
         let p = Pmj02::new(h);
+        let spp = self.grid.spp as usize;
+        if spp <= SEQUENCE {
+            // The pixel's whole sequence prefix in one pass (two hashes a point, each point
+            // from its parent), then read through the permutation.
+            let mut seq = [[0u32; 2]; SEQUENCE];
+            let seq = &mut seq[..spp];
+            crate::pmj::fill(h, seq)?;
+            let mut perm = [0u32; CHUNK];
+            for (c, chunk) in out.chunks_mut(CHUNK).enumerate() {
+                let perm = &mut perm[..chunk.len()];
+                permutation_fill((c * CHUNK) as u32, self.grid.spp, h as u32, perm);
+                for (o, &i) in chunk.iter_mut().zip(perm.iter()) {
+                    let [a, b] = seq.get(i as usize).copied().unwrap_or_default();
+                    *o = value(&p, i, Some([a, b]));
+                }
+            }
+            return Ok(());
+        }
         let mut perm = [0u32; CHUNK];
         for (c, chunk) in out.chunks_mut(CHUNK).enumerate() {
             let perm = &mut perm[..chunk.len()];
             permutation_fill((c * CHUNK) as u32, self.grid.spp, h as u32, perm);
             for (o, &i) in chunk.iter_mut().zip(perm.iter()) {
-                *o = value(&p, i);
+                *o = value(&p, i, None);
             }
         }
         Ok(())
@@ -91,21 +116,28 @@ impl PixelSampler for Pmj02Pixels {
     }
 
     fn fill_2d(&self, x: u32, y: u32, dim: usize, out: &mut [[u32; 2]]) -> Result<()> {
-        self.fill_with(x, y, dim, out, |p, i| [p.value(i, 0), p.value(i, 1)])
+        self.fill_with(x, y, dim, out, |p, i, q| {
+            q.unwrap_or_else(|| [p.value(i, 0), p.value(i, 1)])
+        })
     }
 
     fn fill_2d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [[f32; 2]]) -> Result<()> {
-        self.fill_with(x, y, dim, out, |p, i| {
-            [pbrt_f32(p.value(i, 0)), pbrt_f32(p.value(i, 1))]
+        self.fill_with(x, y, dim, out, |p, i, q| {
+            q.unwrap_or_else(|| [p.value(i, 0), p.value(i, 1)])
+                .map(pbrt_f32)
         })
     }
 
     fn fill_1d(&self, x: u32, y: u32, dim: usize, out: &mut [u32]) -> Result<()> {
-        self.fill_with(x, y, dim, out, |p, i| p.value(i, 0))
+        self.fill_with(x, y, dim, out, |p, i, q| {
+            q.map_or_else(|| p.value(i, 0), |q| q[0])
+        })
     }
 
     fn fill_1d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [f32]) -> Result<()> {
-        self.fill_with(x, y, dim, out, |p, i| pbrt_f32(p.value(i, 0)))
+        self.fill_with(x, y, dim, out, |p, i, q| {
+            pbrt_f32(q.map_or_else(|| p.value(i, 0), |q| q[0]))
+        })
     }
 
     fn value_1d(&self, at: &PixelPoint, dim: usize) -> u32 {

@@ -81,7 +81,7 @@ fn the_identity_table_gives_the_owen_scrambled_template() {
 fn low_power(coords: &[u32], n: u64) -> f64 {
     let xy: Vec<f64> = coords.iter().map(|&c| qmckit::bits::to_f64(c)).collect();
     let half = ((n as f64).sqrt() / 2.0) as usize;
-    let s = spectrum_2d(Points::new(&xy, 2).unwrap(), half, &Budget::DEFAULT).unwrap();
+    let s = spectrum_2d(Points::new(&xy, 2).unwrap(), half, &Budget::UNLIMITED).unwrap();
     let radial = s.radial();
     radial.iter().map(|b| b.mean).sum::<f64>() / radial.len() as f64
 }
@@ -95,7 +95,7 @@ fn low_frequency_power_is_below_white_noise_and_owen_sobol() {
         for seed in seeds {
             let set = Ldbn::new(n, seed)
                 .unwrap()
-                .generate(&Budget::DEFAULT)
+                .generate(&Budget::UNLIMITED)
                 .unwrap();
             ours += low_power(set.coords(), n) / count;
             owen += low_power(&owen_sobol(n, seed), n) / count;

@@ -26,6 +26,7 @@ mod golden_sobol;
 mod integrands;
 #[cfg(feature = "analysis")]
 mod integrate;
+mod kde_density;
 mod lattice;
 #[cfg(feature = "analysis")]
 mod ldbn;

@@ -5,6 +5,7 @@
 //! | family | `f(x)` | exact integral | dimensions |
 //! |---|---|---|---|
 //! | [`Family::Gaussian`] | `exp(-sum_k (x_k - c_k)^2 / (2 s_k^2))`, `c_k ~ U(0, 1)`, `s_k ~ U(0.05, 0.5)` (an anisotropic Gaussian, axis-aligned, clipped to the cube) | `prod_k s_k sqrt(pi / 2) (erf((1 - c_k) / (s_k sqrt 2)) + erf(c_k / (s_k sqrt 2)))` | any |
+//! | [`Family::RotatedGaussian`] | `exp(-(1/2) (x - c)^T P (x - c))`, `P = R_theta diag(1/s_1^2, 1/s_2^2) R_theta^T`: the same centres and widths, the axes rotated by `theta ~ U(0, pi)` (a full covariance) | no closed form: the inner integral in closed form (`erf`), the outer by adaptive Gauss–Legendre to `1e-13` absolute ([`super::rotated`]) | 2 |
 //! | [`Family::GaussianMixture`] | `sum_(j<4) w_j g_j(x)`, four such Gaussians with weights `w_j ~ U(0, 1)` normalized to sum 1 | the weighted sum of the four | any |
 //! | [`Family::BlinnPhong`] | `prod_j max(0, w(x_(2j), x_(2j+1)) . h_j)^(n_j)`: Blinn–Phong lobes on the sphere, `w(u, v) = (sqrt(1 - z^2) cos 2 pi v, sqrt(1 - z^2) sin 2 pi v, z)` with `z = 1 - 2u` (Archimedes' area-preserving map), lobe axes `h_j` uniform on the sphere, exponents `n_j` in `1..=32`; an odd last coordinate is a lobe on the circle, `max(0, cos(2 pi x - t))^n` | `prod_j 1 / (2 (n_j + 1))` (the map keeps area, and `int_(S^2) max(0, w . h)^n dw = 2 pi / (n + 1)` for every axis `h`); the circle's factor `W_n / (2 pi)`, Wallis' `W_n = int_(-pi/2)^(pi/2) cos^n t dt` | any |
 //! | [`Family::Heaviside`] | `1` where `w . x >= w . p`, else `0`: a random hyperplane through a random point `p` (`w_k = +-k_k / 64`, `k_k` in `13..=64`, random signs; `p_k = j_k / 16`, `j_k` in `1..=15`) | the cube's volume on that side, exactly: after reflecting the coordinates with `w_k < 0`, `vol{a . y <= t} = (1 / (d! prod a_k)) sum_(v in {0,1}^d) (-1)^|v| (t - a . v)_+^d` (the inclusion-exclusion formula for a simplex cut by the cube; Barrow & Smith 1979), summed in `i128` integers and divided once | 1 to 8 |
@@ -24,12 +25,18 @@ use std::vec::Vec;
 use crate::error::{Error, Result};
 use crate::hash::hash3;
 
+use super::rotated::RotatedGaussian;
+
 /// The largest dimension of [`Family::Heaviside`] (exact in `i128`).
 pub const HEAVISIDE_MAX_DIMS: usize = 8;
 
 /// The largest dimension of the Gaussian families (a point of the benchmark is held in
 /// memory; the product of `d` factors stays representable far beyond this).
 pub const GAUSSIAN_MAX_DIMS: usize = 1 << 16;
+
+/// The dimension of [`Family::RotatedGaussian`] (its reference integral is a 1D
+/// quadrature of a closed-form inner integral).
+pub const ROTATED_DIMS: usize = 2;
 
 /// A random integrand family (see the module's table).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -38,6 +45,8 @@ pub enum Family {
     Gaussian,
     /// Mixtures of four such Gaussians.
     GaussianMixture,
+    /// Anisotropic Gaussians with rotated axes (a full covariance), 2D.
+    RotatedGaussian,
     /// Indicators of half-spaces cut by random hyperplanes.
     Heaviside,
     /// Products of Blinn–Phong lobes on the sphere (coordinate pairs mapped to directions).
@@ -46,18 +55,21 @@ pub enum Family {
 
 impl Family {
     /// Every family, in the order of the module's table.
-    pub const ALL: [Family; 4] = [
+    pub const ALL: [Family; 5] = [
         Family::Gaussian,
         Family::GaussianMixture,
+        Family::RotatedGaussian,
         Family::Heaviside,
         Family::BlinnPhong,
     ];
 
-    /// The family's name: `gaussian`, `gaussian-mixture`, `heaviside`, `blinn-phong`.
+    /// The family's name: `gaussian`, `gaussian-mixture`, `rotated-gaussian`, `heaviside`,
+    /// `blinn-phong`.
     pub const fn name(self) -> &'static str {
         match self {
             Family::Gaussian => "gaussian",
             Family::GaussianMixture => "gaussian-mixture",
+            Family::RotatedGaussian => "rotated-gaussian",
             Family::Heaviside => "heaviside",
             Family::BlinnPhong => "blinn-phong",
         }
@@ -72,6 +84,7 @@ impl Family {
     pub const fn max_dims(self) -> usize {
         match self {
             Family::Heaviside => HEAVISIDE_MAX_DIMS,
+            Family::RotatedGaussian => ROTATED_DIMS,
             _ => GAUSSIAN_MAX_DIMS,
         }
     }
@@ -120,7 +133,7 @@ impl Gaussian {
 }
 
 /// A uniform double in `[0, 1)` from the top 53 bits of a hash.
-fn unit(h: u64) -> f64 {
+pub(super) fn unit(h: u64) -> f64 {
     (h >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
 }
 
@@ -135,6 +148,7 @@ pub struct RandomIntegrand {
 #[derive(Clone, Debug, PartialEq)]
 enum Kind {
     Mixture(Vec<(f64, Gaussian)>),
+    Rotated(RotatedGaussian),
     /// `sum_k w_k x_k >= b`, `w_k = m_k / 64`, `b` as a float (the test) and the exact
     /// integral computed from the integers.
     Heaviside {
@@ -154,7 +168,8 @@ impl RandomIntegrand {
     ///
     /// # Errors
     /// [`Error::InvalidParameter`] for `d = 0` or `d` past the family's
-    /// [`max_dims`](Family::max_dims).
+    /// [`max_dims`](Family::max_dims); for the rotated Gaussians `d` other than 2, or a
+    /// reference quadrature that misses its tolerance.
     ///
     /// ```
     /// use qmckit::analysis::integrate::{Family, RandomIntegrand};
@@ -167,6 +182,11 @@ impl RandomIntegrand {
             return Err(Error::InvalidParameter {
                 what: "random integrand: dimensions out of the family's range (1..=8 for \
                        heaviside, 1..=65536 for the Gaussians)",
+            });
+        }
+        if family == Family::RotatedGaussian && d != ROTATED_DIMS {
+            return Err(Error::InvalidParameter {
+                what: "random integrand: the rotated Gaussians are 2D",
             });
         }
         let (kind, integral) = match family {
@@ -185,6 +205,11 @@ impl RandomIntegrand {
                     .collect();
                 let i = parts.iter().map(|(w, g)| w * g.integral).sum();
                 (Kind::Mixture(parts), i)
+            }
+            Family::RotatedGaussian => {
+                let g = RotatedGaussian::draw(seed)?;
+                let i = g.integral();
+                (Kind::Rotated(g), i)
             }
             Family::Heaviside => heaviside(d, seed),
             Family::BlinnPhong => lobes(d, seed),
@@ -205,6 +230,7 @@ impl RandomIntegrand {
     pub fn eval(&self, x: &[f64]) -> f64 {
         match &self.kind {
             Kind::Mixture(parts) => parts.iter().map(|(w, g)| w * g.eval(x)).sum(),
+            Kind::Rotated(g) => g.eval(x),
             Kind::Heaviside { w, b } => {
                 let s: f64 = w.iter().zip(x).map(|(w, x)| w * x).sum();
                 if s >= *b { 1.0 } else { 0.0 }
@@ -225,9 +251,19 @@ impl RandomIntegrand {
         }
     }
 
-    /// The exact integral over `[0, 1]^d`.
+    /// The exact integral over `[0, 1]^d` (the rotated Gaussians: the reference
+    /// quadrature's, within [`error_bound`](Self::error_bound)).
     pub fn exact(&self) -> f64 {
         self.integral
+    }
+
+    /// A bound on the error of [`exact`](Self::exact): 0 for the closed forms (up to
+    /// rounding), the quadrature's estimate (at most `1e-13`) for the rotated Gaussians.
+    pub fn error_bound(&self) -> f64 {
+        match &self.kind {
+            Kind::Rotated(g) => g.error_bound(),
+            _ => 0.0,
+        }
     }
 }
 
@@ -331,6 +367,9 @@ mod tests {
         for family in Family::ALL {
             for seed in 0..20 {
                 for d in [1usize, 2] {
+                    if family == Family::RotatedGaussian && d != 2 {
+                        continue;
+                    }
                     let f = RandomIntegrand::draw(family, d, seed).unwrap();
                     let k = if d == 1 { 1 << 16 } else { 1 << 11 };
                     let mut sum = 0.0;
@@ -453,5 +492,7 @@ mod tests {
         assert!(RandomIntegrand::draw(Family::Heaviside, 9, 0).is_err());
         assert!(RandomIntegrand::draw(Family::Gaussian, 0, 0).is_err());
         assert!(RandomIntegrand::draw(Family::BlinnPhong, 0, 0).is_err());
+        assert!(RandomIntegrand::draw(Family::RotatedGaussian, 1, 0).is_err());
+        assert!(RandomIntegrand::draw(Family::RotatedGaussian, 3, 0).is_err());
     }
 }

@@ -43,14 +43,16 @@ mod benchmark;
 mod families;
 mod integrands;
 mod problems;
+mod rotated;
 mod student;
 
 pub use benchmark::{
     BENCHMARK_RATE, BenchmarkCurve, BenchmarkOptions, Factory, MAX_INTEGRANDS, benchmark,
 };
-pub use families::{Family, GAUSSIAN_MAX_DIMS, HEAVISIDE_MAX_DIMS, RandomIntegrand};
+pub use families::{Family, GAUSSIAN_MAX_DIMS, HEAVISIDE_MAX_DIMS, ROTATED_DIMS, RandomIntegrand};
 pub use integrands::{Integrand, integration_error};
 pub use problems::{GenzFamily, Market, Problem, ProblemKind, normal_quantile, test_suite};
+pub use rotated::ROTATED_TOLERANCE;
 pub use student::{t_quantile, two_sided_cdf};
 
 use crate::error::{Error, Result};

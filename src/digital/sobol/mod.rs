@@ -291,14 +291,14 @@ impl Sobol {
     /// bit-major rows `T[k][lane]` (natural order: the prefix XORs `V_1 ^ .. ^ V_(k+1)`), so
     /// each point is one element-wise XOR of a contiguous row into `L` running values: Gray
     /// order uses row `tz(i + 1)`, natural order row `trailing_ones(i)`. `32 L` words of
-    /// stack.
+    /// stack. The fold ([`Fold`]) is applied to the table rows and the start point only.
     fn fill_block<const L: usize>(
         &self,
         start: u32,
         out: &mut [u32],
         first: usize,
         block: usize,
-        maps: Option<&[Affine; L]>,
+        fold: Fold<'_, L>,
     ) {
         let Some(dirs) = SOBOL_DIRECTIONS.get(first..first + block) else {
             return; // unreachable: dims <= SOBOL_MAX_DIMS
@@ -316,11 +316,17 @@ impl Sobol {
                 Order::Gray => gray(start),
                 Order::Natural => start,
             };
-            // An affine scramble x -> M x ^ c folds in: rows M V_k, start M (C i0) ^ c.
-            let map = maps.and_then(|m| m.get(lane));
+            // An affine scramble x -> M x ^ c folds in: rows M V_k, start M (C i0) ^ c. The
+            // bit reversal is linear too; it is applied as `reverse_bits` (a dozen
+            // operations) rather than as a matrix (32 masked XORs).
+            let linear = |y: u32| match fold {
+                Fold::None => y,
+                Fold::Reverse => y.reverse_bits(),
+                Fold::Maps(m) => m.get(lane).map_or(y, |m| m.linear(y)),
+            };
             let mut acc = 0;
             for (row, &vk) in table.iter_mut().zip(v).take(span) {
-                let vk = map.map_or(vk, |m| m.linear(vk));
+                let vk = linear(vk);
                 acc ^= vk;
                 row[lane] = match self.order {
                     Order::Gray => vk,
@@ -328,7 +334,10 @@ impl Sobol {
                 };
             }
             let x0 = if i0 == 0 { 0 } else { gf2_mul(v, i0) };
-            x[lane] = map.map_or(x0, |m| m.apply(x0));
+            x[lane] = match fold {
+                Fold::Maps(m) => m.get(lane).map_or(x0, |m| m.apply(x0)),
+                _ => linear(x0),
+            };
         }
         let mut i = start;
         for (row, chunk) in out.chunks_exact_mut(self.dims.max(1)).enumerate() {
@@ -376,19 +385,14 @@ impl Sampler for Sobol {
     /// in blocks of up to 32 whose running values are updated by one element-wise XOR of a
     /// transposed row of direction numbers per point.
     fn fill(&self, start: u32, out: &mut [u32]) -> Result<()> {
-        self.fill_maps(start, out, None).unwrap_or(Ok(()))
+        self.fill_maps(start, out, Maps::None).unwrap_or(Ok(()))
     }
 }
 
 impl Sobol {
     /// [`Sampler::fill`], with the dimensions' affine maps folded in when given; `None` when
     /// a map is `None` (then `out` is partly written).
-    fn fill_maps(
-        &self,
-        start: u32,
-        out: &mut [u32],
-        maps: Option<&dyn Fn(usize) -> Option<Affine>>,
-    ) -> Option<Result<()>> {
+    fn fill_maps(&self, start: u32, out: &mut [u32], maps: Maps<'_>) -> Option<Result<()>> {
         let rows = match crate::sampler::check_fill(self, start, out.len()) {
             Ok(rows) => rows,
             Err(e) => return Some(Err(e)),
@@ -421,20 +425,38 @@ impl Sobol {
         out: &mut [u32],
         first: usize,
         block: usize,
-        maps: Option<&dyn Fn(usize) -> Option<Affine>>,
+        maps: Maps<'_>,
     ) -> Option<()> {
         match maps {
-            None => self.fill_block::<L>(start, out, first, block, None),
-            Some(f) => {
+            Maps::None => self.fill_block::<L>(start, out, first, block, Fold::None),
+            Maps::Reverse => self.fill_block::<L>(start, out, first, block, Fold::Reverse),
+            Maps::Each(f) => {
                 let mut m = [Affine::IDENTITY; L];
                 for (lane, slot) in m.iter_mut().enumerate().take(block) {
                     *slot = f(first + lane)?;
                 }
-                self.fill_block::<L>(start, out, first, block, Some(&m));
+                self.fill_block::<L>(start, out, first, block, Fold::Maps(&m));
             }
         }
         Some(())
     }
+}
+
+/// The maps [`Sobol::fill_maps`] folds into the direction numbers: none, the bit reversal
+/// (every dimension), or each dimension's affine map (`None` stops the fill).
+#[derive(Clone, Copy)]
+enum Maps<'a> {
+    None,
+    Reverse,
+    Each(&'a dyn Fn(usize) -> Option<Affine>),
+}
+
+/// [`Maps`] gathered for one block of `L` dimensions.
+#[derive(Clone, Copy)]
+enum Fold<'a, const L: usize> {
+    None,
+    Reverse,
+    Maps(&'a [Affine; L]),
 }
 
 /// Sobol' is a base-2 digital sequence: base-2 digital randomizations apply.
@@ -448,7 +470,7 @@ impl Base2Digital for Sobol {
         out: &mut [u32],
         maps: &dyn Fn(usize) -> Option<Affine>,
     ) -> Option<Result<()>> {
-        self.fill_maps(start, out, Some(maps))
+        self.fill_maps(start, out, Maps::Each(maps))
     }
 
     /// Up to four dimensions in natural order on 64-bit targets: each point's reversed
@@ -456,7 +478,8 @@ impl Base2Digital for Sobol {
     /// numbers (the tables of [`OwenSobol`]), XORed, with no reversal a value. Otherwise
     /// (wider points, Gray order, and 32-bit targets, which keep their flash free of the
     /// 16 KiB of tables) the reversal is folded into the direction numbers like any linear
-    /// map ([`Affine::REVERSE`]): the sequential fill's cost, no reversal a value.
+    /// map (`reverse(V_k)`, `reverse(x_start)`): the sequential fill's cost, no reversal a
+    /// value.
     #[inline]
     fn fill_reversed(&self, start: u32, out: &mut [u32]) -> Option<Result<()>> {
         #[cfg(target_pointer_width = "64")]
@@ -466,6 +489,6 @@ impl Base2Digital for Sobol {
                     .map(|_| owen::fill_reversed(self.dims, start, out)),
             );
         }
-        self.fill_maps(start, out, Some(&|_| Some(Affine::REVERSE)))
+        self.fill_maps(start, out, Maps::Reverse)
     }
 }

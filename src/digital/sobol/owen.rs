@@ -12,7 +12,7 @@
 //! and `key_d = dimension_seed(seed, d)`. The tables of dimensions 0..4 are one
 //! seed-independent `static` (16 KiB, interleaved so that a point's four coordinates are
 //! four 16-byte rows); the seed lives only in the four keys, so reseeding costs four
-//! hashes. Dimensions from 4 on are evaluated from the direction numbers (32 AND/XOR steps).
+//! hashes (nine `mix64`, the seed's own hashed once: [`dimension_seeds`]). Dimensions from 4 on are evaluated from the direction numbers (32 AND/XOR steps).
 
 use super::{SOBOL_DIRECTIONS, SOBOL_MAX_DIMS, Sobol, SobolDimension, byte_tables};
 #[cfg(target_pointer_width = "64")]
@@ -20,7 +20,7 @@ use crate::bits::to_f32_lz;
 use crate::bits::{reverse_bits, to_f32, to_f32_lanes};
 use crate::dispatch::{self, Kernel};
 use crate::error::{Error, Result};
-use crate::randomize::{FastOwen, FastOwenScrambler, OwenHash, Scrambled, dimension_seed};
+use crate::randomize::{FastOwen, FastOwenScrambler, OwenHash, Scrambled, dimension_seeds};
 use crate::sampler::{FULL_RANGE, Sampler, check};
 
 /// Dimensions served by the interleaved tables.
@@ -189,12 +189,7 @@ impl OwenSobol {
         OwenSobol {
             dims,
             owen,
-            keys: [
-                dimension_seed(seed, 0),
-                dimension_seed(seed, 1),
-                dimension_seed(seed, 2),
-                dimension_seed(seed, 3),
-            ],
+            keys: dimension_seeds(seed, 0),
         }
     }
 
@@ -427,13 +422,18 @@ fn run16_f32(s: &OwenSobol, first: u32, out: &mut [[f32; 4]; 16], hash: impl Fn(
     };
     let high: [u32; 16] = core::array::from_fn(|k| high[k % 4]);
     let keys: [u32; 16] = core::array::from_fn(|k| s.keys[k % 4]);
-    let (out, _) = out.as_flattened_mut().as_chunks_mut::<16>();
+    // Computed in a local array and stored in one copy: the loop then reads and writes
+    // only its own arrays, so it compiles to straight vector code (no run-time overlap
+    // check against `out`), and the key-only parts of the hash are computed once.
+    let mut y = [0f32; 64];
+    let (ys, _) = y.as_chunks_mut::<16>();
     let (rows, _) = rows.as_chunks::<16>();
-    for (o, r) in out.iter_mut().zip(rows) {
+    for (o, r) in ys.iter_mut().zip(rows) {
         for k in 0..16 {
             o[k] = to_f32_lz(reverse_bits(hash(r[k] ^ high[k], keys[k])));
         }
     }
+    out.as_flattened_mut().copy_from_slice(&y);
 }
 
 /// Four points as 16 lanes: point `p`'s table rows XORed into lanes `4p .. 4p + 4`, then one

@@ -6,8 +6,8 @@
 
 use qmckit::Error;
 use qmckit::pixel::{
-    HaltonSampler, ImageSobol, IndependentPixels, PaddedSobol, PixelSampler, Pmj02BnTables,
-    Pmj02Pixels, Randomization, StratifiedSampler, ZSobol,
+    BlueNoiseLattice, BlueNoiseSobol, HaltonSampler, ImageSobol, IndependentPixels, PaddedSobol,
+    PixelSampler, Pmj02BnTables, Pmj02Pixels, Randomization, StratifiedSampler, ZSobol,
 };
 
 const RANDOMIZATIONS: [Randomization; 4] = [
@@ -139,6 +139,13 @@ fn pmj_fills_equal_the_handle() {
             check(&s, x, y, &format!("pmj02 spp {spp}"));
         }
     }
+    // Past the prefix the fill generates whole (256 points): random access per sample.
+    for spp in [256, 257, 300] {
+        let s = Pmj02Pixels::new(5, 3, spp, 9).unwrap();
+        for (x, y) in [(0, 0), (4, 2)] {
+            check(&s, x, y, &format!("pmj02 spp {spp}"));
+        }
+    }
 }
 
 #[test]
@@ -180,6 +187,18 @@ fn halton_stratified_independent_fills_equal_the_handle() {
     let s = IndependentPixels::new(37, 21, 16, 3).unwrap();
     for (x, y) in pixels(37, 21) {
         check(&s, x, y, "independent");
+    }
+}
+
+#[test]
+fn blue_noise_fills_equal_the_handle() {
+    for spp in [1, 5, 16, 100] {
+        let s = BlueNoiseSobol::new(70, 33, spp, 9).unwrap();
+        let l = BlueNoiseLattice::new(70, 33, spp, 9).unwrap();
+        for (x, y) in pixels(70, 33) {
+            check(&s, x, y, "bn-sobol");
+            check(&l, x, y, "bn-lattice");
+        }
     }
 }
 
