@@ -71,6 +71,7 @@ mod kdtree;
 pub mod ldbn;
 #[cfg(feature = "analysis")]
 pub mod lloyd;
+#[cfg(feature = "analysis")]
 pub mod lloyd_projective;
 #[cfg(feature = "analysis")]
 pub mod penrose;
