@@ -38,8 +38,8 @@ mod peers {
     use qmckit::hash::mix64;
     use qmckit::pixel::{
         BlueNoiseLattice, BlueNoiseSobol, HaltonSampler, ImageSobol, IndependentPixels,
-        PaddedSobol, PixelSampler, Pmj02BnTables, Pmj02Pixels, Randomization, StratifiedSampler,
-        ZSobol,
+        PaddedSobol, PixelSampler, Pmj02BnTables, Pmj02Pixels, PreparedHalton, Randomization,
+        StratifiedSampler, ZSobol,
     };
 
     const SIDE: u32 = 256;
@@ -165,6 +165,9 @@ mod peers {
         let padded = PaddedSobol::new(SIDE, SIDE, SPP, fo, 0)?;
         let image = ImageSobol::new(SIDE, SIDE, SPP, fo, 0)?;
         let halton = HaltonSampler::new(SIDE, SIDE, SPP, Randomization::PermuteDigits, 0)?;
+        let halton_tables = PreparedHalton::new(halton, 64)?;
+        let halton_owen = HaltonSampler::new(SIDE, SIDE, SPP, Randomization::Owen, 0)?;
+        let halton_owen_tables = PreparedHalton::new(halton_owen, 64)?;
         let strat = StratifiedSampler::new(SIDE, SIDE, 4, 4, true, 0)?;
         let indep = IndependentPixels::new(SIDE, SIDE, SPP, 0)?;
         let pmj = Pmj02Pixels::new(SIDE, SIDE, SPP, 0)?;
@@ -213,7 +216,16 @@ mod peers {
             row("qmckit Pmj02Pixels prepared", |o| prepared(&pmj, o)),
             row("qmckit HaltonSampler handle", |o| handle(&halton, o)),
             row("qmckit HaltonSampler prepared", |o| prepared(&halton, o)),
+            row("qmckit PreparedHalton prepared", |o| {
+                prepared(&halton_tables, o)
+            }),
             row("pbrt HaltonSampler", |o| peer(4, o)),
+            row("qmckit HaltonSampler Owen prepared", |o| {
+                prepared(&halton_owen, o)
+            }),
+            row("qmckit PreparedHalton Owen prepared", |o| {
+                prepared(&halton_owen_tables, o)
+            }),
             row("qmckit StratifiedSampler handle", |o| handle(&strat, o)),
             row("qmckit StratifiedSampler prepared", |o| prepared(&strat, o)),
             row("pbrt StratifiedSampler", |o| peer(5, o)),
@@ -249,6 +261,11 @@ mod peers {
             ("qmckit ImageSobol prepared", "pbrt SobolSampler"),
             ("qmckit HaltonSampler handle", "pbrt HaltonSampler"),
             ("qmckit HaltonSampler prepared", "pbrt HaltonSampler"),
+            ("qmckit PreparedHalton prepared", "pbrt HaltonSampler"),
+            (
+                "qmckit PreparedHalton Owen prepared",
+                "qmckit HaltonSampler Owen prepared",
+            ),
             ("qmckit StratifiedSampler handle", "pbrt StratifiedSampler"),
             (
                 "qmckit StratifiedSampler prepared",

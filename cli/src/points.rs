@@ -63,6 +63,10 @@ not apply):
                        Owen-scrambled Sobol' net rearranged by a look-up table, still a net
   penrose              Penrose-tiling sampling (Ostromoukhov et al. 2004), 2D: -n N (the
                        N points of lowest rank), --seed (rotation and offset)
+  aa-patterns          AA patterns (after Ahmed et al. 2015), 2D: -n N a perfect square, one
+                       point a grid cell displaced by a table indexed by an automaton's label
+  art                  adaptive regular tiles (after Ahmed et al. 2017), 2D: -n N (the N
+                       samples of lowest rank of a 4 x 4 subdivision), --seed (a torus shift)
   step-blue-noise, single-peak-blue-noise
                        spectrum-controlled blue noise on the torus (Heck et al. 2013),
                        -d 1 to 6: -n N, --iterations I
@@ -70,7 +74,7 @@ not apply):
                        -n N, --iterations I (sweeps), --temperature T
   --max-seconds S refuses, before starting, a set whose estimated time exceeds S
   (also pmj02bn, lloyd, ccvt, sot, projective-blue-noise, forced-random, bnot, ldbn,
-  penrose, step-blue-noise, single-peak-blue-noise, kde-blue-noise).
+  penrose, aa-patterns, art, step-blue-noise, single-peak-blue-noise, kde-blue-noise).
 
 Other sets: cmj (Kensler's correlated multi-jitter, --total N, -d any, --seed);
 cascaded-sobol (Paulin et al.'s cascaded Sobol', --total N a power of two, -d to 65536,
@@ -236,6 +240,8 @@ impl PointsArgs {
                 | S::CascadedSobol
                 | S::Ldbn
                 | S::Penrose
+                | S::AaPatterns
+                | S::Art
         ) || is_relaxed(sampler)
             || blue_noise_kind(sampler).is_some()
             || (kind == S::Stratified && !self.centered)
@@ -512,7 +518,11 @@ pub fn run(args: &PointsArgs) -> Result<(), Failure> {
     }
     let budgeted = matches!(
         args.sampler.kind,
-        SamplerKind::Pmj02bn | SamplerKind::Ldbn | SamplerKind::Penrose
+        SamplerKind::Pmj02bn
+            | SamplerKind::Ldbn
+            | SamplerKind::Penrose
+            | SamplerKind::AaPatterns
+            | SamplerKind::Art
     );
     if let Some(option) = args.blue.first_given(budgeted)
         && !is_relaxed(args.sampler)

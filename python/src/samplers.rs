@@ -477,8 +477,8 @@ pub fn pmj02bn(py: Python<'_>, n: usize, seed: u64) -> PyResult<NativeSampler> {
 
 /// The `n`-point set of any finite catalog sampler (`qmckit::catalog::SAMPLERS` of size
 /// `Set` or `Whole`: stratified, latin, hammersley, lp, cmj, hex, pmj02bn, the blue-noise
-/// sets, lloyd, ccvt, sot, bnot, projective-blue-noise, forced-random, ldbn, penrose, the
-/// spectral and kernel-density sets), by name or alias, unrandomized, in `d` dimensions
+/// sets, lloyd, ccvt, sot, bnot, projective-blue-noise, forced-random, ldbn, penrose,
+/// aa-patterns, art, the spectral and kernel-density sets), by name or alias, unrandomized, in `d` dimensions
 /// (the construction's default when `None`), with the construction's `seed`, and for the
 /// relaxed sets their `iterations`, `torus`, (sot) `projective` and (kde-blue-noise)
 /// `temperature`: the same bits as `qmckit points NAME -n N`.

@@ -436,7 +436,7 @@ def test_catalog_set_gives_the_command_s_finite_sets():
 
     for name, d in [("cmj", 2), ("cmj", 3), ("hex", 2), ("lloyd", 2), ("ccvt", 3), ("sot", 2), ("bnot", 2),
                     ("projective-blue-noise", 3), ("forced-random", 2), ("ldbn", 2), ("penrose", 2),
-                    ("kde-blue-noise", 2)]:
+                    ("kde-blue-noise", 2), ("aa-patterns", 2), ("art", 2)]:
         s = q.catalog_set(name, 16, d=d, seed=3)
         assert (s.len, s.dims) == (16, d)
         out = np.empty((16, d), dtype=np.uint32)

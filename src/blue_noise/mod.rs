@@ -22,6 +22,12 @@
 //! * [`Penrose`] — one sample a tile of a subdivided Penrose tiling, ranked for
 //!   thresholding (Ostromoukhov, Donohue & Jodoin 2004); [`penrose::importance`] samples a
 //!   density; [`penrose_train`] makes its correction table.
+//! * [`AaPattern`] — AA patterns (after Ahmed, Huang & Deussen 2015): one point a grid
+//!   cell, displaced by a table indexed by the cell's label under a discrete irrational
+//!   rotation of the lattice (an additive automaton).
+//! * [`Art`] — adaptive regular tiles (after Ahmed, Niese, Huang & Deussen 2017): one
+//!   point a tile of a recursive `4 x 4` subdivision, offsets from a table indexed by the
+//!   tile's word, progressive by ranks; [`art::importance`] follows a density.
 //! * [`SpectralBlueNoise`] — step and single-peak blue noise (Heck, Schlömer & Deussen
 //!   2013): a target radial spectrum, its pair correlation by the Hankel transform, points
 //!   by gradient descent on the mismatch, on the torus in 1 to 6 dimensions.
@@ -39,6 +45,10 @@
 
 pub mod mask64;
 
+#[cfg(feature = "analysis")]
+pub mod aa;
+#[cfg(feature = "analysis")]
+pub mod art;
 #[cfg(feature = "analysis")]
 mod bessel;
 #[cfg(feature = "analysis")]
@@ -61,6 +71,7 @@ mod kdtree;
 pub mod ldbn;
 #[cfg(feature = "analysis")]
 pub mod lloyd;
+#[cfg(feature = "analysis")]
 pub mod lloyd_projective;
 #[cfg(feature = "analysis")]
 pub mod penrose;
@@ -95,6 +106,10 @@ pub mod transport;
 #[cfg(feature = "analysis")]
 pub mod void_and_cluster;
 
+#[cfg(feature = "analysis")]
+pub use aa::AaPattern;
+#[cfg(feature = "analysis")]
+pub use art::Art;
 #[cfg(feature = "analysis")]
 pub use best_candidate::BestCandidate;
 #[cfg(feature = "analysis")]

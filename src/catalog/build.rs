@@ -381,7 +381,12 @@ fn construct(
             &p.budget,
         )?),
         #[cfg(feature = "analysis")]
-        S::Penrose => Box::new(super::whole::tiled(needed(sampler, p)?, seed, &p.budget)?),
+        S::Penrose | S::AaPatterns | S::Art => Box::new(super::whole::tiled(
+            sampler.kind,
+            needed(sampler, p)?,
+            seed,
+            &p.budget,
+        )?),
         #[cfg(feature = "analysis")]
         S::Lloyd
         | S::Ccvt
@@ -415,6 +420,8 @@ fn construct(
         | S::Bnot
         | S::ProjectiveBlueNoise
         | S::Penrose
+        | S::AaPatterns
+        | S::Art
         | S::ForcedRandom
         | S::StepBlueNoise
         | S::SinglePeakBlueNoise

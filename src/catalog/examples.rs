@@ -111,6 +111,8 @@ pub fn examples() -> Vec<(&'static SamplerEntry, Params)> {
         ("forced-random", p().with_points(100)),
         ("ldbn", p().with_points(256)),
         ("penrose", p().with_points(100)),
+        ("aa-patterns", p().with_points(100)),
+        ("art", p().with_points(100)),
         ("step-blue-noise", few(160)),
         ("single-peak-blue-noise", few(160)),
         ("kde-blue-noise", few(160)),

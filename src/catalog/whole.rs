@@ -234,15 +234,20 @@ mod built {
         })
     }
 
-    /// The tile-based sets: penrose, `n` points, within `budget`.
+    /// The tile-based sets: penrose, aa-patterns, art, `n` points, within `budget`.
     pub(in crate::catalog) fn tiled(
+        kind: SamplerKind,
         n: u64,
         seed: u64,
         budget: &Budget,
     ) -> Result<PointSet, CatalogError> {
-        use crate::blue_noise::Penrose;
+        use crate::blue_noise::{AaPattern, Art, Penrose};
         let budget = budget.started();
-        Ok(Penrose::new(n)?.seed(seed).generate(&budget)?)
+        Ok(match kind {
+            SamplerKind::AaPatterns => AaPattern::new(n, seed)?.generate(&budget)?,
+            SamplerKind::Art => Art::new(n)?.seed(seed).generate(&budget)?,
+            _ => Penrose::new(n)?.seed(seed).generate(&budget)?,
+        })
     }
 
     /// PMJ02BN's throughput in cache: spread steps (a point at one of the `ceil(log2 n)`

@@ -44,7 +44,9 @@ const MAX_RESOLUTION: u32 = 128;
 /// for `PermuteDigits`, one `MixBits` and one permutation per digit for `Owen`.
 /// The prepared fills ([`PixelSampler::fill_2d`]) find the pixel's Halton index once
 /// (sample `i` adds `i 2^j 3^k`) and, for `PermuteDigits`, hash each digit's permutation
-/// key once per dimension instead of once per value.
+/// key once per fill instead of once per value. `PreparedHalton`
+/// (`std`) builds the digit tables once for the image instead, as pbrt does, and is an
+/// order of magnitude faster.
 ///
 /// ```
 /// use qmckit::pixel::{HaltonSampler, PixelSampler, Randomization};
@@ -139,6 +141,23 @@ impl HaltonSampler {
         })
     }
 
+    /// The randomization.
+    #[cfg(feature = "std")]
+    pub(super) const fn randomization(&self) -> Randomization {
+        self.randomize
+    }
+
+    /// The seed.
+    #[cfg(feature = "std")]
+    pub(super) const fn seed(&self) -> u64 {
+        self.seed
+    }
+
+    /// `2^j 3^k`: the Halton index step between a pixel's samples.
+    pub(super) const fn stride(&self) -> u64 {
+        self.scales[0] * self.scales[1]
+    }
+
     /// `(R, b^n)` of dimension `dim`'s randomized radical inverse of `h`: the value is
     /// `R / b^n`; and pbrt's `f32` of it.
     fn dimension(&self, h: u64, dim: usize) -> (u32, f32) {
@@ -146,7 +165,7 @@ impl HaltonSampler {
         match self.randomize {
             Randomization::None => radical_inverse(base, h),
             Randomization::Owen => {
-                let key = mix_bits(1 + ((dim as u64) << 4)) as u32;
+                let key = owen_key(dim);
                 digits(base, h, Stop::Owen, |_, digit, reversed| {
                     let hash = mix_bits(key as u64 ^ reversed) as u32;
                     permutation_element(digit, base as u32, hash)
@@ -167,7 +186,7 @@ const TABLE_ENTRIES: usize = 512;
 
 /// `floor(2^64 / b) + 1`: `(a M) >> 64` is `a / b` for every `a < 2^32` and `2 <= b <
 /// 2^32` (the error `a (M - 2^64 / b) / 2^64 < 2^-32` stays below `1 / b`).
-const fn reciprocal(b: u64) -> u128 {
+pub(super) const fn reciprocal(b: u64) -> u128 {
     (u64::MAX / b) as u128 + 1
 }
 
@@ -188,7 +207,7 @@ impl HaltonSampler {
         self.grid.check_fill(x, y, out.len())?;
         let d = self.counter_dimension(dim, width);
         let h0 = self.pixel_key(x, y, 0);
-        let stride = self.scales[0] * self.scales[1];
+        let stride = self.stride();
         for (i, o) in out.iter_mut().enumerate() {
             *o = value(h0 + i as u64 * stride, d);
         }
@@ -286,15 +305,15 @@ impl HaltonSampler {
     }
 
     /// Whether the Halton indices of `n` samples of any pixel stay below `2^32`.
-    fn small_indices(&self, n: usize) -> bool {
-        let stride = self.scales[0] * self.scales[1];
+    pub(super) fn small_indices(&self, n: usize) -> bool {
+        let stride = self.stride();
         (n as u64).saturating_mul(stride) <= 1 << 32
     }
 }
 
 /// The digits pbrt's `ScrambledRadicalInverse` takes in base `b`: while
 /// `1 - (b - 1) fl(b^-n) < 1` in `f32` (the index's value does not matter).
-fn permute_digit_count(base: u64) -> usize {
+pub(super) fn permute_digit_count(base: u64) -> usize {
     let inv_base = 1.0f32 / base as f32;
     let (mut inv_m, mut n) = (1.0f32, 0);
     while 1.0 - (base - 1) as f32 * inv_m < 1.0 && n < 64 {
@@ -304,9 +323,15 @@ fn permute_digit_count(base: u64) -> usize {
     n
 }
 
+/// The Owen key of dimension `dim`: `MixBits(1 + 16 dim)`, low 32 bits (pbrt's
+/// `OwenScrambledRadicalInverse` hash).
+pub(super) const fn owen_key(dim: usize) -> u32 {
+    mix_bits(1 + ((dim as u64) << 4)) as u32
+}
+
 /// pbrt's `Hash(base, digitIndex, seed)`: MurmurHash64A of the 12 bytes for a 32-bit seed,
 /// of 16 bytes (the seed's 64 bits) above.
-fn digit_hash(base: u32, k: u32, seed: u64) -> u64 {
+pub(super) fn digit_hash(base: u32, k: u32, seed: u64) -> u64 {
     let (b, k, s) = (base.to_le_bytes(), k.to_le_bytes(), seed.to_le_bytes());
     let bytes = [
         b[0], b[1], b[2], b[3], k[0], k[1], k[2], k[3], s[0], s[1], s[2], s[3], s[4], s[5], s[6],
@@ -453,7 +478,7 @@ impl PixelSampler for HaltonSampler {
 
     /// The Halton index `h` of the sample.
     fn pixel_key(&self, x: u32, y: u32, index: u32) -> u64 {
-        let stride = self.scales[0] * self.scales[1];
+        let stride = self.stride();
         let mut h = 0;
         if stride > 1 {
             let p = [x % MAX_RESOLUTION, y % MAX_RESOLUTION];

@@ -2,7 +2,7 @@
 //! pixel found by solving for their indices (Grünschloss, Raab & Keller 2012, "Enumerating
 //! quasi-Monte Carlo point sequences in elementary intervals").
 
-use super::prepared::{CHUNK, randomize_pairs, randomize_values};
+use super::prepared::{CHUNK, dispatched, randomize_pairs, randomize_values};
 use super::{
     F32_ONE_MINUS_EPSILON, PixelGrid, PixelPoint, PixelSampler, Randomization, pbrt_f32,
     seed_hash2, sobol0, sobol1,
@@ -172,31 +172,15 @@ impl ImageSobol {
     /// pbrt's `SobolIntervalToIndex(m, frame, p)`: the Sobol' index of frame `frame` whose
     /// point lies in pixel `(x, y)` of the `2^m` grid (unchecked: `x, y < 2^m`, and
     /// `frame 2^2m < 2^32`).
+    #[inline]
     pub fn interval_to_index(&self, frame: u32, x: u32, y: u32) -> u64 {
         let m = self.m;
         if m == 0 {
             return frame as u64;
         }
-        let mut delta = 0u32;
-        let mut f = frame;
-        let mut c = 0;
-        while f != 0 {
-            if f & 1 == 1 {
-                delta ^= self.frame_cols.get(c).copied().unwrap_or(0);
-            }
-            f >>= 1;
-            c += 1;
-        }
-        let mut b = ((x << m) | y) ^ delta;
-        let mut low = 0u32;
-        let mut c = 0;
-        while b != 0 {
-            if b & 1 == 1 {
-                low ^= self.inverse.get(c).copied().unwrap_or(0);
-            }
-            b >>= 1;
-            c += 1;
-        }
+        // Both products over GF(2) branch-free (32 masked XORs each).
+        let delta = product(&self.frame_cols, frame);
+        let low = product(&self.inverse, ((x << m) | y) ^ delta);
         ((frame as u64) << (2 * m)) | low as u64
     }
 
@@ -216,7 +200,7 @@ impl ImageSobol {
 
 /// `S(i)`: the XOR of the Sobol' columns `cols[b]` over the set bits `b` of `i` (the
 /// matrix-vector product over GF(2)), branch-free.
-#[inline]
+#[inline(always)]
 fn product(cols: &[u32; 32], i: u32) -> u32 {
     cols.iter()
         .enumerate()
@@ -228,6 +212,7 @@ impl ImageSobol {
     /// `start .. start + out.len()` of the pixel whose frame-0 index is `l0`, into `out`:
     /// the pixel's value, the chunk's high frame bits, then the table doubled over the low
     /// ones.
+    #[inline(always)]
     fn reversed_values(&self, d: usize, l0: u32, start: u32, out: &mut [u32]) {
         let cols = match SobolDimension::new(d) {
             Ok(s) => *s.directions(),
@@ -263,7 +248,7 @@ impl ImageSobol {
     }
 
     /// The prepared pair fill at dimensions `d, d + 1` (`d` through the counter rule).
-    #[inline]
+    #[inline(always)]
     fn fill_pairs<T>(
         &self,
         x: u32,
@@ -292,7 +277,7 @@ impl ImageSobol {
     }
 
     /// The prepared 1D fill.
-    #[inline]
+    #[inline(always)]
     fn fill_values<T>(
         &self,
         x: u32,
@@ -322,19 +307,31 @@ impl PixelSampler for ImageSobol {
     }
 
     fn fill_2d(&self, x: u32, y: u32, dim: usize, out: &mut [[u32; 2]]) -> Result<()> {
-        self.fill_pairs(x, y, dim, out, |v| v)
+        dispatched(
+            #[inline(always)]
+            || self.fill_pairs(x, y, dim, out, |v| v),
+        )
     }
 
     fn fill_2d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [[f32; 2]]) -> Result<()> {
-        self.fill_pairs(x, y, dim, out, pbrt_f32)
+        dispatched(
+            #[inline(always)]
+            || self.fill_pairs(x, y, dim, out, pbrt_f32),
+        )
     }
 
     fn fill_1d(&self, x: u32, y: u32, dim: usize, out: &mut [u32]) -> Result<()> {
-        self.fill_values(x, y, dim, out, |v| v)
+        dispatched(
+            #[inline(always)]
+            || self.fill_values(x, y, dim, out, |v| v),
+        )
     }
 
     fn fill_1d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [f32]) -> Result<()> {
-        self.fill_values(x, y, dim, out, pbrt_f32)
+        dispatched(
+            #[inline(always)]
+            || self.fill_values(x, y, dim, out, pbrt_f32),
+        )
     }
 
     /// The Sobol' index of the sample, `SobolIntervalToIndex(m, index, (x, y))`.

@@ -2,7 +2,7 @@
 //! pair, decorrelated by a hashed per-pixel, per-dimension index permutation and scramble.
 
 use super::prepared::{
-    CHUNK, permutation_fill, randomize_pairs, randomize_values, sobol1_reversed,
+    CHUNK, dispatched, permutation_fill, randomize_pairs, randomize_values, sobol1_reversed,
 };
 use super::{
     PixelGrid, PixelPoint, PixelSampler, Randomization, pbrt_f32, seed_hash4, sobol0, sobol1,
@@ -72,7 +72,7 @@ impl PaddedSobol {
 impl PaddedSobol {
     /// The prepared pair fill: the hash once, then per chunk of samples the permuted
     /// indices and the randomized pairs, converted by `conv`.
-    #[inline]
+    #[inline(always)]
     fn fill_pairs<T>(
         &self,
         x: u32,
@@ -101,7 +101,7 @@ impl PaddedSobol {
     }
 
     /// The prepared 1D fill (Sobol' dimension 0, the high key).
-    #[inline]
+    #[inline(always)]
     fn fill_values<T>(
         &self,
         x: u32,
@@ -125,19 +125,31 @@ impl PaddedSobol {
 
 impl PixelSampler for PaddedSobol {
     fn fill_2d(&self, x: u32, y: u32, dim: usize, out: &mut [[u32; 2]]) -> Result<()> {
-        self.fill_pairs(x, y, dim, out, |v| v)
+        dispatched(
+            #[inline(always)]
+            || self.fill_pairs(x, y, dim, out, |v| v),
+        )
     }
 
     fn fill_2d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [[f32; 2]]) -> Result<()> {
-        self.fill_pairs(x, y, dim, out, pbrt_f32)
+        dispatched(
+            #[inline(always)]
+            || self.fill_pairs(x, y, dim, out, pbrt_f32),
+        )
     }
 
     fn fill_1d(&self, x: u32, y: u32, dim: usize, out: &mut [u32]) -> Result<()> {
-        self.fill_values(x, y, dim, out, |v| v)
+        dispatched(
+            #[inline(always)]
+            || self.fill_values(x, y, dim, out, |v| v),
+        )
     }
 
     fn fill_1d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [f32]) -> Result<()> {
-        self.fill_values(x, y, dim, out, pbrt_f32)
+        dispatched(
+            #[inline(always)]
+            || self.fill_values(x, y, dim, out, pbrt_f32),
+        )
     }
 
     fn grid(&self) -> PixelGrid {

@@ -3,7 +3,7 @@
 //! per-pixel, per-dimension permutation of aligned blocks of the same table, shifted by a
 //! blue-noise value, for the other dimensions.
 
-use super::prepared::{CHUNK, permutation_fill};
+use super::prepared::{CHUNK, dispatched, permutation_fill, permutation_fill16};
 use super::{PixelGrid, PixelPoint, PixelSampler, pbrt_f32, seed_hash4};
 use crate::blue_noise::mask64::MASK64;
 use crate::error::{Error, Result};
@@ -12,6 +12,10 @@ use crate::pmj::bn;
 
 /// Points in the table, `2^16` (pbrt's `nPMJ02bnSamples`).
 pub const TABLE_LEN: usize = 1 << 16;
+
+/// Samples a pass of the prepared pair fill handles (its stack scratch: small, as a fill is
+/// often one pixel's 16 or 64 samples).
+const PAIR_CHUNK: usize = 16;
 
 /// `log2` of the tile side for `spp` samples a pixel: `8 - log4(RoundUpPow4(spp))`
 /// (pbrt's `pixelTileSize`), and `log4(RoundUpPow4(spp))`.
@@ -195,7 +199,7 @@ impl<'t> Pmj02BnPixels<'t> {
 
 impl Pmj02BnPixels<'_> {
     /// The prepared pair fill (the counter read as `max(dim, 2)`), converted by `conv`.
-    #[inline]
+    #[inline(always)]
     fn fill_pairs<T>(
         &self,
         x: u32,
@@ -208,31 +212,45 @@ impl Pmj02BnPixels<'_> {
         let d = dim.max(2);
         let h = seed_hash4(x, y, d, self.seed);
         let block = self.grid.spp.next_power_of_two() as u64;
-        let first = (((h >> 32) * (TABLE_LEN as u64 / block)) >> 32) * block;
-        // The block lies in the table: `first + block <= TABLE_LEN`.
-        let table = self
-            .table
-            .get(first as usize..(first + block) as usize)
-            .unwrap_or(&[]);
+        // TABLE_LEN / block by a shift (both powers of two).
+        let blocks = TABLE_LEN as u64 >> block.trailing_zeros();
+        let first = (((h >> 32) * blocks) >> 32) * block;
+        // The table has TABLE_LEN = 2^16 entries (checked by `new`) and `first + i <
+        // TABLE_LEN`: indexing the array by a `u16` needs no bound check in the loop.
+        let Ok(table) = <&[[u32; 2]; TABLE_LEN]>::try_from(self.table) else {
+            return Ok(());
+        };
+        // Read the block's first cache lines now: the reads below wait for the
+        // permutation, these only for the hash, so the table's latency overlaps the
+        // permutation's work (the values are discarded; the reads stay).
+        for k in (0..block.min(32) as usize).step_by(8) {
+            core::hint::black_box(table[(first as usize + k) & (TABLE_LEN - 1)]);
+        }
         let t = d as u32;
         let (n0, n1) = (
             blue_noise(self.seed, t, x, y),
             blue_noise(self.seed, t.wrapping_add(1), x, y),
         );
-        let mut perm = [0u32; CHUNK];
-        for (c, chunk) in out.chunks_mut(CHUNK).enumerate() {
+        // Scratch of PAIR_CHUNK samples (spp <= 2^16: 16-bit elements).
+        let (mut perm, mut raw) = ([0u16; PAIR_CHUNK], [[0u32; 2]; PAIR_CHUNK]);
+        for (c, chunk) in out.chunks_mut(PAIR_CHUNK).enumerate() {
             let perm = &mut perm[..chunk.len()];
-            permutation_fill((c * CHUNK) as u32, self.grid.spp, h as u32, perm);
-            for (o, &i) in chunk.iter_mut().zip(perm.iter()) {
-                let p = table.get(i as usize).copied().unwrap_or([0, 0]);
-                *o = [conv(p[0].wrapping_add(n0)), conv(p[1].wrapping_add(n1))];
+            let raw = &mut raw[..chunk.len()];
+            permutation_fill16((c * PAIR_CHUNK) as u32, self.grid.spp, h as u32, perm);
+            // The reads, then the conversion in a loop of its own (which vectorizes).
+            for (r, &i) in raw.iter_mut().zip(perm.iter()) {
+                let p = table[(first as u16).wrapping_add(i) as usize];
+                *r = [p[0].wrapping_add(n0), p[1].wrapping_add(n1)];
+            }
+            for (o, r) in chunk.iter_mut().zip(raw.iter()) {
+                *o = [conv(r[0]), conv(r[1])];
             }
         }
         Ok(())
     }
 
     /// The prepared 1D fill, `(PermutationElement(i) 2^32 + blue noise) / spp`.
-    #[inline]
+    #[inline(always)]
     fn fill_values<T>(
         &self,
         x: u32,
@@ -271,19 +289,31 @@ impl PixelSampler for Pmj02BnPixels<'_> {
     }
 
     fn fill_2d(&self, x: u32, y: u32, dim: usize, out: &mut [[u32; 2]]) -> Result<()> {
-        self.fill_pairs(x, y, dim, out, |v| v)
+        dispatched(
+            #[inline(always)]
+            || self.fill_pairs(x, y, dim, out, |v| v),
+        )
     }
 
     fn fill_2d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [[f32; 2]]) -> Result<()> {
-        self.fill_pairs(x, y, dim, out, pbrt_f32)
+        dispatched(
+            #[inline(always)]
+            || self.fill_pairs(x, y, dim, out, pbrt_f32),
+        )
     }
 
     fn fill_1d(&self, x: u32, y: u32, dim: usize, out: &mut [u32]) -> Result<()> {
-        self.fill_values(x, y, dim, out, |v| v)
+        dispatched(
+            #[inline(always)]
+            || self.fill_values(x, y, dim, out, |v| v),
+        )
     }
 
     fn fill_1d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [f32]) -> Result<()> {
-        self.fill_values(x, y, dim, out, pbrt_f32)
+        dispatched(
+            #[inline(always)]
+            || self.fill_values(x, y, dim, out, pbrt_f32),
+        )
     }
 
     /// The sample's entry in the tile: `(pixel in the tile) per_pixel + index`.

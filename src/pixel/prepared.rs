@@ -13,8 +13,51 @@
 
 use super::Randomization;
 use crate::bits::reverse_bits;
+#[cfg(all(test, feature = "std"))]
+use crate::dispatch::Level;
+use crate::dispatch::{self, Kernel};
 use crate::hash::pbrt::{permutation_element, permutation_round};
 use crate::randomize::{FastOwenScrambler, OwenHash, PbrtOwenScrambler};
+
+/// A fill's body as a [`Kernel`]: compiled inside each build of [`crate::dispatch`] (the
+/// closure must be `#[inline(always)]`, and so must what it calls to be widened).
+struct Fill<F>(F);
+
+impl<R, F: FnOnce() -> R> Kernel for Fill<F> {
+    type Output = R;
+    #[inline(always)]
+    fn run(self) -> R {
+        (self.0)()
+    }
+}
+
+/// `f()` in the widest build this CPU runs (AVX2 or AVX-512 on x86-64 with `std`; the
+/// baseline build elsewhere): integer and `f32` arithmetic whose results do not depend on
+/// the vector width, so every build gives the same bits.
+#[inline(always)]
+pub(crate) fn dispatched<R>(f: impl FnOnce() -> R) -> R {
+    #[cfg(all(test, feature = "std"))]
+    if let Some(want) = FORCED.with(|c| c.get()) {
+        return dispatch::run_at(want, Fill(f));
+    }
+    dispatch::run(Fill(f))
+}
+
+#[cfg(all(test, feature = "std"))]
+std::thread_local! {
+    /// The build the tests ask [`dispatched`] for.
+    static FORCED: core::cell::Cell<Option<Level>> = const { core::cell::Cell::new(None) };
+}
+
+/// `f()` with the fills of this thread run at the build `want` (or the widest narrower
+/// one the CPU runs): for the tests that compare the builds.
+#[cfg(all(test, feature = "std"))]
+pub(crate) fn at_level<R>(want: Level, f: impl FnOnce() -> R) -> R {
+    FORCED.with(|c| c.set(Some(want)));
+    let r = f();
+    FORCED.with(|c| c.set(None));
+    r
+}
 
 /// Samples handled per pass of a fill: the size of the fills' stack scratch.
 pub(crate) const CHUNK: usize = 64;
@@ -35,13 +78,48 @@ pub(crate) const fn sobol1_reversed(i: u32) -> u32 {
     v ^ ((v >> 16) & 0x0000_ffff)
 }
 
+/// [`permutation_round`] for `w < 2^16`, in 16-bit arithmetic: every step of the round is
+/// a product, an XOR or a right shift of bits below `w` (`(i & w) >> s`), and the low 16
+/// bits of a product or XOR depend only on the low 16 bits of its operands, so the round
+/// reduced mod `2^16` (keys and constants truncated) gives the same value below `w + 1`.
+/// Eight lanes a 128-bit multiply (`pmullw`) where the 32-bit round needs emulated 32-bit
+/// products on the baseline x86-64. O(1).
+#[inline(always)]
+const fn permutation_round16(i: u16, w: u16, p: u32) -> u16 {
+    let mut i = i ^ p as u16;
+    i = i.wrapping_mul(0x893d);
+    i ^= (p >> 16) as u16;
+    i ^= (i & w) >> 4;
+    i ^= (p >> 8) as u16;
+    i = i.wrapping_mul(0xeb3f);
+    i ^= (p >> 23) as u16;
+    i ^= (i & w) >> 1;
+    i = i.wrapping_mul(1 | (p >> 27) as u16);
+    i = i.wrapping_mul(0xfa69);
+    i ^= (i & w) >> 11;
+    i = i.wrapping_mul(0xb303);
+    i ^= (i & w) >> 2;
+    i = i.wrapping_mul(0x1cc3);
+    i ^= (i & w) >> 2;
+    i = i.wrapping_mul(0xa3df);
+    i &= w;
+    i ^ (i >> 5)
+}
+
 /// `out[k] = PermutationElement(start + k, l, p)` (pbrt's keyed permutation of `[0, l)`,
 /// [`permutation_element`]). For `l` a power of two one round of the mixer always lands
 /// below `l`, so the element is `(round(i) + p) mod l` with the modulus a mask: a loop
-/// without division or branch. Other `l` walk the cycle per element. `start + k < l`.
+/// without division or branch, in 16-bit lanes up to `l = 2^16`
+/// ([`permutation_round16`]). Other `l` walk the cycle per element. `start + k < l`.
 #[inline]
 pub(crate) fn permutation_fill(start: u32, l: u32, p: u32, out: &mut [u32]) {
-    if l.is_power_of_two() {
+    if l.is_power_of_two() && l <= 1 << 16 {
+        let w = (l - 1) as u16;
+        for (k, o) in out.iter_mut().enumerate() {
+            let i = start.wrapping_add(k as u32) as u16;
+            *o = (permutation_round16(i, w, p).wrapping_add(p as u16) & w) as u32;
+        }
+    } else if l.is_power_of_two() {
         let w = l - 1;
         for (k, o) in out.iter_mut().enumerate() {
             let i = start.wrapping_add(k as u32);
@@ -50,6 +128,23 @@ pub(crate) fn permutation_fill(start: u32, l: u32, p: u32, out: &mut [u32]) {
     } else {
         for (k, o) in out.iter_mut().enumerate() {
             *o = permutation_element(start.wrapping_add(k as u32), l, p);
+        }
+    }
+}
+
+/// [`permutation_fill`] into 16-bit elements, for `l <= 2^16` (the elements are below `l`;
+/// a larger `l` gives their low 16 bits).
+#[inline(always)]
+pub(crate) fn permutation_fill16(start: u32, l: u32, p: u32, out: &mut [u16]) {
+    if l.is_power_of_two() && l <= 1 << 16 {
+        let w = (l - 1) as u16;
+        for (k, o) in out.iter_mut().enumerate() {
+            let i = start.wrapping_add(k as u32) as u16;
+            *o = permutation_round16(i, w, p).wrapping_add(p as u16) & w;
+        }
+    } else {
+        for (k, o) in out.iter_mut().enumerate() {
+            *o = permutation_element(start.wrapping_add(k as u32), l, p) as u16;
         }
     }
 }
@@ -75,41 +170,57 @@ pub(crate) fn randomize_pairs<T>(
     conv: impl Fn(u32) -> T,
 ) {
     match r {
-        Randomization::None => each(out, |k| {
-            let [a, b] = rev(k);
-            [conv(reverse_bits(a)), conv(reverse_bits(b))]
-        }),
+        Randomization::None => each(
+            out,
+            #[inline(always)]
+            |k| {
+                let [a, b] = rev(k);
+                [conv(reverse_bits(a)), conv(reverse_bits(b))]
+            },
+        ),
         Randomization::PermuteDigits => {
             // reverse(a) ^ key = reverse(a ^ reverse(key)).
             let (ka, kb) = (reverse_bits(keys[0]), reverse_bits(keys[1]));
-            each(out, |k| {
-                let [a, b] = rev(k);
-                [conv(reverse_bits(a ^ ka)), conv(reverse_bits(b ^ kb))]
-            })
+            each(
+                out,
+                #[inline(always)]
+                |k| {
+                    let [a, b] = rev(k);
+                    [conv(reverse_bits(a ^ ka)), conv(reverse_bits(b ^ kb))]
+                },
+            )
         }
         Randomization::FastOwen => {
             let sa = FastOwenScrambler::from_key(keys[0], OwenHash::Vegdahl);
             let sb = FastOwenScrambler::from_key(keys[1], OwenHash::Vegdahl);
-            each(out, |k| {
-                let [a, b] = rev(k);
-                [
-                    conv(reverse_bits(sa.scramble_reversed(a))),
-                    conv(reverse_bits(sb.scramble_reversed(b))),
-                ]
-            })
+            each(
+                out,
+                #[inline(always)]
+                |k| {
+                    let [a, b] = rev(k);
+                    [
+                        conv(reverse_bits(sa.scramble_reversed(a))),
+                        conv(reverse_bits(sb.scramble_reversed(b))),
+                    ]
+                },
+            )
         }
         Randomization::Owen => {
             let (sa, sb) = (
                 PbrtOwenScrambler::new(keys[0]),
                 PbrtOwenScrambler::new(keys[1]),
             );
-            each(out, |k| {
-                let [a, b] = rev(k);
-                [
-                    conv(sa.scramble(reverse_bits(a))),
-                    conv(sb.scramble(reverse_bits(b))),
-                ]
-            })
+            each(
+                out,
+                #[inline(always)]
+                |k| {
+                    let [a, b] = rev(k);
+                    [
+                        conv(sa.scramble(reverse_bits(a))),
+                        conv(sb.scramble(reverse_bits(b))),
+                    ]
+                },
+            )
         }
     }
 }
@@ -124,18 +235,101 @@ pub(crate) fn randomize_values<T>(
     conv: impl Fn(u32) -> T,
 ) {
     match r {
-        Randomization::None => each(out, |k| conv(reverse_bits(rev(k)))),
+        Randomization::None => each(
+            out,
+            #[inline(always)]
+            |k| conv(reverse_bits(rev(k))),
+        ),
         Randomization::PermuteDigits => {
             let kr = reverse_bits(key);
-            each(out, |k| conv(reverse_bits(rev(k) ^ kr)))
+            each(
+                out,
+                #[inline(always)]
+                |k| conv(reverse_bits(rev(k) ^ kr)),
+            )
         }
         Randomization::FastOwen => {
             let s = FastOwenScrambler::from_key(key, OwenHash::Vegdahl);
-            each(out, |k| conv(reverse_bits(s.scramble_reversed(rev(k)))))
+            each(
+                out,
+                #[inline(always)]
+                |k| conv(reverse_bits(s.scramble_reversed(rev(k)))),
+            )
         }
         Randomization::Owen => {
             let s = PbrtOwenScrambler::new(key);
-            each(out, |k| conv(s.scramble(reverse_bits(rev(k)))))
+            each(
+                out,
+                #[inline(always)]
+                |k| conv(s.scramble(reverse_bits(rev(k)))),
+            )
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every build of the prepared fills gives the portable build's bits: each Sobol'
+    /// sampler under each randomization and PMJ02BN, pairs and values, `u32` and `f32`,
+    /// with more samples than a pass and dimensions past the tables.
+    #[cfg(feature = "std")]
+    #[test]
+    fn every_build_fills_the_same() {
+        use super::super::{
+            ImageSobol, PaddedSobol, PixelSampler, Pmj02BnTables, Randomization as R, ZSobol,
+        };
+        fn all<S: PixelSampler>(s: &S, n: usize) -> std::vec::Vec<u32> {
+            let mut v = std::vec::Vec::new();
+            for (x, y) in [(0, 0), (13, 7), (30, 19)] {
+                for d in [0, 2, 5, 63, 1000] {
+                    let (mut a, mut b) = (std::vec![[0u32; 2]; n], std::vec![[0f32; 2]; n]);
+                    let (mut c, mut e) = (std::vec![0u32; n], std::vec![0f32; n]);
+                    s.fill_2d(x, y, d, &mut a).unwrap();
+                    s.fill_2d_f32(x, y, d, &mut b).unwrap();
+                    s.fill_1d(x, y, d, &mut c).unwrap();
+                    s.fill_1d_f32(x, y, d, &mut e).unwrap();
+                    v.extend(a.iter().flatten());
+                    v.extend(b.iter().flatten().map(|f| f.to_bits()));
+                    v.extend(c);
+                    v.extend(e.iter().map(|f| f.to_bits()));
+                }
+            }
+            v
+        }
+        let tables = Pmj02BnTables::new(16, 3).unwrap();
+        let pmj = tables.sampler(31, 20, 3).unwrap();
+        for lv in crate::dispatch::levels() {
+            for r in [R::None, R::PermuteDigits, R::FastOwen, R::Owen] {
+                for spp in [16, 128] {
+                    let z = ZSobol::new(31, 20, spp, r, 7).unwrap();
+                    let p = PaddedSobol::new(31, 20, spp, r, 7).unwrap();
+                    let i = ImageSobol::new(31, 20, spp, r, 7).unwrap();
+                    let n = spp as usize;
+                    let want = at_level(Level::Portable, || [all(&z, n), all(&p, n), all(&i, n)]);
+                    let got = at_level(lv, || [all(&z, n), all(&p, n), all(&i, n)]);
+                    assert!(want == got, "{lv:?} {r:?} spp {spp}");
+                }
+            }
+            let want = at_level(Level::Portable, || all(&pmj, 16));
+            assert!(want == at_level(lv, || all(&pmj, 16)), "{lv:?} pmj02bn");
+        }
+    }
+
+    /// The 16-bit round is the 32-bit one for every power-of-two width up to `2^16`, over
+    /// hashed keys and every index of the small widths.
+    #[test]
+    fn round16_is_the_round() {
+        for b in 0..=16 {
+            let w = (1u32 << b) - 1;
+            for k in 0..64u64 {
+                let p = crate::hash::mix64(k) as u32;
+                for i in (0..=w).step_by((w as usize >> 8) + 1) {
+                    let want = permutation_round(i, w, p);
+                    assert_eq!(permutation_round16(i as u16, w as u16, p) as u32, want);
+                }
+            }
         }
     }
 }

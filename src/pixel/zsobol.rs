@@ -2,7 +2,7 @@
 //! "Screen-space blue-noise diffusion of Monte Carlo sampling error via hierarchical ordering
 //! of pixels"), bit-identical to pbrt-v4's `ZSobolSampler`.
 
-use super::prepared::{CHUNK, randomize_pairs, randomize_values, sobol1_reversed};
+use super::prepared::{CHUNK, dispatched, randomize_pairs, randomize_values, sobol1_reversed};
 use super::{
     PixelGrid, PixelPoint, PixelSampler, Randomization, pbrt_f32, seed_hash2, sobol0, sobol1,
 };
@@ -294,6 +294,7 @@ impl ZSobol {
     /// `4^(i+1)` samples (shift `2 i - odd`) is permuted by the same hashed permutation,
     /// so each block costs one [`mix_bits`] and each of its four digit values one masked
     /// OR over a run of samples: no data-dependent branch.
+    #[inline(always)]
     fn low_indices(&self, base: u64, salt: u64, start: u32, out: &mut [u32]) {
         out.iter_mut().for_each(|o| *o = 0);
         let odd = self.log2_spp & 1;
@@ -329,7 +330,7 @@ impl ZSobol {
 
     /// The prepared fills' per-pixel part: the Morton base, the salt and the permuted
     /// pixel digits as reversed-domain constants of Sobol' dimensions 0 and 1.
-    #[inline]
+    #[inline(always)]
     fn pixel_constants(&self, x: u32, y: u32, dim: usize) -> (u64, u64, [u32; 2]) {
         let base = self.morton(x, y, 0);
         let salt = Self::salt(dim);
@@ -340,7 +341,7 @@ impl ZSobol {
     }
 
     /// The prepared pair fill, converted by `conv`.
-    #[inline]
+    #[inline(always)]
     fn fill_pairs<T>(
         &self,
         x: u32,
@@ -370,7 +371,7 @@ impl ZSobol {
     }
 
     /// The prepared 1D fill, converted by `conv`.
-    #[inline]
+    #[inline(always)]
     fn fill_values<T>(
         &self,
         x: u32,
@@ -399,19 +400,31 @@ impl PixelSampler for ZSobol {
     }
 
     fn fill_2d(&self, x: u32, y: u32, dim: usize, out: &mut [[u32; 2]]) -> Result<()> {
-        self.fill_pairs(x, y, dim, out, |v| v)
+        dispatched(
+            #[inline(always)]
+            || self.fill_pairs(x, y, dim, out, |v| v),
+        )
     }
 
     fn fill_2d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [[f32; 2]]) -> Result<()> {
-        self.fill_pairs(x, y, dim, out, pbrt_f32)
+        dispatched(
+            #[inline(always)]
+            || self.fill_pairs(x, y, dim, out, pbrt_f32),
+        )
     }
 
     fn fill_1d(&self, x: u32, y: u32, dim: usize, out: &mut [u32]) -> Result<()> {
-        self.fill_values(x, y, dim, out, |v| v)
+        dispatched(
+            #[inline(always)]
+            || self.fill_values(x, y, dim, out, |v| v),
+        )
     }
 
     fn fill_1d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [f32]) -> Result<()> {
-        self.fill_values(x, y, dim, out, pbrt_f32)
+        dispatched(
+            #[inline(always)]
+            || self.fill_values(x, y, dim, out, pbrt_f32),
+        )
     }
 
     /// The Morton index `(EncodeMorton2(x, y) << log2 spp) | index`.

@@ -4,6 +4,10 @@
 
 mod common;
 
+#[cfg(feature = "analysis")]
+mod aa;
+#[cfg(feature = "analysis")]
+mod art;
 mod blue_noise;
 #[cfg(feature = "analysis")]
 mod bnot;

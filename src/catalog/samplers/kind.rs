@@ -60,6 +60,12 @@ pub enum SamplerKind {
     Ldbn,
     /// Penrose-tiling sampling (ranked subdivision), built whole.
     Penrose,
+    /// AA patterns: one point a grid cell, displaced by a table indexed by an additive
+    /// automaton's label, built whole.
+    AaPatterns,
+    /// Adaptive regular tiles: one point a tile of a `4 x 4` subdivision, ranked, built
+    /// whole.
+    Art,
     /// Step blue noise (spectrum-controlled), built whole.
     StepBlueNoise,
     /// Single-peak blue noise (spectrum-controlled), built whole.
@@ -85,7 +91,7 @@ pub enum Family {
     /// latin, pmj02, pmj02bn, cmj, cascaded-sobol).
     Random,
     /// Blue-noise sets built whole (poisson, best-candidate, gaussian-blue-noise, lloyd,
-    /// ccvt, sot, projective-blue-noise, forced-random, bnot, ldbn, penrose,
+    /// ccvt, sot, projective-blue-noise, forced-random, bnot, ldbn, penrose, aa-patterns, art,
     /// step-blue-noise, single-peak-blue-noise, kde-blue-noise).
     BlueNoise,
 }
@@ -103,7 +109,7 @@ impl Family {
             }
             Family::BlueNoise => {
                 "blue-noise sets (poisson, best-candidate, gaussian-blue-noise, lloyd, ccvt, sot, \
-                 projective-blue-noise, forced-random, bnot, ldbn, penrose, \
+                 projective-blue-noise, forced-random, bnot, ldbn, penrose, aa-patterns, art, \
                  step-blue-noise, single-peak-blue-noise, kde-blue-noise)"
             }
         }
@@ -156,6 +162,8 @@ impl SamplerKind {
             | SamplerKind::ForcedRandom
             | SamplerKind::Ldbn
             | SamplerKind::Penrose
+            | SamplerKind::AaPatterns
+            | SamplerKind::Art
             | SamplerKind::StepBlueNoise
             | SamplerKind::SinglePeakBlueNoise
             | SamplerKind::KdeBlueNoise => Family::BlueNoise,
@@ -185,6 +193,8 @@ impl SamplerKind {
             | SamplerKind::ForcedRandom
             | SamplerKind::Ldbn
             | SamplerKind::Penrose
+            | SamplerKind::AaPatterns
+            | SamplerKind::Art
             | SamplerKind::StepBlueNoise
             | SamplerKind::SinglePeakBlueNoise
             | SamplerKind::KdeBlueNoise => Size::Whole,
@@ -201,7 +211,8 @@ impl SamplerKind {
     }
 
     /// The only dimension count the construction has, if it has one (vdc 1; lp, pmj02,
-    /// pmj02bn, best-candidate, gaussian-blue-noise, forced-random, bnot, hex, ldbn and penrose 2).
+    /// pmj02bn, best-candidate, gaussian-blue-noise, forced-random, bnot, hex, ldbn, penrose,
+    /// aa-patterns and art 2).
     pub const fn fixed_dims(self) -> Option<usize> {
         match self {
             SamplerKind::Vdc => Some(1),
@@ -214,7 +225,9 @@ impl SamplerKind {
             | SamplerKind::Bnot
             | SamplerKind::Hex
             | SamplerKind::Ldbn
-            | SamplerKind::Penrose => Some(2),
+            | SamplerKind::Penrose
+            | SamplerKind::AaPatterns
+            | SamplerKind::Art => Some(2),
             _ => None,
         }
     }

@@ -608,6 +608,56 @@ pub static SAMPLERS: &[SamplerEntry] = &[
         item: "qmckit::blue_noise::Penrose",
     },
     Entry {
+        kind: SamplerKind::AaPatterns,
+        name: "aa-patterns",
+        aliases: &[alias("aa", "Ahmed, Huang & Deussen 2015's AA patterns")],
+        summary: "AA patterns, 2D: one point in each cell of a K x K grid (N = K^2), displaced \
+                  inside it by a table indexed by the cell's label under a discrete irrational \
+                  rotation of the lattice (an additive automaton), built whole",
+        math: "l(x, y) = s + x R e_1 + y R e_2 mod 1, cos theta = 1/phi; p = ((x + 1/2, y + 1/2) + AA_TABLE[bin(l)]) / K (after Ahmed, Huang & Deussen 2015)",
+        params: &[
+            DIMS_2,
+            param(
+                "points",
+                "the size N = K^2 of the set",
+                "none: needed",
+                "a perfect square, 1 to 2^24",
+            ),
+            param("seed", "the automaton's start label s", "0", "any u64"),
+            param(
+                "budget",
+                "time budget of the construction",
+                "10 s",
+                "positive seconds",
+            ),
+        ],
+        item: "qmckit::blue_noise::AaPattern",
+    },
+    Entry {
+        kind: SamplerKind::Art,
+        name: "art",
+        aliases: &[alias(
+            "adaptive-regular-tiles",
+            "Ahmed, Niese, Huang & Deussen 2017's ART",
+        )],
+        summary: "adaptive regular tiles, 2D: one sample a tile of a recursive 4 x 4 \
+                  subdivision, offsets from a table indexed by the tile's word (child numbers \
+                  and a Thue-Morse bit), the N of lowest rank (progressive), built whole",
+        math: "sample = corner + 4^-j ART_TABLE[c + 16 c_parent + 256 t] unless inherited; rank = sum_j Bayer digit_j 16^(j-1); keep rank < N (after Ahmed, Niese, Huang & Deussen 2017)",
+        params: &[
+            DIMS_2,
+            param("points", "the set size N", "none: needed", "1 to 2^24"),
+            param("seed", "toroidal shift of the set", "0", "any u64"),
+            param(
+                "budget",
+                "time budget of the construction",
+                "10 s",
+                "positive seconds",
+            ),
+        ],
+        item: "qmckit::blue_noise::Art",
+    },
+    Entry {
         kind: SamplerKind::StepBlueNoise,
         name: "step-blue-noise",
         aliases: &[alias(

@@ -8,8 +8,8 @@
 //! patterns are compared one by one; the test counts them, so a short line cannot pass.
 
 use qmckit::pixel::{
-    HaltonSampler, IMAGE_SOBOL_DIMS, ImageSobol, PBRT_SOBOL_DIMS, PaddedSobol, PixelSampler,
-    Randomization, StratifiedSampler, ZSobol,
+    HALTON_PIXEL_DIMS, HaltonSampler, IMAGE_SOBOL_DIMS, ImageSobol, PBRT_SOBOL_DIMS, PaddedSobol,
+    PixelSampler, PreparedHalton, Randomization, StratifiedSampler, ZSobol,
 };
 
 fn randomization(name: &str) -> Randomization {
@@ -22,8 +22,9 @@ fn randomization(name: &str) -> Randomization {
     }
 }
 
-/// The sampler a `config` line describes: `config ID SAMPLER RANDOMIZATION W H SPP SEED [XS YS]`.
-fn build(words: &[&str]) -> Box<dyn PixelSampler> {
+/// The samplers a `config` line describes: `config ID SAMPLER RANDOMIZATION W H SPP SEED [XS
+/// YS]` (Halton's with and without its tables).
+fn build(words: &[&str]) -> Vec<Box<dyn PixelSampler>> {
     let num = |k: usize| -> u32 {
         words[k]
             .parse()
@@ -31,18 +32,22 @@ fn build(words: &[&str]) -> Box<dyn PixelSampler> {
     };
     let (w, h, spp, seed) = (num(4), num(5), num(6), u64::from(num(7)));
     let r = words[3];
-    match words[2] {
+    if words[2] == "halton" {
+        let s = HaltonSampler::new(w, h, spp, randomization(r), seed).unwrap();
+        let p = PreparedHalton::new(s, HALTON_PIXEL_DIMS).unwrap();
+        return vec![Box::new(s), Box::new(p)];
+    }
+    vec![match words[2] {
         "zsobol" => Box::new(ZSobol::new(w, h, spp, randomization(r), seed).unwrap()),
         "padded-sobol" => Box::new(PaddedSobol::new(w, h, spp, randomization(r), seed).unwrap()),
         "image-sobol" => Box::new(ImageSobol::new(w, h, spp, randomization(r), seed).unwrap()),
-        "halton" => Box::new(HaltonSampler::new(w, h, spp, randomization(r), seed).unwrap()),
         "stratified" => {
             let (xs, ys) = (num(8), num(9));
             assert_eq!(xs * ys, spp);
             Box::new(StratifiedSampler::new(w, h, xs, ys, r == "jitter", seed).unwrap())
         }
         s => panic!("unknown sampler {s}"),
-    }
+    }]
 }
 
 /// One sample's draws in the driver's order, as f32 bit patterns.
@@ -111,31 +116,32 @@ fn every_draw_equals_compiled_pbrt() {
             names.insert(words[1].to_string(), words[2..].join(" "));
             continue;
         }
-        let s = &configs[words[0]];
         let n = |k: usize| -> u32 { words[k].parse().unwrap() };
         let (x, y, i) = (n(1), n(2), n(3));
         let want: Vec<u32> = words[4..]
             .iter()
             .map(|w| u32::from_str_radix(w, 16).unwrap())
             .collect();
-        let got = draws(s.as_ref(), x, y, i, &starts, a, b);
-        assert_eq!(got.len(), want.len(), "{line}: draw count");
-        // Without the `sobol-dims-1024` feature ImageSobol wraps at its shorter table: the
-        // random access past it is not pbrt's (the streams stay below dimension 16).
-        let short =
-            names[words[0]].starts_with("image-sobol") && IMAGE_SOBOL_DIMS < PBRT_SOBOL_DIMS;
-        for (k, (g, w)) in got.iter().zip(&want).enumerate() {
-            if short && k < 3 * starts.len() && starts[k / 3] + 2 > IMAGE_SOBOL_DIMS {
-                continue;
-            }
-            checked += 1;
-            if g != w {
-                mismatches.push(format!(
-                    "{} ({x}, {y}) i={i} draw {k}: ours {g:08x} ({}), pbrt {w:08x} ({})",
-                    names[words[0]],
-                    f32::from_bits(*g),
-                    f32::from_bits(*w)
-                ));
+        for s in &configs[words[0]] {
+            let got = draws(s.as_ref(), x, y, i, &starts, a, b);
+            assert_eq!(got.len(), want.len(), "{line}: draw count");
+            // Without the `sobol-dims-1024` feature ImageSobol wraps at its shorter table: the
+            // random access past it is not pbrt's (the streams stay below dimension 16).
+            let short =
+                names[words[0]].starts_with("image-sobol") && IMAGE_SOBOL_DIMS < PBRT_SOBOL_DIMS;
+            for (k, (g, w)) in got.iter().zip(&want).enumerate() {
+                if short && k < 3 * starts.len() && starts[k / 3] + 2 > IMAGE_SOBOL_DIMS {
+                    continue;
+                }
+                checked += 1;
+                if g != w {
+                    mismatches.push(format!(
+                        "{} ({x}, {y}) i={i} draw {k}: ours {g:08x} ({}), pbrt {w:08x} ({})",
+                        names[words[0]],
+                        f32::from_bits(*g),
+                        f32::from_bits(*w)
+                    ));
+                }
             }
         }
         let c = covered.entry(names[words[0]].clone()).or_default();

@@ -1,0 +1,103 @@
+//! Writes `tables/aa_displacements.rs`, the displacement table of
+//! `qmckit::blue_noise::AaPattern`: descent of the mismatch between the pair correlation of
+//! a `192 x 192` patch of the pattern (cell units, unit density; around the cells at least
+//! 3 from the border) and that of step blue noise with cutoff `U0` (Heck, Schlömer &
+//! Deussen 2013), each step on a patch from a fresh start label. A bin's displacement moves
+//! by the mean gradient of the cells that read it (the moves scaled to a root-mean-square of
+//! 0.01 cell, shrinking to 0.001), and stays within `[-0.45, 0.45]` (the point in its cell).
+//! The start is uniform in `[-INIT/2, INIT/2]`.
+//!
+//! `cargo run --release --features analysis --example aa_optimize [U0] [STEPS] [INIT] > tables/aa_displacements.rs`
+//! (defaults 0.5, 400, 0.9).
+
+#[path = "common/gauss.rs"]
+mod gauss;
+
+use qmckit::blue_noise::aa::{AA_BINS, bin, label};
+
+const PATCH: u32 = 192;
+
+fn main() {
+    let args: Vec<String> = std::env::args().collect();
+    let u0: f64 = args.get(1).map_or(0.5, |s| s.parse().expect("U0"));
+    let steps: usize = args.get(2).map_or(400, |s| s.parse().expect("STEPS"));
+    let init: f64 = args.get(3).map_or(0.9, |s| s.parse().expect("INIT"));
+    let bins = AA_BINS * AA_BINS;
+    let mut state = 0x2545_f491_4f6c_dd1du64;
+    let mut next = move || {
+        state = state.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = state;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        z ^ (z >> 31)
+    };
+    let mut table: Vec<[f64; 2]> = (0..bins)
+        .map(|_| {
+            let mut u = || ((next() >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * init;
+            [u(), u()]
+        })
+        .collect();
+    let n = (PATCH * PATCH) as usize;
+    let mut ids = vec![0usize; n];
+    let mut p = vec![[0.0; 2]; n];
+    let mut grad = vec![[0.0; 2]; n];
+    for step in 0..steps {
+        let s = [next() as u32, (next() >> 32) as u32];
+        for y in 0..PATCH {
+            for x in 0..PATCH {
+                let i = (x + PATCH * y) as usize;
+                ids[i] = bin(label(s, x, y));
+                let d = table[ids[i]];
+                p[i] = [f64::from(x) + 0.5 + d[0], f64::from(y) + 0.5 + d[1]];
+            }
+        }
+        grad.iter_mut().for_each(|g| *g = [0.0; 2]);
+        let centres: Vec<bool> = (0..n)
+            .map(|i| {
+                let (x, y) = (i as u32 % PATCH, i as u32 / PATCH);
+                x >= 3 && y >= 3 && x < PATCH - 3 && y < PATCH - 3
+            })
+            .collect();
+        let e = gauss::pcf_mismatch(&p, &centres, None, &|r| gauss::step_pcf(r, u0), &mut grad);
+        let mut g = vec![[0.0; 2]; bins];
+        let mut count = vec![0u32; bins];
+        for (i, &b) in ids.iter().enumerate() {
+            // Interior cells only: the patch border has fewer neighbours.
+            let (x, y) = (i as u32 % PATCH, i as u32 / PATCH);
+            if x < 4 || y < 4 || x >= PATCH - 4 || y >= PATCH - 4 {
+                continue;
+            }
+            g[b][0] += grad[i][0];
+            g[b][1] += grad[i][1];
+            count[b] += 1;
+        }
+        // Every entry moves by its mean gradient, scaled so that the root-mean-square move
+        // is `MOVE` cells (shrinking over the run).
+        let mean: Vec<[f64; 2]> = (0..bins)
+            .map(|b| g[b].map(|v| v / f64::from(count[b].max(1))))
+            .collect();
+        let rms = (mean.iter().flatten().map(|v| v * v).sum::<f64>() / bins as f64).sqrt();
+        let rate = 0.01 * (1.0 - step as f64 / steps as f64 * 0.9) / rms.max(1e-300);
+        for b in 0..bins {
+            if count[b] > 0 {
+                for k in 0..2 {
+                    let v = table[b][k] - rate * mean[b][k];
+                    table[b][k] = v.clamp(-0.45, 0.45);
+                }
+            }
+        }
+        if step % 50 == 0 || step + 1 == steps {
+            eprintln!("step {step}: PCF mismatch {e:.5}");
+        }
+    }
+    println!(
+        "// The displacement table of AA patterns (qmckit::blue_noise::aa), by bin\n\
+         // u + {AA_BINS} v of the label torus, in cell units. Written by\n\
+         // `cargo run --release --features analysis --example aa_optimize {u0} {steps} {init}`."
+    );
+    println!("[");
+    for d in &table {
+        println!("    [{:.6}, {:.6}],", d[0], d[1]);
+    }
+    println!("]");
+}

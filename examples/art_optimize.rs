@@ -1,0 +1,91 @@
+//! Writes `tables/art_offsets.rs`, the offset table of `qmckit::blue_noise::Art`: descent
+//! of the sum, over the prefix sizes `N = 64, 128, ..., 4096`, of the mismatch between the
+//! pair correlation of the `N`-point set on the torus (in units of its mean spacing) and
+//! that of step blue noise with cutoff `U0` (Heck, Schlömer & Deussen 2013). A sample's
+//! gradient goes to the table entry of the tile that placed it (times that tile's side); an
+//! entry moves by the mean of its gradients (scaled to a root-mean-square move of 0.01
+//! tile, shrinking to 0.001) and stays in `[0.02, 0.98]`.
+//!
+//! `cargo run --release --features analysis --example art_optimize [U0] [STEPS] > tables/art_offsets.rs`
+//! (defaults 0.5 and 600).
+
+#[path = "common/gauss.rs"]
+mod gauss;
+
+use qmckit::blue_noise::art::{ART_IDS, ArtTable, tiles};
+use qmckit::work::Budget;
+
+fn main() {
+    let args: Vec<String> = std::env::args().collect();
+    let u0: f64 = args.get(1).map_or(0.5, |s| s.parse().expect("U0"));
+    let steps: usize = args.get(2).map_or(600, |s| s.parse().expect("STEPS"));
+    let mut state = 0x853c_49e6_748f_ea9bu64;
+    let mut next = move || {
+        state = state.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = state;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        (z ^ (z >> 31)) as f64 / 18_446_744_073_709_551_616.0
+    };
+    let mut table: Vec<[f64; 2]> = (0..ART_IDS)
+        .map(|_| [0.2 + 0.6 * next(), 0.2 + 0.6 * next()])
+        .collect();
+    let sizes: Vec<u64> = (6..=12).map(|b| 1u64 << b).collect();
+    for step in 0..steps {
+        let t = ArtTable::new(table.clone().try_into().expect("512 entries")).expect("table");
+        let mut pacer = Budget::DEFAULT.started().pacer("art optimize");
+        let all = tiles(3, 4096.0, &t, &mut pacer).expect("tiles");
+        let mut sorted = all.clone();
+        sorted.sort_unstable_by_key(|t| t.rank);
+        let mut g = vec![[0.0; 2]; ART_IDS];
+        let mut count = vec![0u32; ART_IDS];
+        let mut total = 0.0;
+        for &n in &sizes {
+            let scale = (n as f64).sqrt();
+            let set = &sorted[..n as usize];
+            let p: Vec<[f64; 2]> = set.iter().map(|t| t.point.map(|v| v * scale)).collect();
+            let mut grad = vec![[0.0; 2]; p.len()];
+            let centres = vec![true; p.len()];
+            let target = |r: f64| gauss::step_pcf(r, u0);
+            total += gauss::pcf_mismatch(&p, &centres, Some(scale), &target, &mut grad);
+            for (t, gr) in set.iter().zip(&grad) {
+                let (id, level) = (usize::from(t.source.0), t.source.1);
+                if level == 0 {
+                    continue;
+                }
+                let side = 0.25f64.powi(level as i32) * scale;
+                g[id][0] += gr[0] * side;
+                g[id][1] += gr[1] * side;
+                count[id] += 1;
+            }
+        }
+        // Every entry moves by its mean gradient, scaled so that the root-mean-square move
+        // is 0.01 tile (shrinking over the run).
+        let mean: Vec<[f64; 2]> = (0..ART_IDS)
+            .map(|b| g[b].map(|v| v / f64::from(count[b].max(1))))
+            .collect();
+        let rms = (mean.iter().flatten().map(|v| v * v).sum::<f64>() / ART_IDS as f64).sqrt();
+        let rate = 0.01 * (1.0 - step as f64 / steps as f64 * 0.9) / rms.max(1e-300);
+        for id in 0..ART_IDS {
+            if count[id] > 0 {
+                for k in 0..2 {
+                    let v = table[id][k] - rate * mean[id][k];
+                    table[id][k] = v.clamp(0.02, 0.98);
+                }
+            }
+        }
+        if step % 50 == 0 || step + 1 == steps {
+            eprintln!("step {step}: PCF mismatch summed over sizes {total:.5}");
+        }
+    }
+    println!(
+        "// The offset table of ART (qmckit::blue_noise::art), by word c + 16 c_parent + 256 t,\n\
+         // in tile units. Written by\n\
+         // `cargo run --release --features analysis --example art_optimize {u0} {steps}`."
+    );
+    println!("[");
+    for o in &table {
+        println!("    [{:.6}, {:.6}],", o[0], o[1]);
+    }
+    println!("]");
+}
