@@ -318,7 +318,7 @@ pub trait PixelSampler {
     /// ```
     ///
     /// # Errors
-    /// As [`PixelGrid::check`] for the pixel; [`Error::BufferLength`] when `out` holds
+    /// As [`PixelGrid::check`] for the pixel; [`Error::BufferLength`](crate::Error::BufferLength) when `out` holds
     /// more than `spp` samples.
     fn fill_2d(&self, x: u32, y: u32, dim: usize, out: &mut [[u32; 2]]) -> Result<()> {
         self.grid().check_fill(x, y, out.len())?;
