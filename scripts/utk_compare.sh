@@ -122,9 +122,18 @@ for p in "${PAIRS[@]}"; do
 done
 
 now() { date +%s%N; }
-# qmckit_sets ARGS N SETS FILE: SETS sets, seeds 1..SETS, '#' between them.
+# qmckit_sets ARGS N SETS FILE: SETS sets, seeds 1..SETS, '#' between them. A randomized
+# sampler (ARGS with {s}) writes them all from one process (--seed 1 --sets SETS), as UTK
+# does with -m; a deterministic one (which refuses --sets: every set would be the same) one
+# process a set.
 qmckit_sets() {
-    local args=$1 n=$2 sets=$3 file=$4 s
+    local args=$1 n=$2 sets=$3 file=$4 s a
+    if [[ $args == *"{s}"* ]]; then
+        a=${args//\{s\}/1}
+        # shellcheck disable=SC2086
+        "$Q" points ${a//\{n\}/$n} -n "$n" --sets "$sets" >"$file"
+        return 0
+    fi
     : >"$file"
     for s in $(seq 1 "$sets"); do
         [ "$s" -gt 1 ] && echo '#' >>"$file"

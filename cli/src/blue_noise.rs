@@ -1,8 +1,6 @@
 //! `qmckit points poisson|best-candidate|gaussian-blue-noise|pmj02bn`: the point sets
 //! built whole (they are not sequences), budgeted by `--max-seconds`.
 
-use std::io::BufWriter;
-
 use clap::Args;
 use qmckit::blue_noise::{BestCandidate, GaussianBlueNoise, PointSet, PoissonDisk};
 use qmckit::work::{Budget, DEFAULT_SECONDS};
@@ -72,14 +70,18 @@ impl BlueNoiseArgs {
         .map(|(name, _)| name)
     }
 
-    /// The time budget `--max-seconds` sets.
-    pub fn budget(&self) -> Result<Budget, Failure> {
+    /// The budget of one of `sets` sets (at least 1): `--max-seconds` divided among them,
+    /// not started (each set starts its own, so the command stays within `GRACE` times
+    /// `--max-seconds`).
+    pub fn budget_per_set(&self, sets: u64) -> Result<Budget, Failure> {
         let s = self.max_seconds.unwrap_or(DEFAULT_SECONDS);
-        Budget::seconds(s).map(Budget::started).map_err(|_| {
+        let refused = || {
             Failure::usage(format!(
                 "--max-seconds must be a positive number of seconds, not {s}"
             ))
-        })
+        };
+        Budget::seconds(s).map_err(|_| refused())?;
+        Budget::seconds(s / sets.max(1) as f64).map_err(|_| refused())
     }
 }
 
@@ -170,10 +172,9 @@ pub fn build(
 }
 
 /// Writes the set in `format`.
-pub fn write(set: &PointSet, format: Format) -> Result<(), Failure> {
+pub fn write(set: &PointSet, format: Format, out: impl std::io::Write) -> Result<(), Failure> {
     use qmckit::Sampler;
-    let stdout = std::io::stdout().lock();
-    let mut writer = PointWriter::new(BufWriter::new(stdout), format, set.len(), set.dims())?;
+    let mut writer = PointWriter::new(out, format, set.len(), set.dims())?;
     writer.write(set.coords(), set.dims())?;
     writer.finish()
 }

@@ -18,6 +18,7 @@ mod mask;
 mod pcf;
 mod pixel;
 mod plot;
+mod points_sets;
 mod report;
 mod scene;
 mod spectrum;
