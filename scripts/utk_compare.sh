@@ -86,6 +86,8 @@ PAIRS=(
 "PMJ02|pmj02 --seed {s}|PMJ|--method PMJ02|mid"
 "LDBN (LUT)|ldbn --seed {s} --max-seconds inf|LutLDBN||mid"
 "Penrose|penrose --seed {s} --max-seconds inf|Penrose||mid"
+"AA patterns|aa-patterns --seed {s} --max-seconds inf|AAPatterns||mid"
+"ART|art --seed {s} --max-seconds inf|ART||mid"
 "forced random|forced-random --seed {s} --max-seconds inf|ForcedRandom|{single}|slow"
 "Poisson disk (Bridson, torus)|poisson --torus --seed {s}|Bridson|-d 2|mid"
 "Poisson disk (dart throwing)|poisson --torus --seed {s}|DartThrowing|-d 2|mid"
