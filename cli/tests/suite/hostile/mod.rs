@@ -12,4 +12,5 @@
 #![cfg(target_os = "linux")]
 
 mod cases;
+mod checks;
 mod runner;
