@@ -85,7 +85,7 @@ pub(crate) const fn sobol1_reversed(i: u32) -> u32 {
 /// Eight lanes a 128-bit multiply (`pmullw`) where the 32-bit round needs emulated 32-bit
 /// products on the baseline x86-64. O(1).
 #[inline(always)]
-const fn permutation_round16(i: u16, w: u16, p: u32) -> u16 {
+pub(crate) const fn permutation_round16(i: u16, w: u16, p: u32) -> u16 {
     let mut i = i ^ p as u16;
     i = i.wrapping_mul(0x893d);
     i ^= (p >> 16) as u16;
@@ -114,9 +114,10 @@ const fn permutation_round16(i: u16, w: u16, p: u32) -> u16 {
 #[inline]
 pub(crate) fn permutation_fill(start: u32, l: u32, p: u32, out: &mut [u32]) {
     if l.is_power_of_two() && l <= 1 << 16 {
-        let w = (l - 1) as u16;
+        let (w, s) = ((l - 1) as u16, start as u16);
+        // 16-bit indices (`start + k < l <= 2^16`): lanes of 16 bits throughout.
         for (k, o) in out.iter_mut().enumerate() {
-            let i = start.wrapping_add(k as u32) as u16;
+            let i = s.wrapping_add(k as u16);
             *o = (permutation_round16(i, w, p).wrapping_add(p as u16) & w) as u32;
         }
     } else if l.is_power_of_two() {
@@ -137,9 +138,9 @@ pub(crate) fn permutation_fill(start: u32, l: u32, p: u32, out: &mut [u32]) {
 #[inline(always)]
 pub(crate) fn permutation_fill16(start: u32, l: u32, p: u32, out: &mut [u16]) {
     if l.is_power_of_two() && l <= 1 << 16 {
-        let w = (l - 1) as u16;
+        let (w, s) = ((l - 1) as u16, start as u16);
         for (k, o) in out.iter_mut().enumerate() {
-            let i = start.wrapping_add(k as u32) as u16;
+            let i = s.wrapping_add(k as u16);
             *o = permutation_round16(i, w, p).wrapping_add(p as u16) & w;
         }
     } else {
