@@ -150,6 +150,13 @@ pub(crate) fn permutation_fill16(start: u32, l: u32, p: u32, out: &mut [u16]) {
     }
 }
 
+/// `a[k]` for `k < CHUNK` (a pass's index): the modulus drops the bound check, which
+/// would otherwise leave a scalar tail of up to a vector's width in the fills' loops.
+#[inline(always)]
+pub(crate) fn at(a: &[u32; CHUNK], k: usize) -> u32 {
+    a[k % CHUNK]
+}
+
 /// `out[k] = f(k)`: the fills' loop, kept small so that it vectorizes.
 #[inline(always)]
 fn each<T>(out: &mut [T], f: impl Fn(usize) -> T) {
