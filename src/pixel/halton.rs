@@ -1,9 +1,10 @@
 //! pbrt-v4's `HaltonSampler`: one Halton sequence over the image plane, the pixel's samples
 //! found through the first two radical inverses (Pharr, Jakob & Humphreys 2023, §8.6).
 
+use super::prepared::permutation_round16;
 use super::{F32_ONE_MINUS_EPSILON, PixelGrid, PixelPoint, PixelSampler, Randomization};
 use crate::error::{Error, Result};
-use crate::hash::pbrt::{mix_bits, murmur_hash64a, permutation_element};
+use crate::hash::pbrt::{hash3, mix_bits, murmur_words, permutation_element};
 use crate::radical_inverse::halton::PRIMES;
 
 /// The dimensions the Halton pixel sampler has (pbrt's `PrimeTableSize`): a request that
@@ -190,6 +191,41 @@ pub(super) const fn reciprocal(b: u64) -> u128 {
     (u64::MAX / b) as u128 + 1
 }
 
+/// The per-dimension constants of a prepared `PermuteDigits` value: pbrt's digit count
+/// (`ScrambledRadicalInverse`'s loop, [`permute_digit_count`]), its `f32` scale
+/// `fl(b^-n)` (the product of `n` factors `fl(1 / b)`), `b^n` and the reciprocal of `b`.
+struct Plan {
+    base: u64,
+    reciprocal: u128,
+    digits: u32,
+    inv_m: f32,
+    power: u128,
+}
+
+impl Plan {
+    /// The plan of base `base >= 2`, or `None` when the reversed digits could reach the
+    /// overflow guard of [`digits_by`] (never for the primes of the sampler's dimensions).
+    fn new(base: u64) -> Option<Plan> {
+        let inv_base = 1.0f32 / base as f32;
+        let (mut inv_m, mut power, mut digits) = (1.0f32, 1u128, 0u32);
+        while 1.0 - (base - 1) as f32 * inv_m < 1.0 && digits < 64 {
+            inv_m *= inv_base;
+            power *= base as u128;
+            digits += 1;
+        }
+        // The reversed digits stay below power: digits_by's guard `reversed >= limit`
+        // never fires while power <= limit, so the loops agree digit for digit.
+        let limit = (u64::MAX / base - base) as u128;
+        (power <= limit).then_some(Plan {
+            base,
+            reciprocal: reciprocal(base),
+            digits,
+            inv_m,
+            power,
+        })
+    }
+}
+
 impl HaltonSampler {
     /// The prepared fill: `value(h, d)` for the Halton indices `h` of samples
     /// `0 .. out.len()` of pixel `(x, y)` (`h0 + i 2^j 3^k`, `h0` found once), with
@@ -216,39 +252,71 @@ impl HaltonSampler {
 
     /// `PermuteDigits`' digit permutations of dimension `dim` for the first digits, as a
     /// table (`table[k base + v]` is digit `k`'s image of `v`), or `None` when they do not
-    /// fit [`TABLE_ENTRIES`].
-    fn digit_table(&self, dim: usize) -> Option<[u16; TABLE_ENTRIES]> {
+    /// fit [`TABLE_ENTRIES`]; for the digits of indices up to `h_max` (a row whose digit is
+    /// 0 in all of them holds only its image of 0). Per digit, the mixer round of `PermutationElement` is
+    /// computed once for each of `[0, w]` (`w + 1` the power of two `>= base`, in 16-bit
+    /// lanes: [`permutation_round16`]), then each `v < base` walks that table until it
+    /// lands below `base`, and `(i + p) mod base` is a reciprocal multiplication: the
+    /// elements of `permutation_element(v, base, p)` for every `v`, without its `w + 1`
+    /// divisions.
+    fn digit_table(&self, dim: usize, h_max: u64) -> Option<[u16; TABLE_ENTRIES]> {
         let base = PRIMES[dim] as usize;
         let digits = permute_digit_count(base as u64);
         if base * digits > TABLE_ENTRIES {
             return None;
         }
+        // Digit k of every index up to h_max is 0 once base^k > h_max: those rows need
+        // only their image of 0.
+        let (mut full, mut power) = (0usize, 1u64);
+        while full < digits && power <= h_max {
+            power = power.saturating_mul(base as u64);
+            full += 1;
+        }
+        // base <= TABLE_ENTRIES: w < 2 TABLE_ENTRIES <= 2^16.
+        let w = ((base as u32).next_power_of_two() - 1) as u16;
+        let m = reciprocal(base as u64);
         let mut table = [0u16; TABLE_ENTRIES];
+        let mut round = [0u16; 2 * TABLE_ENTRIES];
         for (k, row) in table.chunks_exact_mut(base).take(digits).enumerate() {
-            let key = digit_hash(base as u32, k as u32, self.seed) as u32;
+            let p = digit_hash(base as u32, k as u32, self.seed) as u32;
+            let round = &mut round[..=w as usize];
+            for (i, r) in (0u16..).zip(round.iter_mut()) {
+                *r = permutation_round16(i, w, p);
+            }
+            let row = if k < full { row } else { &mut row[..1] };
             for (v, t) in row.iter_mut().enumerate() {
-                *t = permutation_element(v as u32, base as u32, key) as u16;
+                // A walk on the cycle through v: at most w + 1 steps.
+                let mut i = round.get(v).copied().unwrap_or(0);
+                for _ in 0..w {
+                    if (i as usize) < base {
+                        break;
+                    }
+                    i = round.get(i as usize).copied().unwrap_or(0);
+                }
+                let a = (i as u32).wrapping_add(p) as u64;
+                let q = ((a as u128 * m) >> 64) as u64;
+                *t = (a - q * base as u64) as u16;
             }
         }
         Some(table)
     }
 
-    /// Dimension `dim` of Halton index `h < 2^32` under `PermuteDigits`, the digit
-    /// permutations read from `table` and the quotients by reciprocal multiplication.
+    /// Dimension `base` of Halton index `h < 2^32` under `PermuteDigits`, the digit
+    /// permutations read from `table`, the quotients by reciprocal multiplication and the
+    /// digit count and scale from `plan` (so a digit costs a multiplication, a table read
+    /// and a multiply-add, with no `f32` work in the loop).
     #[inline]
-    fn permuted_small(&self, h: u64, dim: usize, table: &[u16; TABLE_ENTRIES]) -> (u32, f32) {
-        let base = PRIMES[dim] as u64;
-        let m = reciprocal(base);
-        digits_by(
-            base,
-            h,
-            Stop::Permute,
-            |a| ((a as u128 * m) >> 64) as u64,
-            |k, digit, _| {
-                let at = (k as u64 * base + digit as u64) as usize;
-                table.get(at).copied().unwrap_or(0) as u32
-            },
-        )
+    fn permuted_small(h: u64, plan: &Plan, table: &[u16; TABLE_ENTRIES]) -> (u32, f32) {
+        let (base, m) = (plan.base, plan.reciprocal);
+        let (mut a, mut reversed) = (h, 0u64);
+        for k in 0..plan.digits {
+            let next = ((a as u128 * m) >> 64) as u64;
+            let digit = a - next * base;
+            let at = (k as u64 * base + digit) as usize % TABLE_ENTRIES;
+            reversed = reversed * base + table[at] as u64;
+            a = next;
+        }
+        finish(reversed, plan.power, plan.inv_m)
     }
 
     /// The prepared pair fill: the `(R, float)` pairs of dimensions `d, d + 1` through
@@ -263,18 +331,21 @@ impl HaltonSampler {
         pick: impl Fn((u32, f32)) -> T,
     ) -> Result<()> {
         let d = self.counter_dimension(dim, 2);
-        if let (Randomization::PermuteDigits, Some(t0), Some(t1), true) = (
-            self.randomize,
-            self.digit_table(d),
-            self.digit_table(d + 1),
-            self.small_indices(out.len()),
-        ) {
-            return self.fill_with(x, y, dim, 2, out, |h, d| {
-                [
-                    pick(self.permuted_small(h, d, &t0)),
-                    pick(self.permuted_small(h, d + 1, &t1)),
-                ]
-            });
+        if matches!(self.randomize, Randomization::PermuteDigits) && self.small_indices(out.len()) {
+            let h_max = self.last_index(x, y, out.len());
+            if let (Some(t0), Some(t1), Some(p0), Some(p1)) = (
+                self.digit_table(d, h_max),
+                self.digit_table(d + 1, h_max),
+                Plan::new(PRIMES[d] as u64),
+                Plan::new(PRIMES[d + 1] as u64),
+            ) {
+                return self.fill_with(x, y, dim, 2, out, |h, _| {
+                    [
+                        pick(Self::permuted_small(h, &p0, &t0)),
+                        pick(Self::permuted_small(h, &p1, &t1)),
+                    ]
+                });
+            }
         }
         self.fill_with(x, y, dim, 2, out, |h, d| {
             [pick(self.dimension(h, d)), pick(self.dimension(h, d + 1))]
@@ -292,16 +363,22 @@ impl HaltonSampler {
         pick: impl Fn((u32, f32)) -> T,
     ) -> Result<()> {
         let d = self.counter_dimension(dim, 1);
-        if let (Randomization::PermuteDigits, Some(t), true) = (
-            self.randomize,
-            self.digit_table(d),
-            self.small_indices(out.len()),
-        ) {
-            return self.fill_with(x, y, dim, 1, out, |h, d| {
-                pick(self.permuted_small(h, d, &t))
-            });
+        if matches!(self.randomize, Randomization::PermuteDigits) && self.small_indices(out.len()) {
+            let h_max = self.last_index(x, y, out.len());
+            if let (Some(t), Some(p)) = (self.digit_table(d, h_max), Plan::new(PRIMES[d] as u64)) {
+                return self.fill_with(x, y, dim, 1, out, |h, _| {
+                    pick(Self::permuted_small(h, &p, &t))
+                });
+            }
         }
         self.fill_with(x, y, dim, 1, out, |h, d| pick(self.dimension(h, d)))
+    }
+
+    /// The Halton index of the last of `n >= 1` samples of pixel `(x, y)` (0 for `n = 0`;
+    /// an upper bound of the fill's indices).
+    fn last_index(&self, x: u32, y: u32, n: usize) -> u64 {
+        let h0 = self.pixel_key(x, y, 0);
+        h0.saturating_add((n.saturating_sub(1) as u64).saturating_mul(self.stride()))
     }
 
     /// Whether the Halton indices of `n` samples of any pixel stay below `2^32`.
@@ -331,16 +408,11 @@ pub(super) const fn owen_key(dim: usize) -> u32 {
 
 /// pbrt's `Hash(base, digitIndex, seed)`: MurmurHash64A of the 12 bytes for a 32-bit seed,
 /// of 16 bytes (the seed's 64 bits) above.
-pub(super) fn digit_hash(base: u32, k: u32, seed: u64) -> u64 {
-    let (b, k, s) = (base.to_le_bytes(), k.to_le_bytes(), seed.to_le_bytes());
-    let bytes = [
-        b[0], b[1], b[2], b[3], k[0], k[1], k[2], k[3], s[0], s[1], s[2], s[3], s[4], s[5], s[6],
-        s[7],
-    ];
+pub(super) const fn digit_hash(base: u32, k: u32, seed: u64) -> u64 {
     if seed >> 32 == 0 {
-        murmur_hash64a(&bytes[..12], 0)
+        hash3(base, k, seed as u32)
     } else {
-        murmur_hash64a(&bytes, 0)
+        murmur_words(&[(base as u64) | ((k as u64) << 32), seed], 16)
     }
 }
 
