@@ -202,6 +202,18 @@ struct Plan {
     power: u128,
 }
 
+/// A dimension's prepared `PermuteDigits` digits for the indices up to some `h_max`
+/// ([`HaltonSampler::digit_table`]): the plan, the permutation table, the number `full`
+/// of digits that can be nonzero, and the zero digits' images above them as
+/// `reversed * scale + tail`.
+struct Digits {
+    plan: Plan,
+    table: [u16; TABLE_ENTRIES],
+    full: u32,
+    scale: u64,
+    tail: u64,
+}
+
 impl Plan {
     /// The plan of base `base >= 2`, or `None` when the reversed digits could reach the
     /// overflow guard of [`digits_by`] (never for the primes of the sampler's dimensions).
@@ -259,9 +271,10 @@ impl HaltonSampler {
     /// lands below `base`, and `(i + p) mod base` is a reciprocal multiplication: the
     /// elements of `permutation_element(v, base, p)` for every `v`, without its `w + 1`
     /// divisions.
-    fn digit_table(&self, dim: usize, h_max: u64) -> Option<[u16; TABLE_ENTRIES]> {
+    fn digit_table(&self, dim: usize, h_max: u64) -> Option<Digits> {
         let base = PRIMES[dim] as usize;
-        let digits = permute_digit_count(base as u64);
+        let plan = Plan::new(base as u64)?;
+        let digits = plan.digits as usize;
         if base * digits > TABLE_ENTRIES {
             return None;
         }
@@ -298,25 +311,38 @@ impl HaltonSampler {
                 *t = (a - q * base as u64) as u16;
             }
         }
-        Some(table)
+        // The digits from `full` on are 0 in every index: their images, as one constant
+        // below a scale (exact integers: the reversed value stays below b^n).
+        let (mut tail, mut scale) = (0u64, 1u64);
+        for row in table.chunks_exact(base).take(digits).skip(full) {
+            tail = tail * base as u64 + row[0] as u64;
+            scale *= base as u64;
+        }
+        Some(Digits {
+            plan,
+            table,
+            full: full as u32,
+            scale,
+            tail,
+        })
     }
 
-    /// Dimension `base` of Halton index `h < 2^32` under `PermuteDigits`, the digit
-    /// permutations read from `table`, the quotients by reciprocal multiplication and the
-    /// digit count and scale from `plan` (so a digit costs a multiplication, a table read
-    /// and a multiply-add, with no `f32` work in the loop).
+    /// Dimension `base` of Halton index `h <= h_max < 2^32` under `PermuteDigits` from its
+    /// prepared [`Digits`]: the digits that vary by reciprocal multiplication and a table
+    /// read each, then the constant images of the zero digits above them in one
+    /// multiply-add, and the plan's `f32` scale (no `f32` work in the loop).
     #[inline]
-    fn permuted_small(h: u64, plan: &Plan, table: &[u16; TABLE_ENTRIES]) -> (u32, f32) {
-        let (base, m) = (plan.base, plan.reciprocal);
+    fn permuted_small(h: u64, t: &Digits) -> (u32, f32) {
+        let (base, m) = (t.plan.base, t.plan.reciprocal);
         let (mut a, mut reversed) = (h, 0u64);
-        for k in 0..plan.digits {
+        for k in 0..t.full {
             let next = ((a as u128 * m) >> 64) as u64;
             let digit = a - next * base;
             let at = (k as u64 * base + digit) as usize % TABLE_ENTRIES;
-            reversed = reversed * base + table[at] as u64;
+            reversed = reversed * base + t.table[at] as u64;
             a = next;
         }
-        finish(reversed, plan.power, plan.inv_m)
+        finish(reversed * t.scale + t.tail, t.plan.power, t.plan.inv_m)
     }
 
     /// The prepared pair fill: the `(R, float)` pairs of dimensions `d, d + 1` through
@@ -333,16 +359,13 @@ impl HaltonSampler {
         let d = self.counter_dimension(dim, 2);
         if matches!(self.randomize, Randomization::PermuteDigits) && self.small_indices(out.len()) {
             let h_max = self.last_index(x, y, out.len());
-            if let (Some(t0), Some(t1), Some(p0), Some(p1)) = (
-                self.digit_table(d, h_max),
-                self.digit_table(d + 1, h_max),
-                Plan::new(PRIMES[d] as u64),
-                Plan::new(PRIMES[d + 1] as u64),
-            ) {
+            if let (Some(t0), Some(t1)) =
+                (self.digit_table(d, h_max), self.digit_table(d + 1, h_max))
+            {
                 return self.fill_with(x, y, dim, 2, out, |h, _| {
                     [
-                        pick(Self::permuted_small(h, &p0, &t0)),
-                        pick(Self::permuted_small(h, &p1, &t1)),
+                        pick(Self::permuted_small(h, &t0)),
+                        pick(Self::permuted_small(h, &t1)),
                     ]
                 });
             }
@@ -365,10 +388,8 @@ impl HaltonSampler {
         let d = self.counter_dimension(dim, 1);
         if matches!(self.randomize, Randomization::PermuteDigits) && self.small_indices(out.len()) {
             let h_max = self.last_index(x, y, out.len());
-            if let (Some(t), Some(p)) = (self.digit_table(d, h_max), Plan::new(PRIMES[d] as u64)) {
-                return self.fill_with(x, y, dim, 1, out, |h, _| {
-                    pick(Self::permuted_small(h, &p, &t))
-                });
+            if let Some(t) = self.digit_table(d, h_max) {
+                return self.fill_with(x, y, dim, 1, out, |h, _| pick(Self::permuted_small(h, &t)));
             }
         }
         self.fill_with(x, y, dim, 1, out, |h, d| pick(self.dimension(h, d)))
