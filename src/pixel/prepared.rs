@@ -111,7 +111,7 @@ pub(crate) const fn permutation_round16(i: u16, w: u16, p: u32) -> u16 {
 /// below `l`, so the element is `(round(i) + p) mod l` with the modulus a mask: a loop
 /// without division or branch, in 16-bit lanes up to `l = 2^16`
 /// ([`permutation_round16`]). Other `l` walk the cycle per element. `start + k < l`.
-#[inline]
+#[inline(always)]
 pub(crate) fn permutation_fill(start: u32, l: u32, p: u32, out: &mut [u32]) {
     if l.is_power_of_two() && l <= 1 << 16 {
         let (w, s) = ((l - 1) as u16, start as u16);
@@ -131,6 +131,13 @@ pub(crate) fn permutation_fill(start: u32, l: u32, p: u32, out: &mut [u32]) {
             *o = permutation_element(start.wrapping_add(k as u32), l, p);
         }
     }
+}
+
+/// [`permutation_fill`] as a call of its own, for a fill that is not dispatched (where
+/// inlining the loop costs more than the call).
+#[inline(never)]
+pub(crate) fn permutation_fill_call(start: u32, l: u32, p: u32, out: &mut [u32]) {
+    permutation_fill(start, l, p, out);
 }
 
 /// [`permutation_fill`] into 16-bit elements, for `l <= 2^16` (the elements are below `l`;
