@@ -96,7 +96,6 @@ impl Pmj02Pixels {
             return self.read(h, &seq[..spp], out, &p, value);
         }
         let mut perm = [0u32; CHUNK];
-        let mut perm = [0u32; CHUNK];
         for (c, chunk) in out.chunks_mut(CHUNK).enumerate() {
             let perm = &mut perm[..chunk.len()];
             permutation_fill((c * CHUNK) as u32, self.grid.spp, h as u32, perm);

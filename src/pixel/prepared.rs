@@ -287,7 +287,7 @@ mod tests {
     use super::*;
 
     /// Every build of the prepared fills gives the portable build's bits: each Sobol'
-    /// sampler under each randomization, PMJ02BN and the blue-noise table samplers,
+    /// sampler under each randomization, PMJ02BN, PMJ02 and the blue-noise table samplers,
     /// pairs and values, `u32` and `f32`, with more samples than a pass and dimensions
     /// past the tables.
     #[cfg(feature = "std")]
@@ -295,7 +295,7 @@ mod tests {
     fn every_build_fills_the_same() {
         use super::super::{
             BlueNoiseLattice, BlueNoiseSobol, ImageSobol, PaddedSobol, PixelSampler, Pmj02BnTables,
-            Randomization as R, ZSobol,
+            Pmj02Pixels, Randomization as R, ZSobol,
         };
         fn all<S: PixelSampler>(s: &S, n: usize) -> std::vec::Vec<u32> {
             let mut v = std::vec::Vec::new();
@@ -319,6 +319,7 @@ mod tests {
         let pmj = tables.sampler(31, 20, 3).unwrap();
         let bn_sobol = BlueNoiseSobol::new(31, 20, 16, 3).unwrap();
         let bn_lattice = BlueNoiseLattice::new(31, 20, 16, 3).unwrap();
+        let pmj_plain = Pmj02Pixels::new(31, 20, 16, 3).unwrap();
         for lv in crate::dispatch::levels() {
             for r in [R::None, R::PermuteDigits, R::FastOwen, R::Owen] {
                 for spp in [16, 128] {
@@ -333,11 +334,15 @@ mod tests {
             }
             let want = at_level(Level::Portable, || all(&pmj, 16));
             assert!(want == at_level(lv, || all(&pmj, 16)), "{lv:?} pmj02bn");
-            let want = at_level(Level::Portable, || {
-                [all(&bn_sobol, 16), all(&bn_lattice, 16)]
-            });
-            let got = at_level(lv, || [all(&bn_sobol, 16), all(&bn_lattice, 16)]);
-            assert!(want == got, "{lv:?} blue-noise tables");
+            let rest = || {
+                [
+                    all(&bn_sobol, 16),
+                    all(&bn_lattice, 16),
+                    all(&pmj_plain, 16),
+                ]
+            };
+            let want = at_level(Level::Portable, rest);
+            assert!(want == at_level(lv, rest), "{lv:?} blue noise, PMJ02");
         }
     }
 

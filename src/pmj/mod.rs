@@ -292,3 +292,34 @@ pub fn fill(seed: u64, out: &mut [[u32; 2]]) -> Result<()> {
     }
     Ok(())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The batched short fill gives each point of the per-point definition
+    /// ([`Pmj02::value`], the chain of parents walked per index), for lengths around the
+    /// passes of 16 and both scratch sizes.
+    #[test]
+    fn fill_short_is_the_sequence() {
+        for seed in [0u64, 7, u64::MAX] {
+            let p = Pmj02::new(seed);
+            for n in [0usize, 1, 2, 3, 5, 15, 16, 17, 100, 256] {
+                let mut big = [[0u32; 2]; SHORT];
+                fill_short::<SHORT>(seed, &mut big[..n]);
+                for (k, q) in big[..n].iter().enumerate() {
+                    assert_eq!(
+                        *q,
+                        [p.value(k as u32, 0), p.value(k as u32, 1)],
+                        "{seed} {n}"
+                    );
+                }
+                if n <= 16 {
+                    let mut small = [[0u32; 2]; 16];
+                    fill_short::<16>(seed, &mut small[..n]);
+                    assert_eq!(small[..n], big[..n]);
+                }
+            }
+        }
+    }
+}
