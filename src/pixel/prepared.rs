@@ -287,15 +287,15 @@ mod tests {
     use super::*;
 
     /// Every build of the prepared fills gives the portable build's bits: each Sobol'
-    /// sampler under each randomization, PMJ02BN, PMJ02 and the blue-noise table samplers,
-    /// pairs and values, `u32` and `f32`, with more samples than a pass and dimensions
-    /// past the tables.
+    /// sampler under each randomization, PMJ02BN, PMJ02, independent and the blue-noise
+    /// table samplers, pairs and values, `u32` and `f32`, with more samples than a pass and
+    /// dimensions past the tables.
     #[cfg(feature = "std")]
     #[test]
     fn every_build_fills_the_same() {
         use super::super::{
-            BlueNoiseLattice, BlueNoiseSobol, ImageSobol, PaddedSobol, PixelSampler, Pmj02BnTables,
-            Pmj02Pixels, Randomization as R, ZSobol,
+            BlueNoiseLattice, BlueNoiseSobol, ImageSobol, IndependentPixels, PaddedSobol,
+            PixelSampler, Pmj02BnTables, Pmj02Pixels, Randomization as R, ZSobol,
         };
         fn all<S: PixelSampler>(s: &S, n: usize) -> std::vec::Vec<u32> {
             let mut v = std::vec::Vec::new();
@@ -320,6 +320,7 @@ mod tests {
         let bn_sobol = BlueNoiseSobol::new(31, 20, 16, 3).unwrap();
         let bn_lattice = BlueNoiseLattice::new(31, 20, 16, 3).unwrap();
         let pmj_plain = Pmj02Pixels::new(31, 20, 16, 3).unwrap();
+        let independent = IndependentPixels::new(31, 20, 16, 3).unwrap();
         for lv in crate::dispatch::levels() {
             for r in [R::None, R::PermuteDigits, R::FastOwen, R::Owen] {
                 for spp in [16, 128] {
@@ -339,10 +340,14 @@ mod tests {
                     all(&bn_sobol, 16),
                     all(&bn_lattice, 16),
                     all(&pmj_plain, 16),
+                    all(&independent, 16),
                 ]
             };
             let want = at_level(Level::Portable, rest);
-            assert!(want == at_level(lv, rest), "{lv:?} blue noise, PMJ02");
+            assert!(
+                want == at_level(lv, rest),
+                "{lv:?} blue noise, PMJ02, independent"
+            );
         }
     }
 
