@@ -219,11 +219,11 @@ impl Plan {
     /// overflow guard of [`digits_by`] (never for the primes of the sampler's dimensions).
     fn new(base: u64) -> Option<Plan> {
         let inv_base = 1.0f32 / base as f32;
-        let (mut inv_m, mut power, mut digits) = (1.0f32, 1u128, 0u32);
-        while 1.0 - (base - 1) as f32 * inv_m < 1.0 && digits < 64 {
+        let digits = permute_digit_count(base) as u32;
+        let (mut inv_m, mut power) = (1.0f32, 1u128);
+        for _ in 0..digits {
             inv_m *= inv_base;
             power *= base as u128;
-            digits += 1;
         }
         // The reversed digits stay below power: digits_by's guard `reversed >= limit`
         // never fires while power <= limit, so the loops agree digit for digit.
