@@ -44,8 +44,9 @@ const MAX_RESOLUTION: u32 = 128;
 /// digit steps (one 64-bit division each), plus one MurmurHash and one permutation per digit
 /// for `PermuteDigits`, one `MixBits` and one permutation per digit for `Owen`.
 /// The prepared fills ([`PixelSampler::fill_2d`]) find the pixel's Halton index once
-/// (sample `i` adds `i 2^j 3^k`) and, for `PermuteDigits`, hash each digit's permutation
-/// key once per fill instead of once per value. `PreparedHalton`
+/// (sample `i` adds `i 2^j 3^k`) and, for `PermuteDigits`, tabulate each digit's
+/// permutation once per fill (one hash a digit instead of one a digit and value; the
+/// digits the fill's indices leave at 0 enter as one constant). `PreparedHalton`
 /// (`std`) builds the digit tables once for the image instead, as pbrt does, and is an
 /// order of magnitude faster.
 ///
