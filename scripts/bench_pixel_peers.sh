@@ -9,7 +9,9 @@
 # files util/pmj02tables.cpp and util/bluenoise.cpp are not used). OPENQMC_DIR: a checkout
 # of https://github.com/AcademySoftwareFoundation/openqmc (include/ is enough). Neither is
 # copied into this repository. ROUNDS defaults to 15, CPU (the core to pin to with taskset)
-# to 1; ROWS, substrings separated by |, keeps only the rows whose names contain one. CXXFLAGS adds flags to the peers' g++ -O3 (e.g. CXXFLAGS=-march=native; then pass
+# to 1; ROWS, substrings separated by |, keeps only the rows whose names contain one.
+# PIXEL_PEERS_CPU_TIME=1 times each row by the thread's CPU time instead of the wall clock
+# (on a shared machine: time other jobs take on the core is not counted). CXXFLAGS adds flags to the peers' g++ -O3 (e.g. CXXFLAGS=-march=native; then pass
 # RUSTFLAGS="-C target-cpu=native" too for a like-for-like build).
 #
 # What is built: scripts/bench_pixel_peers/peers.cpp (pbrt's and OpenQMC's samplers behind

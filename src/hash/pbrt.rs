@@ -72,6 +72,30 @@ pub const fn hash2(a: u32, b: u32) -> u64 {
     murmur_words(&[(a as u64) | ((b as u64) << 32)], 8)
 }
 
+/// pbrt-v4's `Hash(a, b, c)` of three 32-bit ints (the Halton sampler's `Hash(base,
+/// digitIndex, seed)`): MurmurHash64A, seed 0, of their 12 little-endian bytes, as one
+/// whole word and a 4-byte tail. O(1).
+///
+/// ```
+/// use qmckit::hash::pbrt::{hash3, murmur_hash64a};
+/// let bytes = [5, 0, 0, 0, 2, 0, 0, 0, 9, 0, 0, 0];
+/// assert_eq!(hash3(5, 2, 9), murmur_hash64a(&bytes, 0));
+/// ```
+#[inline]
+pub const fn hash3(a: u32, b: u32, c: u32) -> u64 {
+    const M: u64 = 0xc6a4_a793_5bd1_e995;
+    let mut k = ((a as u64) | ((b as u64) << 32)).wrapping_mul(M);
+    k ^= k >> 47;
+    k = k.wrapping_mul(M);
+    let mut h = 12u64.wrapping_mul(M) ^ k;
+    h = h.wrapping_mul(M);
+    h ^= c as u64;
+    h = h.wrapping_mul(M);
+    h ^= h >> 47;
+    h = h.wrapping_mul(M);
+    h ^ (h >> 47)
+}
+
 /// pbrt-v4's `Hash(Point2i p, int dim, int seed)`: MurmurHash64A of the 16 bytes
 /// `(p.x, p.y, dim, seed)`.
 ///
@@ -93,7 +117,7 @@ pub const fn hash4(a: u32, b: u32, c: u32, d: u32) -> u64 {
 /// [`murmur_hash64a`] of whole little-endian 64-bit words (`len = 8 * words.len()` bytes),
 /// without the byte loop: the same value, for the fixed-size keys of [`hash2`], [`hash4`].
 #[inline]
-const fn murmur_words(words: &[u64], len: u64) -> u64 {
+pub(crate) const fn murmur_words(words: &[u64], len: u64) -> u64 {
     const M: u64 = 0xc6a4_a793_5bd1_e995;
     let mut h = len.wrapping_mul(M);
     let mut w = 0;

@@ -28,6 +28,7 @@
 use super::domain::{
     Domain, DomainBase, KeyTable, ShiftTable, TAG_NEW, TAG_ROOT, Table, fill_pairs, fill_values,
 };
+use super::prepared::dispatched;
 use super::{PixelGrid, PixelPoint, PixelSampler, pbrt_f32};
 use crate::error::Result;
 use crate::hash::hash3;
@@ -71,28 +72,40 @@ macro_rules! table_fills {
         fn fill_2d(&self, x: u32, y: u32, dim: usize, out: &mut [[u32; 2]]) -> Result<()> {
             self.grid.check_fill(x, y, out.len())?;
             let (spp, state) = (self.grid.spp as u64, self.roots.state(dim));
-            fill_pairs(self.base(), (x, y), spp, state, out, |v| v);
+            dispatched(
+                #[inline(always)]
+                || fill_pairs(self.base(), (x, y), spp, state, out, |v| v),
+            );
             Ok(())
         }
 
         fn fill_2d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [[f32; 2]]) -> Result<()> {
             self.grid.check_fill(x, y, out.len())?;
             let (spp, state) = (self.grid.spp as u64, self.roots.state(dim));
-            fill_pairs(self.base(), (x, y), spp, state, out, pbrt_f32);
+            dispatched(
+                #[inline(always)]
+                || fill_pairs(self.base(), (x, y), spp, state, out, pbrt_f32),
+            );
             Ok(())
         }
 
         fn fill_1d(&self, x: u32, y: u32, dim: usize, out: &mut [u32]) -> Result<()> {
             self.grid.check_fill(x, y, out.len())?;
             let (spp, state) = (self.grid.spp as u64, self.roots.state(dim));
-            fill_values(self.base(), (x, y), spp, state, out, |v| v);
+            dispatched(
+                #[inline(always)]
+                || fill_values(self.base(), (x, y), spp, state, out, |v| v),
+            );
             Ok(())
         }
 
         fn fill_1d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [f32]) -> Result<()> {
             self.grid.check_fill(x, y, out.len())?;
             let (spp, state) = (self.grid.spp as u64, self.roots.state(dim));
-            fill_values(self.base(), (x, y), spp, state, out, pbrt_f32);
+            dispatched(
+                #[inline(always)]
+                || fill_values(self.base(), (x, y), spp, state, out, pbrt_f32),
+            );
             Ok(())
         }
     };

@@ -1,9 +1,10 @@
 //! pbrt-v4's `HaltonSampler`: one Halton sequence over the image plane, the pixel's samples
 //! found through the first two radical inverses (Pharr, Jakob & Humphreys 2023, §8.6).
 
+use super::prepared::permutation_round16;
 use super::{F32_ONE_MINUS_EPSILON, PixelGrid, PixelPoint, PixelSampler, Randomization};
 use crate::error::{Error, Result};
-use crate::hash::pbrt::{mix_bits, murmur_hash64a, permutation_element};
+use crate::hash::pbrt::{hash3, mix_bits, murmur_words, permutation_element};
 use crate::radical_inverse::halton::PRIMES;
 
 /// The dimensions the Halton pixel sampler has (pbrt's `PrimeTableSize`): a request that
@@ -43,8 +44,9 @@ const MAX_RESOLUTION: u32 = 128;
 /// digit steps (one 64-bit division each), plus one MurmurHash and one permutation per digit
 /// for `PermuteDigits`, one `MixBits` and one permutation per digit for `Owen`.
 /// The prepared fills ([`PixelSampler::fill_2d`]) find the pixel's Halton index once
-/// (sample `i` adds `i 2^j 3^k`) and, for `PermuteDigits`, hash each digit's permutation
-/// key once per fill instead of once per value. `PreparedHalton`
+/// (sample `i` adds `i 2^j 3^k`) and, for `PermuteDigits`, tabulate each digit's
+/// permutation once per fill (one hash a digit instead of one a digit and value; the
+/// digits the fill's indices leave at 0 enter as one constant). `PreparedHalton`
 /// (`std`) builds the digit tables once for the image instead, as pbrt does, and is an
 /// order of magnitude faster.
 ///
@@ -190,6 +192,53 @@ pub(super) const fn reciprocal(b: u64) -> u128 {
     (u64::MAX / b) as u128 + 1
 }
 
+/// The per-dimension constants of a prepared `PermuteDigits` value: pbrt's digit count
+/// (`ScrambledRadicalInverse`'s loop, [`permute_digit_count`]), its `f32` scale
+/// `fl(b^-n)` (the product of `n` factors `fl(1 / b)`), `b^n` and the reciprocal of `b`.
+struct Plan {
+    base: u64,
+    reciprocal: u128,
+    digits: u32,
+    inv_m: f32,
+    power: u128,
+}
+
+/// A dimension's prepared `PermuteDigits` digits for the indices up to some `h_max`
+/// ([`HaltonSampler::digit_table`]): the plan, the permutation table, the number `full`
+/// of digits that can be nonzero, and the zero digits' images above them as
+/// `reversed * scale + tail`.
+struct Digits {
+    plan: Plan,
+    table: [u16; TABLE_ENTRIES],
+    full: u32,
+    scale: u64,
+    tail: u64,
+}
+
+impl Plan {
+    /// The plan of base `base >= 2`, or `None` when the reversed digits could reach the
+    /// overflow guard of [`digits_by`] (never for the primes of the sampler's dimensions).
+    fn new(base: u64) -> Option<Plan> {
+        let inv_base = 1.0f32 / base as f32;
+        let digits = permute_digit_count(base) as u32;
+        let (mut inv_m, mut power) = (1.0f32, 1u128);
+        for _ in 0..digits {
+            inv_m *= inv_base;
+            power *= base as u128;
+        }
+        // The reversed digits stay below power: digits_by's guard `reversed >= limit`
+        // never fires while power <= limit, so the loops agree digit for digit.
+        let limit = (u64::MAX / base - base) as u128;
+        (power <= limit).then_some(Plan {
+            base,
+            reciprocal: reciprocal(base),
+            digits,
+            inv_m,
+            power,
+        })
+    }
+}
+
 impl HaltonSampler {
     /// The prepared fill: `value(h, d)` for the Halton indices `h` of samples
     /// `0 .. out.len()` of pixel `(x, y)` (`h0 + i 2^j 3^k`, `h0` found once), with
@@ -216,39 +265,85 @@ impl HaltonSampler {
 
     /// `PermuteDigits`' digit permutations of dimension `dim` for the first digits, as a
     /// table (`table[k base + v]` is digit `k`'s image of `v`), or `None` when they do not
-    /// fit [`TABLE_ENTRIES`].
-    fn digit_table(&self, dim: usize) -> Option<[u16; TABLE_ENTRIES]> {
+    /// fit [`TABLE_ENTRIES`]; for the digits of indices up to `h_max` (a row whose digit is
+    /// 0 in all of them holds only its image of 0). Per digit, the mixer round of `PermutationElement` is
+    /// computed once for each of `[0, w]` (`w + 1` the power of two `>= base`, in 16-bit
+    /// lanes: [`permutation_round16`]), then each `v < base` walks that table until it
+    /// lands below `base`, and `(i + p) mod base` is a reciprocal multiplication: the
+    /// elements of `permutation_element(v, base, p)` for every `v`, without its `w + 1`
+    /// divisions.
+    fn digit_table(&self, dim: usize, h_max: u64) -> Option<Digits> {
         let base = PRIMES[dim] as usize;
-        let digits = permute_digit_count(base as u64);
+        let plan = Plan::new(base as u64)?;
+        let digits = plan.digits as usize;
         if base * digits > TABLE_ENTRIES {
             return None;
         }
+        // Digit k of every index up to h_max is 0 once base^k > h_max: those rows need
+        // only their image of 0.
+        let (mut full, mut power) = (0usize, 1u64);
+        while full < digits && power <= h_max {
+            power = power.saturating_mul(base as u64);
+            full += 1;
+        }
+        // base <= TABLE_ENTRIES: w < 2 TABLE_ENTRIES <= 2^16.
+        let w = ((base as u32).next_power_of_two() - 1) as u16;
+        let m = reciprocal(base as u64);
         let mut table = [0u16; TABLE_ENTRIES];
+        let mut round = [0u16; 2 * TABLE_ENTRIES];
         for (k, row) in table.chunks_exact_mut(base).take(digits).enumerate() {
-            let key = digit_hash(base as u32, k as u32, self.seed) as u32;
+            let p = digit_hash(base as u32, k as u32, self.seed) as u32;
+            let round = &mut round[..=w as usize];
+            for (i, r) in (0u16..).zip(round.iter_mut()) {
+                *r = permutation_round16(i, w, p);
+            }
+            let row = if k < full { row } else { &mut row[..1] };
             for (v, t) in row.iter_mut().enumerate() {
-                *t = permutation_element(v as u32, base as u32, key) as u16;
+                // A walk on the cycle through v: at most w + 1 steps.
+                let mut i = round.get(v).copied().unwrap_or(0);
+                for _ in 0..w {
+                    if (i as usize) < base {
+                        break;
+                    }
+                    i = round.get(i as usize).copied().unwrap_or(0);
+                }
+                let a = (i as u32).wrapping_add(p) as u64;
+                let q = ((a as u128 * m) >> 64) as u64;
+                *t = (a - q * base as u64) as u16;
             }
         }
-        Some(table)
+        // The digits from `full` on are 0 in every index: their images, as one constant
+        // below a scale (exact integers: the reversed value stays below b^n).
+        let (mut tail, mut scale) = (0u64, 1u64);
+        for row in table.chunks_exact(base).take(digits).skip(full) {
+            tail = tail * base as u64 + row[0] as u64;
+            scale *= base as u64;
+        }
+        Some(Digits {
+            plan,
+            table,
+            full: full as u32,
+            scale,
+            tail,
+        })
     }
 
-    /// Dimension `dim` of Halton index `h < 2^32` under `PermuteDigits`, the digit
-    /// permutations read from `table` and the quotients by reciprocal multiplication.
+    /// Dimension `base` of Halton index `h <= h_max < 2^32` under `PermuteDigits` from its
+    /// prepared [`Digits`]: the digits that vary by reciprocal multiplication and a table
+    /// read each, then the constant images of the zero digits above them in one
+    /// multiply-add, and the plan's `f32` scale (no `f32` work in the loop).
     #[inline]
-    fn permuted_small(&self, h: u64, dim: usize, table: &[u16; TABLE_ENTRIES]) -> (u32, f32) {
-        let base = PRIMES[dim] as u64;
-        let m = reciprocal(base);
-        digits_by(
-            base,
-            h,
-            Stop::Permute,
-            |a| ((a as u128 * m) >> 64) as u64,
-            |k, digit, _| {
-                let at = (k as u64 * base + digit as u64) as usize;
-                table.get(at).copied().unwrap_or(0) as u32
-            },
-        )
+    fn permuted_small(h: u64, t: &Digits) -> (u32, f32) {
+        let (base, m) = (t.plan.base, t.plan.reciprocal);
+        let (mut a, mut reversed) = (h, 0u64);
+        for k in 0..t.full {
+            let next = ((a as u128 * m) >> 64) as u64;
+            let digit = a - next * base;
+            let at = (k as u64 * base + digit) as usize % TABLE_ENTRIES;
+            reversed = reversed * base + t.table[at] as u64;
+            a = next;
+        }
+        finish(reversed * t.scale + t.tail, t.plan.power, t.plan.inv_m)
     }
 
     /// The prepared pair fill: the `(R, float)` pairs of dimensions `d, d + 1` through
@@ -263,18 +358,18 @@ impl HaltonSampler {
         pick: impl Fn((u32, f32)) -> T,
     ) -> Result<()> {
         let d = self.counter_dimension(dim, 2);
-        if let (Randomization::PermuteDigits, Some(t0), Some(t1), true) = (
-            self.randomize,
-            self.digit_table(d),
-            self.digit_table(d + 1),
-            self.small_indices(out.len()),
-        ) {
-            return self.fill_with(x, y, dim, 2, out, |h, d| {
-                [
-                    pick(self.permuted_small(h, d, &t0)),
-                    pick(self.permuted_small(h, d + 1, &t1)),
-                ]
-            });
+        if matches!(self.randomize, Randomization::PermuteDigits) && self.small_indices(out.len()) {
+            let h_max = self.last_index(x, y, out.len());
+            if let (Some(t0), Some(t1)) =
+                (self.digit_table(d, h_max), self.digit_table(d + 1, h_max))
+            {
+                return self.fill_with(x, y, dim, 2, out, |h, _| {
+                    [
+                        pick(Self::permuted_small(h, &t0)),
+                        pick(Self::permuted_small(h, &t1)),
+                    ]
+                });
+            }
         }
         self.fill_with(x, y, dim, 2, out, |h, d| {
             [pick(self.dimension(h, d)), pick(self.dimension(h, d + 1))]
@@ -292,16 +387,20 @@ impl HaltonSampler {
         pick: impl Fn((u32, f32)) -> T,
     ) -> Result<()> {
         let d = self.counter_dimension(dim, 1);
-        if let (Randomization::PermuteDigits, Some(t), true) = (
-            self.randomize,
-            self.digit_table(d),
-            self.small_indices(out.len()),
-        ) {
-            return self.fill_with(x, y, dim, 1, out, |h, d| {
-                pick(self.permuted_small(h, d, &t))
-            });
+        if matches!(self.randomize, Randomization::PermuteDigits) && self.small_indices(out.len()) {
+            let h_max = self.last_index(x, y, out.len());
+            if let Some(t) = self.digit_table(d, h_max) {
+                return self.fill_with(x, y, dim, 1, out, |h, _| pick(Self::permuted_small(h, &t)));
+            }
         }
         self.fill_with(x, y, dim, 1, out, |h, d| pick(self.dimension(h, d)))
+    }
+
+    /// The Halton index of the last of `n >= 1` samples of pixel `(x, y)` (0 for `n = 0`;
+    /// an upper bound of the fill's indices).
+    fn last_index(&self, x: u32, y: u32, n: usize) -> u64 {
+        let h0 = self.pixel_key(x, y, 0);
+        h0.saturating_add((n.saturating_sub(1) as u64).saturating_mul(self.stride()))
     }
 
     /// Whether the Halton indices of `n` samples of any pixel stay below `2^32`.
@@ -331,16 +430,11 @@ pub(super) const fn owen_key(dim: usize) -> u32 {
 
 /// pbrt's `Hash(base, digitIndex, seed)`: MurmurHash64A of the 12 bytes for a 32-bit seed,
 /// of 16 bytes (the seed's 64 bits) above.
-pub(super) fn digit_hash(base: u32, k: u32, seed: u64) -> u64 {
-    let (b, k, s) = (base.to_le_bytes(), k.to_le_bytes(), seed.to_le_bytes());
-    let bytes = [
-        b[0], b[1], b[2], b[3], k[0], k[1], k[2], k[3], s[0], s[1], s[2], s[3], s[4], s[5], s[6],
-        s[7],
-    ];
+pub(super) const fn digit_hash(base: u32, k: u32, seed: u64) -> u64 {
     if seed >> 32 == 0 {
-        murmur_hash64a(&bytes[..12], 0)
+        hash3(base, k, seed as u32)
     } else {
-        murmur_hash64a(&bytes, 0)
+        murmur_words(&[(base as u64) | ((k as u64) << 32), seed], 16)
     }
 }
 

@@ -2,7 +2,7 @@
 //! pixel found by solving for their indices (Grünschloss, Raab & Keller 2012, "Enumerating
 //! quasi-Monte Carlo point sequences in elementary intervals").
 
-use super::prepared::{CHUNK, dispatched, randomize_pairs, randomize_values};
+use super::prepared::{CHUNK, at, dispatched, randomize_pairs, randomize_values};
 use super::{
     F32_ONE_MINUS_EPSILON, PixelGrid, PixelPoint, PixelSampler, Randomization, pbrt_f32,
     seed_hash2, sobol0, sobol1,
@@ -264,14 +264,14 @@ impl ImageSobol {
             seed_hash2(d.wrapping_add(1) as u32, self.seed) as u32,
         ];
         let l0 = self.interval_to_index(0, x, y) as u32;
-        let (mut a, mut b) = ([0u32; CHUNK], [0u32; CHUNK]);
+        let (mut a_all, mut b_all) = ([0u32; CHUNK], [0u32; CHUNK]);
         for (c, chunk) in out.chunks_mut(CHUNK).enumerate() {
             let start = (c * CHUNK) as u32;
-            let (a, b) = (&mut a[..chunk.len()], &mut b[..chunk.len()]);
+            let (a, b) = (&mut a_all[..chunk.len()], &mut b_all[..chunk.len()]);
             self.reversed_values(d, l0, start, a);
             self.reversed_values(d.wrapping_add(1), l0, start, b);
-            let (a, b) = (&*a, &*b);
-            randomize_pairs(self.randomize, keys, chunk, |k| [a[k], b[k]], conv);
+            let (a, b) = (&a_all, &b_all);
+            randomize_pairs(self.randomize, keys, chunk, |k| [at(a, k), at(b, k)], conv);
         }
         Ok(())
     }
@@ -290,12 +290,12 @@ impl ImageSobol {
         let d = self.counter_dimension(dim, 1);
         let key = seed_hash2(d as u32, self.seed) as u32;
         let l0 = self.interval_to_index(0, x, y) as u32;
-        let mut a = [0u32; CHUNK];
+        let mut all = [0u32; CHUNK];
         for (c, chunk) in out.chunks_mut(CHUNK).enumerate() {
-            let a = &mut a[..chunk.len()];
+            let a = &mut all[..chunk.len()];
             self.reversed_values(d, l0, (c * CHUNK) as u32, a);
-            let a = &*a;
-            randomize_values(self.randomize, key, chunk, |k| a[k], conv);
+            let a = &all;
+            randomize_values(self.randomize, key, chunk, |k| at(a, k), conv);
         }
         Ok(())
     }

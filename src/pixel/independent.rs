@@ -1,8 +1,9 @@
 //! Independent uniform values per pixel: the white-noise baseline of the pixel samplers.
 
+use super::prepared::dispatched;
 use super::{PixelGrid, PixelPoint, PixelSampler, pbrt_f32};
 use crate::error::Result;
-use crate::hash::{hash3, mix64};
+use crate::hash::{hash3, hash3_key, hash3_keyed, mix64};
 
 /// Independent per-pixel sampling: every value is the top 32 bits of
 /// `hash3(seed_pixel, index, 2 dim + k)` ([`crate::hash::hash3`], splitmix64 finalizers) with
@@ -56,12 +57,18 @@ impl PixelSampler for IndependentPixels {
         self.grid.check_fill(x, y, out.len())?;
         let key = self.pixel_key(x, y, 0);
         let c = (dim as u64).wrapping_mul(2);
-        for (i, o) in (0u64..).zip(out.iter_mut()) {
-            *o = [
-                (hash3(key, i, c) >> 32) as u32,
-                (hash3(key, i, c.wrapping_add(1)) >> 32) as u32,
-            ];
-        }
+        let k = hash3_key(key);
+        dispatched(
+            #[inline(always)]
+            || {
+                for (i, o) in (0u64..).zip(out.iter_mut()) {
+                    *o = [
+                        (hash3_keyed(k, i, c) >> 32) as u32,
+                        (hash3_keyed(k, i, c.wrapping_add(1)) >> 32) as u32,
+                    ];
+                }
+            },
+        );
         Ok(())
     }
 
@@ -69,12 +76,18 @@ impl PixelSampler for IndependentPixels {
         self.grid.check_fill(x, y, out.len())?;
         let key = self.pixel_key(x, y, 0);
         let c = (dim as u64).wrapping_mul(2);
-        for (i, o) in (0u64..).zip(out.iter_mut()) {
-            *o = [
-                pbrt_f32((hash3(key, i, c) >> 32) as u32),
-                pbrt_f32((hash3(key, i, c.wrapping_add(1)) >> 32) as u32),
-            ];
-        }
+        let k = hash3_key(key);
+        dispatched(
+            #[inline(always)]
+            || {
+                for (i, o) in (0u64..).zip(out.iter_mut()) {
+                    *o = [
+                        pbrt_f32((hash3_keyed(k, i, c) >> 32) as u32),
+                        pbrt_f32((hash3_keyed(k, i, c.wrapping_add(1)) >> 32) as u32),
+                    ];
+                }
+            },
+        );
         Ok(())
     }
 

@@ -2,7 +2,7 @@
 //! pair, decorrelated by a hashed per-pixel, per-dimension index permutation and scramble.
 
 use super::prepared::{
-    CHUNK, dispatched, permutation_fill, randomize_pairs, randomize_values, sobol1_reversed,
+    CHUNK, at, dispatched, permutation_fill, randomize_pairs, randomize_values, sobol1_reversed,
 };
 use super::{
     PixelGrid, PixelPoint, PixelSampler, Randomization, pbrt_f32, seed_hash4, sobol0, sobol1,
@@ -84,16 +84,19 @@ impl PaddedSobol {
         self.grid.check_fill(x, y, out.len())?;
         let h = seed_hash4(x, y, dim, self.seed);
         let keys = [h as u32, (h >> 32) as u32];
-        let mut perm = [0u32; CHUNK];
+        let mut all = [0u32; CHUNK];
         for (c, chunk) in out.chunks_mut(CHUNK).enumerate() {
-            let perm = &mut perm[..chunk.len()];
+            let perm = &mut all[..chunk.len()];
             permutation_fill((c * CHUNK) as u32, self.grid.spp, keys[0], perm);
-            let perm = &*perm;
+            let perm = &all;
             randomize_pairs(
                 self.randomize,
                 keys,
                 chunk,
-                |k| [perm[k], sobol1_reversed(perm[k])],
+                |k| {
+                    let p = at(perm, k);
+                    [p, sobol1_reversed(p)]
+                },
                 conv,
             );
         }
@@ -112,12 +115,18 @@ impl PaddedSobol {
     ) -> Result<()> {
         self.grid.check_fill(x, y, out.len())?;
         let h = seed_hash4(x, y, dim, self.seed);
-        let mut perm = [0u32; CHUNK];
+        let mut all = [0u32; CHUNK];
         for (c, chunk) in out.chunks_mut(CHUNK).enumerate() {
-            let perm = &mut perm[..chunk.len()];
+            let perm = &mut all[..chunk.len()];
             permutation_fill((c * CHUNK) as u32, self.grid.spp, h as u32, perm);
-            let perm = &*perm;
-            randomize_values(self.randomize, (h >> 32) as u32, chunk, |k| perm[k], conv);
+            let perm = &all;
+            randomize_values(
+                self.randomize,
+                (h >> 32) as u32,
+                chunk,
+                |k| at(perm, k),
+                conv,
+            );
         }
         Ok(())
     }

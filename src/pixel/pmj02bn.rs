@@ -3,7 +3,9 @@
 //! per-pixel, per-dimension permutation of aligned blocks of the same table, shifted by a
 //! blue-noise value, for the other dimensions.
 
-use super::prepared::{CHUNK, dispatched, permutation_fill, permutation_fill16};
+use super::prepared::{
+    CHUNK, dispatched, permutation_fill, permutation_fill16, permutation_round16,
+};
 use super::{PixelGrid, PixelPoint, PixelSampler, pbrt_f32, seed_hash4};
 use crate::blue_noise::mask64::MASK64;
 use crate::error::{Error, Result};
@@ -16,6 +18,17 @@ pub const TABLE_LEN: usize = 1 << 16;
 /// Samples a pass of the prepared pair fill handles (its stack scratch: small, as a fill is
 /// often one pixel's 16 or 64 samples).
 const PAIR_CHUNK: usize = 16;
+
+/// `0, 1, ..`: a pass's sample offsets as 16-bit lanes.
+const IOTA: [u16; PAIR_CHUNK] = {
+    let mut a = [0u16; PAIR_CHUNK];
+    let mut k = 0;
+    while k < PAIR_CHUNK {
+        a[k] = k as u16;
+        k += 1;
+    }
+    a
+};
 
 /// `log2` of the tile side for `spp` samples a pixel: `8 - log4(RoundUpPow4(spp))`
 /// (pbrt's `pixelTileSize`), and `log4(RoundUpPow4(spp))`.
@@ -220,23 +233,38 @@ impl Pmj02BnPixels<'_> {
         let Ok(table) = <&[[u32; 2]; TABLE_LEN]>::try_from(self.table) else {
             return Ok(());
         };
-        // Read the block's first cache lines now: the reads below wait for the
-        // permutation, these only for the hash, so the table's latency overlaps the
-        // permutation's work (the values are discarded; the reads stay).
-        for k in (0..block.min(32) as usize).step_by(8) {
-            core::hint::black_box(table[(first as usize + k) & (TABLE_LEN - 1)]);
-        }
         let t = d as u32;
         let (n0, n1) = (
             blue_noise(self.seed, t, x, y),
             blue_noise(self.seed, t.wrapping_add(1), x, y),
         );
+        let spp = self.grid.spp;
+        if spp.is_power_of_two() {
+            // One round of the mixer in 16-bit lanes, the table read and the shift in one
+            // loop over a whole pass (the lanes past a short last pass read inside the
+            // block and are dropped).
+            let (w, f) = ((spp - 1) as u16, first as u16);
+            let p = h as u32;
+            for (c, chunk) in out.chunks_mut(PAIR_CHUNK).enumerate() {
+                let s = (c * PAIR_CHUNK) as u16;
+                let mut raw = [[0u32; 2]; PAIR_CHUNK];
+                for (r, &k) in raw.iter_mut().zip(IOTA.iter()) {
+                    let i = permutation_round16(s.wrapping_add(k), w, p).wrapping_add(p as u16) & w;
+                    let q = table[f.wrapping_add(i) as usize];
+                    *r = [q[0].wrapping_add(n0), q[1].wrapping_add(n1)];
+                }
+                for (o, r) in chunk.iter_mut().zip(raw.iter()) {
+                    *o = [conv(r[0]), conv(r[1])];
+                }
+            }
+            return Ok(());
+        }
         // Scratch of PAIR_CHUNK samples (spp <= 2^16: 16-bit elements).
         let (mut perm, mut raw) = ([0u16; PAIR_CHUNK], [[0u32; 2]; PAIR_CHUNK]);
         for (c, chunk) in out.chunks_mut(PAIR_CHUNK).enumerate() {
             let perm = &mut perm[..chunk.len()];
             let raw = &mut raw[..chunk.len()];
-            permutation_fill16((c * PAIR_CHUNK) as u32, self.grid.spp, h as u32, perm);
+            permutation_fill16((c * PAIR_CHUNK) as u32, spp, h as u32, perm);
             // The reads, then the conversion in a loop of its own (which vectorizes).
             for (r, &i) in raw.iter_mut().zip(perm.iter()) {
                 let p = table[(first as u16).wrapping_add(i) as usize];

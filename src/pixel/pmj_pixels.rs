@@ -1,7 +1,7 @@
 //! PMJ02 as a pixel sampler: a seeded PMJ02 sequence per pixel and dimension, its first
 //! `spp` points visited through a hashed permutation.
 
-use super::prepared::{CHUNK, permutation_fill};
+use super::prepared::{CHUNK, dispatched, permutation_fill};
 use super::{PixelGrid, PixelPoint, PixelSampler, pbrt_f32, seed_hash4};
 use crate::error::Result;
 use crate::hash::pbrt::permutation_element;
@@ -61,14 +61,17 @@ impl Pmj02Pixels {
 
 /// The largest `spp` whose sequence prefix a prepared fill generates whole, on the stack
 /// (2 KiB).
-const SEQUENCE: usize = 256;
+const SEQUENCE: usize = crate::pmj::SHORT;
+
+/// The smaller stack scratch for counts up to 16.
+const SMALL: usize = 16;
 
 impl Pmj02Pixels {
     /// The prepared fill: the hash and the sequence once, `value(sequence, permuted i,
     /// point)` per sample, where `point` is the sequence's point `i` when the fill generated
     /// the prefix (`spp <=` [`SEQUENCE`], `O(1)` a point), `None` when the value is to be
     /// computed by random access (`O(log2 spp)` hashes).
-    #[inline]
+    #[inline(always)]
     fn fill_with<T>(
         &self,
         x: u32,
@@ -81,22 +84,16 @@ impl Pmj02Pixels {
         let h = seed_hash4(x, y, dim, self.seed);
         let p = Pmj02::new(h);
         let spp = self.grid.spp as usize;
+        if spp <= SMALL {
+            // Stack scratch of 16 points for the common counts.
+            let mut seq = [[0u32; 2]; SMALL];
+            crate::pmj::fill_short::<SMALL>(h, &mut seq[..spp]);
+            return self.read(h, &seq[..spp], out, &p, value);
+        }
         if spp <= SEQUENCE {
-            // The pixel's whole sequence prefix in one pass (two hashes a point, each point
-            // from its parent), then read through the permutation.
             let mut seq = [[0u32; 2]; SEQUENCE];
-            let seq = &mut seq[..spp];
-            crate::pmj::fill(h, seq)?;
-            let mut perm = [0u32; CHUNK];
-            for (c, chunk) in out.chunks_mut(CHUNK).enumerate() {
-                let perm = &mut perm[..chunk.len()];
-                permutation_fill((c * CHUNK) as u32, self.grid.spp, h as u32, perm);
-                for (o, &i) in chunk.iter_mut().zip(perm.iter()) {
-                    let [a, b] = seq.get(i as usize).copied().unwrap_or_default();
-                    *o = value(&p, i, Some([a, b]));
-                }
-            }
-            return Ok(());
+            crate::pmj::fill_short::<SEQUENCE>(h, &mut seq[..spp]);
+            return self.read(h, &seq[..spp], out, &p, value);
         }
         let mut perm = [0u32; CHUNK];
         for (c, chunk) in out.chunks_mut(CHUNK).enumerate() {
@@ -104,6 +101,29 @@ impl Pmj02Pixels {
             permutation_fill((c * CHUNK) as u32, self.grid.spp, h as u32, perm);
             for (o, &i) in chunk.iter_mut().zip(perm.iter()) {
                 *o = value(&p, i, None);
+            }
+        }
+        Ok(())
+    }
+
+    /// The pixel's sequence prefix `seq` (its `spp` points, two hashes a point, each point
+    /// from its parent) read through the permutation into `out`.
+    #[inline(always)]
+    fn read<T>(
+        &self,
+        h: u64,
+        seq: &[[u32; 2]],
+        out: &mut [T],
+        p: &Pmj02,
+        value: impl Fn(&Pmj02, u32, Option<[u32; 2]>) -> T,
+    ) -> Result<()> {
+        let mut perm = [0u32; CHUNK];
+        for (c, chunk) in out.chunks_mut(CHUNK).enumerate() {
+            let perm = &mut perm[..chunk.len()];
+            permutation_fill((c * CHUNK) as u32, self.grid.spp, h as u32, perm);
+            for (o, &i) in chunk.iter_mut().zip(perm.iter()) {
+                let [a, b] = seq.get(i as usize).copied().unwrap_or_default();
+                *o = value(p, i, Some([a, b]));
             }
         }
         Ok(())
@@ -116,28 +136,48 @@ impl PixelSampler for Pmj02Pixels {
     }
 
     fn fill_2d(&self, x: u32, y: u32, dim: usize, out: &mut [[u32; 2]]) -> Result<()> {
-        self.fill_with(x, y, dim, out, |p, i, q| {
-            q.unwrap_or_else(|| [p.value(i, 0), p.value(i, 1)])
-        })
+        dispatched(
+            #[inline(always)]
+            || {
+                self.fill_with(x, y, dim, out, |p, i, q| {
+                    q.unwrap_or_else(|| [p.value(i, 0), p.value(i, 1)])
+                })
+            },
+        )
     }
 
     fn fill_2d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [[f32; 2]]) -> Result<()> {
-        self.fill_with(x, y, dim, out, |p, i, q| {
-            q.unwrap_or_else(|| [p.value(i, 0), p.value(i, 1)])
-                .map(pbrt_f32)
-        })
+        dispatched(
+            #[inline(always)]
+            || {
+                self.fill_with(x, y, dim, out, |p, i, q| {
+                    q.unwrap_or_else(|| [p.value(i, 0), p.value(i, 1)])
+                        .map(pbrt_f32)
+                })
+            },
+        )
     }
 
     fn fill_1d(&self, x: u32, y: u32, dim: usize, out: &mut [u32]) -> Result<()> {
-        self.fill_with(x, y, dim, out, |p, i, q| {
-            q.map_or_else(|| p.value(i, 0), |q| q[0])
-        })
+        dispatched(
+            #[inline(always)]
+            || {
+                self.fill_with(x, y, dim, out, |p, i, q| {
+                    q.map_or_else(|| p.value(i, 0), |q| q[0])
+                })
+            },
+        )
     }
 
     fn fill_1d_f32(&self, x: u32, y: u32, dim: usize, out: &mut [f32]) -> Result<()> {
-        self.fill_with(x, y, dim, out, |p, i, q| {
-            pbrt_f32(q.map_or_else(|| p.value(i, 0), |q| q[0]))
-        })
+        dispatched(
+            #[inline(always)]
+            || {
+                self.fill_with(x, y, dim, out, |p, i, q| {
+                    pbrt_f32(q.map_or_else(|| p.value(i, 0), |q| q[0]))
+                })
+            },
+        )
     }
 
     fn value_1d(&self, at: &PixelPoint, dim: usize) -> u32 {

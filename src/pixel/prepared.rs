@@ -85,7 +85,7 @@ pub(crate) const fn sobol1_reversed(i: u32) -> u32 {
 /// Eight lanes a 128-bit multiply (`pmullw`) where the 32-bit round needs emulated 32-bit
 /// products on the baseline x86-64. O(1).
 #[inline(always)]
-const fn permutation_round16(i: u16, w: u16, p: u32) -> u16 {
+pub(crate) const fn permutation_round16(i: u16, w: u16, p: u32) -> u16 {
     let mut i = i ^ p as u16;
     i = i.wrapping_mul(0x893d);
     i ^= (p >> 16) as u16;
@@ -111,12 +111,13 @@ const fn permutation_round16(i: u16, w: u16, p: u32) -> u16 {
 /// below `l`, so the element is `(round(i) + p) mod l` with the modulus a mask: a loop
 /// without division or branch, in 16-bit lanes up to `l = 2^16`
 /// ([`permutation_round16`]). Other `l` walk the cycle per element. `start + k < l`.
-#[inline]
+#[inline(always)]
 pub(crate) fn permutation_fill(start: u32, l: u32, p: u32, out: &mut [u32]) {
     if l.is_power_of_two() && l <= 1 << 16 {
-        let w = (l - 1) as u16;
+        let (w, s) = ((l - 1) as u16, start as u16);
+        // 16-bit indices (`start + k < l <= 2^16`): lanes of 16 bits throughout.
         for (k, o) in out.iter_mut().enumerate() {
-            let i = start.wrapping_add(k as u32) as u16;
+            let i = s.wrapping_add(k as u16);
             *o = (permutation_round16(i, w, p).wrapping_add(p as u16) & w) as u32;
         }
     } else if l.is_power_of_two() {
@@ -132,14 +133,21 @@ pub(crate) fn permutation_fill(start: u32, l: u32, p: u32, out: &mut [u32]) {
     }
 }
 
+/// [`permutation_fill`] as a call of its own, for a fill that is not dispatched (where
+/// inlining the loop costs more than the call).
+#[inline(never)]
+pub(crate) fn permutation_fill_call(start: u32, l: u32, p: u32, out: &mut [u32]) {
+    permutation_fill(start, l, p, out);
+}
+
 /// [`permutation_fill`] into 16-bit elements, for `l <= 2^16` (the elements are below `l`;
 /// a larger `l` gives their low 16 bits).
 #[inline(always)]
 pub(crate) fn permutation_fill16(start: u32, l: u32, p: u32, out: &mut [u16]) {
     if l.is_power_of_two() && l <= 1 << 16 {
-        let w = (l - 1) as u16;
+        let (w, s) = ((l - 1) as u16, start as u16);
         for (k, o) in out.iter_mut().enumerate() {
-            let i = start.wrapping_add(k as u32) as u16;
+            let i = s.wrapping_add(k as u16);
             *o = permutation_round16(i, w, p).wrapping_add(p as u16) & w;
         }
     } else {
@@ -147,6 +155,13 @@ pub(crate) fn permutation_fill16(start: u32, l: u32, p: u32, out: &mut [u16]) {
             *o = permutation_element(start.wrapping_add(k as u32), l, p) as u16;
         }
     }
+}
+
+/// `a[k]` for `k < CHUNK` (a pass's index): the modulus drops the bound check, which
+/// would otherwise leave a scalar tail of up to a vector's width in the fills' loops.
+#[inline(always)]
+pub(crate) fn at(a: &[u32; CHUNK], k: usize) -> u32 {
+    a[k % CHUNK]
 }
 
 /// `out[k] = f(k)`: the fills' loop, kept small so that it vectorizes.
@@ -272,13 +287,15 @@ mod tests {
     use super::*;
 
     /// Every build of the prepared fills gives the portable build's bits: each Sobol'
-    /// sampler under each randomization and PMJ02BN, pairs and values, `u32` and `f32`,
-    /// with more samples than a pass and dimensions past the tables.
+    /// sampler under each randomization, PMJ02BN, PMJ02, independent and the blue-noise
+    /// table samplers, pairs and values, `u32` and `f32`, with more samples than a pass and
+    /// dimensions past the tables.
     #[cfg(feature = "std")]
     #[test]
     fn every_build_fills_the_same() {
         use super::super::{
-            ImageSobol, PaddedSobol, PixelSampler, Pmj02BnTables, Randomization as R, ZSobol,
+            BlueNoiseLattice, BlueNoiseSobol, ImageSobol, IndependentPixels, PaddedSobol,
+            PixelSampler, Pmj02BnTables, Pmj02Pixels, Randomization as R, ZSobol,
         };
         fn all<S: PixelSampler>(s: &S, n: usize) -> std::vec::Vec<u32> {
             let mut v = std::vec::Vec::new();
@@ -300,6 +317,10 @@ mod tests {
         }
         let tables = Pmj02BnTables::new(16, 3).unwrap();
         let pmj = tables.sampler(31, 20, 3).unwrap();
+        let bn_sobol = BlueNoiseSobol::new(31, 20, 16, 3).unwrap();
+        let bn_lattice = BlueNoiseLattice::new(31, 20, 16, 3).unwrap();
+        let pmj_plain = Pmj02Pixels::new(31, 20, 16, 3).unwrap();
+        let independent = IndependentPixels::new(31, 20, 16, 3).unwrap();
         for lv in crate::dispatch::levels() {
             for r in [R::None, R::PermuteDigits, R::FastOwen, R::Owen] {
                 for spp in [16, 128] {
@@ -314,6 +335,19 @@ mod tests {
             }
             let want = at_level(Level::Portable, || all(&pmj, 16));
             assert!(want == at_level(lv, || all(&pmj, 16)), "{lv:?} pmj02bn");
+            let rest = || {
+                [
+                    all(&bn_sobol, 16),
+                    all(&bn_lattice, 16),
+                    all(&pmj_plain, 16),
+                    all(&independent, 16),
+                ]
+            };
+            let want = at_level(Level::Portable, rest);
+            assert!(
+                want == at_level(lv, rest),
+                "{lv:?} blue noise, PMJ02, independent"
+            );
         }
     }
 

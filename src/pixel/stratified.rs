@@ -1,7 +1,7 @@
 //! pbrt-v4's `StratifiedSampler`: per pixel and dimension, the samples permuted over the
 //! strata of `[0, 1)` or of an `xs x ys` grid, jittered by a PCG32 stream.
 
-use super::prepared::{CHUNK, permutation_fill};
+use super::prepared::{CHUNK, permutation_fill_call};
 use super::{PixelGrid, PixelPoint, PixelSampler, pbrt_f32, seed_hash4};
 use crate::error::{Error, Result};
 use crate::hash::pbrt::{mix_bits, murmur_hash64a, permutation_element};
@@ -168,7 +168,7 @@ impl StratifiedSampler {
         let mut perm = [0u32; CHUNK];
         for (c, chunk) in out.chunks_mut(CHUNK).enumerate() {
             let perm = &mut perm[..chunk.len()];
-            permutation_fill((c * CHUNK) as u32, self.grid.spp, h as u32, perm);
+            permutation_fill_call((c * CHUNK) as u32, self.grid.spp, h as u32, perm);
             for (o, &s) in chunk.iter_mut().zip(perm.iter()) {
                 let offsets = if self.jitter {
                     let mut p = Pcg32 {

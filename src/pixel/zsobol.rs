@@ -2,7 +2,7 @@
 //! "Screen-space blue-noise diffusion of Monte Carlo sampling error via hierarchical ordering
 //! of pixels"), bit-identical to pbrt-v4's `ZSobolSampler`.
 
-use super::prepared::{CHUNK, dispatched, randomize_pairs, randomize_values, sobol1_reversed};
+use super::prepared::{CHUNK, at, dispatched, randomize_pairs, randomize_values, sobol1_reversed};
 use super::{
     PixelGrid, PixelPoint, PixelSampler, Randomization, pbrt_f32, seed_hash2, sobol0, sobol1,
 };
@@ -354,16 +354,19 @@ impl ZSobol {
         let (base, salt, [c0, c1]) = self.pixel_constants(x, y, dim);
         let h = self.key_2d(dim);
         let keys = [h as u32, (h >> 32) as u32];
-        let mut low = [0u32; CHUNK];
+        let mut low_all = [0u32; CHUNK];
         for (c, chunk) in out.chunks_mut(CHUNK).enumerate() {
-            let low = &mut low[..chunk.len()];
+            let low = &mut low_all[..chunk.len()];
             self.low_indices(base, salt, (c * CHUNK) as u32, low);
-            let low = &*low;
+            let low = &low_all;
             randomize_pairs(
                 self.randomize,
                 keys,
                 chunk,
-                |k| [c0 | low[k], c1 ^ sobol1_reversed(low[k])],
+                |k| {
+                    let l = at(low, k);
+                    [c0 | l, c1 ^ sobol1_reversed(l)]
+                },
                 conv,
             );
         }
@@ -383,12 +386,12 @@ impl ZSobol {
         self.grid.check_fill(x, y, out.len())?;
         let (base, salt, [c0, _]) = self.pixel_constants(x, y, dim);
         let key = self.key_1d(dim);
-        let mut low = [0u32; CHUNK];
+        let mut low_all = [0u32; CHUNK];
         for (c, chunk) in out.chunks_mut(CHUNK).enumerate() {
-            let low = &mut low[..chunk.len()];
+            let low = &mut low_all[..chunk.len()];
             self.low_indices(base, salt, (c * CHUNK) as u32, low);
-            let low = &*low;
-            randomize_values(self.randomize, key, chunk, |k| c0 | low[k], conv);
+            let low = &low_all;
+            randomize_values(self.randomize, key, chunk, |k| c0 | at(low, k), conv);
         }
         Ok(())
     }
