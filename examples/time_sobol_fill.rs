@@ -85,6 +85,22 @@ fn main() -> Result<(), qmckit::Error> {
                     }
                 }),
             ),
+            (
+                "fill_f32_reseeded, 64 seeds a call",
+                Box::new(|o| {
+                    let s = black_box(base);
+                    for (t, (idx, o)) in seq
+                        .chunks_exact(16 * 64)
+                        .zip(o.chunks_exact_mut(16 * 64))
+                        .enumerate()
+                    {
+                        let seeds: [u64; 64] = core::array::from_fn(|k| {
+                            mix64((64 * t + k) as u64 ^ 0x9E37_79B9_7F4A_7C15)
+                        });
+                        s.fill_f32_reseeded(&seeds, idx, o).unwrap_or(());
+                    }
+                }),
+            ),
         ];
         let mut out = vec![[0f32; 4]; n];
         run(&mut cases, &mut out, reps);
