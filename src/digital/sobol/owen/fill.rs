@@ -306,6 +306,22 @@ fn fill_blocks<F: Finish>(s: &OwenSobol, indices: &[u32], out: &mut [[f32; 4]], 
         indices.get(..n).unwrap_or(&[]),
         out.get_mut(..n).unwrap_or(&mut []),
     );
+    // One pixel's run of 16 (the per-pixel call): straight to its loop, before the set-up
+    // of the general one.
+    #[cfg(target_pointer_width = "64")]
+    if let (Ok(i16), Ok(o16)) = (
+        <&[u32; 16]>::try_from(indices),
+        <&mut [[f32; 4]; 16]>::try_from(&mut *out),
+    ) && is_aligned_run(i16)
+    {
+        match s.owen.hash() {
+            OwenHash::Vegdahl => run16_f32(&s.keys, i16[0], o16, crate::hash::vegdahl, finish),
+            OwenHash::LaineKarras => {
+                run16_f32(&s.keys, i16[0], o16, crate::hash::laine_karras, finish)
+            }
+        }
+        return;
+    }
     #[cfg(target_pointer_width = "64")]
     let (indices, out) = {
         let (idx16, idx_rest) = indices.as_chunks::<16>();
