@@ -4,7 +4,8 @@
 //! * `f64 [LOG2_N] [DIMS] [REPS]` (defaults 20, 8, 20): `Scrambled<Sobol, FastOwen>` in
 //!   Gray order (the Python default) through `fill_as::<f64>`, and its `u32` fill alone;
 //! * `f32 [LOG2_N] [REPS]` (defaults 16, 200): `OwenSobol::fill_f32` of 4-dimensional
-//!   points with one seed and with a reseed every 16 points (as `benches/render.rs`).
+//!   points with one seed and with a reseed every 16 points (as `benches/render.rs`), and
+//!   `OwenSobol::fill_f32_reseeded` with the same seeds, 64 pixels a call.
 //!
 //! Usage: `cargo run --release --example time_sobol_fill -- f64|f32 ...`. Each line: the
 //! case, its least wall time over `REPS` runs (the cases run in turn, so that load on the

@@ -21,6 +21,7 @@ use crate::randomize::{FastOwen, OwenHash, dimension_seeds};
 const DIMENSION_SALT: u64 = 0x5EED;
 
 /// `2^-32` as `f32` (exact).
+#[cfg(all(feature = "std", target_arch = "x86_64"))]
 const INV_2_POW_32: f32 = 1.0 / 4_294_967_296.0;
 
 /// `out[k] = s.sample4_f32(indices[k])` in the widest build this CPU runs.
@@ -162,6 +163,8 @@ fn block<F: Finish>(
         run16_f32(&keys, i16[0], o16, hash, finish);
         return;
     }
+    #[cfg(not(target_pointer_width = "64"))]
+    let _ = hash;
     let s = OwenSobol {
         dims: s.dims,
         owen: FastOwen::with_hash(seed, s.owen.hash()),
