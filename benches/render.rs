@@ -17,7 +17,8 @@
 //! and `fill_vs_memset_1048576x4_f32`, time [`OwenSobol::fill_f32`] of 2^16 and 2^20
 //! four-dimensional points (1 MiB of `f32` in the L2 cache; 16 MiB, the whole render, in
 //! memory) next to a memset of the same bytes, with one seed, with a reseed every 16
-//! points, and with runs that do not start at a multiple of 16.
+//! points (`reseed` then `fill_f32`, and `fill_f32_reseeded` with 64 pixels' seeds a call),
+//! and with runs that do not start at a multiple of 16.
 //! Run: `cargo bench --bench render -- --measurement-time 2 --warm-up-time 1`.
 
 use std::hint::black_box;
@@ -178,6 +179,22 @@ fn fill_vs_memset(c: &mut Criterion, base: &OwenSobol, n: usize) {
             {
                 s.reseed(pixel_seed(p as u32));
                 s.fill_f32(idx, o).expect("lengths");
+            }
+            black_box(&mut out);
+        })
+    });
+    group.bench_function("owen_sobol_fill_f32_reseeded_16", |bch| {
+        // The same values as reseed_16, with the pixels' seeds handed over 64 at a time.
+        let mut out = vec![[0f32; D]; n];
+        bch.iter(|| {
+            let s = black_box(*base);
+            for (t, (idx, o)) in black_box(&seq)
+                .chunks_exact(SPP * 64)
+                .zip(out.chunks_exact_mut(SPP * 64))
+                .enumerate()
+            {
+                let seeds: [u64; 64] = core::array::from_fn(|k| pixel_seed((64 * t + k) as u32));
+                s.fill_f32_reseeded(&seeds, idx, o).expect("lengths");
             }
             black_box(&mut out);
         })

@@ -4,7 +4,8 @@
 //! * `f64 [LOG2_N] [DIMS] [REPS]` (defaults 20, 8, 20): `Scrambled<Sobol, FastOwen>` in
 //!   Gray order (the Python default) through `fill_as::<f64>`, and its `u32` fill alone;
 //! * `f32 [LOG2_N] [REPS]` (defaults 16, 200): `OwenSobol::fill_f32` of 4-dimensional
-//!   points with one seed and with a reseed every 16 points (as `benches/render.rs`).
+//!   points with one seed and with a reseed every 16 points (as `benches/render.rs`), and
+//!   `OwenSobol::fill_f32_reseeded` with the same seeds, 64 pixels a call.
 //!
 //! Usage: `cargo run --release --example time_sobol_fill -- f64|f32 ...`. Each line: the
 //! case, its least wall time over `REPS` runs (the cases run in turn, so that load on the
@@ -82,6 +83,22 @@ fn main() -> Result<(), qmckit::Error> {
                     {
                         s.reseed(mix64(p as u64 ^ 0x9E37_79B9_7F4A_7C15));
                         s.fill_f32(idx, o).unwrap_or(());
+                    }
+                }),
+            ),
+            (
+                "fill_f32_reseeded, 64 seeds a call",
+                Box::new(|o| {
+                    let s = black_box(base);
+                    for (t, (idx, o)) in seq
+                        .chunks_exact(16 * 64)
+                        .zip(o.chunks_exact_mut(16 * 64))
+                        .enumerate()
+                    {
+                        let seeds: [u64; 64] = core::array::from_fn(|k| {
+                            mix64((64 * t + k) as u64 ^ 0x9E37_79B9_7F4A_7C15)
+                        });
+                        s.fill_f32_reseeded(&seeds, idx, o).unwrap_or(());
                     }
                 }),
             ),

@@ -151,6 +151,29 @@ pub const fn to_f32_lz(x: u32) -> f32 {
     kept as f32 * (INV_2_POW_32 as f32)
 }
 
+/// [`to_f32`] of the bit reversal of `h`, `to_f32(reverse_bits(h))` (bit for bit, checked
+/// for all 2^32 inputs), for pipelines that end in the reversed domain (the hash-based Owen
+/// scramble). The 24 leading significant bits of `reverse(h)` are, before the reversal,
+/// the 24 bits of `h` from its lowest set bit `t` up: `l = h & -h = 2^t` isolates that bit
+/// and `(l << 24) - l` (mod 2^32) sets bits `t ..= min(t + 23, 31)` (the shift drops
+/// `2^(t+24)` when `t + 24 >= 32`, leaving every bit from `t` up; `h = 0` gives an empty
+/// window). The kept, reversed value converts to `f32` exactly and scales exactly by
+/// 2^-32. Cost: five integer operations, the reversal, one conversion, one multiply; no
+/// leading-zero count, so it suits vector builds without one (SSE2, AVX2).
+///
+/// ```
+/// use qmckit::bits::{reverse_bits, reversed_to_f32, to_f32};
+/// for x in [0, 1, 0x00FF_FFFF, 0x0100_0001, 0x8000_00FF, 0xFFFF_FFFF] {
+///     assert_eq!(reversed_to_f32(reverse_bits(x)).to_bits(), to_f32(x).to_bits());
+/// }
+/// ```
+#[inline]
+pub const fn reversed_to_f32(h: u32) -> f32 {
+    let low = h & h.wrapping_neg();
+    let window = (low << 24).wrapping_sub(low);
+    reverse_bits(h & window) as f32 * (INV_2_POW_32 as f32)
+}
+
 /// `x / 2^32` as a `fixed` crate `U0F32` (same bits, no rounding).
 #[cfg(feature = "fixed")]
 #[inline]

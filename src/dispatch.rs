@@ -15,7 +15,9 @@
 //! `#[inline(always)]`), an entry point calling [`run`] / [`run_at`] (integer builds) or
 //! [`run_float`] (floating-point builds), and a test next to it that runs every build the
 //! CPU has ([`levels`]) against the portable one. The `#[target_feature]` wrappers and the
-//! detection are written once, here.
+//! detection are written once, here, and so are the few instructions that plain Rust does
+//! not produce, as methods of [`Avx512`], the proof value the AVX-512 build hands its
+//! kernel ([`Kernel::run_avx512`]).
 #![allow(unsafe_code)]
 
 /// The widest build this CPU runs.
@@ -26,7 +28,7 @@ pub(crate) enum Level {
     /// AVX2.
     #[cfg(all(feature = "std", target_arch = "x86_64"))]
     Avx2,
-    /// AVX-512 F, BW, VL with GFNI.
+    /// AVX-512 F, BW, VL, CD, DQ with GFNI.
     #[cfg(all(feature = "std", target_arch = "x86_64"))]
     Avx512Gfni,
 }
@@ -84,6 +86,7 @@ fn detect() -> Level {
         && std::arch::is_x86_feature_detected!("avx512bw")
         && std::arch::is_x86_feature_detected!("avx512vl")
         && std::arch::is_x86_feature_detected!("avx512cd")
+        && std::arch::is_x86_feature_detected!("avx512dq")
         && std::arch::is_x86_feature_detected!("gfni")
     {
         return Level::Avx512Gfni;
@@ -109,6 +112,50 @@ pub(crate) trait Kernel {
     type Output;
     /// The computation (safe code; `#[inline(always)]`).
     fn run(self) -> Self::Output;
+    /// The computation in the AVX-512 GFNI build of [`run_at`], handed the proof that the
+    /// CPU has that build's features (for the instructions of [`Avx512`]); `run` unless the
+    /// kernel says otherwise. `#[inline(always)]` too.
+    #[cfg(all(feature = "std", target_arch = "x86_64"))]
+    #[inline(always)]
+    fn run_avx512(self, _cpu: Avx512) -> Self::Output
+    where
+        Self: Sized,
+    {
+        self.run()
+    }
+}
+
+/// Proof that the running CPU has the features of the AVX-512 GFNI build (avx512f, bw, vl,
+/// cd, dq, gfni): only `run_int_avx512` makes a value of this type (its field is private to
+/// this module), and that function runs only after [`level`] detected those features. The
+/// features belong to the CPU, not to the code, so the proof holds wherever the value goes.
+/// Its methods are the few AVX-512 instructions that safe Rust does not produce from plain
+/// code, as operations on arrays of lanes (which, inlined into the AVX-512 build, stay in
+/// vector registers).
+#[cfg(all(feature = "std", target_arch = "x86_64"))]
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Avx512(());
+
+#[cfg(all(feature = "std", target_arch = "x86_64"))]
+impl Avx512 {
+    /// Each lane `x` as the largest `f32` at most `x` (`x` converted rounding toward zero:
+    /// its 24 leading significant bits, exact below 2^24): one `vcvtudq2ps` with the
+    /// embedded rounding `{rz-sae}` for the sixteen lanes.
+    #[inline(always)]
+    pub(crate) fn u32_to_f32_toward_zero(self, x: [u32; 16]) -> [f32; 16] {
+        use core::arch::x86_64::{
+            __m512, __m512i, _MM_FROUND_NO_EXC, _MM_FROUND_TO_ZERO, _mm512_cvt_roundepu32_ps,
+        };
+        // SAFETY: `[u32; 16]` and `__m512i`, and `__m512` and `[f32; 16]`, are 64 bytes each
+        // with every bit pattern valid, so both transmutes are sound. The intrinsic requires
+        // avx512f, which `self` proves the CPU has (see the type); its rounding argument is
+        // a valid constant (toward zero, exceptions suppressed).
+        unsafe {
+            let v = core::mem::transmute::<[u32; 16], __m512i>(x);
+            let f = _mm512_cvt_roundepu32_ps::<{ _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC }>(v);
+            core::mem::transmute::<__m512, [f32; 16]>(f)
+        }
+    }
 }
 
 /// `k.run()` in the widest build that is at most `want` and that the CPU runs. Inlined
@@ -120,9 +167,10 @@ pub(crate) fn run_at<K: Kernel>(want: Level, k: K) -> K::Output {
     match want {
         #[cfg(all(feature = "std", target_arch = "x86_64"))]
         Level::Avx512Gfni if detected == Level::Avx512Gfni => {
-            // SAFETY: `run_int_avx512` requires avx512f, avx512bw, avx512vl and gfni;
-            // `level()` answers Avx512Gfni only when `detect()` found all four on this CPU
-            // (the cache holds that answer, never another). The kernel itself is safe code.
+            // SAFETY: `run_int_avx512` requires avx512f, avx512bw, avx512vl, avx512cd,
+            // avx512dq and gfni; `level()` answers Avx512Gfni only when `detect()` found all
+            // six on this CPU (the cache holds that answer, never another). The kernel
+            // itself is safe code; the `Avx512` proof it receives states the same fact.
             unsafe { run_int_avx512(k) }
         }
         #[cfg(all(feature = "std", target_arch = "x86_64"))]
@@ -143,11 +191,12 @@ fn run_int_avx2<K: Kernel>(k: K) -> K::Output {
 }
 
 /// With AVX-512 the 16 lanes of a `u32` kernel are one vector, and a bit reversal is a GFNI
-/// affine transform plus a byte shuffle.
+/// affine transform plus a byte shuffle. The one place that makes an [`Avx512`] proof: this
+/// function is entered only from `run_at` after `level()` detected its features.
 #[cfg(all(feature = "std", target_arch = "x86_64"))]
-#[target_feature(enable = "avx512f,avx512bw,avx512vl,avx512cd,gfni")]
+#[target_feature(enable = "avx512f,avx512bw,avx512vl,avx512cd,avx512dq,gfni")]
 fn run_int_avx512<K: Kernel>(k: K) -> K::Output {
-    k.run()
+    k.run_avx512(Avx512(()))
 }
 
 /// The builds of a floating-point kernel ([`run_float`]). A build the CPU lacks falls back
@@ -276,6 +325,60 @@ mod tests {
             want_acc
         );
         assert_eq!(got, want);
+    }
+
+    /// The AVX-512 build's conversion rounding toward zero (`Avx512`, reached only through
+    /// `run_at` after detection) gives, lane by lane, the largest `f32` at most `x`: the
+    /// round-to-nearest conversion, one step down where it rounded up. Inputs: every
+    /// neighbourhood of a power of two and of a midpoint between floats, and a stride over
+    /// all `u32`. Skipped (with a note) on CPUs without the build.
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn the_avx512_conversion_rounds_toward_zero() {
+        struct Conv<'a>(&'a [u32]);
+        impl Kernel for Conv<'_> {
+            type Output = Option<Vec<f32>>;
+            #[inline(always)]
+            fn run(self) -> Option<Vec<f32>> {
+                None
+            }
+            #[inline(always)]
+            fn run_avx512(self, cpu: Avx512) -> Option<Vec<f32>> {
+                let mut out = Vec::with_capacity(self.0.len());
+                for c in self.0.chunks_exact(16) {
+                    let lanes: [u32; 16] = core::array::from_fn(|k| c[k]);
+                    out.extend(cpu.u32_to_f32_toward_zero(lanes));
+                }
+                Some(out)
+            }
+        }
+        let mut xs: Vec<u32> = vec![0, 1, 2, 3, u32::MAX, u32::MAX - 1];
+        for b in 0..32u32 {
+            for base in [
+                1u32 << b,
+                (1u32 << b) | (1u32 << b).checked_shr(24).unwrap_or(0),
+            ] {
+                for d in 0..8u32 {
+                    xs.extend([base.wrapping_add(d), base.wrapping_sub(d)]);
+                }
+            }
+        }
+        xs.extend((0..=u32::MAX).step_by(9_973));
+        xs.resize(xs.len().next_multiple_of(16), 7);
+        let Some(got) = run_at(Level::Avx512Gfni, Conv(&xs)) else {
+            println!("no AVX-512 GFNI build on this CPU: conversion not tested");
+            return;
+        };
+        for (&x, &f) in xs.iter().zip(&got) {
+            let nearest = x as f32;
+            let want = if nearest as f64 > x as f64 {
+                f32::from_bits(nearest.to_bits() - 1)
+            } else {
+                nearest
+            };
+            assert_eq!(f.to_bits(), want.to_bits(), "{x}");
+            assert!(f as f64 <= x as f64);
+        }
     }
 
     /// The cached level is the detected one, and stays so.

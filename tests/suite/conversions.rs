@@ -1,8 +1,8 @@
 //! The 0.32 fixed-point conversions stay in [0, 1) and are faithful.
 
 use qmckit::bits::{
-    FromFraction, fraction, gray, gray_inverse, in_cell, to_f32, to_f32_lanes, to_f32_lz,
-    to_f32_via_f64, to_f64,
+    FromFraction, fraction, gray, gray_inverse, in_cell, reverse_bits, reversed_to_f32, to_f32,
+    to_f32_lanes, to_f32_lz, to_f32_via_f64, to_f64,
 };
 
 fn check_f32(x: u32, prev: f32) -> f32 {
@@ -21,6 +21,11 @@ fn check_f32(x: u32, prev: f32) -> f32 {
         f.to_bits(),
         to_f32_lz(x).to_bits(),
         "the leading-zero path differs at {x}"
+    );
+    assert_eq!(
+        f.to_bits(),
+        reversed_to_f32(reverse_bits(x)).to_bits(),
+        "the reversed-domain path differs at {x}"
     );
     assert!(f < 1.0, "to_f32({x}) = 1");
     assert!(f >= prev, "not monotone at {x}");

@@ -15,13 +15,12 @@
 //! hashes (nine `mix64`, the seed's own hashed once: [`dimension_seeds`]). Dimensions from 4 on are evaluated from the direction numbers (32 AND/XOR steps).
 
 use super::{SOBOL_DIRECTIONS, SOBOL_MAX_DIMS, Sobol, SobolDimension, byte_tables};
-#[cfg(target_pointer_width = "64")]
-use crate::bits::to_f32_lz;
 use crate::bits::{reverse_bits, to_f32, to_f32_lanes};
-use crate::dispatch::{self, Kernel};
 use crate::error::{Error, Result};
 use crate::randomize::{FastOwen, FastOwenScrambler, OwenHash, Scrambled, dimension_seeds};
 use crate::sampler::{FULL_RANGE, Sampler, check};
+
+mod fill;
 
 /// Dimensions served by the interleaved tables.
 pub(super) const TABLE_DIMS: usize = 4;
@@ -184,6 +183,7 @@ impl OwenSobol {
         Ok(Self::keyed(dims, FastOwen::with_hash(seed, hash)))
     }
 
+    #[inline]
     const fn keyed(dims: usize, owen: FastOwen) -> Self {
         let seed = owen.seed();
         OwenSobol {
@@ -273,13 +273,40 @@ impl OwenSobol {
     /// [`Error::BufferLength`] (`expected: indices.len()`, `got: out.len()`) unless the two
     /// slices have the same length; `out` is then left untouched.
     pub fn fill_f32(&self, indices: &[u32], out: &mut [[f32; 4]]) -> Result<()> {
-        check_lengths(indices, out)?;
-        dispatch::run(Fill4 {
-            s: self,
-            indices,
-            out,
-        });
-        Ok(())
+        fill::dispatched(self, indices, out)
+    }
+
+    /// A reseeded fill in one call: `indices` in `seeds.len()` equal blocks of `n` points,
+    /// block `b` with seed `seeds[b]`, so `out[k] = self.with_seed(seeds[k / n])
+    /// .sample4_f32(indices[k])` (the hash and the dimensions are `self`'s). The same values
+    /// as [`reseed`](Self::reseed) then [`fill_f32`](Self::fill_f32) block by block; here
+    /// the keys of eight seeds are hashed together, as eight lanes (one AVX-512 vector of
+    /// `u64`), where a reseed hashes one seed's four keys alone. Runs the widest build
+    /// this CPU supports, as [`fill_f32`](Self::fill_f32).
+    ///
+    /// ```
+    /// use qmckit::digital::sobol::OwenSobol;
+    /// let s = OwenSobol::new(4, 0)?;
+    /// let seeds = [11u64, 12, 13];
+    /// let indices: Vec<u32> = (0..3).flat_map(|_| 0..16u32).collect(); // 16 a pixel
+    /// let mut px = vec![[0f32; 4]; 48];
+    /// s.fill_f32_reseeded(&seeds, &indices, &mut px)?;
+    /// assert_eq!(px[16 + 5], s.with_seed(12).sample4_f32(5));
+    /// # Ok::<(), qmckit::Error>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`Error::BufferLength`] unless `out` has one slot per index (`expected:
+    /// indices.len()`, `got: out.len()`) and `indices.len()` is a multiple of
+    /// `seeds.len()` (`expected`: the next multiple, 0 without seeds; `got:
+    /// indices.len()`). `out` is then left untouched. No indices is `Ok` with any seeds.
+    pub fn fill_f32_reseeded(
+        &self,
+        seeds: &[u64],
+        indices: &[u32],
+        out: &mut [[f32; 4]],
+    ) -> Result<()> {
+        fill::reseeded(self, seeds, indices, out)
     }
 
     /// The portable build of [`fill_f32`](Self::fill_f32) (what other targets use).
@@ -287,187 +314,8 @@ impl OwenSobol {
     /// # Errors
     /// As [`fill_f32`](Self::fill_f32).
     pub fn fill_f32_portable(&self, indices: &[u32], out: &mut [[f32; 4]]) -> Result<()> {
-        check_lengths(indices, out)?;
-        fill_blocks(self, indices, out);
-        Ok(())
+        fill::portable(self, indices, out)
     }
-}
-
-/// The four-dimensional `f32` fill, compiled once per build ([`crate::dispatch::Kernel`]).
-struct Fill4<'a> {
-    s: &'a OwenSobol,
-    indices: &'a [u32],
-    out: &'a mut [[f32; 4]],
-}
-
-impl Kernel for Fill4<'_> {
-    type Output = ();
-    #[inline(always)]
-    fn run(self) {
-        fill_blocks(self.s, self.indices, self.out);
-    }
-}
-
-/// [`OwenSobol::fill_f32`] (lengths already checked) with the widest build that is at most
-/// `want` and that the CPU runs (for the test of every build).
-#[cfg(all(test, feature = "std"))]
-fn fill_f32_at(want: dispatch::Level, s: &OwenSobol, indices: &[u32], out: &mut [[f32; 4]]) {
-    dispatch::run_at(want, Fill4 { s, indices, out });
-}
-
-/// `Ok` when `out` has one slot per index.
-fn check_lengths(indices: &[u32], out: &[[f32; 4]]) -> Result<()> {
-    if indices.len() == out.len() {
-        Ok(())
-    } else {
-        Err(Error::BufferLength {
-            expected: indices.len(),
-            got: out.len(),
-        })
-    }
-}
-
-/// The loop of every [`OwenSobol::fill_f32`] build (the lengths are checked by the caller;
-/// the shorter one bounds the loop). On 64-bit targets four points at a
-/// time: their 16 coordinates form one array, so the hash, the reversal and the conversion
-/// are 16 lanes of identical work that the compiler maps onto vectors of the build's width;
-/// the last `len % 4` points go one by one. 32-bit targets go point by point (small code).
-#[inline(always)]
-fn fill_blocks(s: &OwenSobol, indices: &[u32], out: &mut [[f32; 4]]) {
-    let n = indices.len().min(out.len());
-    let (indices, out) = (
-        indices.get(..n).unwrap_or(&[]),
-        out.get_mut(..n).unwrap_or(&mut []),
-    );
-    #[cfg(target_pointer_width = "64")]
-    let (indices, out) = {
-        let (idx16, idx_rest) = indices.as_chunks::<16>();
-        let (out16, out_rest) = out.as_chunks_mut::<16>();
-        match s.owen.hash() {
-            OwenHash::Vegdahl => fill16(s, idx16, out16, crate::hash::vegdahl),
-            OwenHash::LaineKarras => fill16(s, idx16, out16, crate::hash::laine_karras),
-        }
-        let (idx4, idx_rest) = idx_rest.as_chunks::<4>();
-        let (out4, out_rest) = out_rest.as_chunks_mut::<4>();
-        match s.owen.hash() {
-            OwenHash::Vegdahl => {
-                for (o, i) in out4.iter_mut().zip(idx4) {
-                    *o = block_f32(s, i, crate::hash::vegdahl);
-                }
-            }
-            OwenHash::LaineKarras => {
-                for (o, i) in out4.iter_mut().zip(idx4) {
-                    *o = block_f32(s, i, crate::hash::laine_karras);
-                }
-            }
-        }
-        (idx_rest, out_rest)
-    };
-    for (o, &i) in out.iter_mut().zip(indices) {
-        *o = s.sample4_f32(i);
-    }
-}
-
-/// Sixteen points at a time: a run of 16 consecutive indices from a multiple of 16 (a
-/// pixel's samples, a sequential fill) as whole rows of the low-byte table
-/// ([`run16_f32`]), other indices as four blocks of four ([`block_f32`]).
-#[cfg(target_pointer_width = "64")]
-#[inline(always)]
-fn fill16(
-    s: &OwenSobol,
-    indices: &[[u32; 16]],
-    out: &mut [[[f32; 4]; 16]],
-    hash: impl Fn(u32, u32) -> u32 + Copy,
-) {
-    for (o, i) in out.iter_mut().zip(indices) {
-        if is_aligned_run(i) {
-            run16_f32(s, i[0], o, hash);
-        } else {
-            let (o4, _) = o.as_chunks_mut::<4>();
-            let (i4, _) = i.as_chunks::<4>();
-            for (o, i) in o4.iter_mut().zip(i4) {
-                *o = block_f32(s, i, hash);
-            }
-        }
-    }
-}
-
-/// `true` when `idx` is `i, i + 1, .., i + 15` with `i` a multiple of 16 (so the 16 share
-/// their upper three bytes and their low bytes are one run of table rows).
-#[cfg(target_pointer_width = "64")]
-#[inline(always)]
-fn is_aligned_run(idx: &[u32; 16]) -> bool {
-    let first = idx[0];
-    let mut same = first.is_multiple_of(16);
-    for (k, &i) in idx.iter().enumerate() {
-        same &= i == first.wrapping_add(k as u32);
-    }
-    same
-}
-
-/// Sixteen points `first .. first + 16` (`first` a multiple of 16) into `out` as 64
-/// lanes: the low-byte table's 16 consecutive rows XORed with the shared upper part, then
-/// one hash, reversal and conversion loop over all 64 lanes (four AVX-512 vectors).
-#[cfg(target_pointer_width = "64")]
-#[inline(always)]
-fn run16_f32(s: &OwenSobol, first: u32, out: &mut [[f32; 4]; 16], hash: impl Fn(u32, u32) -> u32) {
-    let high = reversed4_high(first);
-    let low = (first & 0xF0) as usize;
-    let Some(Ok(rows)) = REVERSED4[0]
-        .as_flattened()
-        .get(4 * low..4 * low + 64)
-        .map(<&[u32; 64]>::try_from)
-    else {
-        return; // unreachable: low + 16 <= 256
-    };
-    let high: [u32; 16] = core::array::from_fn(|k| high[k % 4]);
-    let keys: [u32; 16] = core::array::from_fn(|k| s.keys[k % 4]);
-    // Computed in a local array and stored in one copy: the loop then reads and writes
-    // only its own arrays, so it compiles to straight vector code (no run-time overlap
-    // check against `out`), and the key-only parts of the hash are computed once.
-    let mut y = [0f32; 64];
-    let (ys, _) = y.as_chunks_mut::<16>();
-    let (rows, _) = rows.as_chunks::<16>();
-    for (o, r) in ys.iter_mut().zip(rows) {
-        for k in 0..16 {
-            o[k] = to_f32_lz(reverse_bits(hash(r[k] ^ high[k], keys[k])));
-        }
-    }
-    out.as_flattened_mut().copy_from_slice(&y);
-}
-
-/// Four points as 16 lanes: point `p`'s table rows XORed into lanes `4p .. 4p + 4`, then one
-/// hash, reversal and conversion loop over all 16 with the keys spread to 16 lanes (a plain
-/// loop over fixed-size arrays, which the compiler vectorizes).
-#[cfg(target_pointer_width = "64")]
-#[inline(always)]
-fn block_f32(s: &OwenSobol, idx: &[u32; 4], hash: impl Fn(u32, u32) -> u32) -> [[f32; 4]; 4] {
-    let mut x = [0u32; 16];
-    // Four indices with the same upper three bytes (consecutive ones, 63 blocks in 64)
-    // share those bytes' table reads: 7 reads for the block instead of 16.
-    let shared = idx[0] >> 8;
-    if idx.iter().all(|&i| i >> 8 == shared) {
-        let high = reversed4_high(idx[0]);
-        for (p, &index) in idx.iter().enumerate() {
-            let rev = reversed4_low(index, high);
-            for lane in 0..4 {
-                x[(4 * p + lane) % 16] = rev[lane];
-            }
-        }
-    } else {
-        for (p, &index) in idx.iter().enumerate() {
-            let rev = reversed4(index);
-            for lane in 0..4 {
-                x[(4 * p + lane) % 16] = rev[lane];
-            }
-        }
-    }
-    let mut y = [0f32; 16];
-    let keys: [u32; 16] = core::array::from_fn(|k| s.keys[k % 4]);
-    for ((yk, &xk), &key) in y.iter_mut().zip(&x).zip(&keys) {
-        *yk = to_f32_lz(reverse_bits(hash(xk, key)));
-    }
-    core::array::from_fn(|p| core::array::from_fn(|lane| y[(4 * p + lane) % 16]))
 }
 
 impl Sampler for OwenSobol {
@@ -601,50 +449,6 @@ mod tests {
                 sobol.fill_reversed(start, &mut rev).unwrap().unwrap();
                 let reversed: Vec<u32> = plain.iter().map(|x| x.reverse_bits()).collect();
                 assert_eq!(rev, reversed, "dims {dims} start {start} n {n}");
-            }
-        }
-    }
-
-    /// Every build the CPU runs, on lengths leaving 0 to 3 points past the blocks of four
-    /// and on unequal lengths, for both hashes, against the scalar `sample4_f32`.
-    #[test]
-    fn every_build_matches_the_scalar_path() {
-        // Consecutive runs (blocks sharing their upper bytes, and blocks across a 256
-        // boundary), then scattered indices.
-        let indices: Vec<u32> = (0..40u32)
-            .chain(250..262)
-            .chain((0..4099u32).map(|k| k.wrapping_mul(2_654_435_761) ^ (k >> 3)))
-            .chain([0, 1, 255, 256, u32::MAX])
-            .chain(4096..4160)
-            .chain(0xFFFF_FFF0..=u32::MAX)
-            .chain(4000..4040)
-            .collect();
-        for hash in [OwenHash::Vegdahl, OwenHash::LaineKarras] {
-            let s = OwenSobol::with_hash(4, 77, hash).unwrap();
-            for len in [
-                0,
-                1,
-                2,
-                3,
-                4,
-                5,
-                6,
-                7,
-                16,
-                17,
-                33,
-                4101,
-                4103,
-                indices.len(),
-            ] {
-                for lv in dispatch::levels() {
-                    let mut out = vec![[-1f32; 4]; len];
-                    fill_f32_at(lv, &s, &indices[..len], &mut out);
-                    for (k, o) in out.iter().enumerate() {
-                        let want = s.sample4_f32(indices[k]).map(f32::to_bits);
-                        assert_eq!(o.map(f32::to_bits), want, "{lv:?} {hash:?} len {len} k {k}");
-                    }
-                }
             }
         }
     }

@@ -1,0 +1,676 @@
+//! The loops of [`OwenSobol::fill_f32`]: dimensions 0..4 of many points as `f32`, each
+//! value `to_f32(reverse(hash(T0[i0] ^ T1[i1] ^ T2[i2] ^ T3[i3], key_d)))`, compiled once
+//! per build of [`crate::dispatch`] (the portable one, AVX2, AVX-512 with GFNI).
+//!
+//! Sixteen values (four points) form one array of lanes, so the table XOR, the hash, the
+//! reversal and the conversion are 16 lanes of identical work that the compiler maps onto
+//! the build's vectors. The last step, `to_f32(reverse(h))`, is the build's cheapest form
+//! of the same function ([`Finish`]): [`reversed_to_f32`] (five integer operations, no
+//! leading-zero count) in the portable and AVX2 builds, and in the AVX-512 build the
+//! reversal (two instructions with GFNI) and one conversion rounding toward zero, which is
+//! [`crate::bits::to_f32`]'s truncation to 24 significant bits in one instruction.
+
+use super::{OwenSobol, REVERSED4, TABLE_DIMS, reversed4, reversed4_high, reversed4_low};
+use crate::bits::reversed_to_f32;
+use crate::dispatch::{self, Kernel};
+use crate::error::{Error, Result};
+use crate::hash::{hash3_key, hash3_keyed};
+use crate::randomize::{FastOwen, OwenHash, dimension_seeds};
+
+/// The third argument of the hash in [`crate::randomize::dimension_seed`].
+const DIMENSION_SALT: u64 = 0x5EED;
+
+/// `2^-32` as `f32` (exact).
+#[cfg(all(feature = "std", target_arch = "x86_64"))]
+const INV_2_POW_32: f32 = 1.0 / 4_294_967_296.0;
+
+/// `out[k] = s.sample4_f32(indices[k])` in the widest build this CPU runs.
+///
+/// # Errors
+/// [`Error::BufferLength`] unless the lengths agree (`out` untouched).
+pub(super) fn dispatched(s: &OwenSobol, indices: &[u32], out: &mut [[f32; 4]]) -> Result<()> {
+    check_lengths(indices, out)?;
+    // One pixel's run of 16 (the per-pixel call) through its own small kernel, so that the
+    // call does not pay the general loop's set-up and register saves.
+    #[cfg(target_pointer_width = "64")]
+    if let (Ok(i16), Ok(o16)) = (
+        <&[u32; 16]>::try_from(indices),
+        <&mut [[f32; 4]; 16]>::try_from(&mut *out),
+    ) && is_aligned_run(i16)
+    {
+        let first = i16[0];
+        dispatch::run_at(dispatch::level(), Run16 { s, first, out: o16 });
+        return Ok(());
+    }
+    dispatched_general(s, indices, out);
+    Ok(())
+}
+
+/// [`dispatched`] past its one-run case (lengths checked).
+#[inline(never)]
+fn dispatched_general(s: &OwenSobol, indices: &[u32], out: &mut [[f32; 4]]) {
+    dispatch::run_at(dispatch::level(), Fill4 { s, indices, out });
+}
+
+/// Points `first .. first + 16` (`first` a multiple of 16): [`run16_f32`] compiled once
+/// per build.
+#[cfg(target_pointer_width = "64")]
+struct Run16<'a> {
+    s: &'a OwenSobol,
+    first: u32,
+    out: &'a mut [[f32; 4]; 16],
+}
+
+#[cfg(target_pointer_width = "64")]
+impl Kernel for Run16<'_> {
+    type Output = ();
+    #[inline(always)]
+    fn run(self) {
+        run16_hashed(
+            &self.s.keys,
+            self.s.owen.hash(),
+            self.first,
+            self.out,
+            Lanes,
+        );
+    }
+    #[cfg(all(feature = "std", target_arch = "x86_64"))]
+    #[inline(always)]
+    fn run_avx512(self, cpu: dispatch::Avx512) {
+        run16_hashed(&self.s.keys, self.s.owen.hash(), self.first, self.out, cpu);
+    }
+}
+
+/// [`run16_f32`] with the hash chosen at run time.
+#[cfg(target_pointer_width = "64")]
+#[inline(always)]
+fn run16_hashed<F: Finish>(
+    keys: &[u32; TABLE_DIMS],
+    hash: OwenHash,
+    first: u32,
+    out: &mut [[f32; 4]; 16],
+    finish: F,
+) {
+    match hash {
+        OwenHash::Vegdahl => run16_f32(keys, first, out, crate::hash::vegdahl, finish),
+        OwenHash::LaineKarras => run16_f32(keys, first, out, crate::hash::laine_karras, finish),
+    }
+}
+
+/// As [`dispatched`], always the portable build.
+///
+/// # Errors
+/// As [`dispatched`].
+pub(super) fn portable(s: &OwenSobol, indices: &[u32], out: &mut [[f32; 4]]) -> Result<()> {
+    check_lengths(indices, out)?;
+    fill_blocks(s, indices, out, Lanes);
+    Ok(())
+}
+
+/// `out[k] = s.with_seed(seeds[k / n]).sample4_f32(indices[k])` with `n = indices.len() /
+/// seeds.len()` points a seed, in the widest build this CPU runs.
+///
+/// # Errors
+/// [`Error::BufferLength`] unless `out` has one slot per index (`expected: indices.len()`)
+/// and `indices` splits into `seeds.len()` equal blocks (`expected`: the next multiple of
+/// `seeds.len()`, or 0 without seeds; `got: indices.len()`). `out` is then untouched.
+pub(super) fn reseeded(
+    s: &OwenSobol,
+    seeds: &[u64],
+    indices: &[u32],
+    out: &mut [[f32; 4]],
+) -> Result<()> {
+    check_lengths(indices, out)?;
+    if indices.is_empty() {
+        return Ok(());
+    }
+    let got = indices.len();
+    if seeds.is_empty() || !got.is_multiple_of(seeds.len()) {
+        return Err(Error::BufferLength {
+            expected: got.next_multiple_of(seeds.len().max(1)) * seeds.len().min(1),
+            got,
+        });
+    }
+    let per_seed = got / seeds.len();
+    dispatch::run_at(
+        dispatch::level(),
+        Reseeded {
+            s,
+            seeds,
+            per_seed,
+            indices,
+            out,
+        },
+    );
+    Ok(())
+}
+
+/// The reseeded fill ([`reseeded`]), compiled once per build.
+struct Reseeded<'a> {
+    s: &'a OwenSobol,
+    seeds: &'a [u64],
+    per_seed: usize,
+    indices: &'a [u32],
+    out: &'a mut [[f32; 4]],
+}
+
+impl Kernel for Reseeded<'_> {
+    type Output = ();
+    #[inline(always)]
+    fn run(self) {
+        reseeded_blocks(self, Lanes);
+    }
+    #[cfg(all(feature = "std", target_arch = "x86_64"))]
+    #[inline(always)]
+    fn run_avx512(self, cpu: dispatch::Avx512) {
+        reseeded_blocks(self, cpu);
+    }
+}
+
+/// The loop of every [`reseeded`] build, for the sampler's hash.
+#[inline(always)]
+fn reseeded_blocks<F: Finish>(k: Reseeded<'_>, finish: F) {
+    match k.s.owen.hash() {
+        OwenHash::Vegdahl => reseeded_with(k, crate::hash::vegdahl, finish),
+        OwenHash::LaineKarras => reseeded_with(k, crate::hash::laine_karras, finish),
+    }
+}
+
+/// The keys of eight seeds at a time as eight lanes ([`keys8`]), then each seed's block of
+/// points: a block that is one run of 16 from a multiple of 16 (a pixel's samples) straight
+/// as [`run16_f32`], any other as [`fill_blocks`] does it.
+#[inline(always)]
+fn reseeded_with<F: Finish>(k: Reseeded<'_>, hash: impl Fn(u32, u32) -> u32 + Copy, finish: F) {
+    let Reseeded {
+        s,
+        seeds,
+        per_seed,
+        indices,
+        out,
+    } = k;
+    let mut blocks = indices
+        .chunks_exact(per_seed)
+        .zip(out.chunks_exact_mut(per_seed));
+    let (seeds8, rest) = seeds.as_chunks::<8>();
+    for seeds in seeds8 {
+        let keys = keys8(seeds);
+        for (&seed, keys) in seeds.iter().zip(keys) {
+            let Some((idx, out)) = blocks.next() else {
+                return;
+            };
+            block(s, seed, keys, idx, out, hash, finish);
+        }
+    }
+    for (&seed, (idx, out)) in rest.iter().zip(blocks) {
+        block(s, seed, dimension_seeds(seed, 0), idx, out, hash, finish);
+    }
+}
+
+/// One block of [`reseeded_with`]: `s` with `seed` (whose keys are `keys`) on `idx`.
+#[inline(always)]
+fn block<F: Finish>(
+    s: &OwenSobol,
+    seed: u64,
+    keys: [u32; TABLE_DIMS],
+    idx: &[u32],
+    out: &mut [[f32; 4]],
+    hash: impl Fn(u32, u32) -> u32 + Copy,
+    finish: F,
+) {
+    #[cfg(target_pointer_width = "64")]
+    if let (Ok(i16), Ok(o16)) = (
+        <&[u32; 16]>::try_from(idx),
+        <&mut [[f32; 4]; 16]>::try_from(&mut *out),
+    ) && is_aligned_run(i16)
+    {
+        run16_f32(&keys, i16[0], o16, hash, finish);
+        return;
+    }
+    #[cfg(not(target_pointer_width = "64"))]
+    let _ = hash;
+    let s = OwenSobol {
+        dims: s.dims,
+        owen: FastOwen::with_hash(seed, s.owen.hash()),
+        keys,
+    };
+    fill_blocks(&s, idx, out, finish);
+}
+
+/// [`crate::randomize::dimension_seeds`]`(seed, 0)` of eight seeds, as lanes: the same
+/// `1 + 2 x 4` [`crate::hash::mix64`] a seed, each step one loop over the eight seeds (a
+/// vector of eight `u64` in the AVX-512 build, whose 64-bit multiply is one instruction),
+/// so that eight reseeds cost about what one does point by point.
+#[inline(always)]
+fn keys8(seeds: &[u64; 8]) -> [[u32; TABLE_DIMS]; 8] {
+    let mut base = [0u64; 8];
+    for (b, &seed) in base.iter_mut().zip(seeds) {
+        *b = hash3_key(seed);
+    }
+    let mut keys = [[0u32; TABLE_DIMS]; 8];
+    for d in 0..TABLE_DIMS {
+        let mut kd = [0u32; 8];
+        for (k, &b) in kd.iter_mut().zip(&base) {
+            *k = (hash3_keyed(b, d as u64, DIMENSION_SALT) >> 32) as u32;
+        }
+        for (keys, &k) in keys.iter_mut().zip(&kd) {
+            keys[d] = k;
+        }
+    }
+    keys
+}
+
+/// The four-dimensional `f32` fill, compiled once per build ([`crate::dispatch::Kernel`]).
+struct Fill4<'a> {
+    s: &'a OwenSobol,
+    indices: &'a [u32],
+    out: &'a mut [[f32; 4]],
+}
+
+impl Kernel for Fill4<'_> {
+    type Output = ();
+    #[inline(always)]
+    fn run(self) {
+        fill_blocks(self.s, self.indices, self.out, Lanes);
+    }
+    #[cfg(all(feature = "std", target_arch = "x86_64"))]
+    #[inline(always)]
+    fn run_avx512(self, cpu: dispatch::Avx512) {
+        fill_blocks(self.s, self.indices, self.out, cpu);
+    }
+}
+
+/// [`OwenSobol::fill_f32`] (lengths already checked) with the widest build that is at most
+/// `want` and that the CPU runs (for the test of every build).
+#[cfg(all(test, feature = "std"))]
+fn fill_f32_at(want: dispatch::Level, s: &OwenSobol, indices: &[u32], out: &mut [[f32; 4]]) {
+    dispatch::run_at(want, Fill4 { s, indices, out });
+}
+
+/// [`reseeded`] (lengths already checked, `per_seed >= 1`) with the widest build that is at
+/// most `want` and that the CPU runs.
+#[cfg(all(test, feature = "std"))]
+fn reseeded_at(
+    want: dispatch::Level,
+    s: &OwenSobol,
+    seeds: &[u64],
+    indices: &[u32],
+    out: &mut [[f32; 4]],
+) {
+    let per_seed = indices.len() / seeds.len();
+    dispatch::run_at(
+        want,
+        Reseeded {
+            s,
+            seeds,
+            per_seed,
+            indices,
+            out,
+        },
+    );
+}
+
+/// `Ok` when `out` has one slot per index.
+fn check_lengths(indices: &[u32], out: &[[f32; 4]]) -> Result<()> {
+    if indices.len() == out.len() {
+        Ok(())
+    } else {
+        Err(Error::BufferLength {
+            expected: indices.len(),
+            got: out.len(),
+        })
+    }
+}
+
+/// `to_f32(reverse(h))` on sixteen hashed lanes, in the form a build does best; every form
+/// gives the bits of [`crate::bits::to_f32`] of the reversal.
+trait Finish: Copy {
+    /// The sixteen values.
+    fn f32x16(self, h: &[u32; 16]) -> [f32; 16];
+}
+
+/// [`reversed_to_f32`] lane by lane (the portable and AVX2 builds).
+#[derive(Clone, Copy)]
+struct Lanes;
+
+impl Finish for Lanes {
+    #[inline(always)]
+    fn f32x16(self, h: &[u32; 16]) -> [f32; 16] {
+        let mut y = [0f32; 16];
+        for (y, &h) in y.iter_mut().zip(h) {
+            *y = reversed_to_f32(h);
+        }
+        y
+    }
+}
+
+/// The AVX-512 build: the reversal, then the conversion rounding toward zero (the 24
+/// leading significant bits, as `to_f32` keeps) and the exact scaling by 2^-32.
+#[cfg(all(feature = "std", target_arch = "x86_64"))]
+impl Finish for dispatch::Avx512 {
+    #[inline(always)]
+    fn f32x16(self, h: &[u32; 16]) -> [f32; 16] {
+        let mut r = [0u32; 16];
+        for (r, &h) in r.iter_mut().zip(h) {
+            *r = h.reverse_bits();
+        }
+        let mut y = self.u32_to_f32_toward_zero(r);
+        for y in &mut y {
+            *y *= INV_2_POW_32;
+        }
+        y
+    }
+}
+
+/// The loop of every [`OwenSobol::fill_f32`] build (the lengths are checked by the caller;
+/// the shorter one bounds the loop). On 64-bit targets runs of 16 points and blocks of
+/// four ([`fill16`], [`block_f32`]); the last `len % 4` points go one by one. 32-bit
+/// targets go point by point (small code).
+#[inline(always)]
+fn fill_blocks<F: Finish>(s: &OwenSobol, indices: &[u32], out: &mut [[f32; 4]], finish: F) {
+    let n = indices.len().min(out.len());
+    let (indices, out) = (
+        indices.get(..n).unwrap_or(&[]),
+        out.get_mut(..n).unwrap_or(&mut []),
+    );
+    // One pixel's run of 16 (the per-pixel call): straight to its loop, before the set-up
+    // of the general one.
+    #[cfg(target_pointer_width = "64")]
+    if let (Ok(i16), Ok(o16)) = (
+        <&[u32; 16]>::try_from(indices),
+        <&mut [[f32; 4]; 16]>::try_from(&mut *out),
+    ) && is_aligned_run(i16)
+    {
+        run16_hashed(&s.keys, s.owen.hash(), i16[0], o16, finish);
+        return;
+    }
+    #[cfg(target_pointer_width = "64")]
+    let (indices, out) = {
+        let (idx16, idx_rest) = indices.as_chunks::<16>();
+        let (out16, out_rest) = out.as_chunks_mut::<16>();
+        match s.owen.hash() {
+            OwenHash::Vegdahl => fill16(s, idx16, out16, crate::hash::vegdahl, finish),
+            OwenHash::LaineKarras => fill16(s, idx16, out16, crate::hash::laine_karras, finish),
+        }
+        let (idx4, idx_rest) = idx_rest.as_chunks::<4>();
+        let (out4, out_rest) = out_rest.as_chunks_mut::<4>();
+        match s.owen.hash() {
+            OwenHash::Vegdahl => {
+                for (o, i) in out4.iter_mut().zip(idx4) {
+                    *o = block_f32(s, i, crate::hash::vegdahl, finish);
+                }
+            }
+            OwenHash::LaineKarras => {
+                for (o, i) in out4.iter_mut().zip(idx4) {
+                    *o = block_f32(s, i, crate::hash::laine_karras, finish);
+                }
+            }
+        }
+        (idx_rest, out_rest)
+    };
+    #[cfg(not(target_pointer_width = "64"))]
+    let _ = finish;
+    for (o, &i) in out.iter_mut().zip(indices) {
+        *o = s.sample4_f32(i);
+    }
+}
+
+/// Sixteen points at a time: a run of 16 consecutive indices from a multiple of 16 (a
+/// pixel's samples, a sequential fill) as whole rows of the low-byte table
+/// ([`run16_f32`]), other indices as four blocks of four ([`block_f32`]).
+#[cfg(target_pointer_width = "64")]
+#[inline(always)]
+fn fill16<F: Finish>(
+    s: &OwenSobol,
+    indices: &[[u32; 16]],
+    out: &mut [[[f32; 4]; 16]],
+    hash: impl Fn(u32, u32) -> u32 + Copy,
+    finish: F,
+) {
+    for (o, i) in out.iter_mut().zip(indices) {
+        if is_aligned_run(i) {
+            run16_f32(&s.keys, i[0], o, hash, finish);
+        } else {
+            let (o4, _) = o.as_chunks_mut::<4>();
+            let (i4, _) = i.as_chunks::<4>();
+            for (o, i) in o4.iter_mut().zip(i4) {
+                *o = block_f32(s, i, hash, finish);
+            }
+        }
+    }
+}
+
+/// `true` when `idx` is `i, i + 1, .., i + 15` with `i` a multiple of 16 (so the 16 share
+/// their upper three bytes and their low bytes are one run of table rows).
+#[cfg(target_pointer_width = "64")]
+#[inline(always)]
+fn is_aligned_run(idx: &[u32; 16]) -> bool {
+    let first = idx[0];
+    let mut same = first.is_multiple_of(16);
+    for (k, &i) in idx.iter().enumerate() {
+        same &= i == first.wrapping_add(k as u32);
+    }
+    same
+}
+
+/// Sixteen points `first .. first + 16` (`first` a multiple of 16) into `out` as 64
+/// lanes: the low-byte table's 16 consecutive rows XORed with the shared upper part, then
+/// the hash and [`Finish`] on four arrays of 16 lanes (four AVX-512 vectors).
+#[cfg(target_pointer_width = "64")]
+#[inline(always)]
+fn run16_f32<F: Finish>(
+    keys: &[u32; TABLE_DIMS],
+    first: u32,
+    out: &mut [[f32; 4]; 16],
+    hash: impl Fn(u32, u32) -> u32,
+    finish: F,
+) {
+    let high = reversed4_high(first);
+    let low = (first & 0xF0) as usize;
+    let Some(Ok(rows)) = REVERSED4[0]
+        .as_flattened()
+        .get(4 * low..4 * low + 64)
+        .map(<&[u32; 64]>::try_from)
+    else {
+        return; // unreachable: low + 16 <= 256
+    };
+    let high: [u32; 16] = core::array::from_fn(|k| high[k % 4]);
+    let keys: [u32; 16] = core::array::from_fn(|k| keys[k % 4]);
+    // Computed in a local array and stored in one copy: the loop then reads and writes
+    // only its own arrays, so it compiles to straight vector code (no run-time overlap
+    // check against `out`), and the key-only parts of the hash are computed once.
+    let mut y = [0f32; 64];
+    let (ys, _) = y.as_chunks_mut::<16>();
+    let (rows, _) = rows.as_chunks::<16>();
+    for (o, r) in ys.iter_mut().zip(rows) {
+        let mut h = [0u32; 16];
+        for k in 0..16 {
+            h[k] = hash(r[k] ^ high[k], keys[k]);
+        }
+        *o = finish.f32x16(&h);
+    }
+    out.as_flattened_mut().copy_from_slice(&y);
+}
+
+/// Four points as 16 lanes: point `p`'s table rows XORed into lanes `4p .. 4p + 4`, then the
+/// hash over all 16 with the keys spread to 16 lanes, and [`Finish`].
+#[cfg(target_pointer_width = "64")]
+#[inline(always)]
+fn block_f32<F: Finish>(
+    s: &OwenSobol,
+    idx: &[u32; 4],
+    hash: impl Fn(u32, u32) -> u32,
+    finish: F,
+) -> [[f32; 4]; 4] {
+    let mut x = [0u32; 16];
+    // Four indices with the same upper three bytes (consecutive ones, 63 blocks in 64)
+    // share those bytes' table reads: 7 reads for the block instead of 16.
+    let shared = idx[0] >> 8;
+    if idx.iter().all(|&i| i >> 8 == shared) {
+        let high = reversed4_high(idx[0]);
+        for (p, &index) in idx.iter().enumerate() {
+            let rev = reversed4_low(index, high);
+            for lane in 0..4 {
+                x[(4 * p + lane) % 16] = rev[lane];
+            }
+        }
+    } else {
+        for (p, &index) in idx.iter().enumerate() {
+            let rev = reversed4(index);
+            for lane in 0..4 {
+                x[(4 * p + lane) % 16] = rev[lane];
+            }
+        }
+    }
+    let keys: [u32; 16] = core::array::from_fn(|k| s.keys[k % 4]);
+    let mut h = [0u32; 16];
+    for ((h, &x), &key) in h.iter_mut().zip(&x).zip(&keys) {
+        *h = hash(x, key);
+    }
+    let y = finish.f32x16(&h);
+    core::array::from_fn(|p| core::array::from_fn(|lane| y[(4 * p + lane) % 16]))
+}
+
+#[cfg(all(test, feature = "std"))]
+mod tests {
+    use super::*;
+
+    /// Every build the CPU runs, on lengths leaving 0 to 3 points past the blocks of four
+    /// and on unequal lengths, for both hashes, against the scalar `sample4_f32`.
+    #[test]
+    fn every_build_matches_the_scalar_path() {
+        // Consecutive runs (blocks sharing their upper bytes, and blocks across a 256
+        // boundary), then scattered indices.
+        let indices: Vec<u32> = (0..40u32)
+            .chain(250..262)
+            .chain((0..4099u32).map(|k| k.wrapping_mul(2_654_435_761) ^ (k >> 3)))
+            .chain([0, 1, 255, 256, u32::MAX])
+            .chain(4096..4160)
+            .chain(0xFFFF_FFF0..=u32::MAX)
+            .chain(4000..4040)
+            .collect();
+        for hash in [OwenHash::Vegdahl, OwenHash::LaineKarras] {
+            let s = OwenSobol::with_hash(4, 77, hash).unwrap();
+            for len in [
+                0,
+                1,
+                2,
+                3,
+                4,
+                5,
+                6,
+                7,
+                16,
+                17,
+                33,
+                4101,
+                4103,
+                indices.len(),
+            ] {
+                for lv in dispatch::levels() {
+                    let mut out = vec![[-1f32; 4]; len];
+                    fill_f32_at(lv, &s, &indices[..len], &mut out);
+                    for (k, o) in out.iter().enumerate() {
+                        let want = s.sample4_f32(indices[k]).map(f32::to_bits);
+                        assert_eq!(o.map(f32::to_bits), want, "{lv:?} {hash:?} len {len} k {k}");
+                    }
+                }
+            }
+        }
+    }
+
+    /// Every build of the reseeded fill against a reseed and the scalar `sample4_f32`
+    /// point by point (whose keys come from `dimension_seeds`, not from the eight-lane
+    /// `keys8`): 1 to 19 seeds (whole groups of eight and the rest), blocks that are aligned
+    /// runs of 16, runs of 16 not starting at a multiple of 16, and blocks of 1, 5 and 33
+    /// scattered indices; both hashes.
+    #[test]
+    fn every_build_of_the_reseeded_fill_matches_reseeding() {
+        let scattered: Vec<u32> = (0..19 * 33u32)
+            .map(|k| k.wrapping_mul(2_654_435_761) ^ (k >> 2))
+            .collect();
+        for hash in [OwenHash::Vegdahl, OwenHash::LaineKarras] {
+            let s = OwenSobol::with_hash(4, 5, hash).unwrap();
+            for n_seeds in [1usize, 7, 8, 9, 16, 19] {
+                let seeds: Vec<u64> = (0..n_seeds as u64)
+                    .map(|p| crate::hash::mix64(p ^ 0xABCD) ^ (p << 60))
+                    .collect();
+                let aligned: Vec<u32> = (0..16 * n_seeds as u32).map(|k| k + 4096).collect();
+                let shifted: Vec<u32> = (0..16 * n_seeds as u32).map(|k| k + 8).collect();
+                let cases = [
+                    aligned,
+                    shifted,
+                    scattered[..n_seeds].to_vec(),
+                    scattered[..5 * n_seeds].to_vec(),
+                    scattered[..33 * n_seeds].to_vec(),
+                ];
+                for indices in &cases {
+                    let per_seed = indices.len() / n_seeds;
+                    for lv in dispatch::levels() {
+                        let mut out = vec![[-1f32; 4]; indices.len()];
+                        reseeded_at(lv, &s, &seeds, indices, &mut out);
+                        for (k, o) in out.iter().enumerate() {
+                            let t = s.with_seed(seeds[k / per_seed]);
+                            let want = t.sample4_f32(indices[k]).map(f32::to_bits);
+                            assert_eq!(
+                                o.map(f32::to_bits),
+                                want,
+                                "{lv:?} {hash:?} {n_seeds} seeds, {per_seed} a seed, k {k}"
+                            );
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    /// The one-run kernel of a 16-point call, in every build and through `fill_f32`, against
+    /// the scalar `sample4_f32`: runs at 0, in the middle, across no byte boundary and at
+    /// the top of the index range; both hashes.
+    #[test]
+    fn every_build_of_the_one_run_call_matches_the_scalar_path() {
+        for hash in [OwenHash::Vegdahl, OwenHash::LaineKarras] {
+            let s = OwenSobol::with_hash(4, 3, hash).unwrap();
+            for first in [0u32, 16, 240, 4096, 0x00AB_CDE0, 0xFFFF_FFF0] {
+                let idx: [u32; 16] = core::array::from_fn(|k| first + k as u32);
+                let want: Vec<[u32; 4]> = idx
+                    .iter()
+                    .map(|&i| s.sample4_f32(i).map(f32::to_bits))
+                    .collect();
+                for lv in dispatch::levels() {
+                    let mut out = [[-1f32; 4]; 16];
+                    dispatch::run_at(
+                        lv,
+                        Run16 {
+                            s: &s,
+                            first,
+                            out: &mut out,
+                        },
+                    );
+                    let got: Vec<[u32; 4]> = out.iter().map(|o| o.map(f32::to_bits)).collect();
+                    assert_eq!(got, want, "{lv:?} {hash:?} {first}");
+                }
+                let mut out = [[-1f32; 4]; 16];
+                s.fill_f32(&idx, &mut out).unwrap();
+                let got: Vec<[u32; 4]> = out.iter().map(|o| o.map(f32::to_bits)).collect();
+                assert_eq!(got, want, "fill_f32 {hash:?} {first}");
+            }
+        }
+    }
+
+    /// The reseeded fill's errors leave `out` untouched; no indices is `Ok`.
+    #[test]
+    fn the_reseeded_fill_checks_its_lengths() {
+        let s = OwenSobol::new(4, 1).unwrap();
+        let idx: Vec<u32> = (0..32).collect();
+        let mut out = vec![[-1f32; 4]; 32];
+        let err = |expected, got| Err(Error::BufferLength { expected, got });
+        assert_eq!(s.fill_f32_reseeded(&[1, 2, 3], &idx, &mut out), err(33, 32));
+        assert_eq!(s.fill_f32_reseeded(&[], &idx, &mut out), err(0, 32));
+        assert_eq!(s.fill_f32_reseeded(&[1], &idx, &mut out[..31]), err(32, 31));
+        assert!(out.iter().all(|o| *o == [-1.0; 4]));
+        assert_eq!(s.fill_f32_reseeded(&[], &[], &mut []), Ok(()));
+        assert_eq!(s.fill_f32_reseeded(&[1, 2], &[], &mut []), Ok(()));
+        assert_eq!(s.fill_f32_reseeded(&[1, 2], &idx, &mut out), Ok(()));
+        assert_eq!(out[16], s.with_seed(2).sample4_f32(16));
+    }
+}
