@@ -463,8 +463,8 @@ impl Scratch {
                     + a[2] * (b[0] * c[1] - b[1] * c[0]);
                 let sum = [a[0] + b[0] + c[0], a[1] + b[1] + c[1], a[2] + b[2] + c[2]];
                 r.volume += det;
-                for k in 0..3 {
-                    r.first[k] += det * sum[k];
+                for (f, &x) in r.first.iter_mut().zip(&sum) {
+                    *f += det * x;
                 }
                 r.moment += det * (dot(a, a) + dot(b, b) + dot(c, c) + dot(sum, sum));
             }

@@ -5,6 +5,8 @@
 //! estimate of the volumes and centroids (brute-force nearest site, 5 standard errors),
 //! Lloyd's exact energy never increases and equalizes the cell volumes, and the budget and
 //! deadline stop both.
+// The coordinate loops index several arrays at once.
+#![allow(clippy::needless_range_loop)]
 
 use qmckit::blue_noise::Lloyd;
 use qmckit::blue_noise::power::PowerDiagram;
