@@ -42,7 +42,7 @@
 //! ## Cost
 //!
 //! Exact cells (plain Lloyd in 2D and 3D): `O(N)` an iteration for evenly spread sites
-//! (each cell meets a bounded number of nearby sites through a uniform grid; about 15
+//! (each cell meets a bounded number of nearby sites through a uniform grid; about 12
 //! half-space cuts a cell in 3D), `O(N log N)` for the duplicate check; memory `O(N)`.
 //! Sampled cells: each iteration assigns `M` points by the tree: `O(M log N)` in low dimension (the tree
 //! degrades towards `O(M N)` as `d` grows past about 10); CCVT adds the sorts of the
