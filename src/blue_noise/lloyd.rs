@@ -8,7 +8,16 @@
 //! Lloyd's algorithm decreases the quantization energy of the sites `s_1..s_N`,
 //! `E = integral min_i |x - s_i|^2 dx`, by alternating the assignment of the domain to the
 //! nearest site (the Voronoi cells `V_i`) and moving every site to its cell's centroid.
-//! Here the integral is a Monte Carlo estimate over one dense sample `y_1..y_M`,
+//!
+//! In 2D and 3D the cells are exact: convex polygons ([`super::power`], the power diagram
+//! with zero weights) and polyhedra ([`super::voronoi3`]) cut from the square or cube (on
+//! the torus, from the periodic cell around the site) by the bisectors of the nearby
+//! sites, with exact centroids, and `E` is the sum of their exact second moments, so it
+//! never increases (tested); the cells are computed in parallel (rayon). Only plain
+//! Lloyd: CCVT and projective Lloyd, and every dimension other than 2 and 3 (where exact
+//! cells in general `d` are not implemented), take the sampled cells below.
+//!
+//! Otherwise the integral is a Monte Carlo estimate over one dense sample `y_1..y_M`,
 //! `M = k N` uniform points drawn once from the seed (`k` = samples a site, default 64):
 //! `E = (1/M) sum_j min_i |y_j - s_i|^2`. With the sample fixed, both steps minimize `E`
 //! over their variable, so `E` never increases (tested). The nearest site is found with a
@@ -32,7 +41,10 @@
 //!
 //! ## Cost
 //!
-//! Each iteration assigns `M` points by the tree: `O(M log N)` in low dimension (the tree
+//! Exact cells (plain Lloyd in 2D and 3D): `O(N)` an iteration for evenly spread sites
+//! (each cell meets a bounded number of nearby sites through a uniform grid; about 12
+//! half-space cuts a cell in 3D), `O(N log N)` for the duplicate check; memory `O(N)`.
+//! Sampled cells: each iteration assigns `M` points by the tree: `O(M log N)` in low dimension (the tree
 //! degrades towards `O(M N)` as `d` grows past about 10); CCVT adds the sorts of the
 //! visited pairs, `O(M log k)`. Estimated before it runs ([`Lloyd::cost`]) against a
 //! [`Budget`], stopped at its deadline between and within iterations. Memory
@@ -51,7 +63,9 @@
 use super::PointSet;
 use super::kdtree::KdTree;
 use super::lloyd_projective::{blend, projection_energy, ranks};
+use super::power::PowerDiagram;
 use super::rng::Rng;
+use super::voronoi3::Voronoi3;
 use crate::work::{Budget, Cost, Rate};
 use crate::{Error, Result};
 
@@ -64,6 +78,9 @@ pub const LLOYD_MAX_DIMS: usize = 64;
 /// Steps of [`Lloyd::cost`] a second, one core, release (measured about 1.3e7 for Lloyd
 /// and 1e7 for CCVT at 2D, 1024 sites, 64 points a site; taken lower for loaded machines).
 const ASSIGNMENTS: Rate = Rate::per_second(3e6);
+
+/// The largest `f64` below 1.
+const BELOW_ONE: f64 = 1.0 - f64::EPSILON / 2.0;
 
 /// Sample points between two readings of the clock.
 const DEADLINE_POINTS: usize = 1 << 14;
@@ -84,12 +101,16 @@ pub struct Lloyd {
 /// What [`Lloyd::run`] reports besides the set.
 #[derive(Clone, Debug, PartialEq)]
 pub struct LloydTrace {
-    /// The energy `E` over the dense sample before each iteration and after the last
-    /// (for CCVT, of the capacity-constrained assignment).
+    /// The energy `E` before each iteration and after the last: exact for Lloyd in 2D and
+    /// 3D, over the dense sample otherwise (for CCVT, of the capacity-constrained
+    /// assignment).
     pub energy: Vec<f64>,
-    /// Sample points per site after the last assignment (Voronoi counts for Lloyd; all
-    /// `k` for CCVT).
+    /// Sample points per site after the last assignment (Voronoi counts for Lloyd on the
+    /// dense sample; all `k` for CCVT); empty for Lloyd on exact cells (2D and 3D).
     pub counts: Vec<u32>,
+    /// The exact cell volumes (areas in 2D) of the last sites, for Lloyd on exact cells
+    /// (2D and 3D; they sum to 1); empty on the dense sample.
+    pub volumes: Vec<f64>,
     /// The sites, row-major, as `f64` in `[0, 1)`.
     pub sites: Vec<f64>,
     /// With [`Lloyd::projective`] weight `mu > 0`: the projective energy `E` (the sample
@@ -176,7 +197,8 @@ impl Lloyd {
         Ok(self)
     }
 
-    /// Dense-sample points a site, `k` (1 to 2^16; the CCVT capacity).
+    /// Dense-sample points a site, `k` (1 to 2^16; the CCVT capacity). Unused by Lloyd on
+    /// exact cells (2D and 3D).
     ///
     /// # Errors
     /// [`Error::InvalidParameter`] outside that range.
@@ -212,9 +234,19 @@ impl Lloyd {
         self.n * u64::from(self.per_site)
     }
 
-    /// The estimated running time: `(iterations + 1) M (1 + d/4) log2(N + 1)` tree steps
-    /// (CCVT twice that, for the swaps).
+    /// The estimated running time: `iterations + 1` diagrams of `N` cells on exact cells
+    /// ([`PowerDiagram::cost`], [`Voronoi3::cost`]); otherwise `(iterations + 1) M (1 +
+    /// d/4) log2(N + 1)` tree steps (CCVT twice that, for the swaps).
     pub fn cost(&self) -> Cost {
+        let steps = f64::from(self.iterations) + 1.0;
+        if self.exact() {
+            let one = if self.dims == 2 {
+                PowerDiagram::cost(self.n as usize)
+            } else {
+                Voronoi3::cost(self.n as usize)
+            };
+            return Cost::from_seconds(steps * one.seconds());
+        }
         let m = self.samples() as f64;
         let depth = ((self.n + 1) as f64).log2().max(1.0) / 10.0 + 1.0;
         let dims = 1.0 + self.dims as f64 / 4.0;
@@ -260,6 +292,9 @@ impl Lloyd {
         let mut rng = Rng::new(self.seed, 0x4C4C_4F59_4443_4356); // "LLOYDCCV"
         let mut sites = crate::size::vec_zeroed::<f64>(crate::size::coordinates(n as u64, d)?)?;
         sites.iter_mut().for_each(|x| *x = rng.unit());
+        if self.exact() {
+            return self.run_exact(sites, &budget);
+        }
         let mut dense = crate::size::vec_zeroed::<f64>(crate::size::coordinates(m as u64, d)?)?;
         dense.iter_mut().for_each(|x| *x = rng.unit());
         let mut owner = crate::size::vec_zeroed::<u32>(m)?;
@@ -319,8 +354,52 @@ impl Lloyd {
         Ok(LloydTrace {
             energy,
             counts,
+            volumes: Vec::new(),
             sites,
             projective_energy,
+        })
+    }
+
+    /// `true` when the cells are exact: plain Lloyd (not CCVT, not projective) in 2D or 3D.
+    fn exact(&self) -> bool {
+        !self.ccvt && self.projective == 0.0 && (self.dims == 2 || self.dims == 3)
+    }
+
+    /// Lloyd on exact Voronoi cells from the start `sites`.
+    fn run_exact(&self, mut sites: Vec<f64>, budget: &Budget) -> Result<LloydTrace> {
+        let (d, torus) = (self.dims, self.torus);
+        let mut energy = Vec::new();
+        let mut volumes = Vec::new();
+        for it in 0..=self.iterations {
+            budget.check_deadline("Lloyd relaxation")?;
+            let (e, vol, centroid): (f64, Vec<f64>, Vec<f64>) = if d == 2 {
+                let v = PowerDiagram::voronoi(&sites, torus, budget)?;
+                let e = (0..v.len()).map(|i| v.moment(i)).sum();
+                let c = (0..v.len()).flat_map(|i| v.centroid(i)).collect();
+                (e, v.areas().to_vec(), c)
+            } else {
+                let v = Voronoi3::new(&sites, torus, budget)?;
+                let e = (0..v.len()).map(|i| v.moment(i)).sum();
+                let c = (0..v.len()).flat_map(|i| v.centroid(i)).collect();
+                (e, v.volumes().to_vec(), c)
+            };
+            energy.push(e);
+            volumes = vol;
+            if it == self.iterations {
+                break;
+            }
+            for (s, c) in sites.iter_mut().zip(centroid) {
+                // The centroid lies in the cell, so in the domain up to rounding.
+                *s = if torus { c - c.floor() } else { c };
+                *s = s.clamp(0.0, BELOW_ONE);
+            }
+        }
+        Ok(LloydTrace {
+            energy,
+            counts: Vec::new(),
+            volumes,
+            sites,
+            projective_energy: Vec::new(),
         })
     }
 

@@ -6,7 +6,8 @@
 //! * [`BestCandidate`] — Mitchell's best-candidate sampling on the torus (progressive).
 //! * [`GaussianBlueNoise`] — Ahmed, Ren & Wonka's Gaussian blue noise on the torus.
 //! * [`Lloyd`] — Lloyd relaxation and capacity-constrained Voronoi tessellations (CCVT,
-//!   Balzer, Schlömer & Deussen 2009) in any dimension, in the cube or on the torus.
+//!   Balzer, Schlömer & Deussen 2009) in any dimension, in the cube or on the torus;
+//!   Lloyd in 2D and 3D on exact Voronoi cells ([`power`], [`voronoi3`]).
 //! * [`Bnot`] — blue noise through optimal transport (de Goes et al. 2012) in the square
 //!   or on the torus, 2D, on exact power diagrams ([`power`]) with equal capacities solved
 //!   by damped Newton ([`transport`]).
@@ -68,6 +69,8 @@ pub mod kde;
 #[cfg(feature = "analysis")]
 mod kdtree;
 #[cfg(feature = "analysis")]
+mod keysort;
+#[cfg(feature = "analysis")]
 pub mod ldbn;
 #[cfg(feature = "analysis")]
 pub mod lloyd;
@@ -105,6 +108,8 @@ mod tournament;
 pub mod transport;
 #[cfg(feature = "analysis")]
 pub mod void_and_cluster;
+#[cfg(feature = "analysis")]
+pub mod voronoi3;
 
 #[cfg(feature = "analysis")]
 pub use aa::AaPattern;

@@ -57,10 +57,16 @@
 //!
 //! ## Cost
 //!
-//! `iterations L (N d + N log N)` per run in 1D and 2D (a sort of the projected points
-//! and `N` closed-form quantiles a direction); for `d > 2` each sampled direction adds
-//! `M d + M log M`. Estimated ([`Sot::cost`]) against a [`Budget`] and stopped at its
-//! deadline (checked once a direction). Memory `N d` values, `(N + M) d` for `d > 2`.
+//! `iterations L N d` per run in 1D and 2D for points spread over the cube: a
+//! direction projects the points, ranks them by a bucket sort of 32-bit fixed-point
+//! keys of the projections (`O(N)` when they are spread, `O(N log N)` at worst; ties
+//! closer than `2^-32` of the projections' range keep index order) and evaluates `N`
+//! closed-form quantiles; for `d > 2` each sampled direction adds `M d + M log M`. The
+//! directions of an iteration are drawn in order and transported in parallel (rayon),
+//! their displacements summed in direction order, so the set does not depend on the
+//! thread count. Estimated ([`Sot::cost`]) against a [`Budget`] and stopped at its
+//! deadline (checked once a group of directions). Memory `N d` values plus `5 N` (and
+//! `M` for `d > 2`) a thread, `(N + M) d` for `d > 2`.
 //!
 //! ```
 //! use qmckit::blue_noise::Sot;
@@ -71,11 +77,13 @@
 //! ```
 
 use super::PointSet;
+use super::keysort::{KeySort, key_scale, key32};
 use super::lloyd::to_fraction;
 use super::rng::Rng;
 use crate::randomize::{FastOwen, Scrambled};
 use crate::work::{Budget, Cost, Rate};
 use crate::{Error, Result, Sampler, Sobol};
+use rayon::prelude::*;
 
 /// The most points [`Sot`] takes: 2^20.
 pub const SOT_MAX_POINTS: u64 = 1 << 20;
@@ -244,15 +252,17 @@ impl Sot {
         } else {
             Vec::new()
         };
-        let mut theta = vec![0.0f64; d];
-        let mut values = crate::size::vec_zeroed::<f64>(n)?;
-        let mut keys = crate::size::vec_zeroed::<u64>(n)?;
-        // The sort key: the projection's bits in an order-preserving u64, its lowest
-        // `low` bits (below 2^-32 of the value) replaced by the point's index.
-        let low = (usize::BITS - (n.max(2) - 1).leading_zeros()).min(20);
-        let mask = (1u64 << low) - 1;
-        let mut tproj = crate::size::vec_zeroed::<f64>(m)?;
-        let mut exact = crate::size::vec_zeroed::<f64>(n)?;
+        // Directions are drawn in order, then processed in groups of `G` in parallel, each
+        // giving every point's 1D displacement; the displacements are summed in direction
+        // order, so the result does not depend on `G` or the thread count.
+        let batch = self.batch as usize;
+        let g = rayon::current_num_threads().clamp(1, batch);
+        let mut thetas = crate::size::vec_zeroed::<f64>(batch * d)?;
+        let mut scratch = crate::size::vec_with_capacity::<Scratch>(g)?;
+        for _ in 0..g {
+            scratch.push(Scratch::new(n, m)?);
+        }
+        let mut deltas = crate::size::vec_zeroed::<f64>(crate::size::coordinates(n as u64, g)?)?;
         let mut step = crate::size::vec_zeroed::<f64>(pts.len())?;
         let inv_batch = 1.0 / f64::from(self.batch);
         let subspaces = if self.projective {
@@ -263,41 +273,29 @@ impl Sot {
         let mut turn = 0usize;
         for _ in 0..self.iterations {
             step.fill(0.0);
-            for j in 0..self.batch {
-                budget.check_deadline(WHAT)?;
+            for (j, theta) in thetas.chunks_exact_mut(d).enumerate() {
                 if j % 2 == 1 && subspaces.count() > 0 {
-                    subspaces.direction(turn, &mut rng, &mut theta);
+                    subspaces.direction(turn, &mut rng, theta);
                     turn = (turn + 1) % subspaces.count();
                 } else {
-                    direction(&mut rng, &mut theta);
+                    direction(&mut rng, theta);
                 }
-                for (k, ((v, key), x)) in values
-                    .iter_mut()
-                    .zip(keys.iter_mut())
-                    .zip(pts.chunks_exact(d))
-                    .enumerate()
-                {
-                    *v = dot(x, &theta);
-                    *key = (ordered_bits(*v) & !mask) | k as u64;
-                }
-                let closed = exact_targets(&theta, &mut exact);
-                if !closed {
-                    for (t, y) in tproj.iter_mut().zip(target.chunks_exact(d)) {
-                        *t = dot(y, &theta);
-                    }
-                    tproj.sort_unstable_by(f64::total_cmp);
-                    for (e, block) in exact.iter_mut().zip(tproj.chunks_exact(c)) {
-                        *e = block.iter().sum::<f64>() / c as f64;
-                    }
-                }
-                keys.sort_unstable();
-                for (&key, &t) in keys.iter().zip(&exact) {
-                    let i = (key & mask) as usize;
-                    let v = values.get(i).copied().unwrap_or(t);
-                    let b = i * d;
-                    if let Some(s) = step.get_mut(b..b + d) {
-                        for (s, &th) in s.iter_mut().zip(&theta) {
-                            *s += (t - v) * th;
+            }
+            for group in thetas.chunks(g * d) {
+                budget.check_deadline(WHAT)?;
+                let pts = &pts;
+                let target = &target;
+                deltas
+                    .par_chunks_mut(n)
+                    .zip(scratch.par_iter_mut())
+                    .zip(group.par_chunks(d))
+                    .for_each(|((delta, s), theta)| {
+                        s.transport(pts, d, theta, target, c, delta);
+                    });
+                for (delta, theta) in deltas.chunks_exact(n).zip(group.chunks_exact(d)) {
+                    for (s, &t) in step.chunks_exact_mut(d).zip(delta) {
+                        for (s, &th) in s.iter_mut().zip(theta) {
+                            *s += t * th;
                         }
                     }
                 }
@@ -307,6 +305,70 @@ impl Sot {
             }
         }
         Ok(pts)
+    }
+}
+
+/// The buffers of one direction's transport.
+struct Scratch {
+    values: Vec<f64>,
+    keys: Vec<u64>,
+    sorter: KeySort,
+    exact: Vec<f64>,
+    tproj: Vec<f64>,
+}
+
+impl Scratch {
+    fn new(n: usize, m: usize) -> Result<Self> {
+        Ok(Scratch {
+            values: crate::size::vec_zeroed(n)?,
+            keys: crate::size::vec_zeroed(n)?,
+            sorter: KeySort::new(n)?,
+            exact: crate::size::vec_zeroed(n)?,
+            tproj: crate::size::vec_zeroed(m)?,
+        })
+    }
+
+    /// The 1D optimal transport of the projections `<theta, x_i>` to their targets: the
+    /// displacement `t_rank(i) - <theta, x_i>` of every point into `delta`. The points are
+    /// ranked by a bucket sort ([`KeySort`]) of 32-bit fixed-point keys of their
+    /// projections in `[min, max]`, ties (projections within `2^-32` of the range) in
+    /// index order.
+    fn transport(
+        &mut self,
+        pts: &[f64],
+        d: usize,
+        theta: &[f64],
+        target: &[f64],
+        c: usize,
+        delta: &mut [f64],
+    ) {
+        let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+        for (v, x) in self.values.iter_mut().zip(pts.chunks_exact(d)) {
+            *v = dot(x, theta);
+            // Not `f64::min`: no NaN to handle (finite points and directions).
+            lo = if *v < lo { *v } else { lo };
+            hi = if *v > hi { *v } else { hi };
+        }
+        let scale = key_scale(lo, hi);
+        for (k, (key, &v)) in self.keys.iter_mut().zip(&self.values).enumerate() {
+            *key = (key32(v, lo, scale) << 32) | k as u64;
+        }
+        if !exact_targets(theta, &mut self.exact) {
+            for (t, y) in self.tproj.iter_mut().zip(target.chunks_exact(d)) {
+                *t = dot(y, theta);
+            }
+            self.tproj.sort_unstable_by(f64::total_cmp);
+            for (e, block) in self.exact.iter_mut().zip(self.tproj.chunks_exact(c)) {
+                *e = block.iter().sum::<f64>() / c as f64;
+            }
+        }
+        self.sorter.sort(&mut self.keys);
+        for (&key, &t) in self.keys.iter().zip(&self.exact) {
+            let i = (key & 0xFFFF_FFFF) as usize;
+            if let (Some(out), Some(&v)) = (delta.get_mut(i), self.values.get(i)) {
+                *out = t - v;
+            }
+        }
     }
 }
 
@@ -365,9 +427,24 @@ fn exact_targets(theta: &[f64], out: &mut [f64]) -> bool {
     if b <= 0.0 {
         return false;
     }
-    let n = out.len() as f64;
-    for (k, t) in out.iter_mut().enumerate() {
-        *t = offset + trapezoid_quantile(a, b, (k as f64 + 0.5) / n);
+    // `trapezoid_quantile` of `p_k = (k + 1/2) / N` split into its three pieces (`p_k`
+    // increases with `k`), so that the long middle piece runs without a branch.
+    let len = out.len();
+    let n = len as f64;
+    let p = |k: usize| (k as f64 + 0.5) / n;
+    let tail = a / (2.0 * b);
+    let mut first = 0;
+    while first < len && p(first) <= tail {
+        out[first] = offset + (2.0 * a * b * p(first)).sqrt();
+        first += 1;
+    }
+    let mut end = len;
+    while end > first && p(end - 1) > 1.0 - tail {
+        out[end - 1] = offset + (a + b - (2.0 * a * b * (1.0 - p(end - 1))).sqrt());
+        end -= 1;
+    }
+    for (k, t) in out.iter_mut().enumerate().take(end).skip(first) {
+        *t = offset + (b * p(k) + 0.5 * a);
     }
     true
 }
@@ -437,12 +514,6 @@ fn direction(rng: &mut Rng, theta: &mut [f64]) {
         .iter_mut()
         .enumerate()
         .for_each(|(k, t)| *t = if k == 0 { 1.0 } else { 0.0 });
-}
-
-/// `x`'s bits mapped so that unsigned order is `f64::total_cmp`'s order.
-fn ordered_bits(x: f64) -> u64 {
-    let b = x.to_bits();
-    if b >> 63 == 1 { !b } else { b | 1 << 63 }
 }
 
 fn dot(a: &[f64], b: &[f64]) -> f64 {

@@ -52,4 +52,6 @@ mod tiles;
 mod transport;
 mod tvalue;
 mod variance;
+#[cfg(feature = "analysis")]
+mod voronoi3;
 mod warps;

@@ -32,8 +32,9 @@ not apply):
   best-candidate       Mitchell best candidate on the torus, 2D: -n N, --candidates M
   gaussian-blue-noise  Ahmed-Ren-Wonka Gaussian blue noise on the torus, 2D: -n N,
                        --iterations I
-  lloyd, ccvt          Lloyd relaxation / capacity-constrained Voronoi (dense sample of 64
-                       points a site), any -d to 64: -n N, --iterations I, --torus
+  lloyd, ccvt          Lloyd relaxation (exact Voronoi cells in 2D and 3D) / capacity-
+                       constrained Voronoi (dense sample of 64 points a site; also Lloyd
+                       in other -d), any -d to 64: -n N, --iterations I, --torus
   sot                  sliced optimal transport in the cube, any -d to 64: -n N,
                        --iterations I, --projective (every other direction in a 1D or
                        2D axis subspace: the projections are spread too)

@@ -403,8 +403,8 @@ pub static SAMPLERS: &[SamplerEntry] = &[
             alias("cvt", "centroidal Voronoi tessellation"),
             alias("lloyd-relaxation", "the algorithm's usual name"),
         ],
-        summary: "Lloyd relaxation, any dimension, cube or torus, cells estimated on a dense sample, built whole",
-        math: "s_i <- centroid of the sample points nearest s_i; E = mean min_i |y - s_i|^2 never increases (Lloyd 1982)",
+        summary: "Lloyd relaxation, any dimension, cube or torus, exact Voronoi cells in 2D and 3D (a dense sample otherwise), built whole",
+        math: "s_i <- centroid of its Voronoi cell (exact in 2D and 3D; of the dense-sample points nearest s_i otherwise); E = int min_i |x - s_i|^2 never increases (Lloyd 1982)",
         params: &[
             param("dims", "coordinates of each point", "2", "1 to 64"),
             POINTS,
