@@ -71,7 +71,7 @@ not apply):
                        spectrum-controlled blue noise on the torus (Heck et al. 2013),
                        -d 1 to 6: -n N, --iterations I
   kde-blue-noise       kernel-density blue noise on the torus (Fattal 2011), -d 1 to 5:
-                       -n N, --iterations I (sweeps), --temperature T
+                       -n N, --iterations I (sweeps a level), --temperature T
   --max-seconds S refuses, before starting, a set whose estimated time exceeds S
   (also pmj02bn, lloyd, ccvt, sot, projective-blue-noise, forced-random, bnot, ldbn,
   penrose, aa-patterns, art, step-blue-noise, single-peak-blue-noise, kde-blue-noise).

@@ -119,7 +119,7 @@ pub use forced_random::ForcedRandom;
 #[cfg(feature = "analysis")]
 pub use gaussian::GaussianBlueNoise;
 #[cfg(feature = "analysis")]
-pub use kde::{KDE_MAX_DENSITY_RATIO, KdeBlueNoise};
+pub use kde::{KDE_MAX_DENSITY_RATIO, KDE_MAX_LEVELS, KdeBlueNoise};
 #[cfg(feature = "analysis")]
 pub use ldbn::Ldbn;
 #[cfg(feature = "analysis")]
