@@ -116,7 +116,7 @@ pub use best_candidate::BestCandidate;
 #[cfg(feature = "analysis")]
 pub use bnot::{BNOT_DEFAULT_RESIDUAL, Bnot, BnotTrace};
 #[cfg(feature = "analysis")]
-pub use forced_random::ForcedRandom;
+pub use forced_random::{FORCING_MATRIX, FORCING_SIDE, ForcedRandom};
 #[cfg(feature = "analysis")]
 pub use gaussian::GaussianBlueNoise;
 #[cfg(feature = "analysis")]
