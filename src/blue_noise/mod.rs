@@ -87,6 +87,7 @@ mod poisson_cost;
 pub mod power;
 #[cfg(feature = "analysis")]
 pub mod projective;
+#[cfg(feature = "analysis")]
 mod projective_grid;
 #[cfg(feature = "analysis")]
 mod rng;

@@ -74,6 +74,9 @@
 use super::PointSet;
 use super::poisson::ball_volume;
 use super::projective_grid::AxisGrid;
+
+/// A neighbour grid with its list links.
+type Grid = (AxisGrid, Vec<u32>);
 use super::rng::Rng;
 use crate::work::{Budget, Cost, Rate};
 use crate::{Error, Result};
@@ -279,13 +282,7 @@ impl ProjectiveBlueNoise {
     /// The neighbour grids (full space, then each tested projection) sized for the
     /// starting radii; `None` when one of them would have fewer than 3 cells an axis (the
     /// all-pairs scan is used then).
-    fn grids(
-        &self,
-        n: usize,
-        full: f64,
-        one: f64,
-        two: f64,
-    ) -> Result<Option<Vec<(AxisGrid, Vec<u32>)>>> {
+    fn grids(&self, n: usize, full: f64, one: f64, two: f64) -> Result<Option<Vec<Grid>>> {
         let d = self.dims;
         let mut specs: Vec<(Vec<usize>, f64)> = vec![((0..d).collect(), self.start * full)];
         if one > 0.0 {
