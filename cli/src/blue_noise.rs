@@ -31,7 +31,7 @@ pub struct BlueNoiseArgs {
     /// 2D subspace (the projections are spread too).
     #[arg(long)]
     pub projective: bool,
-    /// kde-blue-noise: the temperature T [default: 0.01].
+    /// kde-blue-noise: the temperature T [default: 0.001].
     #[arg(long, value_name = "T")]
     pub temperature: Option<f64>,
     /// The time budget of the blue-noise sets and of pmj02bn ('inf': no limit)

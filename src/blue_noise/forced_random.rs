@@ -8,9 +8,14 @@
 //! A forcing matrix `M` is an `R x R` toroidal image holding a permutation of
 //! `0..R^2` such that every threshold `{c : M(c) < t R^2}` is a blue-noise pattern. The
 //! paper builds it by placing matrix cells one after another where a repulsive force
-//! field of the cells placed so far is lowest; here the matrix is Ulichney's
-//! void-and-cluster rank mask ([`super::VoidAndCluster`], Gaussian `sigma = 1.5` cells),
-//! which has the same role and property (every threshold blue), built from the seed.
+//! field of the cells placed so far is lowest, once, and ships it; here the matrix is a
+//! void-and-cluster rank mask ([`super::VoidAndCluster`]), which has the same role and
+//! property (every threshold blue). By default it is the shipped `256 x 256` table
+//! [`FORCING_MATRIX`] (Gaussian `sigma = 5` cells, wide enough for the sparse thresholds
+//! of a few thousand points; `examples/gen_forcing_matrix.rs` writes it), and the seed
+//! picks one of its `8 x 256^2` images under the symmetries of the square and toroidal
+//! shifts (each as blue), plus the positions within cells: nothing is built per run.
+//! [`ForcedRandom::matrix_side`] builds a seeded mask of another side per run instead.
 //!
 //! The square is cut into a `G x G` grid of cells, `G = k R`, the matrix tiled `k x k`
 //! times over it. With `f_c` the density at the centre of cell `c` and
@@ -27,10 +32,11 @@
 //!
 //! ## Range and cost
 //!
-//! `N` from 1 to 2^22, `R` from 16 to 1024 (default 128). The matrix costs what
-//! [`super::VoidAndCluster::cost`] says (128 x 128: about 0.1 s); for the constant density
-//! with `N <= R^2 / 10` only its initial pattern is built and ranked, which skips the
-//! filling of the other nine tenths, most of that cost; the sampling evaluates `f`
+//! `N` from 1 to 2^22, `R` from 16 to 1024 (default 256, the shipped table: `R^2` steps
+//! to move it). A built matrix costs what [`super::VoidAndCluster::cost`] says (128 x 128:
+//! about 0.1 s); for the constant density with `N <= R^2 / 10` only its initial pattern
+//! is built and ranked, which skips the filling of the other nine tenths, most of that
+//! cost; the sampling evaluates `f`
 //! at the `G^2 <= 2^26` cell centres (one pass, one more per doubling of `k`) and is
 //! linear in them; estimated with the matrix against a [`Budget`], stopped at its
 //! deadline. Memory `G^2` values.
@@ -69,11 +75,31 @@ pub struct ForcedRandom {
     n: u64,
     side: usize,
     seed: u64,
-    matrix: VoidAndCluster,
+    /// `None`: the shipped table ([`FORCING_MATRIX`]); `Some`: a mask built per run.
+    matrix: Option<VoidAndCluster>,
+}
+
+/// The side of the shipped forcing matrix.
+pub const FORCING_SIDE: usize = 256;
+
+/// The shipped forcing matrix: `256 x 256` ranks, row-major, a permutation of `0..65536`
+/// (`tables/forcing-256.bin`, written by `examples/gen_forcing_matrix.rs`: this crate's
+/// void-and-cluster mask, `sigma = 5` cells, seed 0).
+pub static FORCING_MATRIX: [u16; FORCING_SIDE * FORCING_SIDE] =
+    le_u16s(include_bytes!("../../tables/forcing-256.bin"));
+
+const fn le_u16s<const N: usize>(bytes: &[u8]) -> [u16; N] {
+    let mut out = [0u16; N];
+    let mut i = 0;
+    while i < N && 2 * i + 1 < bytes.len() {
+        out[i] = u16::from_le_bytes([bytes[2 * i], bytes[2 * i + 1]]);
+        i += 1;
+    }
+    out
 }
 
 impl ForcedRandom {
-    /// About `n` points (1 to [`FORCED_MAX_POINTS`]), a 128 x 128 matrix, seed 0.
+    /// About `n` points (1 to [`FORCED_MAX_POINTS`]), the shipped 256 x 256 matrix, seed 0.
     ///
     /// # Errors
     /// [`Error::ZeroPoints`], [`Error::TooManyPoints`].
@@ -89,13 +115,14 @@ impl ForcedRandom {
         }
         Ok(ForcedRandom {
             n,
-            side: 128,
+            side: FORCING_SIDE,
             seed: 0,
-            matrix: VoidAndCluster::new(128, 128)?,
+            matrix: None,
         })
     }
 
-    /// The matrix side `R` (16 to 1024).
+    /// A matrix of side `R` (16 to 1024) built per run from the seed: Ulichney's
+    /// void-and-cluster mask, `sigma = 1.5` cells (instead of the shipped table).
     ///
     /// # Errors
     /// [`Error::InvalidParameter`] outside that range.
@@ -106,11 +133,13 @@ impl ForcedRandom {
             });
         }
         self.side = side;
-        self.matrix = VoidAndCluster::new(side, side)?;
+        self.matrix = Some(VoidAndCluster::new(side, side)?);
         Ok(self)
     }
 
-    /// The seed (the matrix and the positions within cells).
+    /// The seed: the positions within cells, and the matrix (the shipped one turned by one
+    /// of its 8 symmetries of the square and shifted toroidally by a uniform offset;
+    /// a built one seeded).
     pub fn seed(mut self, seed: u64) -> Self {
         self.seed = seed;
         self
@@ -121,7 +150,8 @@ impl ForcedRandom {
     pub fn cost(&self) -> Cost {
         let r2 = (self.side * self.side) as f64;
         let cells = r2.max(4.0 * self.n as f64);
-        self.matrix.cost().plus(Cost::steps(2.0 * cells, CELLS))
+        let matrix = self.matrix.map_or(Cost::steps(r2, CELLS), |m| m.cost());
+        matrix.plus(Cost::steps(2.0 * cells, CELLS))
     }
 
     /// About `n` points of the uniform density.
@@ -152,6 +182,33 @@ impl ForcedRandom {
         self.sample_ranked(density, self.side * self.side, budget)
     }
 
+    /// The shipped matrix moved by the seed: rank of cell `(i, j)` is the table's at
+    /// `sigma((i + a) mod R, (j + b) mod R)`, `sigma` one of the 8 symmetries of the square
+    /// (identity, the flips, the transposition and their products), `(a, b)` uniform.
+    /// Blue noise is isotropic and the matrix toroidal, so each image is as good a forcing
+    /// matrix as the table.
+    fn shipped_ranks(&self) -> Result<Vec<u32>> {
+        let r = FORCING_SIDE;
+        let mut rng = Rng::new(self.seed, 0x464F_5243_454D_4154); // "FORCEMAT"
+        let (a, b) = (rng.below(r), rng.below(r));
+        let sym = rng.below(8);
+        let mut ranks = crate::size::vec_zeroed::<u32>(r * r)?;
+        for (c, v) in ranks.iter_mut().enumerate() {
+            let (mut x, mut y) = ((c % r + a) % r, (c / r + b) % r);
+            if sym & 1 == 1 {
+                x = r - 1 - x;
+            }
+            if sym & 2 == 2 {
+                y = r - 1 - y;
+            }
+            if sym & 4 == 4 {
+                core::mem::swap(&mut x, &mut y);
+            }
+            *v = u32::from(FORCING_MATRIX.get(y * r + x).copied().unwrap_or(u16::MAX));
+        }
+        Ok(ranks)
+    }
+
     /// [`ForcedRandom::sample`] with the matrix's ranks built only below `limit` (the
     /// others never pass: callers make sure no cell needs them).
     fn sample_ranked(
@@ -164,7 +221,10 @@ impl ForcedRandom {
         let budget = budget.started();
         budget.check(WHAT, self.cost())?;
         let r = self.side;
-        let ranks = self.matrix.seed(self.seed).ranks_below(limit, &budget)?;
+        let ranks = match self.matrix {
+            Some(m) => m.seed(self.seed).ranks_below(limit, &budget)?,
+            None => self.shipped_ranks()?,
+        };
         let n = self.n as f64;
         let mut pacer = budget.pacer(WHAT);
         // The grid: the smallest power-of-two number of tiles with every t_c <= 1/4.

@@ -91,6 +91,8 @@ pub mod power;
 #[cfg(feature = "analysis")]
 pub mod projective;
 #[cfg(feature = "analysis")]
+mod projective_grid;
+#[cfg(feature = "analysis")]
 mod rng;
 #[cfg(feature = "analysis")]
 mod shell;
@@ -120,11 +122,11 @@ pub use best_candidate::BestCandidate;
 #[cfg(feature = "analysis")]
 pub use bnot::{BNOT_DEFAULT_RESIDUAL, Bnot, BnotTrace};
 #[cfg(feature = "analysis")]
-pub use forced_random::ForcedRandom;
+pub use forced_random::{FORCING_MATRIX, FORCING_SIDE, ForcedRandom};
 #[cfg(feature = "analysis")]
 pub use gaussian::GaussianBlueNoise;
 #[cfg(feature = "analysis")]
-pub use kde::{KDE_MAX_DENSITY_RATIO, KdeBlueNoise};
+pub use kde::{KDE_MAX_DENSITY_RATIO, KDE_MAX_LEVELS, KdeBlueNoise};
 #[cfg(feature = "analysis")]
 pub use ldbn::Ldbn;
 #[cfg(feature = "analysis")]

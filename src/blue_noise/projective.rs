@@ -46,13 +46,19 @@
 //!
 //! ## Range and cost
 //!
-//! `d` from 2 to 8, `N` from 1 to 2^16. Each candidate is tested against the accepted
-//! points one by one (`O(d^2)` each with the 2D projections, stopping at the first
-//! conflict), and about `a N` candidates are drawn (`a` from 0.15 `T` to 0.4 `T`,
-//! growing with `d`): `O(a N^2 d^2)` in all, estimated ([`ProjectiveBlueNoise::cost`])
-//! against a [`Budget`] and stopped at its deadline (checked every few thousand pair
-//! tests). Measured (defaults, one core, loaded machine): 1024 points in 2D in 0.4 s, in
-//! 4D in 1.6 s; 4096 in 2D in 3.7 s. Memory `N d` values.
+//! `d` from 2 to 8, `N` from 1 to 2^16. Each candidate is tested only against the points
+//! that can conflict with it, found in uniform toroidal grids, one for the full space and
+//! one for each tested projection (module `projective_grid`, cells at least the starting
+//! radius wide, at most `4 N` cells a grid): the same accepted set as testing all points
+//! (a rejection is a true conflict, and every conflict lies in a neighbour cell; the
+//! radii are checked on every pair in the tests), each test `O(d^2)` with the 2D projections, stopping at the first
+//! conflict. About `a N` candidates are drawn (`a` from 0.15 `T` to 0.4 `T`, growing
+//! with `d`), each visiting `O(3^d + d^2)` cells; small sets whose grids would have
+//! fewer than 3 cells an axis take the all-pairs scan, `O(a N^2 d^2)`. The estimate
+//! ([`ProjectiveBlueNoise::cost`]) keeps the all-pairs bound; checked against a
+//! [`Budget`] and stopped at its deadline (checked every few thousand pair tests).
+//! Measured (defaults, one core): 1024 points in 2D in 0.01 s of CPU (0.10 s with the
+//! all-pairs scan). Memory `N d` values and the grids' `O(N d^2)` cells.
 //!
 //! ```
 //! use qmckit::blue_noise::ProjectiveBlueNoise;
@@ -67,6 +73,10 @@
 
 use super::PointSet;
 use super::poisson::ball_volume;
+use super::projective_grid::AxisGrid;
+
+/// A neighbour grid with its list links.
+type Grid = (AxisGrid, Vec<u32>);
 use super::rng::Rng;
 use crate::work::{Budget, Cost, Rate};
 use crate::{Error, Result};
@@ -269,6 +279,30 @@ impl ProjectiveBlueNoise {
         Ok(self.run(budget)?.points)
     }
 
+    /// The neighbour grids (full space, then each tested projection) sized for the
+    /// starting radii; `None` when one of them would have fewer than 3 cells an axis (the
+    /// all-pairs scan is used then).
+    fn grids(&self, n: usize, full: f64, one: f64, two: f64) -> Result<Option<Vec<Grid>>> {
+        let d = self.dims;
+        let mut specs: Vec<(Vec<usize>, f64)> = vec![((0..d).collect(), self.start * full)];
+        if one > 0.0 {
+            specs.extend((0..d).map(|k| (vec![k], self.start * one)));
+        }
+        if two > 0.0 {
+            for k in 0..d {
+                specs.extend((k + 1..d).map(|l| (vec![k, l], self.start * two)));
+            }
+        }
+        let mut grids = Vec::with_capacity(specs.len());
+        for (axes, r) in specs {
+            match AxisGrid::new(axes, r, n)? {
+                Some(g) => grids.push((g, crate::size::vec_with_capacity::<u32>(n)?)),
+                None => return Ok(None),
+            }
+        }
+        Ok(Some(grids))
+    }
+
     /// The points with their radii.
     ///
     /// # Errors
@@ -292,6 +326,7 @@ impl ProjectiveBlueNoise {
         } else {
             0.0
         };
+        let mut grids = self.grids(n, full, one, two)?;
         let mut rng = Rng::new(self.seed, 0x5052_4F4A_424E_4F49); // "PROJBNOI"
         let mut pacer = budget.pacer(WHAT);
         let mut rho = self.start;
@@ -310,10 +345,30 @@ impl ProjectiveBlueNoise {
                 two: (rho * two).powi(2),
             };
             let m = coords.len() / d;
-            pacer.tick_n(u32::try_from(m).unwrap_or(u32::MAX))?;
-            if xs.chunks_exact(d).all(|y| radii.apart(&x[..d], y)) {
+            let xc = &x[..d];
+            let ok = if let Some(grids) = &grids {
+                let mut visits = 0u32;
+                let hit = grids.iter().any(|(grid, next)| {
+                    grid.any(xc, next, |j| {
+                        visits = visits.saturating_add(1);
+                        xs.get(j * d..j * d + d)
+                            .is_some_and(|y| !radii.apart(xc, y))
+                    })
+                });
+                pacer.tick_n(visits.max(1))?;
+                !hit
+            } else {
+                pacer.tick_n(u32::try_from(m).unwrap_or(u32::MAX))?;
+                xs.chunks_exact(d).all(|y| radii.apart(xc, y))
+            };
+            if ok {
                 coords.extend_from_slice(&cand[..d]);
                 xs.extend_from_slice(&x[..d]);
+                if let Some(grids) = &mut grids {
+                    for (grid, next) in grids.iter_mut() {
+                        grid.insert(&x[..d], m, next);
+                    }
+                }
                 fails = 0;
             } else {
                 fails += 1;

@@ -516,6 +516,11 @@ struct Estimator {
 /// Table spacing of `psi`.
 const TABLE_STEP: f64 = DELTA / 8.0;
 
+/// `exp(-DELTA^2 / H^2)`: the factor between successive ratios of the kernel's values at
+/// the bin centres.
+const KERNEL_RATIO_STEP: f64 = 0.367_879_441_171_442_33; // e^-1, DELTA = H
+const _: () = assert!(DELTA == H);
+
 /// The weight of bin `b`, `rho_b^(d-1)`: with it `E` is the squared `L^2(R^d)` distance
 /// of `G` to the target, which by Parseval's identity for the Hankel transform equals the
 /// squared `L^2` distance of the spectra (over the estimate's range).
@@ -568,7 +573,7 @@ impl Estimator {
 
     /// Calls `f(j, diff, rho)` for every `j != i` within the cut-off (`diff = x_i - x_j`
     /// wrapped, `rho` in mean spacings).
-    fn pairs(&self, pts: &[f64], cells: &Cells, i: usize, mut f: impl FnMut(&[f64], f64)) {
+    fn pairs(&self, pts: &[f64], cells: &Cells, i: usize, mut f: impl FnMut(usize, &[f64], f64)) {
         let d = self.d;
         let Some(p) = pts.get(i * d..i * d + d) else {
             return;
@@ -588,7 +593,7 @@ impl Estimator {
                 r2 += *o * *o;
             }
             if r2 < cut2 && r2 > 0.0 {
-                f(diff.get(..d).unwrap_or(&[]), r2.sqrt() / self.s);
+                f(j, diff.get(..d).unwrap_or(&[]), r2.sqrt() / self.s);
             }
         });
     }
@@ -602,14 +607,24 @@ impl Estimator {
                 budget.check_deadline("spectral blue noise")?;
                 let mut h = vec![0.0f64; self.bins];
                 for i in c * CHUNK..((c + 1) * CHUNK).min(self.n) {
-                    self.pairs(pts, cells, i, |_, rho| {
+                    // Each pair once (j > i), counted twice.
+                    self.pairs(pts, cells, i, |j, _, rho| {
+                        if j < i {
+                            return;
+                        }
                         let lo = ((rho - 4.0 * H) / DELTA - 0.5).ceil().max(0.0) as usize;
                         let hi = (((rho + 4.0 * H) / DELTA - 0.5).floor().max(0.0) as usize)
                             .min(self.bins - 1);
-                        for b in lo..=hi {
-                            if let Some(v) = h.get_mut(b) {
-                                *v += kernel((b as f64 + 0.5) * DELTA - rho);
-                            }
+                        // k(x + DELTA) = k(x) q(x), q(x) = exp(-(2 x DELTA + DELTA^2) / (2 H^2)),
+                        // q(x + DELTA) = q(x) exp(-DELTA^2 / H^2): two exponentials a pair
+                        // instead of one a bin.
+                        let x = (lo as f64 + 0.5) * DELTA - rho;
+                        let mut k = 2.0 * kernel(x);
+                        let mut q = (-(2.0 * x * DELTA + DELTA * DELTA) / (2.0 * H * H)).exp();
+                        for v in h.get_mut(lo..=hi).unwrap_or(&mut []) {
+                            *v += k;
+                            k *= q;
+                            q *= KERNEL_RATIO_STEP;
                         }
                     });
                 }
@@ -669,7 +684,7 @@ impl Estimator {
     /// `dE/dx_i` into `out` (`d` values).
     fn gradient(&self, pts: &[f64], cells: &Cells, i: usize, psi: &[f64], out: &mut [f64]) {
         out.fill(0.0);
-        self.pairs(pts, cells, i, |diff, rho| {
+        self.pairs(pts, cells, i, |_, diff, rho| {
             let t = rho / TABLE_STEP;
             let k = t as usize;
             let f = t - k as f64;

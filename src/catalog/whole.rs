@@ -19,11 +19,11 @@ pub struct BlueNoiseOptions {
     /// gaussian-blue-noise: gradient-descent iterations (default 500); lloyd, ccvt
     /// (default 30), sot (default 100), bnot (default 50), step-blue-noise and
     /// single-peak-blue-noise (default 1000): their iterations; kde-blue-noise: its sweeps
-    /// (default 200).
+    /// a level (default 60).
     pub iterations: Option<u32>,
     /// sot: projective sampling (half the directions in the 1D and 2D axis subspaces).
     pub projective: bool,
-    /// kde-blue-noise: the temperature (default 0.01).
+    /// kde-blue-noise: the temperature (default 0.001).
     pub temperature: Option<f64>,
 }
 

@@ -145,3 +145,26 @@ fn bad_densities_are_refused() {
         Err(qmckit::Error::OverBudget { .. })
     ));
 }
+
+/// The shipped forcing matrix is a rank matrix (a permutation of `0..R^2`), and the seed
+/// moves it: different seeds give different sets of the same size.
+#[test]
+fn the_shipped_matrix_is_a_permutation_and_seeds_move_it() {
+    use qmckit::blue_noise::{FORCING_MATRIX, FORCING_SIDE};
+    let mut seen = vec![false; FORCING_SIDE * FORCING_SIDE];
+    for &r in FORCING_MATRIX.iter() {
+        assert!(!seen[r as usize], "rank {r} twice");
+        seen[r as usize] = true;
+    }
+    let set = |seed| {
+        ForcedRandom::new(2000)
+            .unwrap()
+            .seed(seed)
+            .generate(&Budget::DEFAULT)
+            .unwrap()
+    };
+    let (a, b) = (set(1), set(2));
+    assert_eq!((a.count(), b.count()), (2000, 2000));
+    assert_ne!(a, b);
+    assert_eq!(a, set(1));
+}

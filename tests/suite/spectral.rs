@@ -195,6 +195,51 @@ fn kde_lower_temperature_less_low_frequency_power() {
     );
 }
 
+/// Fattal's multi-scale scheme relaxes the long wavelengths that local updates at one scale
+/// arrange only slowly (the paper's "critical slowing down"): at equal sweeps a level, three
+/// levels leave far less low-frequency power than one, and as much repulsion at a spacing.
+#[test]
+fn kde_multiscale_relaxes_long_wavelengths() {
+    let n = 4096u64;
+    let k_max = 16;
+    let stats = |levels: u32| {
+        let sets: Vec<PointSet> = (1..3)
+            .map(|seed| {
+                KdeBlueNoise::new(n, 2)
+                    .unwrap()
+                    .levels(levels)
+                    .unwrap()
+                    .seed(seed)
+                    .generate(&budget())
+                    .unwrap()
+            })
+            .collect();
+        let p = mean_radial(&sets, k_max);
+        p.iter().sum::<f64>() / p.len() as f64
+    };
+    let (one, three) = (stats(1), stats(3));
+    assert!(three < 0.25 * one, "3 levels {three}, 1 level {one}");
+    assert!(three < 0.005, "3 levels {three}");
+}
+
+/// Sizes that are not `2^d` times the coarser level's come out exact (surplus children
+/// removed), in 1 to 3 dimensions.
+#[test]
+fn kde_multiscale_keeps_the_count() {
+    for (d, n) in [(1usize, 77u64), (2, 1000), (3, 999)] {
+        let s = KdeBlueNoise::new(n, d)
+            .unwrap()
+            .sweeps(4)
+            .unwrap()
+            .levels(3)
+            .unwrap()
+            .seed(2)
+            .generate(&budget())
+            .unwrap();
+        assert_eq!((s.count(), s.dims()), (n as usize, d));
+    }
+}
+
 #[test]
 fn bad_input_is_an_error() {
     let step = Profile::step(2).unwrap();
@@ -235,6 +280,8 @@ fn bad_input_is_an_error() {
     assert!(k.temperature(-0.1).is_err());
     assert!(k.sigma(3.0).is_err());
     assert!(k.sweeps(1 << 20).is_err());
+    assert!(k.levels(0).is_err());
+    assert!(k.levels(9).is_err());
     assert!(matches!(
         KdeBlueNoise::new(1 << 22, 2)
             .unwrap()

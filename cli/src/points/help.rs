@@ -41,7 +41,7 @@ not apply):
   projective-blue-noise  dart throwing with radii in the full space and in every 1D and
                        2D axis projection, on the torus, -d 2 to 8: -n N
   forced-random        forced random sampling, 2D, constant density: the N cells of
-                       lowest rank of a 128 x 128 void-and-cluster matrix: -n N
+                       lowest rank of a 256 x 256 void-and-cluster matrix: -n N
   bnot                 blue noise through optimal transport (equal-area power cells),
                        2D: -n N, --iterations I (default 50), --torus
   ldbn                 low-discrepancy blue noise, 2D: -n N a power of four (4 to 2^26): an
@@ -56,7 +56,7 @@ not apply):
                        spectrum-controlled blue noise on the torus (Heck et al. 2013),
                        -d 1 to 6: -n N, --iterations I
   kde-blue-noise       kernel-density blue noise on the torus (Fattal 2011), -d 1 to 5:
-                       -n N, --iterations I (sweeps), --temperature T
+                       -n N, --iterations I (sweeps a level), --temperature T
   --max-seconds S refuses, before starting, a set whose estimated time exceeds S
   (also pmj02bn, lloyd, ccvt, sot, projective-blue-noise, forced-random, bnot, ldbn,
   penrose, aa-patterns, art, step-blue-noise, single-peak-blue-noise, kde-blue-noise).

@@ -21,8 +21,11 @@
 //! (the second line: each kernel's overlap with itself, `D(x_i)` in these units, and twice
 //! its overlap with the target). With `D = 1` it is the uniform model's pair sum plus a
 //! constant. Minimizing `int (f - D)^2` makes the points' local density `N D`; the
-//! temperature and the sampler are the uniform model's (local heat-bath updates among 16
-//! candidates, the window half a *local* spacing wide).
+//! sampler is single-scale local heat-bath updates among 16 candidates, the current position
+//! and 15 uniform in a window half a *local* spacing wide (a Gibbs step on a random
+//! discretization of each point's conditional), defaults `T = 0.01`, `sigma = 1/sqrt(2)`,
+//! 200 sweeps (the uniform model's multi-scale scheme is not implemented for varying
+//! kernel widths).
 //!
 //! ## The start and the range
 //!
@@ -129,7 +132,7 @@ impl KdeBlueNoise {
             return Err(bad_density());
         }
         let floor = 0.5 * lo / mean;
-        let base = self.cost().seconds() * (1.0 / floor).max(1.0);
+        let base = self.heat_bath_cost().seconds() * (1.0 / floor).max(1.0);
         budget.check(WHAT, Cost::from_seconds(base))?;
         let norm = |x: &[f64]| -> Result<f64> { Ok(eval(x)? / mean) };
 
@@ -159,14 +162,14 @@ impl KdeBlueNoise {
         drop(cum);
 
         let s = (n as f64).powf(-1.0 / d as f64);
-        let s2 = self.sigma * self.sigma * s * s; // sigma^2 s^2
+        let sigma = self.density_sigma();
+        let s2 = sigma * sigma * s * s; // sigma^2 s^2
         let width2 = |dens: f64| s2 * dens.powf(-2.0 / d as f64);
-        let unary =
-            0.5 - (4.0 * core::f64::consts::PI * self.sigma * self.sigma).powf(d as f64 / 2.0);
+        let unary = 0.5 - (4.0 * core::f64::consts::PI * sigma * sigma).powf(d as f64 / 2.0);
         let half_d = d as f64 / 2.0;
         // The widest kernel (density at the floor) sets the neighbour reach.
         let stretch = floor.powf(-1.0 / d as f64);
-        let cut_max = CUT_SIGMAS * self.sigma * s * stretch;
+        let cut_max = CUT_SIGMAS * sigma * s * stretch;
         let reach = cut_max + 2.0 * WINDOW * s * stretch * (d as f64).sqrt();
         let mut dens = crate::size::vec_zeroed::<f64>(n)?;
         for (v, p) in dens.iter_mut().zip(pts.chunks_exact(d)) {
@@ -177,7 +180,7 @@ impl KdeBlueNoise {
         let mut cand = [[0.0f64; KDE_MAX_DIMS]; CANDIDATES];
         let mut energy = [0.0f64; CANDIDATES];
         let mut cand_dens = [0.0f64; CANDIDATES];
-        for _ in 0..self.sweeps {
+        for _ in 0..self.sweeps.unwrap_or(super::DENSITY_SWEEPS) {
             budget.check_deadline(WHAT)?;
             let cells = Cells::new(&pts, d, reach)?;
             for i in 0..n {
@@ -249,7 +252,11 @@ impl KdeBlueNoise {
                         .sum();
                     *e = pair + unary * *cd;
                 }
-                let pick = choose(&energy, self.temperature, &mut rng);
+                let pick = choose(
+                    &energy,
+                    self.temperature.unwrap_or(super::DENSITY_TEMPERATURE),
+                    &mut rng,
+                );
                 if pick != 0
                     && let (Some(p), Some(off), Some(&cd)) = (
                         pts.get_mut(i * d..i * d + d),

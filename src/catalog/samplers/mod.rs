@@ -718,16 +718,16 @@ pub static SAMPLERS: &[SamplerEntry] = &[
         name: "kde-blue-noise",
         aliases: &[alias("fattal", "Fattal 2011, kernel density model")],
         summary: "kernel-density blue noise: a Gibbs sample at temperature T of the KDE-mismatch energy; torus, 1 to 5 dimensions, built whole",
-        math: "p(X) ∝ exp(-E/T), E = sum_{i<j} exp(-|x_i - x_j|^2 / (4 sigma^2 s^2)), heat-bath local updates (Fattal 2011)",
+        math: "p(X) ∝ exp(-E/T), E = sum_{i<j} exp(-|x_i - x_j|^2 / (4 sigma^2 s^2)), multi-scale Langevin relaxation, 3 levels (Fattal 2011)",
         params: &[
             param("dims", "coordinates of each point", "2", "1 to 5"),
             param("points", "the set size N", "none: needed", "2 to 2^22"),
             SEED,
-            param("iterations", "sweeps of local updates", "200", "0 to 10^5"),
+            param("iterations", "sweeps a level", "60", "0 to 10^5"),
             param(
                 "temperature",
                 "the temperature T (energy units of one pair's overlap)",
-                "0.01",
+                "0.001",
                 "0 to 100",
             ),
             param(
