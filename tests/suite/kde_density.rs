@@ -41,7 +41,7 @@ fn counts_follow_the_density_and_spacing_follows_the_local_density() {
         .sweeps(60)
         .unwrap()
         .seed(5)
-        .run_density(&density, &Budget::DEFAULT)
+        .run_density(&density, &Budget::UNLIMITED)
         .unwrap();
     assert_eq!(pts.len(), 2 * n);
     assert!(pts.iter().all(|x| (0.0..1.0).contains(x)));
@@ -93,7 +93,7 @@ fn a_constant_density_gives_equal_quarters() {
         .sweeps(30)
         .unwrap()
         .seed(2)
-        .run_density(&|_| 7.0, &Budget::DEFAULT)
+        .run_density(&|_| 7.0, &Budget::UNLIMITED)
         .unwrap();
     for k in 0..4 {
         let (a, b) = (k as f64 / 4.0, (k + 1) as f64 / 4.0);
