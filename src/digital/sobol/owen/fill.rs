@@ -10,7 +10,9 @@
 //! reversal (two instructions with GFNI) and one conversion rounding toward zero, which is
 //! [`crate::bits::to_f32`]'s truncation to 24 significant bits in one instruction.
 
-use super::{OwenSobol, REVERSED4, TABLE_DIMS, reversed4, reversed4_high, reversed4_low};
+use super::{OwenSobol, TABLE_DIMS};
+#[cfg(target_pointer_width = "64")]
+use super::{REVERSED4, reversed4, reversed4_high, reversed4_low};
 use crate::bits::reversed_to_f32;
 use crate::dispatch::{self, Kernel};
 use crate::error::{Error, Result};
@@ -324,7 +326,8 @@ fn check_lengths(indices: &[u32], out: &[[f32; 4]]) -> Result<()> {
 /// `to_f32(reverse(h))` on sixteen hashed lanes, in the form a build does best; every form
 /// gives the bits of [`crate::bits::to_f32`] of the reversal.
 trait Finish: Copy {
-    /// The sixteen values.
+    /// The sixteen values (32-bit targets go point by point and do not call it).
+    #[cfg_attr(not(target_pointer_width = "64"), allow(dead_code))]
     fn f32x16(self, h: &[u32; 16]) -> [f32; 16];
 }
 
