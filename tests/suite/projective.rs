@@ -11,14 +11,8 @@ use qmckit::analysis::Points;
 use qmckit::analysis::spectrum::spectrum_2d;
 use qmckit::blue_noise::{ProjectiveBlueNoise, Sot};
 use qmckit::work::Budget;
-use qmckit::{Independent, Sampler};
 
-fn uniform(n: usize, d: usize, seed: u64) -> Vec<f64> {
-    let s = Independent::new(d, seed).unwrap();
-    let mut v = vec![0u32; n * d];
-    s.fill(0, &mut v).unwrap();
-    v.into_iter().map(qmckit::bits::to_f64).collect()
-}
+use crate::common::independent_set as uniform;
 
 /// Coordinates `axes` of every point of `pts` (`d` a point), as a 2D set (a 1D projection
 /// is put on the line `y = 0`, where `P(k, 0)` is its 1D periodogram).

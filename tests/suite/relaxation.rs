@@ -12,14 +12,8 @@ use qmckit::analysis::spacing::{min_distance, normalized_min_distance, packing_d
 use qmckit::blue_noise::{Lloyd, Sot};
 use qmckit::lattice::hex::HexGrid;
 use qmckit::work::Budget;
-use qmckit::{Independent, Sampler};
 
-fn uniform(n: usize, d: usize, seed: u64) -> Vec<f64> {
-    let s = Independent::new(d, seed).unwrap();
-    let mut v = vec![0u32; n * d];
-    s.fill(0, &mut v).unwrap();
-    v.into_iter().map(qmckit::bits::to_f64).collect()
-}
+use crate::common::independent_set as uniform;
 
 #[test]
 fn lloyd_energy_never_increases() {

@@ -8,21 +8,16 @@
 // The coordinate loops index several arrays at once.
 #![allow(clippy::needless_range_loop)]
 
+use qmckit::Error;
 use qmckit::blue_noise::Lloyd;
 use qmckit::blue_noise::power::PowerDiagram;
 use qmckit::blue_noise::voronoi3::Voronoi3;
 use qmckit::work::Budget;
-use qmckit::{Error, Independent, Sampler};
 use std::time::{Duration, Instant};
 
 const B: Budget = Budget::DEFAULT;
 
-fn uniform(n: usize, d: usize, seed: u64) -> Vec<f64> {
-    let s = Independent::new(d, seed).unwrap();
-    let mut v = vec![0u32; n * d];
-    s.fill(0, &mut v).unwrap();
-    v.into_iter().map(qmckit::bits::to_f64).collect()
-}
+use crate::common::independent_set as uniform;
 
 #[test]
 fn two_sites_halve_the_cube() {

@@ -124,3 +124,12 @@ pub fn uniform(n: usize, seed: u64) -> Vec<f64> {
     let mut rng = Rng(seed);
     (0..n).map(|_| rng.uniform()).collect()
 }
+
+/// `n` points of `d` coordinates of qmckit's `Independent` sampler (seed `seed`), as exact
+/// `f64`s, row-major: the white-noise starting sets of the relaxation tests.
+pub fn independent_set(n: usize, d: usize, seed: u64) -> Vec<f64> {
+    let s = qmckit::Independent::new(d, seed).unwrap();
+    let mut v = vec![0u32; n * d];
+    s.fill(0, &mut v).unwrap();
+    v.into_iter().map(qmckit::bits::to_f64).collect()
+}
