@@ -97,6 +97,8 @@ mod rng;
 #[cfg(feature = "analysis")]
 mod shell;
 #[cfg(feature = "analysis")]
+mod sites;
+#[cfg(feature = "analysis")]
 pub mod sot;
 #[cfg(feature = "analysis")]
 pub mod spectral;

@@ -55,6 +55,7 @@
 //! # Ok::<(), qmckit::Error>(())
 //! ```
 
+use super::sites::{self, Buckets, bucket_of};
 use crate::work::{Budget, Cost, Rate};
 use crate::{Error, Result};
 use rayon::prelude::*;
@@ -93,47 +94,6 @@ struct Cell {
     moment: f64,
     vertices: Vec<[f64; 2]>,
     adj: Vec<(u32, f64)>,
-}
-
-/// The buckets of the sites: a `g x g` grid over the unit square.
-struct Buckets {
-    g: usize,
-    start: Vec<usize>,
-    items: Vec<u32>,
-}
-
-impl Buckets {
-    fn new(sites: &[[f64; 2]]) -> Result<Self> {
-        let n = sites.len();
-        let g = ((n as f64 / 2.0).sqrt().floor() as usize).max(1);
-        let cell = |p: &[f64; 2]| bucket_of(p[0], g) + g * bucket_of(p[1], g);
-        let mut start = crate::size::vec_zeroed::<usize>(g * g + 1)?;
-        for p in sites {
-            start[cell(p) + 1] += 1;
-        }
-        for k in 0..g * g {
-            start[k + 1] += start[k];
-        }
-        let mut fill = start.clone();
-        let mut items = crate::size::vec_zeroed::<u32>(n)?;
-        for (i, p) in sites.iter().enumerate() {
-            let c = cell(p);
-            items[fill[c]] = i as u32;
-            fill[c] += 1;
-        }
-        Ok(Buckets { g, start, items })
-    }
-
-    fn get(&self, cx: usize, cy: usize) -> &[u32] {
-        let k = cx + self.g * cy;
-        self.items
-            .get(self.start[k]..self.start[k + 1])
-            .unwrap_or(&[])
-    }
-}
-
-fn bucket_of(x: f64, g: usize) -> usize {
-    ((x * g as f64) as usize).min(g - 1)
 }
 
 impl PowerDiagram {
@@ -278,31 +238,10 @@ impl PowerDiagram {
 
 /// The sites as pairs, checked (reduced modulo 1 on the torus).
 pub(crate) fn validate(sites: &[f64], weights: &[f64], torus: bool) -> Result<Vec<[f64; 2]>> {
-    if sites.is_empty() {
-        return Err(Error::ZeroPoints);
-    }
-    if !sites.len().is_multiple_of(2) {
-        return Err(Error::RaggedPoints {
-            len: sites.len(),
-            dims: 2,
-        });
-    }
-    let n = sites.len() / 2;
-    if n > POWER_MAX_SITES {
-        return Err(Error::TooManyPoints {
-            requested: n as u64,
-            max: POWER_MAX_SITES as u64,
-        });
-    }
-    if weights.len() != n {
+    let pts = sites::validate::<2>(sites, torus, POWER_MAX_SITES)?;
+    if weights.len() != pts.len() {
         return Err(Error::InvalidParameter {
             what: "a power diagram takes one weight a site",
-        });
-    }
-    if let Some(k) = sites.iter().position(|x| !(0.0..=1.0).contains(x)) {
-        return Err(Error::CoordinateOutOfRange {
-            point: k / 2,
-            dim: k % 2,
         });
     }
     if weights.iter().any(|w| !w.is_finite()) {
@@ -310,28 +249,15 @@ pub(crate) fn validate(sites: &[f64], weights: &[f64], torus: bool) -> Result<Ve
             what: "power diagram weights must be finite",
         });
     }
-    let mut pts = crate::size::vec_with_capacity(n)?;
-    pts.extend(sites.chunks_exact(2).map(|p| {
-        if torus {
-            [p[0] - p[0].floor(), p[1] - p[1].floor()]
-        } else {
-            [p[0], p[1]]
-        }
-    }));
     Ok(pts)
 }
 
 /// [`Error::InvalidParameter`] when two sites coincide (their cells would be equal).
 pub(crate) fn check_distinct(pts: &[[f64; 2]]) -> Result<()> {
-    let mut order = crate::size::vec_with_capacity(pts.len())?;
-    order.extend(pts.iter().copied());
-    order.sort_unstable_by(|a, b| a[0].total_cmp(&b[0]).then(a[1].total_cmp(&b[1])));
-    if order.windows(2).any(|w| w[0] == w[1]) {
-        return Err(Error::InvalidParameter {
-            what: "two sites coincide: a power diagram needs distinct sites",
-        });
-    }
-    Ok(())
+    sites::check_distinct(
+        pts,
+        "two sites coincide: a power diagram needs distinct sites",
+    )
 }
 
 /// Reused buffers of one thread.
@@ -351,7 +277,7 @@ fn cell(
     weights: &[f64],
     w_max: f64,
     torus: bool,
-    buckets: &Buckets,
+    buckets: &Buckets<2>,
     s: &mut Scratch,
 ) -> Result<Cell> {
     let p = pts[i];
@@ -397,7 +323,7 @@ fn cell(
                 } else {
                     ([0.0, 0.0], bx, by)
                 };
-                for &j in buckets.get(ux as usize, uy as usize) {
+                for &j in buckets.get([ux as usize, uy as usize]) {
                     let pj = pts[j as usize];
                     let q = [pj[0] + shift[0] - p[0], pj[1] + shift[1] - p[1]];
                     if j as usize == i && shift == [0.0, 0.0] {

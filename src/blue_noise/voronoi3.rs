@@ -55,8 +55,9 @@
 //! # Ok::<(), qmckit::Error>(())
 //! ```
 
+use super::sites::{self, Buckets, bucket_of};
+use crate::Result;
 use crate::work::{Budget, Cost, Rate};
-use crate::{Error, Result};
 use rayon::prelude::*;
 
 /// The most sites a [`Voronoi3`] takes: 2^20.
@@ -89,49 +90,6 @@ struct Integrals {
     moment: f64,
 }
 
-/// The buckets of the sites: a `g x g x g` grid over the unit cube.
-struct Buckets {
-    g: usize,
-    start: Vec<usize>,
-    items: Vec<u32>,
-}
-
-fn bucket_of(x: f64, g: usize) -> usize {
-    ((x * g as f64) as usize).min(g - 1)
-}
-
-impl Buckets {
-    fn new(sites: &[[f64; 3]]) -> Result<Self> {
-        let n = sites.len();
-        // About two sites a bucket.
-        let g = ((n as f64 / 2.0).cbrt().floor() as usize).max(1);
-        let cell =
-            |p: &[f64; 3]| bucket_of(p[0], g) + g * (bucket_of(p[1], g) + g * bucket_of(p[2], g));
-        let mut start = crate::size::vec_zeroed::<usize>(g * g * g + 1)?;
-        for p in sites {
-            start[cell(p) + 1] += 1;
-        }
-        for k in 0..g * g * g {
-            start[k + 1] += start[k];
-        }
-        let mut fill = start.clone();
-        let mut items = crate::size::vec_zeroed::<u32>(n)?;
-        for (i, p) in sites.iter().enumerate() {
-            let c = cell(p);
-            items[fill[c]] = i as u32;
-            fill[c] += 1;
-        }
-        Ok(Buckets { g, start, items })
-    }
-
-    fn get(&self, c: [usize; 3]) -> &[u32] {
-        let k = c[0] + self.g * (c[1] + self.g * c[2]);
-        self.items
-            .get(self.start[k]..self.start[k + 1])
-            .unwrap_or(&[])
-    }
-}
-
 impl Voronoi3 {
     /// The estimated running time for `n` evenly spread sites.
     pub fn cost(n: usize) -> Cost {
@@ -142,16 +100,19 @@ impl Voronoi3 {
     /// unit cube or (`torus`) on the unit torus.
     ///
     /// # Errors
-    /// [`Error::ZeroPoints`], [`Error::RaggedPoints`] for a coordinate count not a
-    /// multiple of 3, [`Error::TooManyPoints`] past [`VORONOI3_MAX_SITES`],
-    /// [`Error::CoordinateOutOfRange`] for a coordinate outside `[0, 1]` or NaN,
-    /// [`Error::InvalidParameter`] for two equal sites, [`Error::OverBudget`],
-    /// [`Error::OutOfTime`], [`Error::TooLarge`].
+    /// [`Error::ZeroPoints`](crate::Error::ZeroPoints), [`Error::RaggedPoints`](crate::Error::RaggedPoints) for a coordinate count not a
+    /// multiple of 3, [`Error::TooManyPoints`](crate::Error::TooManyPoints) past [`VORONOI3_MAX_SITES`],
+    /// [`Error::CoordinateOutOfRange`](crate::Error::CoordinateOutOfRange) for a coordinate outside `[0, 1]` or NaN,
+    /// [`Error::InvalidParameter`](crate::Error::InvalidParameter) for two equal sites, [`Error::OverBudget`](crate::Error::OverBudget),
+    /// [`Error::OutOfTime`](crate::Error::OutOfTime), [`Error::TooLarge`](crate::Error::TooLarge).
     pub fn new(sites: &[f64], torus: bool, budget: &Budget) -> Result<Self> {
         let budget = budget.started();
-        let pts = validate(sites, torus)?;
+        let pts = sites::validate::<3>(sites, torus, VORONOI3_MAX_SITES)?;
         budget.check("3D Voronoi cells", Self::cost(pts.len()))?;
-        check_distinct(&pts)?;
+        sites::check_distinct(
+            &pts,
+            "two sites coincide: Voronoi cells need distinct sites",
+        )?;
         let n = pts.len();
         let buckets = Buckets::new(&pts)?;
         let parts: Vec<Vec<Integrals>> = (0..n.div_ceil(CHUNK))
@@ -217,58 +178,6 @@ impl Voronoi3 {
     pub fn moment(&self, i: usize) -> f64 {
         self.moment.get(i).copied().unwrap_or(0.0)
     }
-}
-
-/// The sites as triples, checked (reduced modulo 1 on the torus).
-fn validate(sites: &[f64], torus: bool) -> Result<Vec<[f64; 3]>> {
-    if sites.is_empty() {
-        return Err(Error::ZeroPoints);
-    }
-    if !sites.len().is_multiple_of(3) {
-        return Err(Error::RaggedPoints {
-            len: sites.len(),
-            dims: 3,
-        });
-    }
-    let n = sites.len() / 3;
-    if n > VORONOI3_MAX_SITES {
-        return Err(Error::TooManyPoints {
-            requested: n as u64,
-            max: VORONOI3_MAX_SITES as u64,
-        });
-    }
-    if let Some(k) = sites.iter().position(|x| !(0.0..=1.0).contains(x)) {
-        return Err(Error::CoordinateOutOfRange {
-            point: k / 3,
-            dim: k % 3,
-        });
-    }
-    let mut pts = crate::size::vec_with_capacity(n)?;
-    pts.extend(sites.chunks_exact(3).map(|p| {
-        let mut v = [p[0], p[1], p[2]];
-        if torus {
-            v.iter_mut().for_each(|x| *x -= x.floor());
-        }
-        v
-    }));
-    Ok(pts)
-}
-
-/// [`Error::InvalidParameter`] when two sites coincide.
-fn check_distinct(pts: &[[f64; 3]]) -> Result<()> {
-    let mut order = crate::size::vec_with_capacity(pts.len())?;
-    order.extend(pts.iter().copied());
-    order.sort_unstable_by(|a, b| {
-        a[0].total_cmp(&b[0])
-            .then(a[1].total_cmp(&b[1]))
-            .then(a[2].total_cmp(&b[2]))
-    });
-    if order.windows(2).any(|w| w[0] == w[1]) {
-        return Err(Error::InvalidParameter {
-            what: "two sites coincide: Voronoi cells need distinct sites",
-        });
-    }
-    Ok(())
 }
 
 fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
@@ -478,7 +387,13 @@ impl Scratch {
 }
 
 /// The cell of site `i`.
-fn cell(i: usize, pts: &[[f64; 3]], torus: bool, buckets: &Buckets, s: &mut Scratch) -> Integrals {
+fn cell(
+    i: usize,
+    pts: &[[f64; 3]],
+    torus: bool,
+    buckets: &Buckets<3>,
+    s: &mut Scratch,
+) -> Integrals {
     let p = pts[i];
     if torus {
         s.reset([-0.5; 3], [0.5; 3]);
