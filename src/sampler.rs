@@ -58,7 +58,16 @@ impl<T: FromFraction> Kernel for Convert<'_, T> {
     type Output = ();
     #[inline(always)]
     fn run(self) {
-        for (y, &x) in self.dst.iter_mut().zip(self.src) {
+        // The values before the first cache-line boundary of `dst` one at a time, so that
+        // the vector stores after them are aligned (a store across two lines costs two).
+        let n = self.src.len().min(self.dst.len());
+        let head = self.dst.as_ptr().align_offset(64).min(n);
+        let (dst_head, dst) = self.dst.split_at_mut(head);
+        let (src_head, src) = self.src.split_at(head.min(self.src.len()));
+        for (y, &x) in dst_head.iter_mut().zip(src_head) {
+            *y = T::from_fraction(x);
+        }
+        for (y, &x) in dst.iter_mut().zip(src) {
             *y = T::from_fraction(x);
         }
     }

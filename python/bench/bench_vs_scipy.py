@@ -10,6 +10,12 @@ compared in points per second. An engine's time includes its construction (drawi
 scramble). Each case runs SciPy and qmckit alternately ``--repeat`` times and keeps each
 side's best time, so a machine shared with other work penalizes both alike. A ratio
 above 1 means qmckit is faster.
+
+Time is the wall clock, or with ``--cpu-time`` the calling thread's CPU time
+(``time.thread_time``: user and system time, so page faults on a fresh output count, but
+not the time other programs take on a shared machine). CPU time fits the single-threaded
+cases only, so ``--cpu-time`` skips the ``workers=-1`` rows; set ``OPENBLAS_NUM_THREADS=1``
+so that no BLAS thread spins beside the timed one.
 """
 
 import argparse
@@ -23,12 +29,15 @@ from scipy.stats import qmc
 import qmckit
 
 
+CLOCK = time.perf_counter
+
+
 def best_time(fn, repeat):
     best = float("inf")
     for _ in range(repeat):
-        t = time.perf_counter()
+        t = CLOCK()
         fn()
-        best = min(best, time.perf_counter() - t)
+        best = min(best, CLOCK() - t)
     return best
 
 
@@ -97,12 +106,19 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--repeat", type=int, default=5)
     ap.add_argument("--quick", action="store_true", help="smaller sizes (a smoke run)")
+    ap.add_argument("--cpu-time", action="store_true",
+                    help="time by the thread's CPU time (single-threaded rows only)")
     args = ap.parse_args()
+    global CLOCK
+    if args.cpu_time:
+        CLOCK = time.thread_time
     warnings.simplefilter("ignore", UserWarning)
     print(f"CPUs: {os.cpu_count()}; numpy {np.__version__}; "
           f"scipy {__import__('scipy').__version__}; qmckit {qmckit.__version__}")
     print(f"{'case':<62} {'qmckit variant':<24} {'SciPy s':>9} {'qmckit s':>9} {'ratio':>7}")
     for name, variant, s_fn, q_fn in cases(args.quick):
+        if args.cpu_time and "workers=-1" in name:
+            continue
         s, q, (s_out, q_out) = alternate(s_fn, q_fn, args.repeat)
         if name.endswith("points/s"):
             # Points per second: each side's set size over its time.

@@ -5,6 +5,7 @@
 //! of the CPU's widest build, with no second pass over the caller's array.
 
 use qmckit::Base2Digital;
+use qmckit::bits::FromFraction;
 use qmckit::randomize::{Affine, Randomizer, Randomizes, Scrambler};
 
 /// Most lanes a row-major scramble lays out (`qmckit::randomize::ROW_LANES`).
@@ -47,6 +48,32 @@ impl<S: Scrambler> Scrambler for TruncatedScrambler<S> {
     #[inline(always)]
     fn scramble_lanes_reversed(lanes: &[Self], xs: &mut [u32]) {
         with_inner::<S, true>(lanes, xs);
+    }
+
+    /// One mask on every lane (what `Truncated` lays out): the inner scramblers' own
+    /// converting loop, handed the mask, so the scramble, the mask and the conversion stay
+    /// one pass. Otherwise the default.
+    #[inline(always)]
+    fn scramble_lanes_into<T: FromFraction>(
+        lanes: &[Self],
+        xs: &mut [u32],
+        out: &mut [T],
+        reversed: bool,
+        keep: u32,
+    ) {
+        if let Some(first) = lanes.first()
+            && lanes.len() <= MAX_LANES
+            && lanes.iter().all(|s| s.mask == first.mask)
+        {
+            let mut inner = [first.inner; MAX_LANES];
+            for (i, s) in inner.iter_mut().zip(lanes) {
+                *i = s.inner;
+            }
+            let inner = inner.get(..lanes.len()).unwrap_or(&[]);
+            S::scramble_lanes_into(inner, xs, out, reversed, keep & first.mask);
+            return;
+        }
+        qmckit::randomize::scramble_into_by_parts(lanes, xs, out, reversed, keep);
     }
 }
 

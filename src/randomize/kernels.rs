@@ -43,14 +43,15 @@ impl<S: Scrambler, T: FromFraction> Kernel for ScrambleLanes<'_, S, T> {
     type Output = ();
     #[inline(always)]
     fn run(self) {
-        if self.reversed {
-            S::scramble_lanes_reversed(self.lanes, self.xs);
-        } else {
-            S::scramble_lanes(self.lanes, self.xs);
+        if self.out.is_empty() {
+            if self.reversed {
+                S::scramble_lanes_reversed(self.lanes, self.xs);
+            } else {
+                S::scramble_lanes(self.lanes, self.xs);
+            }
+            return;
         }
-        for (y, &x) in self.out.iter_mut().zip(self.xs.iter()) {
-            *y = T::from_fraction(x);
-        }
+        S::scramble_lanes_into(self.lanes, self.xs, self.out, self.reversed, u32::MAX);
     }
 }
 
@@ -194,23 +195,94 @@ mod tests {
                 run(levels, "lms", &lanes, &xs);
             }
         }
-        // Fused with the conversion to f32: the scrambled values, converted.
+        // Fused with the conversion (f32 and f64, plain and reversed input, outputs starting
+        // off a cache-line boundary, the trait's `keep` mask): the scrambled values, masked,
+        // converted. Widths 1, 4 and 16 take the fused loop of 16 lanes; 64 the default.
         {
-            use crate::randomize::FastOwen;
+            use crate::bits::{to_f32, to_f64};
+            use crate::randomize::{FastOwen, Lms, Randomizer};
             let xs: Vec<u32> = (0..1003u32).map(|k| k.wrapping_mul(0x85EB_CA6B)).collect();
             for width in [1usize, 4, 16, 64] {
-                let fo = FastOwen::new(15);
-                let lanes: Vec<_> = (0..width).map(|d| fo.scrambler(d % 3)).collect();
-                for &lv in levels {
-                    let mut got = xs.clone();
-                    let mut f = vec![0f32; xs.len()];
-                    scramble_lanes_into_at(lv, &lanes, &mut got, &mut f, false);
-                    for (j, (&y, &x)) in f.iter().zip(&xs).enumerate() {
-                        let want = crate::bits::to_f32(lanes[j % width].scramble(x));
-                        assert_eq!(y.to_bits(), want.to_bits(), "{lv:?} width {width} j {j}");
+                for hash in [OwenHash::Vegdahl, OwenHash::LaineKarras] {
+                    let fo = FastOwen::with_hash(15, hash);
+                    let lanes: Vec<_> = (0..width).map(|d| fo.scrambler(d % 3)).collect();
+                    for &lv in levels {
+                        for reversed in [false, true] {
+                            let input: Vec<u32> = xs
+                                .iter()
+                                .map(|&x| if reversed { x.reverse_bits() } else { x })
+                                .collect();
+                            let want =
+                                |j: usize, keep: u32| lanes[j % width].scramble(xs[j]) & keep;
+                            let mut got = input.clone();
+                            let mut f = vec![0f32; xs.len()];
+                            scramble_lanes_into_at(lv, &lanes, &mut got, &mut f, reversed);
+                            for (j, y) in f.iter().enumerate() {
+                                let w = to_f32(want(j, u32::MAX));
+                                assert_eq!(y.to_bits(), w.to_bits(), "{lv:?} {width} {j}");
+                            }
+                            for offset in [0usize, 1, 3, 7] {
+                                let keep = u32::MAX << 3;
+                                let mut got = input.clone();
+                                let mut buf = vec![0f64; xs.len() + offset];
+                                let out = &mut buf[offset..];
+                                dispatch::run_at(
+                                    lv,
+                                    IntoKept {
+                                        lanes: &lanes,
+                                        xs: &mut got,
+                                        out,
+                                        reversed,
+                                        keep,
+                                    },
+                                );
+                                for (j, y) in buf[offset..].iter().enumerate() {
+                                    let w = to_f64(want(j, keep));
+                                    assert_eq!(
+                                        y.to_bits(),
+                                        w.to_bits(),
+                                        "{lv:?} {width} {offset} {j}"
+                                    );
+                                }
+                            }
+                        }
                     }
                 }
+                // A scrambler with the default (by parts), with a mask.
+                let lms = Lms::new(16);
+                let lanes: Vec<_> = (0..width).map(|d| lms.scrambler(d)).collect();
+                let mut got = xs.clone();
+                let mut out = vec![0f64; xs.len()];
+                let keep = u32::MAX << 7;
+                dispatch::run(IntoKept {
+                    lanes: &lanes,
+                    xs: &mut got,
+                    out: &mut out,
+                    reversed: false,
+                    keep,
+                });
+                for (j, y) in out.iter().enumerate() {
+                    let w = to_f64(lanes[j % width].scramble(xs[j]) & keep);
+                    assert_eq!(y.to_bits(), w.to_bits(), "lms {width} {j}");
+                }
             }
+        }
+    }
+
+    /// [`Scrambler::scramble_lanes_into`] with a mask, in one build.
+    struct IntoKept<'a, S> {
+        lanes: &'a [S],
+        xs: &'a mut [u32],
+        out: &'a mut [f64],
+        reversed: bool,
+        keep: u32,
+    }
+
+    impl<S: Scrambler> Kernel for IntoKept<'_, S> {
+        type Output = ();
+        #[inline(always)]
+        fn run(self) {
+            S::scramble_lanes_into(self.lanes, self.xs, self.out, self.reversed, self.keep);
         }
     }
 }

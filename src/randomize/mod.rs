@@ -98,6 +98,7 @@ pub use tent::{Shift, ShiftScrambler, Tent, TentScrambler};
 
 pub use crate::sampler::Base2Digital;
 
+use crate::bits::FromFraction;
 use crate::error::Result;
 use crate::sampler::Sampler;
 
@@ -148,6 +149,54 @@ pub trait Scrambler: Copy {
             *x = crate::bits::reverse_bits(*x);
         }
         Self::scramble_lanes(lanes, xs);
+    }
+
+    /// [`scramble_lanes`](Self::scramble_lanes) (of bit-reversed input when `reversed`:
+    /// [`scramble_lanes_reversed`](Self::scramble_lanes_reversed)), then
+    /// `out[j] = T::from_fraction(xs[j] & keep)` for `j` below the shorter length: what
+    /// [`Scrambled`]'s converting fills run on each buffer the sampler fills. `keep` clears
+    /// low bits (`u32::MAX` keeps them all). The default is [`scramble_into_by_parts`];
+    /// scramblers with a vectorized lane loop fuse the two steps a vector at a time, so that
+    /// the stores to `out` (the fill's memory traffic) spread over the whole loop. Must give
+    /// the same values as the default; `xs` may be left changed.
+    #[inline(always)]
+    fn scramble_lanes_into<T: FromFraction>(
+        lanes: &[Self],
+        xs: &mut [u32],
+        out: &mut [T],
+        reversed: bool,
+        keep: u32,
+    ) {
+        scramble_into_by_parts(lanes, xs, out, reversed, keep);
+    }
+}
+
+/// Values [`scramble_into_by_parts`] scrambles, then converts, at a time (rounded to whole
+/// lane patterns): 4 KiB of `u32`, in the L1 cache between the two steps.
+const BY_PARTS: usize = 1024;
+
+/// The default [`Scrambler::scramble_lanes_into`]: a few whole lane patterns at a time,
+/// scrambled in place ([`Scrambler::scramble_lanes`] or, with `reversed`,
+/// [`Scrambler::scramble_lanes_reversed`]), then masked with `keep` and converted.
+#[inline(always)]
+pub fn scramble_into_by_parts<S: Scrambler, T: FromFraction>(
+    lanes: &[S],
+    xs: &mut [u32],
+    out: &mut [T],
+    reversed: bool,
+    keep: u32,
+) {
+    let width = lanes.len().max(1);
+    let part = (BY_PARTS / width).max(1) * width;
+    for (xs, out) in xs.chunks_mut(part).zip(out.chunks_mut(part)) {
+        if reversed {
+            S::scramble_lanes_reversed(lanes, xs);
+        } else {
+            S::scramble_lanes(lanes, xs);
+        }
+        for (y, &x) in out.iter_mut().zip(xs.iter()) {
+            *y = T::from_fraction(x & keep);
+        }
     }
 }
 

@@ -7,7 +7,7 @@
 //! `O(N^-3 (log N)^(s-1))` for smooth integrands.
 
 use super::{Base2Digital, Randomizer, Randomizes, Scrambler, dimension_seed};
-use crate::bits::reverse_bits;
+use crate::bits::{FromFraction, reverse_bits};
 use crate::hash::{laine_karras, mix64, vegdahl};
 
 /// Exact nested uniform scrambling (Owen 1995): one independent random flip per bit prefix,
@@ -246,6 +246,80 @@ impl Scrambler for FastOwenScrambler {
     #[inline(always)]
     fn scramble_lanes_reversed(lanes: &[Self], xs: &mut [u32]) {
         scramble_lanes_from::<true>(lanes, xs);
+    }
+
+    /// A pattern of 16 lanes sharing one hash (points of 1, 2, 4, 8 or 16 dimensions): the
+    /// hash, the reversal, the mask and the conversion in one loop, a vector of 16 values
+    /// an iteration. Other patterns: [`scramble_into_by_parts`](super::scramble_into_by_parts).
+    #[inline(always)]
+    fn scramble_lanes_into<T: FromFraction>(
+        lanes: &[Self],
+        xs: &mut [u32],
+        out: &mut [T],
+        reversed: bool,
+        keep: u32,
+    ) {
+        if let (Some(first), Ok(l16)) = (lanes.first(), <&[Self; 16]>::try_from(lanes))
+            && l16.iter().all(|l| l.hash == first.hash)
+        {
+            let keys: [u32; 16] = core::array::from_fn(|j| l16[j].key);
+            match (first.hash, reversed) {
+                (OwenHash::LaineKarras, true) => {
+                    keyed_into::<true, T>(&keys, xs, out, keep, laine_karras);
+                }
+                (OwenHash::LaineKarras, false) => {
+                    keyed_into::<false, T>(&keys, xs, out, keep, laine_karras);
+                }
+                (OwenHash::Vegdahl, true) => keyed_into::<true, T>(&keys, xs, out, keep, vegdahl),
+                (OwenHash::Vegdahl, false) => {
+                    keyed_into::<false, T>(&keys, xs, out, keep, vegdahl);
+                }
+            }
+            return;
+        }
+        super::scramble_into_by_parts(lanes, xs, out, reversed, keep);
+    }
+}
+
+/// `out[j] = T::from_fraction(reverse(hash(x_rev, keys[j % 16])) & keep)`, with
+/// `x_rev = xs[j]` when `REVERSED`, else `reverse(xs[j])`, for `j` below the shorter
+/// length: one vector of 16 values an iteration (from the first 64-byte boundary of
+/// `out`), then the tail.
+#[inline(always)]
+fn keyed_into<const REVERSED: bool, T: FromFraction>(
+    keys: &[u32; 16],
+    xs: &[u32],
+    out: &mut [T],
+    keep: u32,
+    hash: fn(u32, u32) -> u32,
+) {
+    let one = |x: u32, k: u32| {
+        let x = if REVERSED { x } else { reverse_bits(x) };
+        T::from_fraction(reverse_bits(hash(x, k)) & keep)
+    };
+    let n = xs.len().min(out.len());
+    let (Some(xs), Some(out)) = (xs.get(..n), out.get_mut(..n)) else {
+        return;
+    };
+    // The values before the first cache-line boundary of `out` one at a time, so that the
+    // vector stores are aligned (a store across two lines costs two); the keys turned by
+    // as many places to stay in phase.
+    let head = out.as_ptr().align_offset(64).min(n);
+    let (xs_head, xs) = xs.split_at(head);
+    let (out_head, out) = out.split_at_mut(head);
+    for ((o, &x), &k) in out_head.iter_mut().zip(xs_head).zip(keys) {
+        *o = one(x, k);
+    }
+    let keys: [u32; 16] = core::array::from_fn(|j| keys[(j + head) % 16]);
+    let (xs_full, xs_rest) = xs.as_chunks::<16>();
+    let (out_full, out_rest) = out.as_chunks_mut::<16>();
+    for (o, x) in out_full.iter_mut().zip(xs_full) {
+        for j in 0..16 {
+            o[j] = one(x[j], keys[j]);
+        }
+    }
+    for ((o, &x), &k) in out_rest.iter_mut().zip(xs_rest).zip(&keys) {
+        *o = one(x, k);
     }
 }
 

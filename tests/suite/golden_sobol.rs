@@ -338,3 +338,61 @@ fn fills_and_iterators_match_random_access() {
     assert!(Sobol::new(SOBOL_MAX_DIMS + 1).is_err());
     assert!(Sobol::new(0).is_err());
 }
+
+/// `Sobol::fill` (rows in aligned groups plus one-step head and tail rows) and the fills of
+/// its scrambled forms (the direction numbers with a folded reversal or affine map, and the
+/// converting fills) equal random access, which multiplies the generator matrices by the
+/// index bit by bit: both orders, point widths that fill one, several and partial blocks of
+/// lanes, starts on and off a group boundary, and lengths that end inside a group.
+#[test]
+fn multi_dimensional_fills_match_random_access() {
+    use qmckit::bits::to_f64;
+    use qmckit::randomize::{DigitalShift, FastOwen, Randomizer, Scrambled};
+    for order in [Order::Natural, Order::Gray] {
+        for dims in [1usize, 2, 3, 5, 8, 9, 16, 17, 33, 40] {
+            let s = Sobol::with_order(dims, order).unwrap();
+            let owen = Scrambled::new(s, FastOwen::new(9));
+            let shift = Scrambled::new(s, DigitalShift::new(9));
+            for start in [
+                0u32,
+                1,
+                5,
+                7,
+                8,
+                13,
+                1000,
+                4093,
+                (1 << 31) - 3,
+                u32::MAX - 70,
+            ] {
+                for rows in [1usize, 7, 8, 9, 16, 17, 71] {
+                    if start as u64 + rows as u64 > 1 << 32 {
+                        continue;
+                    }
+                    let mut plain = vec![0u32; rows * dims];
+                    let mut scrambled = vec![0u32; rows * dims];
+                    let mut shifted = vec![0u32; rows * dims];
+                    let mut as_f64 = vec![0f64; rows * dims];
+                    s.fill(start, &mut plain).unwrap();
+                    owen.fill(start, &mut scrambled).unwrap();
+                    shift.fill(start, &mut shifted).unwrap();
+                    owen.fill_as(start, &mut as_f64).unwrap();
+                    for k in 0..rows {
+                        let i = start + k as u32;
+                        for dim in 0..dims {
+                            let at = k * dims + dim;
+                            let x = s.sample(i, dim).unwrap();
+                            let what =
+                                format!("{order:?} d {dims} start {start} row {k} dim {dim}");
+                            assert_eq!(plain[at], x, "{what}");
+                            let y = FastOwen::new(9).apply(x, dim);
+                            assert_eq!(scrambled[at], y, "owen {what}");
+                            assert_eq!(as_f64[at].to_bits(), to_f64(y).to_bits(), "f64 {what}");
+                            assert_eq!(shifted[at], DigitalShift::new(9).apply(x, dim), "{what}");
+                        }
+                    }
+                }
+            }
+        }
+    }
+}

@@ -339,31 +339,137 @@ impl Sobol {
                 _ => linear(x0),
             };
         }
-        let mut i = start;
-        for (row, chunk) in out.chunks_exact_mut(self.dims.max(1)).enumerate() {
+        crate::dispatch::run(SobolRows {
+            out,
+            dims: self.dims.max(1),
+            first,
+            block,
+            start,
+            gray: self.order == Order::Gray,
+            table: &table,
+            x,
+        });
+    }
+}
+
+/// Rows a group of [`SobolRows`]: `2^GROUP_BITS`.
+const GROUP_BITS: u32 = 3;
+/// [`GROUP_BITS`] as a count.
+const GROUP: usize = 1 << GROUP_BITS;
+
+/// The row loop of [`Sobol::fill_block`]: lanes `first .. first + block` of consecutive
+/// points from `start`, given the point at `start` (`x`) and the transposed step rows
+/// (`table[k]`: Gray order `V_k`, natural order `V_0 ^ .. ^ V_k`).
+///
+/// Rows go in aligned groups of `G = 2^g` indices (`g` = [`GROUP_BITS`]): the generator
+/// matrix `C` is linear and so is `gray`, so the point at `G q + r` (`r < G`) is
+/// `x(G q) ^ T[r]` with `T[r] = C gray(r)` (natural order `C r`), the same `G` rows for
+/// every group; from one group to the next the start point changes by
+/// `C (gray(G (q + 1)) ^ gray(G q)) = V_(g-1) ^ V_(g+t)` (natural order
+/// `V_g ^ .. ^ V_(g+t)`), `t = tz(q + 1)`: in both orders `table[g + t] ^ table[g - 1]`.
+/// A group is `G` independent element-wise XORs (no chain from row to row), so it
+/// vectorizes across rows; the rows before the first aligned index and after the last
+/// whole group take the one-step recurrence. Compiled per build of [`crate::dispatch`].
+struct SobolRows<'a, const L: usize> {
+    out: &'a mut [u32],
+    dims: usize,
+    first: usize,
+    block: usize,
+    start: u32,
+    gray: bool,
+    table: &'a [[u32; L]; 32],
+    x: [u32; L],
+}
+
+impl<const L: usize> SobolRows<'_, L> {
+    /// The step row after index `i` (`i -> i + 1`).
+    #[inline(always)]
+    fn step(&self, i: u32) -> &[u32; L] {
+        let k = if self.gray {
+            i.wrapping_add(1).trailing_zeros()
+        } else {
+            i.trailing_ones()
+        };
+        &self.table[(k & 31) as usize]
+    }
+}
+
+impl<const L: usize> crate::dispatch::Kernel for SobolRows<'_, L> {
+    type Output = ();
+    #[inline(always)]
+    fn run(mut self) {
+        let (dims, first, block) = (self.dims, self.first, self.block);
+        let out = core::mem::take(&mut self.out);
+        let rows = out.len() / dims;
+        // Rows before the first aligned index (all of them when no whole group follows),
+        // the whole groups, then the rest.
+        let to_aligned = (GROUP - self.start as usize % GROUP) % GROUP;
+        let head = if rows < to_aligned + GROUP {
+            rows
+        } else {
+            to_aligned
+        };
+        let groups = (rows - head) / GROUP;
+        let (head_rows, rest) = out.split_at_mut((head * dims).min(out.len()));
+        let (group_rows, tail_rows) = rest.split_at_mut((groups * GROUP * dims).min(rest.len()));
+        let mut x = self.x;
+        let mut i = self.start;
+        let put = |row: &mut [u32], v: &[u32; L]| {
             if block == L {
-                // Full block: a fixed-size copy (vectorized).
-                if let Some(dst) = chunk.get_mut(first..first + L) {
-                    dst.copy_from_slice(&x);
+                if let Some(dst) = row.get_mut(first..first + L) {
+                    dst.copy_from_slice(v);
                 }
-            } else if let Some(dst) = chunk.get_mut(first..first + block) {
-                for (o, v) in dst.iter_mut().zip(&x) {
+            } else if let Some(dst) = row.get_mut(first..first + block) {
+                for (o, v) in dst.iter_mut().zip(v) {
                     *o = *v;
                 }
             }
-            if row + 1 == rows {
-                break;
+        };
+        // One step a row; `x` ends at the point after the last row.
+        let one_by_one = |rows: &mut [u32], x: &mut [u32; L], i: &mut u32| {
+            for row in rows.chunks_exact_mut(dims) {
+                put(row, x);
+                let s = self.step(*i);
+                for lane in 0..L {
+                    x[lane] ^= s[lane];
+                }
+                *i = i.wrapping_add(1);
             }
-            let k = match self.order {
-                Order::Gray => i.wrapping_add(1).trailing_zeros(),
-                Order::Natural => i.trailing_ones(),
-            };
-            let step = &table[(k & 31) as usize];
-            for lane in 0..L {
-                x[lane] ^= step[lane];
+        };
+        one_by_one(head_rows, &mut x, &mut i);
+        if groups > 0 {
+            // The group table T[r] (row r of any aligned group, relative to its start).
+            let mut t = [[0u32; L]; GROUP];
+            for r in 1..GROUP {
+                let s = self.step(r as u32 - 1);
+                for lane in 0..L {
+                    t[r][lane] = t[r - 1][lane] ^ s[lane];
+                }
             }
-            i = i.wrapping_add(1);
+            let low = self.table[(GROUP_BITS - 1) as usize];
+            let mut q = i >> GROUP_BITS;
+            let mut base = x;
+            for group in group_rows.chunks_exact_mut(GROUP * dims) {
+                if dims == L && block == L {
+                    // Contiguous rows of L values: GROUP * L values in a row.
+                    let (rows, _) = group.as_chunks_mut::<L>();
+                    for (row, tr) in rows.iter_mut().zip(&t) {
+                        *row = core::array::from_fn(|lane| base[lane] ^ tr[lane]);
+                    }
+                } else {
+                    for (row, tr) in group.chunks_exact_mut(dims).zip(&t) {
+                        put(row, &core::array::from_fn(|lane| base[lane] ^ tr[lane]));
+                    }
+                }
+                // To the next group: C (gray(G (q+1)) ^ gray(G q)).
+                q = q.wrapping_add(1);
+                let up = &self.table[((q.trailing_zeros() + GROUP_BITS) & 31) as usize];
+                base = core::array::from_fn(|lane| base[lane] ^ up[lane] ^ low[lane]);
+            }
+            x = base;
+            i = i.wrapping_add((groups * GROUP) as u32);
         }
+        one_by_one(tail_rows, &mut x, &mut i);
     }
 }
 
