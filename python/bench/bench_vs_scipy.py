@@ -11,11 +11,12 @@ scramble). Each case runs SciPy and qmckit alternately ``--repeat`` times and ke
 side's best time, so a machine shared with other work penalizes both alike. A ratio
 above 1 means qmckit is faster.
 
-Time is the wall clock, or with ``--cpu-time`` the calling thread's CPU time
-(``time.thread_time``: user and system time, so page faults on a fresh output count, but
-not the time other programs take on a shared machine). CPU time fits the single-threaded
-cases only, so ``--cpu-time`` skips the ``workers=-1`` rows; set ``OPENBLAS_NUM_THREADS=1``
-so that no BLAS thread spins beside the timed one.
+Time is the wall clock, or with ``--cpu-time`` the process's CPU time
+(``time.process_time``: user and system time of all its threads, so page faults on a fresh
+output count, but not the time other programs take on a shared machine). CPU time fits
+the one-worker cases only (with more workers it adds the threads' times up), so
+``--cpu-time`` skips the ``workers=-1`` rows; set ``OPENBLAS_NUM_THREADS=1`` so that no
+idle BLAS thread spins and counts.
 """
 
 import argparse
@@ -107,11 +108,11 @@ def main():
     ap.add_argument("--repeat", type=int, default=5)
     ap.add_argument("--quick", action="store_true", help="smaller sizes (a smoke run)")
     ap.add_argument("--cpu-time", action="store_true",
-                    help="time by the thread's CPU time (single-threaded rows only)")
+                    help="time by the process's CPU time (one-worker rows only)")
     args = ap.parse_args()
     global CLOCK
     if args.cpu_time:
-        CLOCK = time.thread_time
+        CLOCK = time.process_time
     warnings.simplefilter("ignore", UserWarning)
     print(f"CPUs: {os.cpu_count()}; numpy {np.__version__}; "
           f"scipy {__import__('scipy').__version__}; qmckit {qmckit.__version__}")

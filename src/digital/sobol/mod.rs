@@ -398,7 +398,10 @@ impl<const L: usize> crate::dispatch::Kernel for SobolRows<'_, L> {
     type Output = ();
     #[inline(always)]
     fn run(mut self) {
-        let (dims, first, block) = (self.dims, self.first, self.block);
+        // `dims >= 1` (the caller's `max(1)`), restated here and at each chunking (which an
+        // inliner may see apart), so that no division or chunking by zero is left in the
+        // build (the firmware's link-time panic proof).
+        let (dims, first, block) = (self.dims.max(1), self.first, self.block);
         let out = core::mem::take(&mut self.out);
         let rows = out.len() / dims;
         // Rows before the first aligned index (all of them when no whole group follows),
@@ -427,7 +430,7 @@ impl<const L: usize> crate::dispatch::Kernel for SobolRows<'_, L> {
         };
         // One step a row; `x` ends at the point after the last row.
         let one_by_one = |rows: &mut [u32], x: &mut [u32; L], i: &mut u32| {
-            for row in rows.chunks_exact_mut(dims) {
+            for row in rows.chunks_exact_mut(dims.max(1)) {
                 put(row, x);
                 let s = self.step(*i);
                 for lane in 0..L {
@@ -449,7 +452,7 @@ impl<const L: usize> crate::dispatch::Kernel for SobolRows<'_, L> {
             let low = self.table[(GROUP_BITS - 1) as usize];
             let mut q = i >> GROUP_BITS;
             let mut base = x;
-            for group in group_rows.chunks_exact_mut(GROUP * dims) {
+            for group in group_rows.chunks_exact_mut(GROUP.saturating_mul(dims).max(1)) {
                 if dims == L && block == L {
                     // Contiguous rows of L values: GROUP * L values in a row.
                     let (rows, _) = group.as_chunks_mut::<L>();
@@ -457,7 +460,7 @@ impl<const L: usize> crate::dispatch::Kernel for SobolRows<'_, L> {
                         *row = core::array::from_fn(|lane| base[lane] ^ tr[lane]);
                     }
                 } else {
-                    for (row, tr) in group.chunks_exact_mut(dims).zip(&t) {
+                    for (row, tr) in group.chunks_exact_mut(dims.max(1)).zip(&t) {
                         put(row, &core::array::from_fn(|lane| base[lane] ^ tr[lane]));
                     }
                 }
