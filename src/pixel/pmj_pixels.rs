@@ -127,9 +127,10 @@ const PASS: usize = 16;
 /// hash, as pbrt's `int`); sample `i` does not depend on `spp`, so the samples of a
 /// pixel are progressive. `no_std`, no allocation; the table is 256 KiB of read-only data
 /// (flash on an embedded target). Cost: one MurmurHash and one `MixBits` a value (a
-/// pixel and dimension, once, in the prepared fills), then three Vegdahl hashes, three bit
+/// pixel and dimension, once, in the prepared fills), then three Vegdahl hashes, four bit
 /// reversals, one table read and no division or branch a 2D value; the prepared fills
-/// ([`PixelSampler::fill_2d`]) run that as one vectorized loop over the pixel's samples.
+/// ([`PixelSampler::fill_2d`]) run that in passes of 16 samples, each three branch-free loops that vectorize (the shuffled
+/// indices, the table reads as a gather, the scrambles and conversions).
 ///
 /// ```
 /// use qmckit::pixel::{PixelSampler, Pmj02Pixels};
