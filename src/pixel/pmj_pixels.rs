@@ -202,8 +202,12 @@ impl Pmj02Pixels {
             for (v, &t) in w.iter_mut().zip(idx.iter()) {
                 *v = TABLE[t as usize];
             }
-            for (o, &v) in chunk.iter_mut().zip(w.iter()) {
-                *o = value(keys.scramble(v));
+            let (mut px, mut py) = ([0u32; PASS], [0u32; PASS]);
+            for ((a, b), &v) in px.iter_mut().zip(py.iter_mut()).zip(w.iter()) {
+                [*a, *b] = keys.scramble(v);
+            }
+            for ((o, &a), &b) in chunk.iter_mut().zip(px.iter()).zip(py.iter()) {
+                *o = value([a, b]);
             }
         }
         Ok(())
