@@ -129,8 +129,9 @@ const PASS: usize = 16;
 /// (flash on an embedded target). Cost: one MurmurHash and one `MixBits` a value (a
 /// pixel and dimension, once, in the prepared fills), then three Vegdahl hashes, four bit
 /// reversals, one table read and no division or branch a 2D value; the prepared fills
-/// ([`PixelSampler::fill_2d`]) run that in passes of 16 samples, each three branch-free loops that vectorize (the shuffled
-/// indices, the table reads as a gather, the scrambles and conversions).
+/// ([`PixelSampler::fill_2d`]) run that in passes of 16 samples, each four branch-free
+/// loops that vectorize (the shuffled indices, the table reads as a gather, the
+/// scrambles, the conversions).
 ///
 /// ```
 /// use qmckit::pixel::{PixelSampler, Pmj02Pixels};
@@ -177,8 +178,7 @@ impl Pmj02Pixels {
     }
 
     /// The prepared fill: the keys once, then `value(sample k)` for `k` in `0..out.len()`
-    /// (at most `spp <= 2^16`), a loop without branches that vectorizes (the table read
-    /// is a gather).
+    /// (at most `spp <= 2^16`), in passes of [`PASS`] samples without branches.
     #[inline(always)]
     fn fill_with<T>(
         &self,
@@ -192,7 +192,9 @@ impl Pmj02Pixels {
         let keys = Keys::new(seed_hash4(x, y, dim, self.seed));
         for (c, chunk) in (0u32..).zip(out.chunks_mut(PASS)) {
             // Whole passes (the indices past a short last pass stay below 2^16 and are
-            // dropped): the shuffled indices, the table reads, then the scrambles.
+            // dropped): the shuffled indices, the table reads, the scrambles into separate
+            // x and y scratch (full-width vectors; written straight into the interleaved
+            // output they ran at half width), then the conversion.
             let base = c * PASS as u32;
             let mut idx = [0u16; PASS];
             for (j, t) in (0u32..).zip(idx.iter_mut()) {
