@@ -19,9 +19,9 @@ dimension counter at D (ZSobolSampler, SobolSampler, PaddedSobolSampler; bit-ide
 halton is HaltonSampler and stratified is StratifiedSampler (bit-identical; their csv
 floats are pbrt's float arithmetic, not a rounding of the exact value); halton's 2D value at
 D is Get2D with the counter at max(D, 2), its pixel position is not printed. stratified splits
-S into xs x ys strata as pbrt does given a sample count. independent is qmckit's hashed white noise, not pbrt's PCG stream; pmj02 is a seeded PMJ02
-sequence per pixel and dimension through a hashed index permutation (pbrt's layout, without
-its tables and blue-noise shifts); pmj02bn is pbrt's PMJ02BNSampler layout on a generated
+S into xs x ys strata as pbrt does given a sample count. independent is qmckit's hashed white noise, not pbrt's PCG stream; pmj02 reads one shared
+65,536-point PMJ02 table through a per-pixel, per-dimension index shuffle and Owen
+scrambles (every power-of-two prefix of a pixel's points a (0,m,2)-net; --spp at most 65536); pmj02bn is pbrt's PMJ02BNSampler layout on a generated
 65,536-point PMJ02BN table (seeded by --seed): the 2D value at D is Get2D with the counter at
 max(D, 2), and the pixel position (GetPixel2D, a tile of the table) is not printed.
 

@@ -16,7 +16,7 @@
 //! low 32 bits are pbrt's `int` dimension), [`ImageSobol`] wraps to dimension 2 at the end of
 //! its table, [`HaltonSampler`] wraps to 2 past its last prime, [`StratifiedSampler`] hashes
 //! `d` and reads its PCG32 stream at `65536 i + d`, [`Pmj02BnPixels`] and [`Pmj02Pixels`]
-//! hash `d` into a permutation.
+//! hash `d` into a permutation (an index shuffle and scrambles for [`Pmj02Pixels`]).
 //!
 //! Types: pixel coordinates and the per-pixel sample index are `u32` (the index is the point
 //! index, `< spp`), dimensions are `usize` (as [`crate::Sampler`]'s), seeds `u64` (below
@@ -29,7 +29,7 @@
 //! | [`ZSobol`] | Ahmed & Wonka 2020 blue-noise Sobol': Morton-ordered pixels, hashed base-4 digit permutations | yes (`u64`) | Morton index | `log4(side^2 spp)` MixBits, one MurmurHash, the scramble |
 //! | [`ImageSobol`] | pbrt's `SobolSampler`: one Sobol' sequence over the image plane (Grünschloss et al. 2012) | yes | the Sobol' index, `O(m + log2 spp)` XORs | one Sobol' value, one MurmurHash, the scramble |
 //! | [`PaddedSobol`] | per pixel and dimension: hashed index permutation and scramble of Sobol' (0, 1) | no | nothing | one MurmurHash, one permutation, the scramble |
-//! | [`Pmj02Pixels`] | a seeded PMJ02 sequence per pixel and dimension, index permuted (the layout of pbrt's `PMJ02BNSampler`, generated) | no | nothing | one MurmurHash, one permutation, `2 log2 spp` hashes |
+//! | [`Pmj02Pixels`] | one shared 65,536-point PMJ02 table (Christensen et al. 2018), per pixel and dimension index-shuffled (a nested scramble of the index) and Owen-scrambled: every power-of-two prefix a (0, m, 2)-net | no | nothing | one MurmurHash, one `MixBits`, three Vegdahl hashes, a table read |
 //! | [`Pmj02BnPixels`] | pbrt's `PMJ02BNSampler` layout: one PMJ02BN table bucketed into a pixel tile, permuted blocks plus blue-noise shifts for the other dimensions | no | the tile entry | one MurmurHash, one permutation, two mask reads |
 //! | [`HaltonSampler`] | pbrt's `HaltonSampler`: one Halton sequence over the image plane, the pixel's indices by the Chinese remainder theorem | yes | `j + k` digit steps | `~24 / log2 b` digit steps (a hash and a permutation each when randomized) |
 //! | [`StratifiedSampler`] | pbrt's `StratifiedSampler`: strata permuted per pixel and dimension, PCG32 jitter | no | the pixel hash | one MurmurHash, one permutation, a PCG32 jump |
@@ -111,7 +111,7 @@ pub use halton_tables::PreparedHalton;
 pub use image_sobol::{IMAGE_SOBOL_DIMS, ImageSobol, PBRT_SOBOL_DIMS};
 pub use independent::IndependentPixels;
 pub use padded::PaddedSobol;
-pub use pmj_pixels::Pmj02Pixels;
+pub use pmj_pixels::{PMJ02_TABLE_LEN, Pmj02Pixels, pmj02_table_point};
 pub use pmj02bn::Pmj02BnPixels;
 #[cfg(feature = "std")]
 pub use pmj02bn::Pmj02BnTables;

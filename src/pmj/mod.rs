@@ -43,7 +43,7 @@ pub mod christensen;
 pub mod spread;
 
 use crate::error::{Error, Result};
-use crate::hash::{hash3_key, hash3_keyed, uniform};
+use crate::hash::uniform;
 use crate::sampler::{FULL_RANGE, Sampler, check, check_fill};
 
 /// `n <= max` points, or [`Error::TooManyPoints`].
@@ -219,47 +219,6 @@ impl Sampler for Pmj02 {
     }
 }
 
-/// Points [`fill_short`] takes at most.
-pub(crate) const SHORT: usize = 256;
-
-/// [`fill`] of at most `N` points (the rest of `out` is left as is): the jitters of
-/// all points first, a loop of independent hashes that vectorizes (the seed's part of
-/// [`hash3`](crate::hash::hash3) once, the index's part shared by both coordinates), then
-/// each point from its parent. The same points as [`fill`]. `O(1)` a point.
-/// `N` (at most [`SHORT`]) sizes the stack scratch: the caller picks the smallest that
-/// holds `out`.
-#[inline(always)]
-pub(crate) fn fill_short<const N: usize>(seed: u64, out: &mut [[u32; 2]]) {
-    let n = out.len().min(N);
-    let key = hash3_key(seed);
-    let mut jitter = [[0u32; 2]; N];
-    // Whole passes of 16 (within N): no scalar tail for the common counts.
-    let m = n.next_multiple_of(16).min(N);
-    for (k, j) in (0u64..).zip(jitter[..m].iter_mut()) {
-        *j = [
-            (hash3_keyed(key, k, 0) >> 32) as u32,
-            (hash3_keyed(key, k, 1) >> 32) as u32,
-        ];
-    }
-    if let Some(first) = out.first_mut() {
-        *first = jitter[0];
-    }
-    for k in 1..n {
-        let level = 31 - (k as u32).leading_zeros();
-        let i = k as u32 - (1 << level);
-        let mut point = [0u32; 2];
-        for (d, v) in point.iter_mut().enumerate() {
-            // The parent j < 2^level <= k is made.
-            let j = (i ^ XOR[d][level as usize]) as usize;
-            let parent = out.get(j).map_or(0, |q| q[d]);
-            *v = child(parent, level, jitter.get(k).map_or(0, |q| q[d]));
-        }
-        if let Some(slot) = out.get_mut(k) {
-            *slot = point;
-        }
-    }
-}
-
 /// The first `out.len()` points of [`Pmj02::new`]`(seed)` into `out` (any length up to
 /// `2^32`; no allocation). `O(1)` a point.
 ///
@@ -291,35 +250,4 @@ pub fn fill(seed: u64, out: &mut [[u32; 2]]) -> Result<()> {
         }
     }
     Ok(())
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The batched short fill gives each point of the per-point definition
-    /// ([`Pmj02::value`], the chain of parents walked per index), for lengths around the
-    /// passes of 16 and both scratch sizes.
-    #[test]
-    fn fill_short_is_the_sequence() {
-        for seed in [0u64, 7, u64::MAX] {
-            let p = Pmj02::new(seed);
-            for n in [0usize, 1, 2, 3, 5, 15, 16, 17, 100, 256] {
-                let mut big = [[0u32; 2]; SHORT];
-                fill_short::<SHORT>(seed, &mut big[..n]);
-                for (k, q) in big[..n].iter().enumerate() {
-                    assert_eq!(
-                        *q,
-                        [p.value(k as u32, 0), p.value(k as u32, 1)],
-                        "{seed} {n}"
-                    );
-                }
-                if n <= 16 {
-                    let mut small = [[0u32; 2]; 16];
-                    fill_short::<16>(seed, &mut small[..n]);
-                    assert_eq!(small[..n], big[..n]);
-                }
-            }
-        }
-    }
 }

@@ -13,6 +13,7 @@ mod compiled;
 mod domain;
 mod halton_stratified;
 mod pmj02bn_pixels;
+mod pmj_pixels;
 mod prepared;
 mod prepared_halton;
 

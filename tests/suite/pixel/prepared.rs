@@ -139,8 +139,8 @@ fn pmj_fills_equal_the_handle() {
             check(&s, x, y, &format!("pmj02 spp {spp}"));
         }
     }
-    // Past the prefix the fill generates whole (256 points): random access per sample.
-    for spp in [256, 257, 300] {
+    // Several passes of 16, a short last pass, and the whole table.
+    for spp in [256, 257, 300, 1 << 16] {
         let s = Pmj02Pixels::new(5, 3, spp, 9).unwrap();
         for (x, y) in [(0, 0), (4, 2)] {
             check(&s, x, y, &format!("pmj02 spp {spp}"));
