@@ -111,6 +111,8 @@ mod tournament;
 #[cfg(feature = "analysis")]
 pub mod transport;
 #[cfg(feature = "analysis")]
+mod verlet;
+#[cfg(feature = "analysis")]
 pub mod void_and_cluster;
 #[cfg(feature = "analysis")]
 pub mod voronoi3;
