@@ -71,6 +71,8 @@ mod kdtree;
 #[cfg(feature = "analysis")]
 mod keysort;
 #[cfg(feature = "analysis")]
+mod lbfgs;
+#[cfg(feature = "analysis")]
 pub mod ldbn;
 #[cfg(feature = "analysis")]
 pub mod lloyd;

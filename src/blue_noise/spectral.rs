@@ -97,9 +97,10 @@ use rayon::prelude::*;
 
 use super::PointSet;
 use super::bessel::bessel_j_half;
+use super::lbfgs::{ARMIJO, FIRST_STEP, MAX_MOVE, MEMORY, Memory, dot};
 use super::lloyd::to_fraction;
-use super::torus_cells::{Cells, wrap};
-use super::verlet::Lists;
+use super::torus_cells::wrap;
+use super::verlet::{Near, SKIN};
 use crate::randomize::{FastOwen, Scrambled};
 use crate::work::{Budget, Cost, Rate};
 use crate::{Error, Result, Sampler, Sobol};
@@ -532,137 +533,6 @@ impl SpectralBlueNoise {
             e = e_new;
         }
         Ok(pts)
-    }
-}
-
-/// Limited-memory BFGS pairs kept (Nocedal, "Updating quasi-Newton matrices with limited
-/// storage", Math. Comp. 35, 1980).
-const MEMORY: usize = 8;
-/// The root-mean-square move of a steepest-descent step, in mean spacings.
-const FIRST_STEP: f64 = 0.05;
-/// The longest move of any point in one step, in mean spacings.
-const MAX_MOVE: f64 = 0.5;
-/// The sufficient-decrease constant of the line search.
-const ARMIJO: f64 = 1e-4;
-
-fn dot(a: &[f64], b: &[f64]) -> f64 {
-    a.iter().zip(b).map(|(x, y)| x * y).sum()
-}
-
-/// The last pairs `(s_k, y_k)` of moves and gradient changes.
-struct Memory {
-    cap: usize,
-    s: Vec<Vec<f64>>,
-    y: Vec<Vec<f64>>,
-    rho: Vec<f64>,
-}
-
-impl Memory {
-    fn new(cap: usize) -> Self {
-        Memory {
-            cap,
-            s: Vec::new(),
-            y: Vec::new(),
-            rho: Vec::new(),
-        }
-    }
-
-    fn is_empty(&self) -> bool {
-        self.s.is_empty()
-    }
-
-    fn clear(&mut self) {
-        self.s.clear();
-        self.y.clear();
-        self.rho.clear();
-    }
-
-    /// Keeps `s = alpha dir`, `y = g1 - g0` when the curvature `s . y` is positive.
-    fn push(&mut self, alpha: f64, dir: &[f64], g1: &[f64], g0: &[f64]) {
-        let (mut s, mut y) = if self.s.len() == self.cap {
-            self.rho.remove(0);
-            (self.s.remove(0), self.y.remove(0))
-        } else {
-            (vec![0.0; dir.len()], vec![0.0; dir.len()])
-        };
-        for (o, &v) in s.iter_mut().zip(dir) {
-            *o = alpha * v;
-        }
-        for ((o, &a), &b) in y.iter_mut().zip(g1).zip(g0) {
-            *o = a - b;
-        }
-        let sy = dot(&s, &y);
-        if sy > 1e-10 * (dot(&y, &y) * dot(&s, &s)).sqrt() {
-            self.s.push(s);
-            self.y.push(y);
-            self.rho.push(1.0 / sy);
-        }
-    }
-
-    /// `dir = -H g` by the two-loop recursion, `H_0 = (s . y) / (y . y)` of the newest pair.
-    fn direction(&self, g: &[f64], dir: &mut [f64]) {
-        dir.copy_from_slice(g);
-        let mut a = [0.0f64; MEMORY];
-        for (((ai, s), y), &r) in a.iter_mut().zip(&self.s).zip(&self.y).zip(&self.rho).rev() {
-            *ai = r * dot(s, dir);
-            for (q, &yv) in dir.iter_mut().zip(y) {
-                *q -= *ai * yv;
-            }
-        }
-        if let (Some(s), Some(y)) = (self.s.last(), self.y.last()) {
-            let gamma = dot(s, y) / dot(y, y);
-            for q in dir.iter_mut() {
-                *q *= gamma;
-            }
-        }
-        for (((ai, s), y), &r) in a.iter().zip(&self.s).zip(&self.y).zip(&self.rho) {
-            let b = r * dot(y, dir);
-            for (q, &sv) in dir.iter_mut().zip(s) {
-                *q += (ai - b) * sv;
-            }
-        }
-        for q in dir.iter_mut() {
-            *q = -*q;
-        }
-    }
-}
-
-/// The pairs within the cut-off: Verlet lists when they fit in [`LIST_ENTRIES`], the cell
-/// lists otherwise.
-enum Near {
-    Lists(Lists),
-    Cells(Cells),
-}
-
-/// The most neighbour-list entries (4 bytes each) before the cell lists are used instead.
-const LIST_ENTRIES: f64 = (1u64 << 26) as f64;
-/// The skin of the Verlet lists, in mean spacings.
-const SKIN: f64 = 0.6;
-
-impl Near {
-    /// Whether `n` points in `d` dimensions take the lists at the cut-off `rho_cut` (in
-    /// mean spacings): fewer than [`LIST_ENTRIES`] entries, and the reach within half the
-    /// torus.
-    fn listed(n: usize, d: usize, rho_cut: f64) -> bool {
-        let reach = rho_cut + SKIN;
-        let entries = n as f64 * ball_volume(d) * reach.powi(d as i32);
-        entries <= LIST_ENTRIES && 2.0 * reach < (n as f64).powf(1.0 / d as f64)
-    }
-
-    fn new(pts: &[f64], d: usize, cut: f64, s: f64, n: usize) -> Result<Self> {
-        if Near::listed(n, d, cut / s) {
-            Ok(Near::Lists(Lists::new(pts, d, cut, SKIN * s)?))
-        } else {
-            Ok(Near::Cells(Cells::new(pts, d, cut)?))
-        }
-    }
-
-    /// Whether the lists must be rebuilt for `pts` (the cells always are).
-    fn stale(&self, pts: &[f64]) -> bool {
-        match self {
-            Near::Lists(l) => l.stale(pts),
-            Near::Cells(_) => true,
-        }
     }
 }
 

@@ -10,10 +10,13 @@
 //! `3^d N^2 reach^d` distance tests at most); a pass over the lists then visits only the
 //! `V_d reach^d N` neighbours a point (`V_d` the unit ball's volume), against the
 //! `3^d reach^d N` points of the `3^d` cells: 2.9 times fewer in 2D. Memory: one `u32`
-//! a neighbour, and the positions at the build.
+//! a neighbour, and the positions at the build. [`Near`] takes the lists when they hold at
+//! most 2^26 entries and the reach fits in half the torus, the cell lists otherwise (for
+//! the spectral sampler's pair sums).
 
 use rayon::prelude::*;
 
+use super::spectral::ball_volume;
 use super::torus_cells::{Cells, wrap};
 use crate::Result;
 
@@ -123,6 +126,45 @@ impl Lists {
                     .sum::<f64>()
                     > s2
             })
+    }
+}
+
+/// The pairs within the cut-off: Verlet lists when they fit in [`LIST_ENTRIES`], the cell
+/// lists otherwise.
+pub(crate) enum Near {
+    Lists(Lists),
+    Cells(Cells),
+}
+
+/// The most neighbour-list entries (4 bytes each) before the cell lists are used instead.
+const LIST_ENTRIES: f64 = (1u64 << 26) as f64;
+/// The skin of the Verlet lists, in mean spacings.
+pub(crate) const SKIN: f64 = 0.6;
+
+impl Near {
+    /// Whether `n` points in `d` dimensions take the lists at the cut-off `rho_cut` (in
+    /// mean spacings): fewer than [`LIST_ENTRIES`] entries, and the reach within half the
+    /// torus.
+    pub(crate) fn listed(n: usize, d: usize, rho_cut: f64) -> bool {
+        let reach = rho_cut + SKIN;
+        let entries = n as f64 * ball_volume(d) * reach.powi(d as i32);
+        entries <= LIST_ENTRIES && 2.0 * reach < (n as f64).powf(1.0 / d as f64)
+    }
+
+    pub(crate) fn new(pts: &[f64], d: usize, cut: f64, s: f64, n: usize) -> Result<Self> {
+        if Near::listed(n, d, cut / s) {
+            Ok(Near::Lists(Lists::new(pts, d, cut, SKIN * s)?))
+        } else {
+            Ok(Near::Cells(Cells::new(pts, d, cut)?))
+        }
+    }
+
+    /// Whether the lists must be rebuilt for `pts` (the cells always are).
+    pub(crate) fn stale(&self, pts: &[f64]) -> bool {
+        match self {
+            Near::Lists(l) => l.stale(pts),
+            Near::Cells(_) => true,
+        }
     }
 }
 
