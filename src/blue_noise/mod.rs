@@ -71,6 +71,8 @@ mod kdtree;
 #[cfg(feature = "analysis")]
 mod keysort;
 #[cfg(feature = "analysis")]
+mod lbfgs;
+#[cfg(feature = "analysis")]
 pub mod ldbn;
 #[cfg(feature = "analysis")]
 pub mod lloyd;
@@ -110,6 +112,8 @@ mod torus_cells;
 mod tournament;
 #[cfg(feature = "analysis")]
 pub mod transport;
+#[cfg(feature = "analysis")]
+mod verlet;
 #[cfg(feature = "analysis")]
 pub mod void_and_cluster;
 #[cfg(feature = "analysis")]

@@ -18,7 +18,7 @@ pub struct BlueNoiseOptions {
     pub candidates: Option<u32>,
     /// gaussian-blue-noise: gradient-descent iterations (default 500); lloyd, ccvt
     /// (default 30), sot (default 100), bnot (default 50), step-blue-noise and
-    /// single-peak-blue-noise (default 1000): their iterations; kde-blue-noise: its sweeps
+    /// single-peak-blue-noise (default 200): their iterations; kde-blue-noise: its sweeps
     /// a level (default 60).
     pub iterations: Option<u32>,
     /// sot: projective sampling (half the directions in the 1D and 2D axis subspaces).

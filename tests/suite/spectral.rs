@@ -146,8 +146,8 @@ fn single_peak_spectrum_has_its_zero_region_and_peak() {
     for (i, &v) in p.iter().enumerate() {
         let u = (i + 1) as f64 / root;
         let half_bin = 0.5 / root;
-        // The descent leaves about 0.07 there at 1000 iterations (a looser bound than the
-        // step's: the target's oscillating pair correlation is harder to match).
+        // A looser bound than the step's: the target's oscillating pair correlation is
+        // harder to match.
         if u + half_bin < cutoff - 3.0 * width {
             assert!(v < 0.15, "u = {u}: power {v} in the zero region");
         }
