@@ -48,8 +48,8 @@
 //!
 //! As in the paper, samples move by vectors learned offline by relaxation: the sample of a
 //! leaf `(a, b, c)` is `centroid + alpha (b - a) + beta (c - a)`, `(alpha, beta)` from a
-//! [`Table`] indexed by the leaf's class (its index among the 34 or 55 leaves of its
-//! ancestor four levels up) and the band of the threshold fraction `t` (four bands of
+//! [`Table`] indexed by the leaf's class (its index among the 89 or 144 leaves of its
+//! ancestor five levels up) and the band of the threshold fraction `t` (four bands of
 //! `(phi^-2, 1]`, equal in `log t`); a move that would leave the square is not made. The
 //! table, `tables/penrose_corrections.rs`, is made by our optimizer
 //! ([`crate::blue_noise::penrose_train`]). [`Penrose::corrected`]`(false)` keeps the
@@ -322,7 +322,7 @@ pub(crate) struct Leaf {
     /// The global rank.
     pub(crate) rank: u32,
     /// [`NO_CLASS`] or the class: the leaf's index among the leaves of its ancestor
-    /// [`CLASS_DEPTH`] levels up, plus 34 when that ancestor is thick.
+    /// [`CLASS_DEPTH`] levels up, plus 89 when that ancestor is thick.
     pub(crate) class: u8,
     /// The directions of `b - a` and `c - a` in the tiling, in steps of 18°.
     pub(crate) dirs: [u8; 2],
@@ -334,11 +334,11 @@ pub(crate) struct Leaf {
 pub(crate) const NO_CLASS: u8 = u8::MAX;
 
 /// Levels between a leaf and the ancestor that defines its class.
-pub(crate) const CLASS_DEPTH: usize = 4;
+pub(crate) const CLASS_DEPTH: usize = 5;
 
-/// Classes of leaves: 34 below a thin ancestor four levels up (`F(9)`), 55 below a thick
-/// one (`F(10)`).
-pub(crate) const CLASSES: usize = 89;
+/// Classes of leaves: 89 below a thin ancestor five levels up (`F(11)`), 144 below a
+/// thick one (`F(12)`).
+pub(crate) const CLASSES: usize = 233;
 
 /// Bands of the threshold fraction `t` in `(phi^-2, 1]`, equal in `log t`.
 pub(crate) const BANDS: usize = 4;
@@ -644,7 +644,7 @@ mod tests {
     #[test]
     fn classes_are_the_leaves_below_the_ancestor() {
         let (thin, thick) = leaves(CLASS_DEPTH);
-        assert_eq!((thin, thick), (34, 55));
+        assert_eq!((thin, thick), (89, 144));
         assert_eq!((thin + thick) as usize, CLASSES);
         assert!(CLASSES < usize::from(NO_CLASS));
     }
