@@ -1,24 +1,39 @@
 //! Writes `tables/art_offsets.rs`, the offset table of `qmckit::blue_noise::Art`: descent
-//! of the sum, over the prefix sizes `N = 64, 128, ..., 4096`, of the mismatch between the
+//! of the sum, over the prefix sizes `N = 2^LOG2` (`LOG2 SIZES`), of the mismatch between the
 //! pair correlation of the `N`-point set on the torus (in units of its mean spacing) and
 //! that of step blue noise with cutoff `U0` (Heck, Schlömer & Deussen 2013). A sample's
 //! gradient goes to the table entry of the tile that placed it (times that tile's side); an
 //! entry moves by the mean of its gradients (scaled to a root-mean-square move of 0.01
 //! tile, shrinking to 0.001) and stays in `[0.02, 0.98]`.
 //!
-//! `cargo run --release --features analysis --example art_optimize [U0] [STEPS] > tables/art_offsets.rs`
-//! (defaults 0.5 and 600).
+//! With `W > 0` each size's objective also has a hard core: `W sum (R0 - r)^2 / N` over
+//! the pairs closer than `R0` mean spacings (the paper relaxes its offsets to spread the
+//! samples of every level; the pair-correlation term alone leaves pairs as close as in
+//! jittered sampling). At the end the table's 32 sets (seeds 1 to 32) of 256, 1024 and
+//! 4096 points are measured as `scripts/utk_compare.sh` measures them, the means printed to
+//! standard error.
+//!
+//! `cargo run --release --features analysis --example art_optimize [U0] [STEPS] [R0] [W] [LOG2 SIZES] > tables/art_offsets.rs`
+//! (defaults 0.5, 1200, 1.0, 2000, `8,10,10,10,10,10,10,10,12`: 256, 4096 and, seven
+//! times, 1024, the size between two complete levels, where the tables are weakest).
 
 #[path = "common/gauss.rs"]
 mod gauss;
+#[path = "common/set_stats.rs"]
+mod set_stats;
 
-use qmckit::blue_noise::art::{ART_IDS, ArtTable, tiles};
+use qmckit::blue_noise::art::{ART_IDS, Art, ArtTable, tiles};
 use qmckit::work::Budget;
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
     let u0: f64 = args.get(1).map_or(0.5, |s| s.parse().expect("U0"));
-    let steps: usize = args.get(2).map_or(600, |s| s.parse().expect("STEPS"));
+    let steps: usize = args.get(2).map_or(1200, |s| s.parse().expect("STEPS"));
+    let r0: f64 = args.get(3).map_or(1.0, |s| s.parse().expect("R0"));
+    let w: f64 = args.get(4).map_or(2000.0, |s| s.parse().expect("W"));
+    let log2_sizes = args
+        .get(5)
+        .map_or("8,10,10,10,10,10,10,10,12", String::as_str);
     let mut state = 0x853c_49e6_748f_ea9bu64;
     let mut next = move || {
         state = state.wrapping_add(0x9e37_79b9_7f4a_7c15);
@@ -30,7 +45,10 @@ fn main() {
     let mut table: Vec<[f64; 2]> = (0..ART_IDS)
         .map(|_| [0.2 + 0.6 * next(), 0.2 + 0.6 * next()])
         .collect();
-    let sizes: Vec<u64> = (6..=12).map(|b| 1u64 << b).collect();
+    let sizes: Vec<u64> = log2_sizes
+        .split(',')
+        .map(|b| 1u64 << b.parse::<u32>().expect("LOG2 SIZES"))
+        .collect();
     for step in 0..steps {
         let t = ArtTable::new(table.clone().try_into().expect("512 entries")).expect("table");
         let mut pacer = Budget::DEFAULT.started().pacer("art optimize");
@@ -48,6 +66,15 @@ fn main() {
             let centres = vec![true; p.len()];
             let target = |r: f64| gauss::step_pcf(r, u0);
             total += gauss::pcf_mismatch(&p, &centres, Some(scale), &target, &mut grad);
+            if w > 0.0 {
+                let mut hc = vec![[0.0; 2]; p.len()];
+                let k = w / p.len() as f64;
+                total += k * gauss::hard_core(&p, &centres, Some(scale), r0, &mut hc);
+                for (g, d) in grad.iter_mut().zip(&hc) {
+                    g[0] += k * d[0];
+                    g[1] += k * d[1];
+                }
+            }
             for (t, gr) in set.iter().zip(&grad) {
                 let (id, level) = (usize::from(t.source.0), t.source.1);
                 if level == 0 {
@@ -78,10 +105,28 @@ fn main() {
             eprintln!("step {step}: PCF mismatch summed over sizes {total:.5}");
         }
     }
+    let t = ArtTable::new(table.clone().try_into().expect("512 entries")).expect("table");
+    for n in [256, 1024, 4096] {
+        let sets: Vec<Vec<f64>> = (1..=32)
+            .map(|seed| {
+                Art::new(n)
+                    .expect("points")
+                    .seed(seed)
+                    .table(t.clone())
+                    .generate(&Budget::DEFAULT)
+                    .expect("set")
+                    .to_f64()
+            })
+            .collect();
+        let (nn, low, mid) = set_stats::mean_nn_low_mid(&sets);
+        eprintln!(
+            "32 sets of {n}: NN {nn:.4}, low band {low:.4}, band sqrt(N)/2..sqrt(N) {mid:.3}"
+        );
+    }
     println!(
-        "// The offset table of ART (qmckit::blue_noise::art), by word c + 16 c_parent + 256 t,\n\
+        "// The offset table of ART (qmckit::blue_noise::art), by word c + 16 i + 256 t,\n\
          // in tile units. Written by\n\
-         // `cargo run --release --features analysis --example art_optimize {u0} {steps}`."
+         // `cargo run --release --features analysis --example art_optimize {u0} {steps} {r0} {w} {log2_sizes}`."
     );
     println!("[");
     for o in &table {

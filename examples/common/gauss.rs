@@ -83,6 +83,34 @@ pub fn pcf_mismatch(
     e
 }
 
+/// The hard-core penalty `E = sum (r0 - |p_i - p_j|)^2` over the pairs closer than `r0`
+/// with at least one point marked in `centres` (a point process with a hard core `r0`
+/// has `E = 0`; Poisson-disk and maximal-minimum-distance sets are its targets), and its
+/// gradient (added to `grad`).
+#[allow(dead_code)]
+pub fn hard_core(
+    p: &[[f64; 2]],
+    centres: &[bool],
+    period: Option<f64>,
+    r0: f64,
+    grad: &mut [[f64; 2]],
+) -> f64 {
+    let mut e = 0.0;
+    for (i, j, r, d) in near_pairs(p, r0, period) {
+        if !(centres[i] || centres[j]) || r < 1e-12 {
+            continue;
+        }
+        e += (r0 - r) * (r0 - r);
+        // dE/dp_i = -2 (r0 - r) (p_i - p_j) / r.
+        let f = -2.0 * (r0 - r) / r;
+        for k in 0..2 {
+            grad[i][k] += f * d[k];
+            grad[j][k] -= f * d[k];
+        }
+    }
+    e
+}
+
 /// The pairs `(i, j, |p_i - p_j|, p_i - p_j)`, `i < j`, closer than `reach`.
 fn near_pairs(
     p: &[[f64; 2]],

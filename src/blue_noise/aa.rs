@@ -27,12 +27,17 @@
 //! The label torus is cut into `32 x 32` bins; [`AA_TABLE`] gives each bin a displacement
 //! `d` in cell units, `|d_x|, |d_y| < 1/2`; the point of cell `q` is
 //! `((x + 1/2 + d_x) / K, (y + 1/2 + d_y) / K)`, always inside its cell. The table is
-//! `tables/aa_displacements.rs`, made by `examples/aa_optimize.rs`: gradient descent of a
-//! Gaussian pair energy `sum_(i<j) exp(-|p_i - p_j|^2 / (2 sigma^2))` over a `192 x 192`
-//! patch of the pattern (each bin's displacement shared by the cells that read it). The
-//! paper shapes its table towards any target spectrum; here the Gaussian energy (Ahmed, Ren &
-//! Wonka's objective) gives blue noise; the angle, bins and energy are this module's
-//! choices, not the paper's.
+//! `tables/aa_displacements.rs`, made by `examples/aa_optimize.rs`: gradient descent, on
+//! `192 x 192` patches of the pattern (each bin's displacement moved by the mean gradient
+//! of the cells that read it), of the mismatch between the patch's pair correlation and
+//! that of step blue noise with cutoff `u0 = 0.5` (Heck, Schlömer & Deussen 2013) plus a
+//! hard-core penalty `W sum (r0 - r)^2` on the pairs closer than `r0 = 1.07` cells. The
+//! paper optimizes its displacement vectors towards a target spectrum with the points kept
+//! apart; the penalty is that spacing (without it, pairs come as close as in jittered
+//! sampling), the pair-correlation term keeps the grid's regularity out (the penalty alone
+//! is minimal near the grid, which has distance 1). The angle, bins and objective are this
+//! module's choices, not the paper's. Its sets at `N = 1024` have a mean nearest-neighbour
+//! distance about 0.97 cell and no pair closer than half a cell (tested).
 //!
 //! ## Range and cost
 //!

@@ -9,12 +9,15 @@
 //!
 //! A tile of level `j` is a square of side `4^-j`; its 16 children are numbered
 //! `c = c_x + 4 c_y`. The tile's word, which picks its table entry, is
-//! `id = c + 16 c_parent + 256 t`: its own child number, its parent's, and the Thue–Morse
-//! bit `t = t(x) xor t(y)` of its integer position `(x, y)` at its level (`t(n)` the parity
-//! of the binary digits of `n`: the parity of all the digits of the tile's path). The
-//! Thue–Morse bit, which has no period, breaks the repetition that the two child numbers
-//! alone would have every 16 tiles (the paper builds its tile identifiers from the
-//! Thue–Morse word for the same reason; the exact word here is this module's choice).
+//! `id = c + 16 i + 256 t`: its own child number, the child number `i` of the sibling
+//! that inherits the parent's sample, and the Thue–Morse bit `t = t(x) xor t(y)` of its
+//! integer position `(x, y)` at its level (`t(n)` the parity of the binary digits of `n`:
+//! the parity of all the digits of the tile's path). With `i` the word knows where the
+//! inherited sample lies and hence the tile's rank digit (below), so an entry places a
+//! sample for the prefixes it belongs to. The Thue–Morse bit, which has no period, breaks
+//! the repetition the child numbers alone would have (the paper builds its tile
+//! identifiers from the Thue–Morse word for the same reason; the exact word here is this
+//! module's choice). The root's word is 0.
 //!
 //! The root's sample is `o[0]` (table offsets `o` in tile units, in `(0, 1)^2`). A tile
 //! passes its sample to the child that contains it; every other child `C` places its own at
@@ -44,10 +47,12 @@
 //! ## The table
 //!
 //! [`ART_TABLE`] (512 offsets) is `tables/art_offsets.rs`, made by
-//! `examples/art_optimize.rs`: gradient descent of the sum over prefix sizes `N` from 16 to
-//! 4096 of the normalized Gaussian pair energies of the `N`-point sets on the torus (the
-//! objective of Ahmed, Ren & Wonka's Gaussian blue noise); the paper optimizes its table
-//! by its own relaxation, which is not reproduced.
+//! `examples/art_optimize.rs`: gradient descent, over the prefixes of 256, 1024 and 4096
+//! points on the torus (1024 weighted seven times: it lies between two complete
+//! levels, where the offsets have the least room), of the mismatch of their pair correlation with step blue noise (Heck, Schlömer
+//! & Deussen 2013) plus a hard-core penalty `sum (r0 - r)^2` on pairs closer than
+//! `r0 = 1` mean spacing. The paper relaxes its offsets so that the samples of every level
+//! spread out; its optimizer and table are not reproduced.
 //!
 //! ## Range and cost
 //!
@@ -78,7 +83,7 @@ use crate::{Error, Result};
 /// `16^6 = 2^24`.
 pub const ART_MAX_POINTS: u64 = 1 << 24;
 
-/// Table entries: 16 child numbers, 16 parent child numbers, the Thue–Morse bit.
+/// Table entries: 16 child numbers, 16 inheriting-child numbers, the Thue–Morse bit.
 pub const ART_IDS: usize = 512;
 
 /// The deepest level (`16^6` tiles).
@@ -184,7 +189,7 @@ impl Tile {
                 (self.point, self.source)
             } else {
                 let t = (pos[0].count_ones() + pos[1].count_ones()) as usize % 2;
-                let id = c + 16 * usize::from(self.child) + 256 * t;
+                let id = c + 16 * (ix + 4 * iy) as usize + 256 * t;
                 let o = table.get(id);
                 let at = |d: usize| f64::from(pos[d]) * side + side * o[d];
                 ([at(0), at(1)], (id as u16, level))

@@ -48,8 +48,8 @@
 //!
 //! As in the paper, samples move by vectors learned offline by relaxation: the sample of a
 //! leaf `(a, b, c)` is `centroid + alpha (b - a) + beta (c - a)`, `(alpha, beta)` from a
-//! [`Table`] indexed by the leaf's class (its index among the 13 or 21 leaves of its
-//! ancestor three levels up) and the band of the threshold fraction `t` (four bands of
+//! [`Table`] indexed by the leaf's class (its index among the 89 or 144 leaves of its
+//! ancestor five levels up) and the band of the threshold fraction `t` (four bands of
 //! `(phi^-2, 1]`, equal in `log t`); a move that would leave the square is not made. The
 //! table, `tables/penrose_corrections.rs`, is made by our optimizer
 //! ([`crate::blue_noise::penrose_train`]). [`Penrose::corrected`]`(false)` keeps the
@@ -322,7 +322,7 @@ pub(crate) struct Leaf {
     /// The global rank.
     pub(crate) rank: u32,
     /// [`NO_CLASS`] or the class: the leaf's index among the leaves of its ancestor
-    /// three levels up, plus 13 when that ancestor is thick.
+    /// [`CLASS_DEPTH`] levels up, plus 89 when that ancestor is thick.
     pub(crate) class: u8,
     /// The directions of `b - a` and `c - a` in the tiling, in steps of 18°.
     pub(crate) dirs: [u8; 2],
@@ -330,11 +330,15 @@ pub(crate) struct Leaf {
     pub(crate) p: [f64; 2],
 }
 
-/// The class of a leaf with fewer than three levels above it.
+/// The class of a leaf with fewer than [`CLASS_DEPTH`] levels above it.
 pub(crate) const NO_CLASS: u8 = u8::MAX;
 
-/// Classes of leaves: 13 below a thin ancestor (`F(7)`), 21 below a thick one (`F(8)`).
-pub(crate) const CLASSES: usize = 34;
+/// Levels between a leaf and the ancestor that defines its class.
+pub(crate) const CLASS_DEPTH: usize = 5;
+
+/// Classes of leaves: 89 below a thin ancestor five levels up (`F(11)`), 144 below a
+/// thick one (`F(12)`).
+pub(crate) const CLASSES: usize = 233;
 
 /// Bands of the threshold fraction `t` in `(phi^-2, 1]`, equal in `log t`.
 pub(crate) const BANDS: usize = 4;
@@ -356,18 +360,26 @@ pub(crate) fn band(t: f64) -> usize {
 
 /// The class of the leaf at the end of `path` (module doc of [`Leaf::class`]).
 fn class(path: &[(Kind, u8)]) -> u8 {
-    let Some(tail) = path.len().checked_sub(3).and_then(|s| path.get(s..)) else {
+    let Some(tail) = path
+        .len()
+        .checked_sub(CLASS_DEPTH)
+        .and_then(|s| path.get(s..))
+    else {
         return NO_CLASS;
     };
     let mut local = 0u64;
     for (i, &(kind, child)) in tail.iter().enumerate() {
-        let (tn, tk) = leaves(2 - i);
+        let (tn, tk) = leaves(CLASS_DEPTH - 1 - i);
         local += match kind {
             Kind::Thin => u64::from(child) * tn,
             Kind::Thick => u64::from(child) * tk,
         };
     }
-    let base = if tail[0].0 == Kind::Thick { 13 } else { 0 };
+    let base = if tail[0].0 == Kind::Thick {
+        leaves(CLASS_DEPTH).0
+    } else {
+        0
+    };
     (local + base) as u8
 }
 
@@ -626,6 +638,16 @@ pub fn importance<F: Fn(f64, f64) -> f64>(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The classes count the leaves of a thin and a thick triangle `CLASS_DEPTH` levels
+    /// down: consecutive Fibonacci numbers (thin `F(2h+1)`, thick `F(2h+2)`).
+    #[test]
+    fn classes_are_the_leaves_below_the_ancestor() {
+        let (thin, thick) = leaves(CLASS_DEPTH);
+        assert_eq!((thin, thick), (89, 144));
+        assert_eq!((thin + thick) as usize, CLASSES);
+        assert!(CLASSES < usize::from(NO_CLASS));
+    }
 
     fn area(t: &Tri) -> f64 {
         let (u, v) = (

@@ -3,8 +3,8 @@
 //! class, as Ostromoukhov, Donohue & Jodoin 2004 learn their correction vectors offline by
 //! relaxation (the procedure here is ours).
 //!
-//! A leaf's class is its index among the leaves of its ancestor three levels up (34
-//! classes: 13 under a thin, 21 under a thick triangle); its band is the threshold
+//! A leaf's class is its index among the leaves of its ancestor five levels up (233
+//! classes: 89 under a thin, 144 under a thick triangle); its band is the threshold
 //! fraction `t` of the set, `(phi^-2, 1]` cut into 4 bands equal in `log t`. An iteration,
 //! for each band (at the band's middle `t`) and each seed, takes the first `t` of the
 //! square's leaves by rank, places them with the current table, and measures each sample's

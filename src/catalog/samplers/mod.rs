@@ -643,7 +643,7 @@ pub static SAMPLERS: &[SamplerEntry] = &[
         summary: "adaptive regular tiles, 2D: one sample a tile of a recursive 4 x 4 \
                   subdivision, offsets from a table indexed by the tile's word (child numbers \
                   and a Thue-Morse bit), the N of lowest rank (progressive), built whole",
-        math: "sample = corner + 4^-j ART_TABLE[c + 16 c_parent + 256 t] unless inherited; rank = sum_j Bayer digit_j 16^(j-1); keep rank < N (after Ahmed, Niese, Huang & Deussen 2017)",
+        math: "sample = corner + 4^-j ART_TABLE[c + 16 i + 256 t] unless inherited (i: the inheriting sibling); rank = sum_j Bayer digit_j 16^(j-1); keep rank < N (after Ahmed, Niese, Huang & Deussen 2017)",
         params: &[
             DIMS_2,
             param("points", "the set size N", "none: needed", "1 to 2^24"),
