@@ -67,7 +67,7 @@ mod multiscale;
 pub use density::KDE_MAX_DENSITY_RATIO;
 
 use super::PointSet;
-use super::lloyd::to_fraction;
+use super::lloyd::unit_point_set;
 use super::rng::Rng;
 use crate::work::{Budget, Cost, Rate};
 use crate::{Error, Result};
@@ -314,9 +314,7 @@ impl KdeBlueNoise {
     /// [`Error::OverBudget`], [`Error::TooLarge`], [`Error::OutOfTime`].
     pub fn generate(&self, budget: &Budget) -> Result<PointSet> {
         let pts = self.run(budget)?;
-        let mut coords = crate::size::vec_with_capacity(pts.len())?;
-        coords.extend(pts.iter().map(|&x| to_fraction(x)));
-        PointSet::new(coords, self.dims)
+        unit_point_set(&pts, self.dims)
     }
 
     /// The points as `f64` in `[0, 1)`, row-major.

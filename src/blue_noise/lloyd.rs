@@ -579,6 +579,14 @@ fn wrap(d: f64) -> f64 {
     d - (d + 0.5).floor()
 }
 
+/// Row-major coordinates in `[0, 1]` (`dims` a point) as a [`PointSet`] of 0.32 fractions
+/// ([`to_fraction`] each), its storage through the checked allocation.
+pub(crate) fn unit_point_set(pts: &[f64], dims: usize) -> Result<PointSet> {
+    let mut coords = crate::size::vec_with_capacity(pts.len())?;
+    coords.extend(pts.iter().map(|&x| to_fraction(x)));
+    PointSet::new(coords, dims)
+}
+
 /// `x` in `[0, 1]` to a 0.32 fraction (1.0, from rounding, to the largest below 1).
 pub(crate) fn to_fraction(x: f64) -> u32 {
     let v = x * 4_294_967_296.0;

@@ -46,7 +46,7 @@
 use std::vec::Vec;
 
 use super::super::PointSet;
-use super::super::lloyd::to_fraction;
+use super::super::lloyd::unit_point_set;
 use super::super::rng::Rng;
 use super::super::torus_cells::{Cells, wrap};
 use super::{CANDIDATES, CUT_SIGMAS, DEADLINE_POINTS, KDE_MAX_DIMS, KdeBlueNoise, WINDOW, choose};
@@ -91,9 +91,7 @@ impl KdeBlueNoise {
     /// ```
     pub fn sample(&self, density: &dyn Fn(&[f64]) -> f64, budget: &Budget) -> Result<PointSet> {
         let pts = self.run_density(density, budget)?;
-        let mut coords = crate::size::vec_with_capacity(pts.len())?;
-        coords.extend(pts.iter().map(|&x| to_fraction(x)));
-        PointSet::new(coords, self.dims)
+        unit_point_set(&pts, self.dims)
     }
 
     /// [`sample`](Self::sample)'s points as `f64` in `[0, 1)`, row-major.

@@ -97,7 +97,7 @@ use rayon::prelude::*;
 
 use super::PointSet;
 use super::lbfgs::{ARMIJO, FIRST_STEP, MAX_MOVE, MEMORY, Memory, dot};
-use super::lloyd::to_fraction;
+use super::lloyd::unit_point_set;
 use super::torus_cells::wrap;
 use super::verlet::{Near, SKIN};
 use crate::randomize::{FastOwen, Scrambled};
@@ -236,9 +236,7 @@ impl SpectralBlueNoise {
     /// [`Error::OverBudget`], [`Error::TooLarge`], [`Error::OutOfTime`].
     pub fn generate(&self, budget: &Budget) -> Result<PointSet> {
         let pts = self.run(budget)?;
-        let mut coords = crate::size::vec_with_capacity(pts.len())?;
-        coords.extend(pts.iter().map(|&x| to_fraction(x)));
-        PointSet::new(coords, self.dims)
+        unit_point_set(&pts, self.dims)
     }
 
     /// The points as `f64` in `[0, 1)`, row-major.
