@@ -79,7 +79,7 @@ PAIRS=(
 "Sobol' + Owen|sobol --scramble owen --seed {s}|Sobol|-d 2 --depth 32|cheap"
 "Faure (base 2)|faure|Faure|-d 2|cheap"
 "Korobov lattice a=3|lattice --korobov 3 --total {n}|Korobov|-d 2 --gen 3|cheap"
-"rank-1 lattice|lattice|Rank1|-d 2|cheap"
+"rank-1 lattice (max min distance)|maximin-lattice|Rank1|-d 2|cheap"
 "Kronecker R2|kronecker|Kronecker|-d 2 --shifts R2|cheap"
 "hexagonal grid|hex|HexagonalGrid|-d 2|cheap"
 "CMJ|cmj --seed {s}|CMJ|-d 2|cheap"
