@@ -262,7 +262,10 @@ fn maximin_lattice_equals_brute_force_and_respects_the_packing_bound() {
         assert_eq!(d, brute_min_sq(n as u64, a as u64));
         assert!((d as f64) <= 2.0 * n as f64 / 3f64.sqrt(), "n {n}");
         // Near the packing: at least 90% of the hexagonal lattice's distance.
-        assert!((d as f64).sqrt() >= 0.9 * (2.0 * n as f64 / 3f64.sqrt()).sqrt(), "n {n}");
+        assert!(
+            (d as f64).sqrt() >= 0.9 * (2.0 * n as f64 / 3f64.sqrt()).sqrt(),
+            "n {n}"
+        );
     }
     // The whole range refuses quickly, by its estimate.
     let t = std::time::Instant::now();
