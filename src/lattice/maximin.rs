@@ -71,7 +71,9 @@ pub fn max_min_distance(n: u32, budget: &Budget) -> Result<(u32, u64)> {
         // One point, or two on a line: no second generator to compare.
         return Ok((n - 1, shortest_vector_sq(n, n - 1)));
     }
-    let steps = n as f64 / 2.0 * ((n as f64).log2() / 20.0).max(0.05);
+    // log2 n (the reduction's steps) by the bit length, which needs no libm.
+    let bits = (u32::BITS - n.leading_zeros()) as f64;
+    let steps = n as f64 / 2.0 * (bits / 20.0).max(0.05);
     budget.check(
         "the max-min-distance lattice search",
         Cost::steps(steps, GENERATORS),
