@@ -647,13 +647,16 @@ fn hinted_cell<P: Polyhedron>(
         }
     };
     let (rx, ry, rz) = (range(p[0]), range(p[1]), range(p[2]));
+    // A bucket of the unrolled grid: its bucket in the grid and the period shift.
+    let wrap = |b: i64| (b.rem_euclid(g) as usize, b.div_euclid(g) as f64);
     for bz in rz.0..=rz.1 {
+        let (uz, sz) = wrap(bz);
         for by in ry.0..=ry.1 {
+            let (uy, sy) = wrap(by);
             for bx in rx.0..=rx.1 {
-                let b = [bx, by, bz];
-                let shift = b.map(|x| x.div_euclid(g) as f64);
-                let u = b.map(|x| x.rem_euclid(g) as usize);
-                for &j in buckets.get(u) {
+                let (ux, sx) = if torus { wrap(bx) } else { (bx as usize, 0.0) };
+                let shift = [sx, sy, sz];
+                for &j in buckets.get([ux, uy, uz]) {
                     if j as usize == i && shift == [0.0; 3] {
                         continue;
                     }
