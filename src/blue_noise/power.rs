@@ -594,3 +594,59 @@ fn integrate(s: &Scratch, verts: &mut Vec<[f64; 2]>, adj: &mut Vec<(u32, f64)>) 
         adj: adj.len() - before,
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Uniform values in `[0, 1)` from a small linear congruential generator.
+    fn uniform(n: usize, seed: u64) -> Vec<f64> {
+        let mut x = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (0..n)
+            .map(|_| {
+                x = x
+                    .wrapping_mul(6364136223846793005)
+                    .wrapping_add(1442695040888963407);
+                (x >> 11) as f64 / (1u64 << 53) as f64
+            })
+            .collect()
+    }
+
+    /// Hinted diagrams (by the diagram of other sites and other weights) against the
+    /// diagram searched ring by ring: the same cells and shared edges.
+    #[test]
+    fn hinted_cells_are_the_searched_cells() {
+        let b = Budget::DEFAULT;
+        for torus in [false, true] {
+            let n = 400;
+            let pts: Vec<[f64; 2]> = uniform(2 * n, 3).chunks(2).map(|c| [c[0], c[1]]).collect();
+            let moved: Vec<[f64; 2]> = uniform(2 * n, 4)
+                .chunks(2)
+                .zip(&pts)
+                .map(|(c, p)| [0, 1].map(|k| (p[k] + 0.02 * (c[k] - 0.5)).clamp(0.0, 0.999)))
+                .collect();
+            // Weights up to a fifth of the squared spacing.
+            let w: Vec<f64> = uniform(n, 5).iter().map(|x| 0.2 * x / n as f64).collect();
+            let zero = vec![0.0; n];
+            let want = PowerDiagram::build(&pts, &w, torus, &b).unwrap();
+            for (hint_pts, hint_w) in [(&pts, &zero), (&moved, &w), (&moved, &zero)] {
+                let hint = PowerDiagram::build(hint_pts, hint_w, torus, &b).unwrap();
+                let got = PowerDiagram::build_hinted(&pts, &w, torus, Some(&hint), &b).unwrap();
+                for i in 0..n {
+                    assert!((got.area(i) - want.area(i)).abs() < 1e-15, "{torus} {i}");
+                    assert!((got.moment(i) - want.moment(i)).abs() < 1e-15);
+                    let (c, d) = (got.centroid(i), want.centroid(i));
+                    assert!((c[0] - d[0]).abs() < 1e-13 && (c[1] - d[1]).abs() < 1e-13);
+                    let sorted = |d: &PowerDiagram| {
+                        let mut v: Vec<u32> = d.neighbours(i).iter().map(|e| e.0).collect();
+                        v.sort_unstable();
+                        v
+                    };
+                    assert_eq!(sorted(&got), sorted(&want), "{torus} {i}");
+                }
+            }
+        }
+    }
+}
