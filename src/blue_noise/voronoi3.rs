@@ -34,7 +34,7 @@
 //! final one, and then every other site within twice its radius `R` is tried, through the
 //! buckets meeting the cube of half-side `2 R` around the site. Any site's bisector
 //! bounds the cell and a farther site cannot cut, so the hinted cells are the same exact
-//! cells; they need about 15 cuts and no search ring by ring.
+//! cells, without the search ring by ring and its sorts.
 //!
 //! ## The integrals
 //!
