@@ -2,7 +2,8 @@
 # The spectral samplers' pictures of docs/blue-noise.md: points of step, single-peak and
 # kernel-density blue noise at 1024 points, and the mean radial spectra and pair
 # correlations of 4 sets each, drawn with the targets. The targets are computed here, not
-# by the library: the step P(u) = H(u - 0.5) and the single peak
+# by the library: the step P(u) = H(u - u_s), u_s = 0.9995 / sqrt(pi) = 0.5639 (just inside
+# the realizability bound V_2^(-1/2)), and the single peak
 # P(u) = p0 phi((u - u0) / s) / s + Phi((u - u0) / s) (u0 = 0.75, p0 = 0.3, s = 0.08),
 # u = |k| / sqrt(N); their pair correlations by the 2D Hankel transform
 # g(r) = 1 + (1 / N) int_0^inf (P(k / sqrt N) - 1) J0(2 pi k r) 2 pi k dk (SciPy's Bessel
@@ -39,9 +40,10 @@ n = int(sys.argv[1])
 tmp = sys.argv[2]
 root = np.sqrt(n)
 u0, p0, s = 0.75, 0.3, 0.08
+us = 0.9995 / np.sqrt(np.pi)
 
 def step(u):
-    return np.where(u < 0.5, 0.0, 1.0)
+    return np.where(u < us, 0.0, 1.0)
 
 def peak(u):
     return p0 * stats.norm.pdf((u - u0) / s) / s + stats.norm.cdf((u - u0) / s)
@@ -52,10 +54,10 @@ with open(f"{tmp}/radial", "a") as f:
         for k in range(1, 97):
             f.write(f"{k} 1 {float(p(k / root))!r} 0\n")
 
-# Pair correlations. Step: closed form, g(r) = 1 - K J1(2 pi K r) / (N r), K = 0.5 sqrt N.
+# Pair correlations. Step: closed form, g(r) = 1 - K J1(2 pi K r) / (N r), K = u_s sqrt N.
 # Single peak: the transform of P - 1, which decays like a Gaussian past the peak.
 rs = np.linspace(3.75e-4, 0.15, 200)
-kk = 0.5 * root
+kk = us * root
 with open(f"{tmp}/pcf", "a") as f:
     f.write("#\n# label: step target\n")
     for r in rs:

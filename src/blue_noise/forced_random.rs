@@ -8,14 +8,16 @@
 //! A forcing matrix `M` is an `R x R` toroidal image holding a permutation of
 //! `0..R^2` such that every threshold `{c : M(c) < t R^2}` is a blue-noise pattern. The
 //! paper builds it by placing matrix cells one after another where a repulsive force
-//! field of the cells placed so far is lowest, once, and ships it; here the matrix is a
-//! void-and-cluster rank mask ([`super::VoidAndCluster`]), which has the same role and
-//! property (every threshold blue). By default it is the shipped `256 x 256` table
-//! [`FORCING_MATRIX`] (Gaussian `sigma = 5` cells, wide enough for the sparse thresholds
-//! of a few thousand points; `examples/gen_forcing_matrix.rs` writes it), and the seed
+//! field of the cells placed so far is lowest, once, and ships it. By default the matrix
+//! is the shipped `256 x 256` table [`FORCING_MATRIX`], built that way
+//! ([`super::force_field`], force `exp(-sqrt(1.5 r))`, a little wider than the paper's so
+//! that the sparse thresholds of a few thousand points are evenly spaced;
+//! `examples/gen_forcing_matrix.rs` writes it), and the seed
 //! picks one of its `8 x 256^2` images under the symmetries of the square and toroidal
 //! shifts (each as blue), plus the positions within cells: nothing is built per run.
-//! [`ForcedRandom::matrix_side`] builds a seeded mask of another side per run instead.
+//! [`ForcedRandom::matrix_side`] builds a seeded void-and-cluster mask
+//! ([`super::VoidAndCluster`], same role: every threshold blue) of another side per run
+//! instead.
 //!
 //! The square is cut into a `G x G` grid of cells, `G = k R`, the matrix tiled `k x k`
 //! times over it. With `f_c` the density at the centre of cell `c` and

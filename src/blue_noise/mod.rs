@@ -61,6 +61,8 @@ mod bridson;
 #[cfg(feature = "analysis")]
 mod cell3;
 #[cfg(feature = "analysis")]
+pub mod force_field;
+#[cfg(feature = "analysis")]
 pub mod forced_random;
 #[cfg(feature = "analysis")]
 pub mod gaussian;

@@ -201,6 +201,7 @@ pub fn build(
         S::Kronecker => return shifted(Kronecker::r_d(d)?, r, seed),
         S::Faure => return faure(params.base, d, r, seed),
         S::Hex => return shifted(HexGrid::new(needed(sampler, params)?)?, r, seed),
+        S::MaximinLattice => return shifted(maximin_lattice(sampler, params)?, r, seed),
         _ => {}
     }
     let takes_digits = matches!(kind, S::Halton | S::Hammersley)
@@ -428,7 +429,7 @@ fn construct(
         | S::KdeBlueNoise => {
             return Err(super::whole::unavailable(sampler.name));
         }
-        S::Lattice | S::Kronecker | S::Faure | S::Hex => {
+        S::Lattice | S::Kronecker | S::Faure | S::Hex | S::MaximinLattice => {
             return Err(CatalogError::Unused {
                 entry: sampler.name,
                 param: "the construction",
@@ -494,6 +495,23 @@ fn root(n: u64, d: usize) -> Option<u32> {
     (guess.saturating_sub(1)..=guess.saturating_add(1))
         .find(|&k| k > 0 && k.checked_pow(power) == Some(n))
         .and_then(|k| u32::try_from(k).ok())
+}
+
+/// The 2D rank-1 lattice of `points` points with the largest minimum distance
+/// ([`crate::lattice::maximin`]), searched within the set budget.
+fn maximin_lattice(
+    sampler: &SamplerEntry,
+    p: &Params,
+) -> Result<Rank1Lattice<[u32; 2]>, CatalogError> {
+    let n = needed(sampler, p)?;
+    let n = u32::try_from(n).map_err(|_| CatalogError::Parameter {
+        entry: sampler.name,
+        param: "points",
+        got: Some(n),
+        expected: "1 to 2^32 - 1",
+    })?;
+    let (a, _) = crate::lattice::maximin::max_min_distance(n, &p.budget)?;
+    Ok(Rank1Lattice::linear([1, a], n as u64)?)
 }
 
 /// The lattice: Kuo's vector, a given vector or Korobov's, in radical-inverse order, or

@@ -87,6 +87,7 @@ pub fn examples() -> Vec<(&'static SamplerEntry, Params)> {
         ("cmj", p().with_points(10)),
         ("cascaded-sobol", Params::dims(4).with_points(64)),
         ("hex", p().with_points(56)),
+        ("maximin-lattice", p().with_points(89)),
     ];
     // The slow sets with few iterations (a quick example; the defaults are in the entries).
     #[cfg(feature = "analysis")]

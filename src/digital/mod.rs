@@ -61,6 +61,7 @@ pub mod cascaded;
 mod faure;
 #[cfg(feature = "std")]
 mod file;
+mod fill;
 pub mod lp;
 #[cfg(feature = "std")]
 mod net2;
@@ -301,8 +302,8 @@ impl<M: AsRef<[u16]>> DigitalNetB<M> {
             .as_ref()
             .get(dim * block..(dim + 1) * block)
             .unwrap_or(&[]);
-        let (mut v, mut prefix, mut weight) = (0u64, 0u64, 1u64);
-        for (r, row) in matrix.chunks_exact(self.cols).enumerate() {
+        let mut y = [0u32; MAX_DIGITS];
+        for (slot, row) in y.iter_mut().zip(matrix.chunks_exact(self.cols)) {
             // One reduction a row: each product is below b^2 < 2^32 and a row has at most
             // 32 of them, so the sum stays below 2^37.
             let sum = row
@@ -310,16 +311,41 @@ impl<M: AsRef<[u16]>> DigitalNetB<M> {
                 .zip(digits)
                 .fold(0u64, |acc, (&c, &ak)| acc + c as u64 * ak);
             // Base 2 (Faure's s <= 2, Sobol'-like nets) without a division.
-            let y = if b == 2 { sum & 1 } else { sum % b };
-            let y = self
-                .scramble
-                .digit(self.base, dim, r as u32 + 1, prefix, y as u32) as u64;
-            v = v * b + y;
+            *slot = (if b == 2 { sum & 1 } else { sum % b }) as u32;
+        }
+        let v = self.combine(dim, y.get(..self.digits).unwrap_or(&[]));
+        Ok(v)
+    }
+
+    /// `v = sum_r y'_r b^(K-1-r)` from the output digits `y` (first the most significant),
+    /// each scrambled (`y'_r`) by the net's [`DigitScramble`] given the scrambled digits
+    /// above it. Cost: `K` multiply-adds, and one hash a digit when scrambled.
+    #[inline]
+    fn combine(&self, dim: usize, y: &[u32]) -> u64 {
+        let b = self.base as u64;
+        if matches!(self.scramble, DigitScramble::None) {
+            return y.iter().fold(0u64, |v, &d| v * b + d as u64);
+        }
+        let (mut v, mut prefix, mut weight) = (0u64, 0u64, 1u64);
+        for (r, &d) in y.iter().enumerate() {
+            let d = self.scramble.digit(self.base, dim, r as u32 + 1, prefix, d) as u64;
+            v = v * b + d;
             // The digits above this one, as the radical inverse's index prefix.
-            prefix += y * weight;
+            prefix += d * weight;
             weight = weight.saturating_mul(b);
         }
-        Ok(v)
+        v
+    }
+
+    /// The 0.32 sample `floor(v 2^32 / b^K)` of an exact value `v < b^K`.
+    #[inline]
+    fn to_fraction(&self, v: u64) -> u32 {
+        if self.scale == FULL_RANGE {
+            // Base 2: b^K = 2^32 and the quotient is v itself.
+            return v as u32;
+        }
+        // v < b^K, so the quotient is below 2^32.
+        ((v as u128) << 32).wrapping_div(self.scale as u128) as u32
     }
 }
 
@@ -334,12 +360,13 @@ impl<M: AsRef<[u16]>> Sampler for DigitalNetB<M> {
 
     /// `floor(v 2^32 / b^K)` of [`DigitalNetB::value`].
     fn sample(&self, index: u32, dim: usize) -> Result<u32> {
-        let v = self.value(index, dim)?;
-        if self.scale == FULL_RANGE {
-            // Base 2: b^K = 2^32 and the quotient is v itself.
-            return Ok(v as u32);
-        }
-        // v < b^K, so the quotient is below 2^32.
-        Ok(((v as u128) << 32).wrapping_div(self.scale as u128) as u32)
+        Ok(self.to_fraction(self.value(index, dim)?))
+    }
+
+    /// Sequentially, each dimension's output digits updated from the previous point's
+    /// ([`fill`](fill) module: `K` additions mod `b` a value, not `K x m` products); the
+    /// same bits as [`sample`](Self::sample).
+    fn fill(&self, start: u32, out: &mut [u32]) -> Result<()> {
+        fill::fill(self, start, out)
     }
 }

@@ -54,6 +54,7 @@
 pub mod hex;
 pub mod kronecker;
 mod kuo;
+pub mod maximin;
 mod vectors;
 
 pub use kuo::{KUO_33002, KUO_33002_DIMS};

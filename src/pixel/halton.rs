@@ -1,7 +1,9 @@
 //! pbrt-v4's `HaltonSampler`: one Halton sequence over the image plane, the pixel's samples
 //! found through the first two radical inverses (Pharr, Jakob & Humphreys 2023, §8.6).
 
-use super::prepared::permutation_round16;
+use super::halton_digits::{
+    CarriedDigits, Digits, Plan, TABLE_ENTRIES, digit_table, permuted_small,
+};
 use super::{F32_ONE_MINUS_EPSILON, PixelGrid, PixelPoint, PixelSampler, Randomization};
 use crate::error::{Error, Result};
 use crate::hash::pbrt::{hash3, mix_bits, murmur_words, permutation_element};
@@ -28,7 +30,9 @@ const MAX_RESOLUTION: u32 = 128;
 /// * [`Randomization::None`]: plain (`RadicalInverse`);
 /// * [`Randomization::PermuteDigits`] (pbrt's default): digit `k` of base `b` through the
 ///   permutation `PermutationElement(·, b, Hash(b, k, seed))` (pbrt's
-///   `ComputeRadicalInversePermutations`, computed here on the fly, no table);
+///   `ComputeRadicalInversePermutations`; the sampler carries the permutations of
+///   dimensions 2 to 9, bases 5 to 29, as 966 bytes computed by [`new`](Self::new), and
+///   computes those of later dimensions on the fly);
 /// * [`Randomization::Owen`]: each digit permuted by a hash of the digits above it, keyed by
 ///   `MixBits(1 + 16 d)` (pbrt's `OwenScrambledRadicalInverse`; the seed is not used).
 ///
@@ -41,14 +45,17 @@ const MAX_RESOLUTION: u32 = 128;
 /// `R / b^n` (`n` digits); the `f32` draws are pbrt's float computation (`R` rounded to
 /// `f32`, times `b^-n` accumulated in `f32`, capped at `1 - 2^-24`), bit-identical to
 /// pbrt-v4. Any `spp >= 1`. Cost: per start, `j + k` divisions; per value `n ≈ 24 / log2 b`
-/// digit steps (one 64-bit division each), plus one MurmurHash and one permutation per digit
-/// for `PermuteDigits`, one `MixBits` and one permutation per digit for `Owen`.
+/// digit steps (one 64-bit division each; a multiply-high below `2^32` in the carried
+/// dimensions), plus, outside the carried dimensions, one MurmurHash and one permutation
+/// per digit for `PermuteDigits`; one `MixBits` and one permutation per digit for `Owen`.
+/// Construction with `PermuteDigits` costs the carried permutations' 966 elements (pbrt's
+/// constructor computes those of all 1000 dimensions).
 /// The prepared fills ([`PixelSampler::fill_2d`]) find the pixel's Halton index once
-/// (sample `i` adds `i 2^j 3^k`) and, for `PermuteDigits`, tabulate each digit's
-/// permutation once per fill (one hash a digit instead of one a digit and value; the
-/// digits the fill's indices leave at 0 enter as one constant). `PreparedHalton`
-/// (`std`) builds the digit tables once for the image instead, as pbrt does, and is an
-/// order of magnitude faster.
+/// (sample `i` adds `i 2^j 3^k`) and, for `PermuteDigits`, read the carried rows or, past
+/// them, tabulate each digit's permutation once per fill (one hash a digit instead of one
+/// a digit and value); the digits the fill's indices leave at 0 enter as one constant.
+/// `PreparedHalton` (`std`) builds the tables of as many dimensions as asked for once, as
+/// pbrt does, grouped several digits a read, and fills about twice as fast again.
 ///
 /// ```
 /// use qmckit::pixel::{HaltonSampler, PixelSampler, Randomization};
@@ -77,6 +84,8 @@ pub struct HaltonSampler {
     exponents: [u32; 2],
     /// `(3^k)^-1 mod 2^j`, `(2^j)^-1 mod 3^k`.
     inverses: [u64; 2],
+    /// `PermuteDigits`' permutations of the first dimensions (empty otherwise).
+    carried: CarriedDigits,
 }
 
 impl HaltonSampler {
@@ -140,6 +149,11 @@ impl HaltonSampler {
                 inverse_mod(scales[1] % scales[0], scales[0]),
                 inverse_mod(scales[0] % scales[1], scales[1]),
             ],
+            carried: if matches!(randomize, Randomization::PermuteDigits) {
+                CarriedDigits::new(seed)
+            } else {
+                CarriedDigits::EMPTY
+            },
         })
     }
 
@@ -174,68 +188,33 @@ impl HaltonSampler {
                 })
             }
             // FastOwen is refused by `new`.
-            _ => digits(base, h, Stop::Permute, |k, digit, _| {
-                let hash = digit_hash(base as u32, k, self.seed) as u32;
-                permutation_element(digit, base as u32, hash)
-            }),
+            _ => match self.carried.rows(dim) {
+                Some((rows, plan)) => {
+                    let m = plan.recip;
+                    digits_by(
+                        base,
+                        h,
+                        Stop::Permute,
+                        // The reciprocal is exact below 2^32.
+                        |a| {
+                            if a >> 32 == 0 {
+                                ((a as u128 * m as u128) >> 64) as u64
+                            } else {
+                                a / base
+                            }
+                        },
+                        |k, digit, _| {
+                            let at = k as usize * base as usize + digit as usize;
+                            rows.get(at).copied().unwrap_or(0) as u32
+                        },
+                    )
+                }
+                None => digits(base, h, Stop::Permute, |k, digit, _| {
+                    let hash = digit_hash(base as u32, k, self.seed) as u32;
+                    permutation_element(digit, base as u32, hash)
+                }),
+            },
         }
-    }
-}
-
-/// Entries of a prepared `PermuteDigits` fill's digit-permutation table (`base` entries
-/// per digit); a dimension whose table would not fit permutes as the handle does.
-const TABLE_ENTRIES: usize = 512;
-
-/// `floor(2^64 / b) + 1`: `(a M) >> 64` is `a / b` for every `a < 2^32` and `2 <= b <
-/// 2^32` (the error `a (M - 2^64 / b) / 2^64 < 2^-32` stays below `1 / b`).
-pub(super) const fn reciprocal(b: u64) -> u128 {
-    (u64::MAX / b) as u128 + 1
-}
-
-/// The per-dimension constants of a prepared `PermuteDigits` value: pbrt's digit count
-/// (`ScrambledRadicalInverse`'s loop, [`permute_digit_count`]), its `f32` scale
-/// `fl(b^-n)` (the product of `n` factors `fl(1 / b)`), `b^n` and the reciprocal of `b`.
-struct Plan {
-    base: u64,
-    reciprocal: u128,
-    digits: u32,
-    inv_m: f32,
-    power: u128,
-}
-
-/// A dimension's prepared `PermuteDigits` digits for the indices up to some `h_max`
-/// ([`HaltonSampler::digit_table`]): the plan, the permutation table, the number `full`
-/// of digits that can be nonzero, and the zero digits' images above them as
-/// `reversed * scale + tail`.
-struct Digits {
-    plan: Plan,
-    table: [u16; TABLE_ENTRIES],
-    full: u32,
-    scale: u64,
-    tail: u64,
-}
-
-impl Plan {
-    /// The plan of base `base >= 2`, or `None` when the reversed digits could reach the
-    /// overflow guard of [`digits_by`] (never for the primes of the sampler's dimensions).
-    fn new(base: u64) -> Option<Plan> {
-        let inv_base = 1.0f32 / base as f32;
-        let digits = permute_digit_count(base) as u32;
-        let (mut inv_m, mut power) = (1.0f32, 1u128);
-        for _ in 0..digits {
-            inv_m *= inv_base;
-            power *= base as u128;
-        }
-        // The reversed digits stay below power: digits_by's guard `reversed >= limit`
-        // never fires while power <= limit, so the loops agree digit for digit.
-        let limit = (u64::MAX / base - base) as u128;
-        (power <= limit).then_some(Plan {
-            base,
-            reciprocal: reciprocal(base),
-            digits,
-            inv_m,
-            power,
-        })
     }
 }
 
@@ -263,87 +242,14 @@ impl HaltonSampler {
         Ok(())
     }
 
-    /// `PermuteDigits`' digit permutations of dimension `dim` for the first digits, as a
-    /// table (`table[k base + v]` is digit `k`'s image of `v`), or `None` when they do not
-    /// fit [`TABLE_ENTRIES`]; for the digits of indices up to `h_max` (a row whose digit is
-    /// 0 in all of them holds only its image of 0). Per digit, the mixer round of `PermutationElement` is
-    /// computed once for each of `[0, w]` (`w + 1` the power of two `>= base`, in 16-bit
-    /// lanes: [`permutation_round16`]), then each `v < base` walks that table until it
-    /// lands below `base`, and `(i + p) mod base` is a reciprocal multiplication: the
-    /// elements of `permutation_element(v, base, p)` for every `v`, without its `w + 1`
-    /// divisions.
-    fn digit_table(&self, dim: usize, h_max: u64) -> Option<Digits> {
-        let base = PRIMES[dim] as usize;
-        let plan = Plan::new(base as u64)?;
-        let digits = plan.digits as usize;
-        if base * digits > TABLE_ENTRIES {
+    /// The rows the sampler carries for dimension `dim` ([`CarriedDigits`], `PermuteDigits`
+    /// only) as the prepared digits of the indices up to `h_max`: no hashing.
+    #[inline]
+    fn carried_table(&self, dim: usize, h_max: u64) -> Option<Digits<'_, &[u8]>> {
+        if !matches!(self.randomize, Randomization::PermuteDigits) {
             return None;
         }
-        // Digit k of every index up to h_max is 0 once base^k > h_max: those rows need
-        // only their image of 0.
-        let (mut full, mut power) = (0usize, 1u64);
-        while full < digits && power <= h_max {
-            power = power.saturating_mul(base as u64);
-            full += 1;
-        }
-        // base <= TABLE_ENTRIES: w < 2 TABLE_ENTRIES <= 2^16.
-        let w = ((base as u32).next_power_of_two() - 1) as u16;
-        let m = reciprocal(base as u64);
-        let mut table = [0u16; TABLE_ENTRIES];
-        let mut round = [0u16; 2 * TABLE_ENTRIES];
-        for (k, row) in table.chunks_exact_mut(base).take(digits).enumerate() {
-            let p = digit_hash(base as u32, k as u32, self.seed) as u32;
-            let round = &mut round[..=w as usize];
-            for (i, r) in (0u16..).zip(round.iter_mut()) {
-                *r = permutation_round16(i, w, p);
-            }
-            let row = if k < full { row } else { &mut row[..1] };
-            for (v, t) in row.iter_mut().enumerate() {
-                // A walk on the cycle through v: at most w + 1 steps.
-                let mut i = round.get(v).copied().unwrap_or(0);
-                for _ in 0..w {
-                    if (i as usize) < base {
-                        break;
-                    }
-                    i = round.get(i as usize).copied().unwrap_or(0);
-                }
-                let a = (i as u32).wrapping_add(p) as u64;
-                let q = ((a as u128 * m) >> 64) as u64;
-                *t = (a - q * base as u64) as u16;
-            }
-        }
-        // The digits from `full` on are 0 in every index: their images, as one constant
-        // below a scale (exact integers: the reversed value stays below b^n).
-        let (mut tail, mut scale) = (0u64, 1u64);
-        for row in table.chunks_exact(base).take(digits).skip(full) {
-            tail = tail * base as u64 + row[0] as u64;
-            scale *= base as u64;
-        }
-        Some(Digits {
-            plan,
-            table,
-            full: full as u32,
-            scale,
-            tail,
-        })
-    }
-
-    /// Dimension `base` of Halton index `h <= h_max < 2^32` under `PermuteDigits` from its
-    /// prepared [`Digits`]: the digits that vary by reciprocal multiplication and a table
-    /// read each, then the constant images of the zero digits above them in one
-    /// multiply-add, and the plan's `f32` scale (no `f32` work in the loop).
-    #[inline]
-    fn permuted_small(h: u64, t: &Digits) -> (u32, f32) {
-        let (base, m) = (t.plan.base, t.plan.reciprocal);
-        let (mut a, mut reversed) = (h, 0u64);
-        for k in 0..t.full {
-            let next = ((a as u128 * m) >> 64) as u64;
-            let digit = a - next * base;
-            let at = (k as u64 * base + digit) as usize % TABLE_ENTRIES;
-            reversed = reversed * base + t.table[at] as u64;
-            a = next;
-        }
-        finish(reversed * t.scale + t.tail, t.plan.power, t.plan.inv_m)
+        self.carried.table(dim, h_max)
     }
 
     /// The prepared pair fill: the `(R, float)` pairs of dimensions `d, d + 1` through
@@ -360,14 +266,24 @@ impl HaltonSampler {
         let d = self.counter_dimension(dim, 2);
         if matches!(self.randomize, Randomization::PermuteDigits) && self.small_indices(out.len()) {
             let h_max = self.last_index(x, y, out.len());
-            if let (Some(t0), Some(t1)) =
-                (self.digit_table(d, h_max), self.digit_table(d + 1, h_max))
+            if let (Some(t0), Some(t1)) = (
+                self.carried_table(d, h_max),
+                self.carried_table(d + 1, h_max),
+            ) {
+                return self.fill_with(x, y, dim, 2, out, |h, _| {
+                    [pick(permuted_small(h, &t0)), pick(permuted_small(h, &t1))]
+                });
+            }
+            let (p0, p1) = (Plan::new(PRIMES[d] as u64), Plan::new(PRIMES[d + 1] as u64));
+            let (mut b0, mut b1) = ([0u16; TABLE_ENTRIES], [0u16; TABLE_ENTRIES]);
+            if let (Some(p0), Some(p1)) = (&p0, &p1)
+                && let (Some(t0), Some(t1)) = (
+                    digit_table(self.seed, d, h_max, p0, &mut b0),
+                    digit_table(self.seed, d + 1, h_max, p1, &mut b1),
+                )
             {
                 return self.fill_with(x, y, dim, 2, out, |h, _| {
-                    [
-                        pick(Self::permuted_small(h, &t0)),
-                        pick(Self::permuted_small(h, &t1)),
-                    ]
+                    [pick(permuted_small(h, &t0)), pick(permuted_small(h, &t1))]
                 });
             }
         }
@@ -389,8 +305,14 @@ impl HaltonSampler {
         let d = self.counter_dimension(dim, 1);
         if matches!(self.randomize, Randomization::PermuteDigits) && self.small_indices(out.len()) {
             let h_max = self.last_index(x, y, out.len());
-            if let Some(t) = self.digit_table(d, h_max) {
-                return self.fill_with(x, y, dim, 1, out, |h, _| pick(Self::permuted_small(h, &t)));
+            if let Some(t) = self.carried_table(d, h_max) {
+                return self.fill_with(x, y, dim, 1, out, |h, _| pick(permuted_small(h, &t)));
+            }
+            let mut buf = [0u16; TABLE_ENTRIES];
+            if let Some(p) = Plan::new(PRIMES[d] as u64)
+                && let Some(t) = digit_table(self.seed, d, h_max, &p, &mut buf)
+            {
+                return self.fill_with(x, y, dim, 1, out, |h, _| pick(permuted_small(h, &t)));
             }
         }
         self.fill_with(x, y, dim, 1, out, |h, d| pick(self.dimension(h, d)))
@@ -412,7 +334,7 @@ impl HaltonSampler {
 
 /// The digits pbrt's `ScrambledRadicalInverse` takes in base `b`: while
 /// `1 - (b - 1) fl(b^-n) < 1` in `f32` (the index's value does not matter).
-pub(super) fn permute_digit_count(base: u64) -> usize {
+pub(super) const fn permute_digit_count(base: u64) -> usize {
     let inv_base = 1.0f32 / base as f32;
     let (mut inv_m, mut n) = (1.0f32, 0);
     while 1.0 - (base - 1) as f32 * inv_m < 1.0 && n < 64 {
@@ -477,7 +399,7 @@ enum Stop {
 /// The 0.32 truncation of `R / b^n` and pbrt's `f32` `min(float(R) * fl(b^-n), 1 - 2^-24)`,
 /// with `fl(b^-n)` the product of `n` factors `fl(1 / b)` rounded at each step.
 #[inline]
-fn finish(reversed: u64, power: u128, inv_m: f32) -> (u32, f32) {
+pub(super) fn finish(reversed: u64, power: u128, inv_m: f32) -> (u32, f32) {
     let exact = ((reversed as u128) << 32) / power;
     let exact = if exact > u32::MAX as u128 {
         u32::MAX

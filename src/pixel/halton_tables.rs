@@ -2,7 +2,8 @@
 //! once for the image (`std`), as pbrt-v4's `HaltonSampler` computes its digit
 //! permutations once in its constructor.
 
-use super::halton::{digit_hash, owen_key, permute_digit_count, reciprocal};
+use super::halton::{digit_hash, owen_key, permute_digit_count};
+use super::halton_digits::reciprocal;
 use super::{
     F32_ONE_MINUS_EPSILON, HALTON_PIXEL_DIMS, HaltonSampler, PixelGrid, PixelPoint, PixelSampler,
     Randomization,

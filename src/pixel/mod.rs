@@ -87,6 +87,7 @@ mod blue_noise_pixels;
 pub mod domain;
 mod grid;
 mod halton;
+mod halton_digits;
 #[cfg(feature = "std")]
 mod halton_tables;
 mod image_sobol;

@@ -102,6 +102,88 @@ fn faure_equals_qmcpy() {
     }
 }
 
+/// The sequential fill (digits updated from the previous point's) gives random access's
+/// bits: bases 2 to 65521, scrambled and not, starts on and off carries (`b^k - 1`, past
+/// blocks of 1024), lengths across block edges; and QMCPy's Faure points through it.
+#[test]
+fn faure_fill_equals_random_access() {
+    let scrambles = [
+        DigitScramble::None,
+        DigitScramble::Owen(7),
+        DigitScramble::Permutations(3),
+        DigitScramble::Faure,
+    ];
+    for (base, d) in [
+        (2u32, 2usize),
+        (2, 1),
+        (3, 3),
+        (5, 4),
+        (7, 2),
+        (257, 3),
+        (65521, 2),
+    ] {
+        for scramble in scrambles {
+            let f = DigitalNetB::faure(base, d).unwrap().with_scramble(scramble);
+            let b = base as u64;
+            let starts = [
+                0u64,
+                1,
+                b - 1,
+                b * b - 1,
+                1023,
+                1000,
+                b.saturating_pow(3) - 2,
+                70_000,
+            ];
+            for start in starts {
+                for n in [1usize, 2, 5, 1024, 1025, 2100] {
+                    if start + n as u64 > f.len() {
+                        continue;
+                    }
+                    let mut got = vec![0u32; n * d];
+                    f.fill(start as u32, &mut got).unwrap();
+                    for (i, row) in got.chunks(d).enumerate() {
+                        for (k, &v) in row.iter().enumerate() {
+                            let want = f.sample(start as u32 + i as u32, k).unwrap();
+                            assert_eq!(
+                                v, want,
+                                "b {base} {scramble:?} start {start} point {i} dim {k}"
+                            );
+                        }
+                    }
+                }
+            }
+        }
+    }
+    // The last points of base 2's full range, where the index has 32 digits.
+    let f = DigitalNetB::faure(2, 2).unwrap();
+    let mut tail = [0u32; 8];
+    f.fill(u32::MAX - 3, &mut tail).unwrap();
+    assert_eq!(
+        tail[6..],
+        [
+            f.sample(u32::MAX, 0).unwrap(),
+            f.sample(u32::MAX, 1).unwrap()
+        ]
+    );
+    assert!(f.fill(u32::MAX - 2, &mut tail).is_err());
+    // QMCPy's Faure in base 5 (unscrambled), read through the fill.
+    let f = DigitalNetB::faure(5, 5).unwrap();
+    let mut pts = vec![0u32; 625 * 5];
+    f.fill(0, &mut pts).unwrap();
+    let rows: Vec<Vec<f64>> = golden("qmcpy_faure_d5_n625.txt")
+        .lines()
+        .filter(|l| !l.starts_with('#'))
+        .map(|l| l.split_whitespace().map(|t| t.parse().unwrap()).collect())
+        .collect();
+    for (i, row) in rows.iter().enumerate() {
+        for (k, &want) in row.iter().enumerate() {
+            let got = pts[i * 5 + k] as f64 / 2f64.powi(32);
+            assert!((got - want).abs() < 1e-9, "point {i} dim {k}");
+        }
+    }
+}
+
 #[test]
 fn faure_blocks_are_0_m_s_nets_base_3_and_5() {
     for (base, s) in [(3u32, 2usize), (3, 3), (5, 3), (5, 5)] {

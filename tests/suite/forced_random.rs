@@ -168,3 +168,66 @@ fn the_shipped_matrix_is_a_permutation_and_seeds_move_it() {
     assert_ne!(a, b);
     assert_eq!(a, set(1));
 }
+
+/// Toroidal distances, in cells, from each of `cells` to its nearest other: (min, mean).
+fn spacing(side: usize, cells: &[usize]) -> (f64, f64) {
+    let d = |a: usize, b: usize| {
+        let (dx, dy) = ((a % side).abs_diff(b % side), (a / side).abs_diff(b / side));
+        let (dx, dy) = (dx.min(side - dx) as f64, dy.min(side - dy) as f64);
+        (dx * dx + dy * dy).sqrt()
+    };
+    let nn: Vec<f64> = cells
+        .iter()
+        .map(|&a| {
+            cells
+                .iter()
+                .filter(|&&b| b != a)
+                .map(|&b| d(a, b))
+                .fold(f64::MAX, f64::min)
+        })
+        .collect();
+    let min = nn.iter().copied().fold(f64::MAX, f64::min);
+    (min, nn.iter().sum::<f64>() / nn.len() as f64)
+}
+
+/// Purgathofer et al.'s forced-random matrix: a permutation whose every threshold is
+/// evenly spaced. At 1/64, 1/16 and 1/4 of the cells of a 64 x 64 matrix the mean
+/// nearest-neighbour distance is at least 0.75 of the hexagonal lattice's spacing
+/// `sqrt(2 / (sqrt 3 density))` and the closest pair at least 0.45 of it (random cells:
+/// about 0.5 and near 0); the seed changes the matrix; bad sides and widths are refused.
+#[test]
+fn force_field_thresholds_are_evenly_spaced() {
+    use qmckit::blue_noise::force_field::force_field_ranks;
+    let side = 64;
+    let ranks = force_field_ranks(side, 1.0, 3, &Budget::DEFAULT).unwrap();
+    let mut sorted = ranks.clone();
+    sorted.sort_unstable();
+    assert!(sorted.iter().enumerate().all(|(i, &r)| r == i as u32));
+    for frac in [64usize, 16, 4] {
+        let count = side * side / frac;
+        let cells: Vec<usize> = (0..side * side)
+            .filter(|&c| (ranks[c] as usize) < count)
+            .collect();
+        let hex = (2.0 * frac as f64 / 3f64.sqrt()).sqrt();
+        let (min, mean) = spacing(side, &cells);
+        assert!(mean >= 0.75 * hex, "1/{frac}: mean NN {mean} of hex {hex}");
+        assert!(min >= 0.45 * hex, "1/{frac}: min NN {min} of hex {hex}");
+    }
+    assert_ne!(
+        ranks,
+        force_field_ranks(side, 1.0, 4, &Budget::DEFAULT).unwrap()
+    );
+    for (s, w) in [
+        (4usize, 1.0),
+        (2048, 1.0),
+        (64, 0.1),
+        (64, f64::NAN),
+        (64, 9.0),
+    ] {
+        assert!(force_field_ranks(s, w, 0, &Budget::DEFAULT).is_err());
+    }
+    // Refused by its estimate, at once.
+    let t = std::time::Instant::now();
+    assert!(force_field_ranks(1024, 1.0, 0, &Budget::seconds(1.0).unwrap()).is_err());
+    assert!(t.elapsed().as_secs_f64() < 0.5);
+}

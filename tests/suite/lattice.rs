@@ -222,3 +222,55 @@ fn kronecker_r_d_fill_matches_sample_in_many_dims() {
     assert!(Kronecker::with_alpha(Vec::<u32>::new()).is_err());
     assert!(k.sample(0, 150).is_err());
 }
+
+/// `n^2` times the squared minimum toroidal distance of `frac(i (1, a) / n)`, by brute force
+/// over the difference vectors (the lattice's own points), not by basis reduction.
+fn brute_min_sq(n: u64, a: u64) -> u64 {
+    (1..n)
+        .map(|i| {
+            let (x, y) = (i, i * a % n);
+            let (x, y) = (x.min(n - x), y.min(n - y));
+            x * x + y * y
+        })
+        .min()
+        .unwrap_or(0)
+}
+
+/// The reduction's shortest vector equals brute force for every generator of every
+/// `n < 160`; the search returns the least generator of the largest distance (brute force
+/// again); and no lattice beats the hexagonal packing, `lambda_1^2 <= 2 n / sqrt 3`.
+#[test]
+fn maximin_lattice_equals_brute_force_and_respects_the_packing_bound() {
+    use qmckit::lattice::maximin::{max_min_distance, shortest_vector_sq};
+    use qmckit::work::Budget;
+    for n in 2u32..160 {
+        let mut best = (1u64, 0u64);
+        for a in 1..n {
+            let want = brute_min_sq(n as u64, a as u64);
+            assert_eq!(shortest_vector_sq(n, a), want, "n {n} a {a}");
+            if a <= n / 2 && want > best.1 {
+                best = (a as u64, want);
+            }
+        }
+        if n >= 3 {
+            let (a, d) = max_min_distance(n, &Budget::DEFAULT).unwrap();
+            assert_eq!((a as u64, d), best, "n {n}");
+        }
+    }
+    for n in [1000u32, 1024, 4096, 10007] {
+        let (a, d) = max_min_distance(n, &Budget::DEFAULT).unwrap();
+        assert_eq!(d, brute_min_sq(n as u64, a as u64));
+        assert!((d as f64) <= 2.0 * n as f64 / 3f64.sqrt(), "n {n}");
+        // Near the packing: at least 90% of the hexagonal lattice's distance.
+        assert!(
+            (d as f64).sqrt() >= 0.9 * (2.0 * n as f64 / 3f64.sqrt()).sqrt(),
+            "n {n}"
+        );
+    }
+    // The whole range refuses quickly, by its estimate.
+    let t = std::time::Instant::now();
+    let budget = Budget::seconds(1.0).unwrap();
+    assert!(max_min_distance(u32::MAX, &budget).is_err());
+    assert!(max_min_distance(0, &budget).is_err());
+    assert!(t.elapsed().as_secs_f64() < 0.5);
+}

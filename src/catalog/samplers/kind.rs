@@ -41,6 +41,8 @@ pub enum SamplerKind {
     Cmj,
     /// Hexagonal grid on the torus.
     Hex,
+    /// Two-dimensional rank-1 lattice of maximal minimum distance.
+    MaximinLattice,
     /// Lloyd relaxation, built whole.
     Lloyd,
     /// Capacity-constrained Voronoi tessellation, built whole.
@@ -143,7 +145,10 @@ impl SamplerKind {
             },
             SamplerKind::Halton | SamplerKind::Hammersley => Family::RadicalInverse,
             SamplerKind::Faure => Family::BaseBNet,
-            SamplerKind::Lattice | SamplerKind::Kronecker | SamplerKind::Hex => Family::Lattice,
+            SamplerKind::Lattice
+            | SamplerKind::Kronecker
+            | SamplerKind::Hex
+            | SamplerKind::MaximinLattice => Family::Lattice,
             SamplerKind::Independent
             | SamplerKind::Stratified
             | SamplerKind::Latin
@@ -179,7 +184,8 @@ impl SamplerKind {
             | SamplerKind::Lp
             | SamplerKind::Cmj
             | SamplerKind::CascadedSobol
-            | SamplerKind::Hex => Size::Set,
+            | SamplerKind::Hex
+            | SamplerKind::MaximinLattice => Size::Set,
             SamplerKind::Lattice => Size::Rule,
             SamplerKind::Pmj02bn
             | SamplerKind::Poisson
@@ -211,7 +217,8 @@ impl SamplerKind {
     }
 
     /// The only dimension count the construction has, if it has one (vdc 1; lp, pmj02,
-    /// pmj02bn, best-candidate, gaussian-blue-noise, forced-random, bnot, hex, ldbn, penrose,
+    /// pmj02bn, best-candidate, gaussian-blue-noise, forced-random, bnot, hex,
+    /// maximin-lattice, ldbn, penrose,
     /// aa-patterns and art 2).
     pub const fn fixed_dims(self) -> Option<usize> {
         match self {
@@ -224,6 +231,7 @@ impl SamplerKind {
             | SamplerKind::ForcedRandom
             | SamplerKind::Bnot
             | SamplerKind::Hex
+            | SamplerKind::MaximinLattice
             | SamplerKind::Ldbn
             | SamplerKind::Penrose
             | SamplerKind::AaPatterns

@@ -397,6 +397,31 @@ pub static SAMPLERS: &[SamplerEntry] = &[
         item: "qmckit::lattice::hex::HexGrid",
     },
     Entry {
+        kind: SamplerKind::MaximinLattice,
+        name: "maximin-lattice",
+        aliases: &[
+            alias("max-min-lattice", "the criterion's other spelling"),
+            alias(
+                "rank1-maximin",
+                "UTK's Rank1 sampler (its default search is approximate)",
+            ),
+        ],
+        summary: "rank-1 lattice of N points, 2D, with the largest minimum distance on the torus \
+                  (exact search); random shift by the shift randomizer",
+        math: "x_i = frac(i (1, a) / N), a maximizing lambda_1 of {y = a x mod N} by Lagrange-Gauss \
+               reduction (Dammertz & Keller 2006)",
+        params: &[
+            DIMS_2,
+            param(
+                "points",
+                "the size N of the rule",
+                "none: needed",
+                "1 to 2^32 - 1",
+            ),
+        ],
+        item: "qmckit::lattice::maximin::max_min_distance",
+    },
+    Entry {
         kind: SamplerKind::Lloyd,
         name: "lloyd",
         aliases: &[
