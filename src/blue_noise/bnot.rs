@@ -241,10 +241,19 @@ impl Bnot {
         let mut max_error;
         let mut regularization_steps = 0;
         let mut it = 0u32;
+        let mut prev = None;
         loop {
             budget.check_deadline(WHAT)?;
             power::check_distinct(&pts)?;
-            let t = transport::solve_points(&pts, self.torus, weights, self.tolerance, &budget)?;
+            // The previous diagram's neighbours are clipped first (the points moved little).
+            let t = transport::solve_points(
+                &pts,
+                self.torus,
+                weights,
+                self.tolerance,
+                prev.as_ref(),
+                &budget,
+            )?;
             energy.push(t.cost());
             max_error = t.max_error();
             let d: &PowerDiagram = t.diagram();
@@ -268,7 +277,8 @@ impl Bnot {
                     };
                 }
             }
-            weights = t.into_weights();
+            let (w, d) = t.into_parts();
+            (weights, prev) = (w, Some(d));
             if !more {
                 break;
             }

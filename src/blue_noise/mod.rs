@@ -59,6 +59,8 @@ pub mod bnot;
 #[cfg(feature = "analysis")]
 mod bridson;
 #[cfg(feature = "analysis")]
+mod cell3;
+#[cfg(feature = "analysis")]
 pub mod force_field;
 #[cfg(feature = "analysis")]
 pub mod forced_random;

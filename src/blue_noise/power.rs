@@ -87,13 +87,14 @@ pub struct PowerDiagram {
     adj: Vec<(u32, f64)>,
 }
 
-/// One computed cell, relative to its site.
+/// One computed cell, relative to its site: its integrals and how many vertices and
+/// shared edges it appended to its chunk's lists.
 struct Cell {
     area: f64,
     first: [f64; 2],
     moment: f64,
-    vertices: Vec<[f64; 2]>,
-    adj: Vec<(u32, f64)>,
+    vertices: usize,
+    adj: usize,
 }
 
 impl PowerDiagram {
@@ -135,18 +136,53 @@ impl PowerDiagram {
         torus: bool,
         budget: &Budget,
     ) -> Result<Self> {
+        Self::build_hinted(pts, weights, torus, None, budget)
+    }
+
+    /// As [`PowerDiagram::build`], first clipping every cell by the half-planes of its
+    /// neighbours in `hint` (a diagram of the same number of sites: the previous step's,
+    /// as in the transport's Newton steps and BNOT's iterations), nearest first, then by
+    /// every other site within the reach of the clipped cell (the buckets meeting the
+    /// square of half-side `R + sqrt(max(0, R^2 - w_i + w_max))` around the site; a farther
+    /// site cannot cut and the reach only shrinks). Any site's half-plane bounds the cell,
+    /// so the cells are the same exact cells, without the search ring by ring.
+    pub(crate) fn build_hinted(
+        pts: &[[f64; 2]],
+        weights: &[f64],
+        torus: bool,
+        hint: Option<&PowerDiagram>,
+        budget: &Budget,
+    ) -> Result<Self> {
         let n = pts.len();
+        let hint = hint.filter(|h| h.len() == n);
         let buckets = Buckets::new(pts)?;
         let w_max = weights.iter().copied().fold(f64::NEG_INFINITY, f64::max);
         let chunks = n.div_ceil(CHUNK);
-        let parts: Vec<Vec<Cell>> = (0..chunks)
+        // Each chunk's cells, their vertices (relative to the sites) and adjacencies.
+        type Part = (Vec<Cell>, Vec<[f64; 2]>, Vec<(u32, f64)>);
+        let parts: Vec<Part> = (0..chunks)
             .into_par_iter()
             .map(|c| {
                 budget.check_deadline("power diagram")?;
                 let mut scratch = Scratch::default();
-                (c * CHUNK..((c + 1) * CHUNK).min(n))
-                    .map(|i| cell(i, pts, weights, w_max, torus, &buckets, &mut scratch))
-                    .collect::<Result<Vec<Cell>>>()
+                let (mut cells, mut verts, mut adj) = (Vec::new(), Vec::new(), Vec::new());
+                for i in c * CHUNK..((c + 1) * CHUNK).min(n) {
+                    match hint {
+                        Some(h) if !h.neighbours(i).is_empty() => hinted_cell(
+                            i,
+                            pts,
+                            weights,
+                            w_max,
+                            torus,
+                            &buckets,
+                            h.neighbours(i),
+                            &mut scratch,
+                        ),
+                        _ => cell(i, pts, weights, w_max, torus, &buckets, &mut scratch)?,
+                    }
+                    cells.push(integrate(&scratch, &mut verts, &mut adj));
+                }
+                Ok((cells, verts, adj))
             })
             .collect::<Result<Vec<_>>>()?;
         let mut d = PowerDiagram {
@@ -161,22 +197,34 @@ impl PowerDiagram {
         };
         d.poly_start.push(0);
         d.adj_start.push(0);
-        for (c, p) in parts.into_iter().flatten().zip(pts) {
-            d.area.push(c.area);
-            let centroid = if c.area > 0.0 {
-                [p[0] + c.first[0] / c.area, p[1] + c.first[1] / c.area]
-            } else {
-                *p
-            };
-            d.centroid.push(centroid);
-            d.moment.push(c.moment);
-            crate::size::reserve(&mut d.vertices, c.vertices.len())?;
-            d.vertices
-                .extend(c.vertices.iter().map(|v| [v[0] + p[0], v[1] + p[1]]));
-            d.poly_start.push(d.vertices.len());
-            crate::size::reserve(&mut d.adj, c.adj.len())?;
-            d.adj.extend_from_slice(&c.adj);
-            d.adj_start.push(d.adj.len());
+        let mut p = pts.iter();
+        for (cells, verts, adj) in parts {
+            crate::size::reserve(&mut d.vertices, verts.len())?;
+            crate::size::reserve(&mut d.adj, adj.len())?;
+            let (mut v, mut a) = (0, 0);
+            for c in cells {
+                let Some(p) = p.next() else { break };
+                d.area.push(c.area);
+                let centroid = if c.area > 0.0 {
+                    [p[0] + c.first[0] / c.area, p[1] + c.first[1] / c.area]
+                } else {
+                    *p
+                };
+                d.centroid.push(centroid);
+                d.moment.push(c.moment);
+                let (v1, a1) = (v + c.vertices, a + c.adj);
+                d.vertices.extend(
+                    verts
+                        .get(v..v1)
+                        .unwrap_or(&[])
+                        .iter()
+                        .map(|u| [u[0] + p[0], u[1] + p[1]]),
+                );
+                d.poly_start.push(d.vertices.len());
+                d.adj.extend_from_slice(adj.get(a..a1).unwrap_or(&[]));
+                d.adj_start.push(d.adj.len());
+                (v, a) = (v1, a1);
+            }
         }
         Ok(d)
     }
@@ -268,9 +316,10 @@ struct Scratch {
     next: Vec<[f64; 2]>,
     next_label: Vec<u32>,
     cand: Vec<(u32, [f64; 2])>,
+    used: Vec<(f64, [f64; 2], u32)>,
 }
 
-/// The cell of site `i`.
+/// The cell of site `i`, left in `s`.
 fn cell(
     i: usize,
     pts: &[[f64; 2]],
@@ -279,7 +328,7 @@ fn cell(
     torus: bool,
     buckets: &Buckets<2>,
     s: &mut Scratch,
-) -> Result<Cell> {
+) -> Result<()> {
     let p = pts[i];
     let w_i = weights[i];
     s.poly.clear();
@@ -358,7 +407,121 @@ fn cell(
         }
         r += 1;
     }
-    Ok(integrate(s))
+    Ok(())
+}
+
+/// The starting polygon of site `p`: the unit square, or on the torus the square of side
+/// 1 around the site (relative to the site).
+fn start(s: &mut Scratch, p: [f64; 2], torus: bool) {
+    s.poly.clear();
+    s.label.clear();
+    s.cand.clear();
+    let (lo, hi) = if torus {
+        ([-0.5, -0.5], [0.5, 0.5])
+    } else {
+        ([-p[0], -p[1]], [1.0 - p[0], 1.0 - p[1]])
+    };
+    s.poly.extend([
+        [lo[0], lo[1]],
+        [hi[0], lo[1]],
+        [hi[0], hi[1]],
+        [lo[0], hi[1]],
+    ]);
+    s.label.extend([BOUNDARY; 4]);
+}
+
+/// The reach of the polygon of `s`: no site farther than it from the site can cut.
+fn reach(s: &Scratch, w_i: f64, w_max: f64, torus: bool) -> f64 {
+    let far = if torus { 0.5f64.sqrt() } else { 2f64.sqrt() };
+    let r2 = s
+        .poly
+        .iter()
+        .map(|v| v[0] * v[0] + v[1] * v[1])
+        .fold(0.0, f64::max);
+    r2.sqrt() + (r2 - w_i + w_max).max(0.0).sqrt().min(far)
+}
+
+/// The cell of site `i`, first clipped by the sites of `hint` (each at its nearest copy
+/// on the torus; repeats skipped), nearest first, then by every other site of the
+/// buckets within the clipped cell's reach.
+#[allow(clippy::too_many_arguments)]
+fn hinted_cell(
+    i: usize,
+    pts: &[[f64; 2]],
+    weights: &[f64],
+    w_max: f64,
+    torus: bool,
+    buckets: &Buckets<2>,
+    hint: &[(u32, f64)],
+    s: &mut Scratch,
+) {
+    let p = pts[i];
+    let w_i = weights[i];
+    start(s, p, torus);
+    s.used.clear();
+    for &(j, _) in hint {
+        let Some(&pj) = pts.get(j as usize) else {
+            continue;
+        };
+        if j as usize == i {
+            continue;
+        }
+        let shift = [0, 1].map(|k| if torus { -(pj[k] - p[k]).round() } else { 0.0 });
+        if s.used.iter().any(|u| u.2 == j && u.1 == shift) {
+            continue;
+        }
+        let q = [pj[0] + shift[0] - p[0], pj[1] + shift[1] - p[1]];
+        s.used.push((q[0] * q[0] + q[1] * q[1], shift, j));
+    }
+    s.used.sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
+    let used = core::mem::take(&mut s.used);
+    let try_site = |s: &mut Scratch, j: u32, shift: [f64; 2]| {
+        let pj = pts[j as usize];
+        let q = [pj[0] + shift[0] - p[0], pj[1] + shift[1] - p[1]];
+        let c = 0.5 * (q[0] * q[0] + q[1] * q[1] + w_i - weights[j as usize]);
+        let label = s.cand.len() as u32;
+        if clip(s, q, c, label) {
+            s.cand.push((j, q));
+        }
+    };
+    for &(_, shift, j) in &used {
+        try_site(s, j, shift);
+    }
+    if s.poly.len() >= 3 {
+        let reach = reach(s, w_i, w_max, torus);
+        let g = buckets.g as i64;
+        let range = |x: f64| {
+            let (lo, hi) = (
+                ((x - reach) * g as f64).floor() as i64,
+                ((x + reach) * g as f64).floor() as i64,
+            );
+            if torus {
+                (lo, hi)
+            } else {
+                (lo.max(0), hi.min(g - 1))
+            }
+        };
+        let wrap = |b: i64| (b.rem_euclid(g) as usize, b.div_euclid(g) as f64);
+        let (rx, ry) = (range(p[0]), range(p[1]));
+        for by in ry.0..=ry.1 {
+            let (uy, sy) = wrap(by);
+            for bx in rx.0..=rx.1 {
+                let (ux, sx) = if torus { wrap(bx) } else { (bx as usize, 0.0) };
+                let shift = [sx, sy];
+                for &j in buckets.get([ux, uy]) {
+                    // Its own copies' bisectors are the faces of the torus square.
+                    if j as usize == i || used.iter().any(|u| u.2 == j && u.1 == shift) {
+                        continue;
+                    }
+                    try_site(s, j, shift);
+                }
+            }
+        }
+    }
+    s.used = used;
+    if s.poly.len() < 3 {
+        s.poly.clear();
+    }
 }
 
 /// Clips the polygon of `s` by `x . q <= c`; `true` when it cut (the new edge labelled
@@ -396,11 +559,12 @@ fn clip(s: &mut Scratch, q: [f64; 2], c: f64, label: u32) -> bool {
     true
 }
 
-/// The integrals of the finished polygon (relative to its site) and its shared edges.
-fn integrate(s: &Scratch) -> Cell {
+/// The integrals of the finished polygon (relative to its site); its vertices and shared
+/// edges are appended to `verts` and `adj`.
+fn integrate(s: &Scratch, verts: &mut Vec<[f64; 2]>, adj: &mut Vec<(u32, f64)>) -> Cell {
     let m = s.poly.len();
     let (mut area, mut first, mut moment) = (0.0, [0.0, 0.0], 0.0);
-    let mut adj = Vec::new();
+    let before = adj.len();
     for k in 0..m {
         let (a, b) = (s.poly[k], s.poly[(k + 1) % m]);
         let c = a[0] * b[1] - a[1] * b[0];
@@ -411,18 +575,78 @@ fn integrate(s: &Scratch) -> Cell {
             c * (a[0] * a[0] + a[1] * a[1] + a[0] * b[0] + a[1] * b[1] + b[0] * b[0] + b[1] * b[1]);
         let l = s.label[k];
         if let Some(&(j, q)) = s.cand.get(l as usize) {
-            let len = (b[0] - a[0]).hypot(b[1] - a[1]);
-            let dist = q[0].hypot(q[1]);
+            // Lengths below 2 (in the unit square or around a site on the torus): no
+            // overflow to guard against.
+            let (ex, ey) = (b[0] - a[0], b[1] - a[1]);
+            let len = (ex * ex + ey * ey).sqrt();
+            let dist = (q[0] * q[0] + q[1] * q[1]).sqrt();
             if len > 0.0 {
                 adj.push((j, len / (2.0 * dist)));
             }
         }
     }
+    verts.extend_from_slice(&s.poly);
     Cell {
         area: area / 2.0,
         first: [first[0] / 6.0, first[1] / 6.0],
         moment: moment / 12.0,
-        vertices: s.poly.clone(),
-        adj,
+        vertices: m,
+        adj: adj.len() - before,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Uniform values in `[0, 1)` from a small linear congruential generator.
+    fn uniform(n: usize, seed: u64) -> Vec<f64> {
+        let mut x = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (0..n)
+            .map(|_| {
+                x = x
+                    .wrapping_mul(6364136223846793005)
+                    .wrapping_add(1442695040888963407);
+                (x >> 11) as f64 / (1u64 << 53) as f64
+            })
+            .collect()
+    }
+
+    /// Hinted diagrams (by the diagram of other sites and other weights) against the
+    /// diagram searched ring by ring: the same cells and shared edges.
+    #[test]
+    fn hinted_cells_are_the_searched_cells() {
+        let b = Budget::DEFAULT;
+        for torus in [false, true] {
+            let n = 400;
+            let pts: Vec<[f64; 2]> = uniform(2 * n, 3).chunks(2).map(|c| [c[0], c[1]]).collect();
+            let moved: Vec<[f64; 2]> = uniform(2 * n, 4)
+                .chunks(2)
+                .zip(&pts)
+                .map(|(c, p)| [0, 1].map(|k| (p[k] + 0.02 * (c[k] - 0.5)).clamp(0.0, 0.999)))
+                .collect();
+            // Weights up to a fifth of the squared spacing.
+            let w: Vec<f64> = uniform(n, 5).iter().map(|x| 0.2 * x / n as f64).collect();
+            let zero = vec![0.0; n];
+            let want = PowerDiagram::build(&pts, &w, torus, &b).unwrap();
+            for (hint_pts, hint_w) in [(&pts, &zero), (&moved, &w), (&moved, &zero)] {
+                let hint = PowerDiagram::build(hint_pts, hint_w, torus, &b).unwrap();
+                let got = PowerDiagram::build_hinted(&pts, &w, torus, Some(&hint), &b).unwrap();
+                for i in 0..n {
+                    assert!((got.area(i) - want.area(i)).abs() < 1e-15, "{torus} {i}");
+                    assert!((got.moment(i) - want.moment(i)).abs() < 1e-15);
+                    let (c, d) = (got.centroid(i), want.centroid(i));
+                    assert!((c[0] - d[0]).abs() < 1e-13 && (c[1] - d[1]).abs() < 1e-13);
+                    let sorted = |d: &PowerDiagram| {
+                        let mut v: Vec<u32> = d.neighbours(i).iter().map(|e| e.0).collect();
+                        v.sort_unstable();
+                        v
+                    };
+                    assert_eq!(sorted(&got), sorted(&want), "{torus} {i}");
+                }
+            }
+        }
     }
 }

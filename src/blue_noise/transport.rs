@@ -125,6 +125,11 @@ impl Transport {
     pub fn into_weights(self) -> Vec<f64> {
         self.weights
     }
+
+    /// The weights and the diagram, given up.
+    pub(crate) fn into_parts(self) -> (Vec<f64>, PowerDiagram) {
+        (self.weights, self.diagram)
+    }
 }
 
 /// The estimated running time of a solve from zero weights for `n` sites: about
@@ -168,15 +173,18 @@ pub fn solve_from(
     let pts = power::validate(sites, start, torus)?;
     budget.check("transport solve", cost(pts.len()))?;
     power::check_distinct(&pts)?;
-    solve_points(&pts, torus, start.to_vec(), tolerance, &budget)
+    solve_points(&pts, torus, start.to_vec(), tolerance, None, &budget)
 }
 
-/// The solve for validated, distinct sites.
+/// The solve for validated, distinct sites; `hint` is a diagram of nearby sites (the
+/// previous iteration's in BNOT) whose neighbours are clipped first
+/// ([`PowerDiagram::build_hinted`]; the diagrams are the same).
 pub(crate) fn solve_points(
     pts: &[[f64; 2]],
     torus: bool,
     mut w: Vec<f64>,
     tolerance: f64,
+    hint: Option<&PowerDiagram>,
     budget: &Budget,
 ) -> Result<Transport> {
     const WHAT: &str = "transport solve";
@@ -187,7 +195,7 @@ pub(crate) fn solve_points(
     }
     let n = pts.len();
     let nu = 1.0 / n as f64;
-    let mut d = PowerDiagram::build(pts, &w, torus, budget)?;
+    let mut d = PowerDiagram::build_hinted(pts, &w, torus, hint, budget)?;
     if d.areas().iter().any(|&a| a <= 0.0) {
         w.iter_mut().for_each(|x| *x = 0.0);
         d = PowerDiagram::build(pts, &w, torus, budget)?;
@@ -229,7 +237,7 @@ pub(crate) fn solve_points(
             for ((t, &x), &s) in trial.iter_mut().zip(&w).zip(&dir) {
                 *t = x + alpha * s;
             }
-            let next = PowerDiagram::build(pts, &trial, torus, budget)?;
+            let next = PowerDiagram::build_hinted(pts, &trial, torus, Some(&d), budget)?;
             let min = next.areas().iter().copied().fold(f64::INFINITY, f64::min);
             if min >= eps && misfit(&next, nu) <= (1.0 - alpha / 2.0) * norm0 {
                 accepted = Some(next);

@@ -17,18 +17,31 @@
 //! cube, when the rings cover the grid). Every returned cell is the exact Voronoi cell up
 //! to rounding.
 //!
-//! The polyhedron is kept as vertices and faces (vertex index cycles, counter-clockwise
-//! seen from outside). A cut keeps the vertices on the inner side (`x . q <= |q|^2 / 2`),
-//! puts one new vertex on every edge that crosses the plane (the same one for both faces
+//! The polyhedron is kept as its triangulated dual (`src/blue_noise/cell3.rs`: a vertex
+//! is the triangle of the three planes meeting there; a cut removes the triangles outside and
+//! fans the hole's boundary around the new plane, in place). Should a cut meet a
+//! boundary that is not one simple cycle (rounding, near a degenerate configuration),
+//! the cell is computed again by the face-list polyhedron below, which rebuilds the
+//! polyhedron at every cut and accepts any configuration. It is kept as vertices and
+//! faces (vertex index cycles, counter-clockwise seen from outside). A cut keeps the
+//! vertices on the inner side (`x . q <= |q|^2 / 2`), puts one new vertex on every edge that crosses the plane (the same one for both faces
 //! of the edge) and closes the hole by a new face: in every cut face the new edge runs
 //! from the vertex where the face leaves the half-space to the one where it re-enters,
 //! and the new face traverses those edges backwards, chained into cycles.
 //!
+//! Lloyd's steps ([`super::lloyd`]) pass each cell's neighbours of the previous step
+//! as hints: those bisectors are cut first, nearest first, leaving a cell close to the
+//! final one, and then every other site within twice its radius `R` is tried, through the
+//! buckets meeting the cube of half-side `2 R` around the site. Any site's bisector
+//! bounds the cell and a farther site cannot cut, so the hinted cells are the same exact
+//! cells, without the search ring by ring and its sorts.
+//!
 //! ## The integrals
 //!
-//! Fanning every face from its first vertex into triangles `(a, b, c)` (relative to the
-//! site) gives tetrahedra `(0, a, b, c)` of signed volume `det(a, b, c) / 6`: the volume
-//! is their sum, the first moment `sum det(a, b, c) (a + b + c) / 24` and the second
+//! The dual cell fans each face from the foot of the site's perpendicular on its plane
+//! (`src/blue_noise/cell3.rs`); the face-list polyhedron fans every face from its first
+//! vertex. Either way, triangles `(a, b, c)` (relative to the site) give tetrahedra
+//! `(0, a, b, c)` of signed volume `det(a, b, c) / 6`: the volume is their sum, the first moment `sum det(a, b, c) (a + b + c) / 24` and the second
 //! moment `int |x - p_i|^2 = sum det(a, b, c) (|a|^2 + |b|^2 + |c|^2 + |a + b + c|^2) /
 //! 120` (the simplex moment `int x x^T = V/20 (sum v v^T + (sum v)(sum v)^T)` with one
 //! vertex at the origin). Exact for any closed, consistently oriented surface, so the
@@ -38,7 +51,7 @@
 //!
 //! 1 to [`VORONOI3_MAX_SITES`] distinct sites in `[0, 1]^3` (on the torus taken modulo
 //! 1). For evenly spread sites a cell meets a bounded number of candidates (about 45
-//! gathered and 12 cuts a cell at 1024 Lloyd-relaxed sites), so the diagram costs `O(N)`
+//! gathered and 12 cuts a cell at 1024 Lloyd-relaxed sites without hints), so the diagram costs `O(N)`
 //! after an `O(N log N)` duplicate check; clustered sites widen the search (bounded by
 //! the domain). Estimated by
 //! [`Voronoi3::cost`], stopped at the budget's deadline, parallel over the cells
@@ -55,6 +68,7 @@
 //! # Ok::<(), qmckit::Error>(())
 //! ```
 
+use super::cell3::DualCell;
 use super::sites::{self, Buckets, bucket_of};
 use crate::Result;
 use crate::work::{Budget, Cost, Rate};
@@ -82,12 +96,30 @@ pub struct Voronoi3 {
     moment: Vec<f64>,
 }
 
+/// The neighbours of every cell (the sites of its faces; none listed for a cell the
+/// face-list polyhedron computed).
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Neighbours {
+    start: Vec<usize>,
+    list: Vec<u32>,
+}
+
+impl Neighbours {
+    /// The neighbours of cell `i`.
+    fn of(&self, i: usize) -> &[u32] {
+        match (self.start.get(i), self.start.get(i + 1)) {
+            (Some(&a), Some(&b)) => self.list.get(a..b).unwrap_or(&[]),
+            _ => &[],
+        }
+    }
+}
+
 /// One cell's integrals relative to its site.
 #[derive(Clone, Copy, Default)]
-struct Integrals {
-    volume: f64,
-    first: [f64; 3],
-    moment: f64,
+pub(super) struct Integrals {
+    pub(super) volume: f64,
+    pub(super) first: [f64; 3],
+    pub(super) moment: f64,
 }
 
 impl Voronoi3 {
@@ -106,6 +138,20 @@ impl Voronoi3 {
     /// [`Error::InvalidParameter`](crate::Error::InvalidParameter) for two equal sites, [`Error::OverBudget`](crate::Error::OverBudget),
     /// [`Error::OutOfTime`](crate::Error::OutOfTime), [`Error::TooLarge`](crate::Error::TooLarge).
     pub fn new(sites: &[f64], torus: bool, budget: &Budget) -> Result<Self> {
+        Ok(Self::hinted(sites, torus, None, budget)?.0)
+    }
+
+    /// As [`Voronoi3::new`], first cutting every cell by the bisectors of the sites that
+    /// `hints` lists for it (the neighbours of the previous cells of moved sites, as in
+    /// Lloyd's steps), and also returning each cell's neighbours (the sites of its faces).
+    /// Every cell is still exact: any site's bisector bounds the cell, and once the
+    /// hinted cuts are made, every site within twice the cell's radius is tried.
+    pub(crate) fn hinted(
+        sites: &[f64],
+        torus: bool,
+        hints: Option<&Neighbours>,
+        budget: &Budget,
+    ) -> Result<(Self, Neighbours)> {
         let budget = budget.started();
         let pts = sites::validate::<3>(sites, torus, VORONOI3_MAX_SITES)?;
         budget.check("3D Voronoi cells", Self::cost(pts.len()))?;
@@ -114,15 +160,27 @@ impl Voronoi3 {
             "two sites coincide: Voronoi cells need distinct sites",
         )?;
         let n = pts.len();
+        let hints = hints.filter(|h| h.start.len() == n + 1);
         let buckets = Buckets::new(&pts)?;
-        let parts: Vec<Vec<Integrals>> = (0..n.div_ceil(CHUNK))
+        type Part = (Vec<Integrals>, Vec<u32>, Vec<u32>);
+        let parts: Vec<Part> = (0..n.div_ceil(CHUNK))
             .into_par_iter()
             .map(|c| {
                 budget.check_deadline("3D Voronoi cells")?;
-                let mut s = Scratch::default();
-                Ok((c * CHUNK..((c + 1) * CHUNK).min(n))
-                    .map(|i| cell(i, &pts, torus, &buckets, &mut s))
-                    .collect())
+                let (mut dual, mut s) = (DualCell::default(), Scratch::default());
+                let mut cand = Vec::new();
+                let (mut cells, mut list, mut count) = (Vec::new(), Vec::new(), Vec::new());
+                for i in c * CHUNK..((c + 1) * CHUNK).min(n) {
+                    let hint = hints.map_or(&[][..], |h| h.of(i));
+                    let before = list.len();
+                    let got = cell(i, &pts, torus, &buckets, hint, &mut dual, &mut cand)
+                        .inspect(|_| dual.faces(&mut list));
+                    cells.push(got.unwrap_or_else(|| {
+                        cell(i, &pts, torus, &buckets, &[], &mut s, &mut cand).unwrap_or_default()
+                    }));
+                    count.push((list.len() - before) as u32);
+                }
+                Ok((cells, list, count))
             })
             .collect::<Result<Vec<_>>>()?;
         let mut v = Voronoi3 {
@@ -131,16 +189,28 @@ impl Voronoi3 {
             centroid: crate::size::vec_with_capacity(n)?,
             moment: crate::size::vec_with_capacity(n)?,
         };
-        for (c, p) in parts.into_iter().flatten().zip(&pts) {
-            v.volume.push(c.volume);
-            v.centroid.push(if c.volume > 0.0 {
-                [0, 1, 2].map(|k| p[k] + c.first[k] / c.volume)
-            } else {
-                *p
-            });
-            v.moment.push(c.moment);
+        let mut nb = Neighbours {
+            start: crate::size::vec_with_capacity(n + 1)?,
+            list: Vec::new(),
+        };
+        nb.start.push(0);
+        let mut p = pts.iter();
+        for (cells, list, count) in parts {
+            crate::size::reserve(&mut nb.list, list.len())?;
+            nb.list.extend_from_slice(&list);
+            for (c, k) in cells.into_iter().zip(count) {
+                let Some(p) = p.next() else { break };
+                v.volume.push(c.volume);
+                v.centroid.push(if c.volume > 0.0 {
+                    [0, 1, 2].map(|k| p[k] + c.first[k] / c.volume)
+                } else {
+                    *p
+                });
+                v.moment.push(c.moment);
+                nb.start.push(nb.start[nb.start.len() - 1] + k as usize);
+            }
         }
-        Ok(v)
+        Ok((v, nb))
     }
 
     /// The number of sites.
@@ -184,6 +254,58 @@ fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 
+/// A convex polyhedron around a site, cut by half-spaces.
+trait Polyhedron {
+    /// The box `[lo, hi]` (relative to the site).
+    fn reset(&mut self, lo: [f64; 3], hi: [f64; 3]);
+    /// Cuts by `x . q <= c`; `false` when the cut was refused (the cell is then computed
+    /// by the face-list polyhedron).
+    fn cut(&mut self, q: [f64; 3], c: f64, tag: u32) -> bool;
+    /// The largest squared vertex distance from the site.
+    fn r2(&self) -> f64;
+    /// `true` when nothing is left.
+    fn is_empty(&self) -> bool;
+    /// The integrals relative to the site (`None` when they cannot be formed).
+    fn integrals(&self) -> Option<Integrals>;
+}
+
+impl Polyhedron for DualCell {
+    fn reset(&mut self, lo: [f64; 3], hi: [f64; 3]) {
+        DualCell::reset(self, lo, hi);
+    }
+    fn cut(&mut self, q: [f64; 3], c: f64, tag: u32) -> bool {
+        DualCell::cut(self, q, c, tag)
+    }
+    fn r2(&self) -> f64 {
+        DualCell::r2(self)
+    }
+    fn is_empty(&self) -> bool {
+        DualCell::is_empty(self)
+    }
+    fn integrals(&self) -> Option<Integrals> {
+        self.integrate()
+    }
+}
+
+impl Polyhedron for Scratch {
+    fn reset(&mut self, lo: [f64; 3], hi: [f64; 3]) {
+        Scratch::reset(self, lo, hi);
+    }
+    fn cut(&mut self, q: [f64; 3], c: f64, _tag: u32) -> bool {
+        self.clip(q, c);
+        true
+    }
+    fn r2(&self) -> f64 {
+        self.r2
+    }
+    fn is_empty(&self) -> bool {
+        self.start.len() < 2
+    }
+    fn integrals(&self) -> Option<Integrals> {
+        Some(self.integrate())
+    }
+}
+
 /// The polyhedron and reused buffers of one thread.
 #[derive(Default)]
 struct Scratch {
@@ -204,7 +326,6 @@ struct Scratch {
     /// The new face's edges: `(from, to)`.
     links: Vec<(u32, u32)>,
     next_link: Vec<u32>,
-    cand: Vec<(f64, [f64; 3])>,
 }
 
 impl Scratch {
@@ -386,19 +507,25 @@ impl Scratch {
     }
 }
 
-/// The cell of site `i`.
-fn cell(
+/// The cell of site `i`, cut from `poly` (first by the bisectors of the sites of `hint`);
+/// `None` when a cut was refused.
+fn cell<P: Polyhedron>(
     i: usize,
     pts: &[[f64; 3]],
     torus: bool,
     buckets: &Buckets<3>,
-    s: &mut Scratch,
-) -> Integrals {
+    hint: &[u32],
+    poly: &mut P,
+    cand: &mut Vec<(f64, [f64; 3], u32)>,
+) -> Option<Integrals> {
     let p = pts[i];
     if torus {
-        s.reset([-0.5; 3], [0.5; 3]);
+        poly.reset([-0.5; 3], [0.5; 3]);
     } else {
-        s.reset(p.map(|x| -x), p.map(|x| 1.0 - x));
+        poly.reset(p.map(|x| -x), p.map(|x| 1.0 - x));
+    }
+    if !hint.is_empty() {
+        return hinted_cell(i, pts, torus, buckets, hint, poly, cand);
     }
     let g = buckets.g as i64;
     let h = 1.0 / g as f64;
@@ -406,8 +533,8 @@ fn cell(
     let mut r = 0i64;
     loop {
         // The sites of the ring of buckets at Chebyshev distance r, nearest first.
-        s.cand.clear();
-        let limit = 4.0 * s.r2;
+        cand.clear();
+        let limit = 4.0 * poly.r2();
         for dz in -r..=r {
             for dy in -r..=r {
                 let inner = dz.abs() < r && dy.abs() < r;
@@ -436,31 +563,171 @@ fn cell(
                         let d2 = dot(q, q);
                         // Beyond twice the current radius: cannot cut, now or later.
                         if d2 < limit {
-                            s.cand.push((d2, q));
+                            cand.push((d2, q, j));
                         }
                     }
                 }
             }
         }
-        s.cand.sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
-        let cand = core::mem::take(&mut s.cand);
-        for &(d2, q) in &cand {
+        cand.sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
+        for &(d2, q, j) in cand.iter() {
             // A bisector at distance |q| / 2 cuts only when some vertex is farther.
-            if d2 >= 4.0 * s.r2 {
+            if d2 >= 4.0 * poly.r2() {
                 break;
             }
-            s.clip(q, 0.5 * d2);
+            if !poly.cut(q, 0.5 * d2, j) {
+                return None;
+            }
         }
-        s.cand = cand;
-        if s.start.len() < 2 {
-            return Integrals::default();
+        if poly.is_empty() {
+            return Some(Integrals::default());
         }
         // Sites of ring r + 1 are at least r h away.
-        let reach = 2.0 * s.r2.sqrt();
+        let reach = 2.0 * poly.r2().sqrt();
         if r as f64 * h >= reach || (!torus && r >= g) {
             break;
         }
         r += 1;
     }
-    s.integrate()
+    poly.integrals()
+}
+
+/// The cell of site `i` from the box `poly`, first cut by the bisectors of the sites of
+/// `hint` (each at its nearest copy on the torus), then by every other site within twice
+/// the cell's radius `R` (the buckets meeting the cube of half-side `2 R` around the site;
+/// a farther site cannot cut, and `R` only shrinks); `None` when a cut was refused.
+fn hinted_cell<P: Polyhedron>(
+    i: usize,
+    pts: &[[f64; 3]],
+    torus: bool,
+    buckets: &Buckets<3>,
+    hint: &[u32],
+    poly: &mut P,
+    used: &mut Vec<(f64, [f64; 3], u32)>,
+) -> Option<Integrals> {
+    let p = pts[i];
+    used.clear();
+    for &j in hint {
+        let Some(&pj) = pts.get(j as usize) else {
+            continue;
+        };
+        if j as usize == i {
+            continue;
+        }
+        let shift = [0, 1, 2].map(|k| if torus { -(pj[k] - p[k]).round() } else { 0.0 });
+        let q = [0, 1, 2].map(|k| pj[k] + shift[k] - p[k]);
+        used.push((dot(q, q), shift, j));
+    }
+    // Nearest first: the near bisectors shrink the cell fastest.
+    used.sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
+    for &(d2, shift, j) in used.iter() {
+        if d2 >= 4.0 * poly.r2() {
+            break;
+        }
+        let pj = pts[j as usize];
+        let q = [0, 1, 2].map(|k| pj[k] + shift[k] - p[k]);
+        if !poly.cut(q, 0.5 * d2, j) {
+            return None;
+        }
+    }
+    if poly.is_empty() {
+        return Some(Integrals::default());
+    }
+    let g = buckets.g as i64;
+    let reach = 2.0 * poly.r2().sqrt();
+    let range = |x: f64| {
+        let (lo, hi) = (
+            ((x - reach) * g as f64).floor() as i64,
+            ((x + reach) * g as f64).floor() as i64,
+        );
+        if torus {
+            (lo, hi)
+        } else {
+            (lo.max(0), hi.min(g - 1))
+        }
+    };
+    let (rx, ry, rz) = (range(p[0]), range(p[1]), range(p[2]));
+    // A bucket of the unrolled grid: its bucket in the grid and the period shift.
+    let wrap = |b: i64| (b.rem_euclid(g) as usize, b.div_euclid(g) as f64);
+    for bz in rz.0..=rz.1 {
+        let (uz, sz) = wrap(bz);
+        for by in ry.0..=ry.1 {
+            let (uy, sy) = wrap(by);
+            for bx in rx.0..=rx.1 {
+                let (ux, sx) = if torus { wrap(bx) } else { (bx as usize, 0.0) };
+                let shift = [sx, sy, sz];
+                for &j in buckets.get([ux, uy, uz]) {
+                    if j as usize == i && shift == [0.0; 3] {
+                        continue;
+                    }
+                    let pj = pts[j as usize];
+                    let q = [0, 1, 2].map(|k| pj[k] + shift[k] - p[k]);
+                    let d2 = dot(q, q);
+                    if d2 >= 4.0 * poly.r2() || used.iter().any(|u| u.2 == j && u.1 == shift) {
+                        continue;
+                    }
+                    if j as usize == i {
+                        // Its own copies' bisectors are the faces of the torus box.
+                        continue;
+                    }
+                    if !poly.cut(q, 0.5 * d2, j) {
+                        return None;
+                    }
+                }
+            }
+        }
+    }
+    if poly.is_empty() {
+        return Some(Integrals::default());
+    }
+    poly.integrals()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Uniform sites in the cube from a small linear congruential generator.
+    fn sites(n: usize, seed: u64) -> Vec<[f64; 3]> {
+        let mut x = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        let mut unit = move || {
+            x = x
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (x >> 11) as f64 / (1u64 << 53) as f64
+        };
+        (0..n).map(|_| [unit(), unit(), unit()]).collect()
+    }
+
+    fn close(a: Integrals, b: Integrals) -> bool {
+        let near = |x: f64, y: f64| (x - y).abs() <= 1e-14;
+        near(a.volume, b.volume)
+            && near(a.moment, b.moment)
+            && (0..3).all(|k| near(a.first[k], b.first[k]))
+    }
+
+    /// The dual cells against the independent face-list polyhedron, cell by cell, with
+    /// and without hints (the true neighbours, other sites' neighbours, and none).
+    #[test]
+    fn dual_and_hinted_cells_match_the_face_list_cells() {
+        for torus in [false, true] {
+            let pts = sites(300, 5 + torus as u64);
+            let flat: Vec<f64> = pts.iter().flatten().copied().collect();
+            let b = Buckets::new(&pts).unwrap();
+            let (mut dual, mut faces, mut cand) =
+                (DualCell::default(), Scratch::default(), Vec::new());
+            let (_, nb) = Voronoi3::hinted(&flat, torus, None, &Budget::DEFAULT).unwrap();
+            for i in 0..pts.len() {
+                let want = cell(i, &pts, torus, &b, &[], &mut faces, &mut cand).unwrap();
+                assert!(want.volume > 0.0);
+                let wrong: Vec<u32> = nb.of((i + 7) % pts.len()).to_vec();
+                for hint in [&[][..], nb.of(i), &wrong] {
+                    let got = cell(i, &pts, torus, &b, hint, &mut dual, &mut cand).unwrap();
+                    assert!(close(got, want), "{torus} {i}");
+                }
+            }
+        }
+    }
 }
