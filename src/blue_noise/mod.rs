@@ -18,8 +18,9 @@
 //!   optionally projective (directions also drawn in the 1D and 2D axis subspaces).
 //! * [`ForcedRandom`] — forced random sampling (Cornel et al. 2017): a blue-noise rank
 //!   matrix thresholded against an importance density, 2D.
-//! * [`Ldbn`] — low-discrepancy blue noise (after Ahmed et al. 2016): an Owen-scrambled
-//!   Sobol' (0, m, 2)-net rearranged by an optimized per-tile look-up table, still a net.
+//! * [`Ldbn`] — low-discrepancy blue noise (Ahmed et al. 2016): the Sobol' (0, m, 2)-net,
+//!   its in-cell offsets permuted within `16 x 16`-cell tiles by an optimized look-up
+//!   table, still a net.
 //! * [`Penrose`] — one sample a tile of a subdivided Penrose tiling, ranked for
 //!   thresholding (Ostromoukhov, Donohue & Jodoin 2004); [`penrose::importance`] samples a
 //!   density; [`penrose_train`] makes its correction table.

@@ -44,8 +44,8 @@ not apply):
                        lowest rank of a 256 x 256 void-and-cluster matrix: -n N
   bnot                 blue noise through optimal transport (equal-area power cells),
                        2D: -n N, --iterations I (default 50), --torus
-  ldbn                 low-discrepancy blue noise, 2D: -n N a power of four (4 to 2^26): an
-                       Owen-scrambled Sobol' net rearranged by a look-up table, still a net
+  ldbn                 low-discrepancy blue noise, 2D: -n N a power of four (4 to 2^26): the
+                       Sobol' net's offsets permuted in 16 x 16 tiles by a table, still a net
   penrose              Penrose-tiling sampling (Ostromoukhov et al. 2004), 2D: -n N (the
                        N points of lowest rank), --seed (rotation and offset)
   aa-patterns          AA patterns (after Ahmed et al. 2015), 2D: -n N a perfect square, one

@@ -582,9 +582,10 @@ pub static SAMPLERS: &[SamplerEntry] = &[
             "low-discrepancy-blue-noise",
             "Ahmed et al. 2016's title",
         )],
-        summary: "low-discrepancy blue noise: an Owen-scrambled Sobol' (0, m, 2)-net, N = 4^k, its \
-                  in-cell offsets exchanged within 2 x 2 tiles by an optimized look-up table; still a net",
-        math: "offsets of the cells of a tile's columns (u) and rows (v) exchanged as LDBN_TABLE[configuration] says (after Ahmed et al. 2016)",
+        summary: "low-discrepancy blue noise: the Sobol' (0, m, 2)-net, N = 4^k, its in-cell offsets \
+                  permuted within the columns and rows of 16 x 16-cell tiles by an optimized look-up \
+                  table; still a (0, m, 2)-net",
+        math: "x = (X K + rev_k(16 floor(Y/16) + p_X(Y mod 16)))/N, y likewise, p from LDBN_TABLE (Ahmed et al. 2016)",
         params: &[
             DIMS_2,
             param(
