@@ -364,7 +364,7 @@ impl<M: AsRef<[u16]>> Sampler for DigitalNetB<M> {
     }
 
     /// Sequentially, each dimension's output digits updated from the previous point's
-    /// ([`fill`](fill) module: `K` additions mod `b` a value, not `K x m` products); the
+    /// (`src/digital/fill.rs`: `K` additions mod `b` a value, not `K x m` products); the
     /// same bits as [`sample`](Self::sample).
     fn fill(&self, start: u32, out: &mut [u32]) -> Result<()> {
         fill::fill(self, start, out)
