@@ -96,7 +96,7 @@ pub use whole::BlueNoiseOptions;
 
 /// One entry of a list: a name, its aliases, what it is, and its parameters. `K` is the
 /// list's kind enum ([`SamplerKind`], ...), whose methods carry the list's own rules.
-#[derive(Debug)]
+#[derive(Clone, Copy, Debug)]
 pub struct Entry<K: 'static> {
     /// The kind, for matching in code.
     pub kind: K,
