@@ -32,6 +32,28 @@ const SEED: Param = param(
     "0",
     "any u64",
 );
+/// The time budget of a set built whole (the command's `--max-seconds`).
+const BUDGET: Param = param(
+    "budget",
+    "time budget of the construction",
+    "10 s",
+    "positive seconds",
+);
+/// Points and dimensions of the spectral samplers.
+const SPECTRAL_DIMS: Param = param("dims", "coordinates of each point", "2", "1 to 6");
+const SPECTRAL_POINTS: Param = param(
+    "points",
+    "the set size N",
+    "none: needed",
+    "2 to 2^22 (below 12.32^d a shorter correlation range)",
+);
+/// The energy evaluations of the spectral samplers' descent.
+const SPECTRAL_ITERATIONS: Param = param(
+    "iterations",
+    "energy evaluations of the quasi-Newton descent",
+    "200",
+    "0 to 10^5",
+);
 const POINTS: Param = param(
     "points",
     "the size N of the set",
@@ -276,12 +298,7 @@ const SEQUENCES_AND_SETS: [SamplerEntry; 20] = [
             param("torus", "toroidal distance", "false", "bool"),
             param("maximal", "fill until no disk fits", "false", "bool"),
             param("candidates", "candidates per step", "30", "at least 1"),
-            param(
-                "budget",
-                "time budget of the construction",
-                "10 s",
-                "positive seconds",
-            ),
+            BUDGET,
         ],
         item: "qmckit::blue_noise::PoissonDisk",
     },
@@ -296,12 +313,7 @@ const SEQUENCES_AND_SETS: [SamplerEntry; 20] = [
             POINTS,
             SEED,
             param("candidates", "the multiplier m", "10", "at least 1"),
-            param(
-                "budget",
-                "time budget of the construction",
-                "10 s",
-                "positive seconds",
-            ),
+            BUDGET,
         ],
         item: "qmckit::blue_noise::BestCandidate",
     },
@@ -321,12 +333,7 @@ const SEQUENCES_AND_SETS: [SamplerEntry; 20] = [
                 "500",
                 "at least 1",
             ),
-            param(
-                "budget",
-                "time budget of the construction",
-                "10 s",
-                "positive seconds",
-            ),
+            BUDGET,
         ],
         item: "qmckit::blue_noise::GaussianBlueNoise",
     },
@@ -357,12 +364,7 @@ const SEQUENCES_AND_SETS: [SamplerEntry; 20] = [
                 "1 to 2^32",
             ),
             SEED,
-            param(
-                "budget",
-                "time budget of the construction",
-                "10 s",
-                "positive seconds",
-            ),
+            BUDGET,
         ],
         item: "qmckit::pmj::bn",
     },
