@@ -331,21 +331,7 @@ fn cell(
 ) -> Result<()> {
     let p = pts[i];
     let w_i = weights[i];
-    s.poly.clear();
-    s.label.clear();
-    s.cand.clear();
-    let (lo, hi) = if torus {
-        ([-0.5, -0.5], [0.5, 0.5])
-    } else {
-        ([-p[0], -p[1]], [1.0 - p[0], 1.0 - p[1]])
-    };
-    s.poly.extend([
-        [lo[0], lo[1]],
-        [hi[0], lo[1]],
-        [hi[0], hi[1]],
-        [lo[0], hi[1]],
-    ]);
-    s.label.extend([BOUNDARY; 4]);
+    start(s, p, torus);
     let g = buckets.g as i64;
     let h = 1.0 / g as f64;
     let (cx, cy) = (
@@ -489,19 +475,8 @@ fn hinted_cell(
     }
     if s.poly.len() >= 3 {
         let reach = reach(s, w_i, w_max, torus);
-        let g = buckets.g as i64;
-        let range = |x: f64| {
-            let (lo, hi) = (
-                ((x - reach) * g as f64).floor() as i64,
-                ((x + reach) * g as f64).floor() as i64,
-            );
-            if torus {
-                (lo, hi)
-            } else {
-                (lo.max(0), hi.min(g - 1))
-            }
-        };
-        let wrap = |b: i64| (b.rem_euclid(g) as usize, b.div_euclid(g) as f64);
+        let range = |x: f64| buckets.span(x, reach, torus);
+        let wrap = |b: i64| buckets.unroll(b);
         let (rx, ry) = (range(p[0]), range(p[1]));
         for by in ry.0..=ry.1 {
             let (uy, sy) = wrap(by);

@@ -86,6 +86,28 @@ pub(crate) struct Buckets<const D: usize> {
 }
 
 impl<const D: usize> Buckets<D> {
+    /// The buckets along one axis (possibly past the grid, on the torus) that meet
+    /// `[x - reach, x + reach]`: clamped to the grid in the cube.
+    pub(crate) fn span(&self, x: f64, reach: f64, torus: bool) -> (i64, i64) {
+        let g = self.g as i64;
+        let (lo, hi) = (
+            ((x - reach) * g as f64).floor() as i64,
+            ((x + reach) * g as f64).floor() as i64,
+        );
+        if torus {
+            (lo, hi)
+        } else {
+            (lo.max(0), hi.min(g - 1))
+        }
+    }
+
+    /// A bucket index of the unrolled torus grid as its bucket in the grid and the period
+    /// shift of its copy.
+    pub(crate) fn unroll(&self, b: i64) -> (usize, f64) {
+        let g = self.g as i64;
+        (b.rem_euclid(g) as usize, b.div_euclid(g) as f64)
+    }
+
     /// The buckets of `sites` (coordinates in `[0, 1]`).
     ///
     /// # Errors

@@ -633,22 +633,10 @@ fn hinted_cell<P: Polyhedron>(
     if poly.is_empty() {
         return Some(Integrals::default());
     }
-    let g = buckets.g as i64;
     let reach = 2.0 * poly.r2().sqrt();
-    let range = |x: f64| {
-        let (lo, hi) = (
-            ((x - reach) * g as f64).floor() as i64,
-            ((x + reach) * g as f64).floor() as i64,
-        );
-        if torus {
-            (lo, hi)
-        } else {
-            (lo.max(0), hi.min(g - 1))
-        }
-    };
+    let range = |x: f64| buckets.span(x, reach, torus);
     let (rx, ry, rz) = (range(p[0]), range(p[1]), range(p[2]));
-    // A bucket of the unrolled grid: its bucket in the grid and the period shift.
-    let wrap = |b: i64| (b.rem_euclid(g) as usize, b.div_euclid(g) as f64);
+    let wrap = |b: i64| buckets.unroll(b);
     for bz in rz.0..=rz.1 {
         let (uz, sz) = wrap(bz);
         for by in ry.0..=ry.1 {
