@@ -119,28 +119,36 @@ pub struct LdbnTable {
     entries: [u8; LDBN_PERIOD * LDBN_PERIOD],
 }
 
-/// Whether `entries` is a table: the low nibbles of each aligned run of 16 down a column
-/// are distinct, and the high nibbles of each aligned run of 16 along a row.
-const fn valid(entries: &[u8; LDBN_PERIOD * LDBN_PERIOD]) -> bool {
+/// Whether every aligned group of `g` (a power of two, at most 16) entries down each
+/// column has distinct low nibbles mod `g`, and every such group along each row distinct
+/// high nibbles mod `g`.
+const fn groups_distinct(entries: &[u8; LDBN_PERIOD * LDBN_PERIOD], g: usize) -> bool {
+    let full = (1u32 << g) - 1;
     let mut a = 0;
     while a < LDBN_PERIOD {
         let mut start = 0;
         while start < LDBN_PERIOD {
             let (mut down, mut along) = (0u32, 0u32);
             let mut j = 0;
-            while j < LDBN_TILE {
-                down |= 1 << (entries[a + LDBN_PERIOD * (start + j)] & 15);
-                along |= 1 << (entries[start + j + LDBN_PERIOD * a] >> 4);
+            while j < g {
+                down |= 1 << (entries[a + LDBN_PERIOD * (start + j)] as usize & (g - 1));
+                along |= 1 << ((entries[start + j + LDBN_PERIOD * a] >> 4) as usize & (g - 1));
                 j += 1;
             }
-            if down != 0xFFFF || along != 0xFFFF {
+            if down != full || along != full {
                 return false;
             }
-            start += LDBN_TILE;
+            start += g;
         }
         a += 1;
     }
     true
+}
+
+/// Whether `entries` is a table: the low nibbles of each aligned run of 16 down a column
+/// are distinct, and the high nibbles of each aligned run of 16 along a row.
+const fn valid(entries: &[u8; LDBN_PERIOD * LDBN_PERIOD]) -> bool {
+    groups_distinct(entries, LDBN_TILE)
 }
 
 /// The largest `s <= 3` such that in every run of `entries`, down the columns (low
@@ -148,26 +156,7 @@ const fn valid(entries: &[u8; LDBN_PERIOD * LDBN_PERIOD]) -> bool {
 /// `r <= s`, has distinct low `r` bits.
 const fn nesting(entries: &[u8; LDBN_PERIOD * LDBN_PERIOD]) -> u32 {
     let mut s = 0;
-    while s < 3 {
-        let g = 1usize << (s + 1);
-        let mut a = 0;
-        while a < LDBN_PERIOD {
-            let mut start = 0;
-            while start < LDBN_PERIOD {
-                let (mut down, mut along) = (0u32, 0u32);
-                let mut j = 0;
-                while j < g {
-                    down |= 1 << (entries[a + LDBN_PERIOD * (start + j)] as usize & (g - 1));
-                    along |= 1 << ((entries[start + j + LDBN_PERIOD * a] >> 4) as usize & (g - 1));
-                    j += 1;
-                }
-                if down != (1 << g) - 1 || along != (1 << g) - 1 {
-                    return s;
-                }
-                start += g;
-            }
-            a += 1;
-        }
+    while s < 3 && groups_distinct(entries, 1 << (s + 1)) {
         s += 1;
     }
     s
