@@ -10,7 +10,7 @@
 //! paper builds it by placing matrix cells one after another where a repulsive force
 //! field of the cells placed so far is lowest, once, and ships it. By default the matrix
 //! is the shipped `256 x 256` table [`FORCING_MATRIX`], built that way
-//! ([`super::force_field`], force `exp(-sqrt(1.5 r))`, a little wider than the paper's so
+//! ([`super::force_field`], force `exp(-sqrt(1.25 r))` (width 1.6), wider than the paper's so
 //! that the sparse thresholds of a few thousand points are evenly spaced;
 //! `examples/gen_forcing_matrix.rs` writes it), and the seed
 //! picks one of its `8 x 256^2` images under the symmetries of the square and toroidal
