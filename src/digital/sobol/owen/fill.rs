@@ -16,9 +16,7 @@ use super::{REVERSED4, reversed4, reversed4_high, reversed4_low};
 use crate::bits::reversed_to_f32;
 use crate::dispatch::{self, Kernel};
 use crate::error::{Error, Result};
-use crate::hash::{
-    hash3_key, hash3_keyed, laine_karras, vegdahl_multiplier, vegdahl_prepared,
-};
+use crate::hash::{hash3_key, hash3_keyed, laine_karras, vegdahl_multiplier, vegdahl_prepared};
 use crate::randomize::{FastOwen, OwenHash, dimension_seeds};
 
 /// The third argument of the hash in [`crate::randomize::dimension_seed`].
@@ -70,7 +68,13 @@ impl Kernel for Run16<'_> {
     type Output = ();
     #[inline(always)]
     fn run(self) {
-        run16_hashed(&self.s.keys, self.s.owen.hash(), self.first, self.out, Lanes);
+        run16_hashed(
+            &self.s.keys,
+            self.s.owen.hash(),
+            self.first,
+            self.out,
+            Lanes,
+        );
     }
     #[cfg(all(feature = "std", target_arch = "x86_64"))]
     #[inline(always)]
@@ -776,8 +780,9 @@ mod tests {
     /// Every build of the reseeded fill against a reseed and the scalar `sample4_f32`
     /// point by point (whose keys come from `dimension_seeds`, not from the eight-lane
     /// `keys8`): 1 to 19 seeds (whole groups of eight and the rest), blocks that are aligned
-    /// runs of 16, runs of 16 not starting at a multiple of 16, and blocks of 1, 5 and 33
-    /// scattered indices; both hashes.
+    /// runs of 16 (one after another, across a 256-point boundary, and all the same run),
+    /// runs of 16 not starting at a multiple of 16, and blocks of 1, 5 and 33 scattered
+    /// indices; both hashes.
     #[test]
     fn every_build_of_the_reseeded_fill_matches_reseeding() {
         let scattered: Vec<u32> = (0..19 * 33u32)
@@ -791,9 +796,13 @@ mod tests {
                     .collect();
                 let aligned: Vec<u32> = (0..16 * n_seeds as u32).map(|k| k + 4096).collect();
                 let shifted: Vec<u32> = (0..16 * n_seeds as u32).map(|k| k + 8).collect();
+                // Every pixel on the same run (a renderer's samples 0..16 of each pixel):
+                // not the run after the previous one.
+                let repeated: Vec<u32> = (0..16 * n_seeds as u32).map(|k| k % 16 + 32).collect();
                 let cases = [
                     aligned,
                     shifted,
+                    repeated,
                     scattered[..n_seeds].to_vec(),
                     scattered[..5 * n_seeds].to_vec(),
                     scattered[..33 * n_seeds].to_vec(),
