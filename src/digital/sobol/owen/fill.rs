@@ -115,6 +115,7 @@ fn spread(x: [u32; TABLE_DIMS]) -> [u32; 16] {
 /// [`crate::hash::laine_karras`] lane by lane).
 trait Hash16: Copy {
     /// The keys spread over the lanes, and their parts of the hash.
+    #[cfg_attr(not(target_pointer_width = "64"), allow(dead_code))]
     fn prepare(keys: &[u32; TABLE_DIMS]) -> Self;
     /// `hash(x[k], keys[k % 4])` for every lane `k`.
     #[cfg_attr(not(target_pointer_width = "64"), allow(dead_code))]
