@@ -158,6 +158,25 @@ impl Avx512 {
     }
 }
 
+#[cfg(all(feature = "std", target_arch = "x86_64"))]
+impl Avx512 {
+    /// `a == b`, lane by lane for all 16 lanes: one `vpcmpneqd` into a mask register and a
+    /// test of the mask (the compiler's own form of the 16 comparisons gathers the lanes
+    /// piecewise, about ten instructions).
+    #[inline(always)]
+    pub(crate) fn lanes_equal(self, a: [u32; 16], b: [u32; 16]) -> bool {
+        use core::arch::x86_64::{__m512i, _mm512_cmpneq_epi32_mask};
+        // SAFETY: `[u32; 16]` and `__m512i` are both 64 bytes with every bit pattern valid,
+        // so the transmutes are sound. The intrinsic requires avx512f, which `self` proves
+        // the CPU has (see the type).
+        unsafe {
+            let a = core::mem::transmute::<[u32; 16], __m512i>(a);
+            let b = core::mem::transmute::<[u32; 16], __m512i>(b);
+            _mm512_cmpneq_epi32_mask(a, b) == 0
+        }
+    }
+}
+
 /// `k.run()` in the widest build that is at most `want` and that the CPU runs. Inlined
 /// into its caller, so the kernel's arguments are passed on without another copy.
 #[inline(always)]
@@ -379,6 +398,43 @@ mod tests {
             assert_eq!(f.to_bits(), want.to_bits(), "{x}");
             assert!(f as f64 <= x as f64);
         }
+    }
+
+    /// The AVX-512 build's lane comparison (`Avx512::lanes_equal`, reached only through
+    /// `run_at` after detection) against `==` on the arrays: equal arrays, and arrays that
+    /// differ in one lane only, in each of the 16 lanes and by each single bit. Skipped (with
+    /// a note) on CPUs without the build.
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn the_avx512_lane_comparison_is_array_equality() {
+        struct Eq16<'a>(&'a [([u32; 16], [u32; 16])]);
+        impl Kernel for Eq16<'_> {
+            type Output = Option<Vec<bool>>;
+            #[inline(always)]
+            fn run(self) -> Option<Vec<bool>> {
+                None
+            }
+            #[inline(always)]
+            fn run_avx512(self, cpu: Avx512) -> Option<Vec<bool>> {
+                Some(self.0.iter().map(|&(a, b)| cpu.lanes_equal(a, b)).collect())
+            }
+        }
+        let a: [u32; 16] = core::array::from_fn(|k| (k as u32).wrapping_mul(0x9E37_79B9) ^ 0x55);
+        let mut pairs = vec![(a, a), ([0; 16], [0; 16]), ([u32::MAX; 16], [u32::MAX; 16])];
+        for lane in 0..16 {
+            for bit in 0..32 {
+                let mut b = a;
+                b[lane] ^= 1 << bit;
+                pairs.extend([(a, b), (b, a)]);
+            }
+        }
+        let Some(got) = run_at(Level::Avx512Gfni, Eq16(&pairs)) else {
+            println!("no AVX-512 GFNI build on this CPU: lane comparison not tested");
+            return;
+        };
+        let want: Vec<bool> = pairs.iter().map(|(a, b)| a == b).collect();
+        assert_eq!(got, want);
+        assert_eq!(want.iter().filter(|&&e| e).count(), 3);
     }
 
     /// The cached level is the detected one, and stays so.

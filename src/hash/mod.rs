@@ -17,6 +17,7 @@ mod nested;
 pub mod pbrt;
 
 pub use nested::{laine_karras, vegdahl};
+pub(crate) use nested::{vegdahl_multiplier, vegdahl_prepared};
 
 /// A bijective 64-bit mixer: the `splitmix64` finalizer (Steele, Lea & Flood 2014, with
 /// Stafford's "Mix13" constants). Every output bit depends on every input bit.

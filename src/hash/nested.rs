@@ -21,9 +21,24 @@ pub const fn laine_karras(x: u32, seed: u32) -> u32 {
 /// (multiplications by odd numbers and `x ^= x * even`), a bijection.
 #[inline]
 pub const fn vegdahl(x: u32, seed: u32) -> u32 {
+    vegdahl_prepared(x, seed, vegdahl_multiplier(seed))
+}
+
+/// The odd multiplier of [`vegdahl`] for `seed`, `(seed >> 16) | 1`: the part of the hash
+/// that depends on the seed alone, for loops hashing many values with one seed.
+#[inline]
+pub(crate) const fn vegdahl_multiplier(seed: u32) -> u32 {
+    (seed >> 16) | 1
+}
+
+/// [`vegdahl`] with its seed-only part given: `vegdahl(x, seed) == vegdahl_prepared(x, seed,
+/// vegdahl_multiplier(seed))` (the same steps; `vegdahl` is this with the multiplier
+/// computed).
+#[inline]
+pub(crate) const fn vegdahl_prepared(x: u32, seed: u32, multiplier: u32) -> u32 {
     let mut x = x ^ x.wrapping_mul(0x3D20_ADEA);
     x = x.wrapping_add(seed);
-    x = x.wrapping_mul((seed >> 16) | 1);
+    x = x.wrapping_mul(multiplier);
     x ^= x.wrapping_mul(0x0552_6C56);
     x ^= x.wrapping_mul(0x53A2_2864);
     x

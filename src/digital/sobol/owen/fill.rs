@@ -16,7 +16,7 @@ use super::{REVERSED4, reversed4, reversed4_high, reversed4_low};
 use crate::bits::reversed_to_f32;
 use crate::dispatch::{self, Kernel};
 use crate::error::{Error, Result};
-use crate::hash::{hash3_key, hash3_keyed};
+use crate::hash::{hash3_key, hash3_keyed, laine_karras, vegdahl_multiplier, vegdahl_prepared};
 use crate::randomize::{FastOwen, OwenHash, dimension_seeds};
 
 /// The third argument of the hash in [`crate::randomize::dimension_seed`].
@@ -38,7 +38,7 @@ pub(super) fn dispatched(s: &OwenSobol, indices: &[u32], out: &mut [[f32; 4]]) -
     if let (Ok(i16), Ok(o16)) = (
         <&[u32; 16]>::try_from(indices),
         <&mut [[f32; 4]; 16]>::try_from(&mut *out),
-    ) && is_aligned_run(i16)
+    ) && is_aligned_run(i16, Lanes)
     {
         let first = i16[0];
         dispatch::run_at(dispatch::level(), Run16 { s, first, out: o16 });
@@ -83,7 +83,7 @@ impl Kernel for Run16<'_> {
     }
 }
 
-/// [`run16_f32`] with the hash chosen at run time.
+/// [`run16_f32`] of one seed's `keys` with the hash chosen at run time.
 #[cfg(target_pointer_width = "64")]
 #[inline(always)]
 fn run16_hashed<F: Finish>(
@@ -93,9 +93,81 @@ fn run16_hashed<F: Finish>(
     out: &mut [[f32; 4]; 16],
     finish: F,
 ) {
+    let high = spread(reversed4_high(first));
     match hash {
-        OwenHash::Vegdahl => run16_f32(keys, first, out, crate::hash::vegdahl, finish),
-        OwenHash::LaineKarras => run16_f32(keys, first, out, crate::hash::laine_karras, finish),
+        OwenHash::Vegdahl => run16_f32(&Vegdahl16::prepare(keys), &high, first, out, finish),
+        OwenHash::LaineKarras => {
+            run16_f32(&LaineKarras16::prepare(keys), &high, first, out, finish);
+        }
+    }
+}
+
+/// The four lanes of a point spread over the 16 lanes of four points.
+#[cfg(target_pointer_width = "64")]
+#[inline(always)]
+fn spread(x: [u32; TABLE_DIMS]) -> [u32; 16] {
+    core::array::from_fn(|k| x[k % TABLE_DIMS])
+}
+
+/// The nested hash on 16 lanes (four points, lane `k` of dimension `k % 4`) with one seed's
+/// four keys, whatever depends on the keys alone computed once, by [`prepare`](Self::prepare),
+/// before the loops (the same bits as [`crate::hash::vegdahl`] or
+/// [`crate::hash::laine_karras`] lane by lane).
+trait Hash16: Copy {
+    /// The keys spread over the lanes, and their parts of the hash.
+    #[cfg_attr(not(target_pointer_width = "64"), allow(dead_code))]
+    fn prepare(keys: &[u32; TABLE_DIMS]) -> Self;
+    /// `hash(x[k], keys[k % 4])` for every lane `k`.
+    #[cfg_attr(not(target_pointer_width = "64"), allow(dead_code))]
+    fn hash16(&self, x: &[u32; 16]) -> [u32; 16];
+}
+
+/// Vegdahl's hash with the keys and their odd multipliers ([`vegdahl_multiplier`]) as lanes.
+#[derive(Clone, Copy)]
+struct Vegdahl16 {
+    key: [u32; 16],
+    multiplier: [u32; 16],
+}
+
+impl Hash16 for Vegdahl16 {
+    #[inline(always)]
+    fn prepare(keys: &[u32; TABLE_DIMS]) -> Self {
+        let key: [u32; 16] = core::array::from_fn(|k| keys[k % TABLE_DIMS]);
+        Vegdahl16 {
+            key,
+            multiplier: key.map(vegdahl_multiplier),
+        }
+    }
+    #[inline(always)]
+    fn hash16(&self, x: &[u32; 16]) -> [u32; 16] {
+        let mut h = [0u32; 16];
+        for k in 0..16 {
+            h[k] = vegdahl_prepared(x[k], self.key[k], self.multiplier[k]);
+        }
+        h
+    }
+}
+
+/// The Laine–Karras hash with the keys as lanes.
+#[derive(Clone, Copy)]
+struct LaineKarras16 {
+    key: [u32; 16],
+}
+
+impl Hash16 for LaineKarras16 {
+    #[inline(always)]
+    fn prepare(keys: &[u32; TABLE_DIMS]) -> Self {
+        LaineKarras16 {
+            key: core::array::from_fn(|k| keys[k % TABLE_DIMS]),
+        }
+    }
+    #[inline(always)]
+    fn hash16(&self, x: &[u32; 16]) -> [u32; 16] {
+        let mut h = [0u32; 16];
+        for k in 0..16 {
+            h[k] = laine_karras(x[k], self.key[k]);
+        }
+        h
     }
 }
 
@@ -173,16 +245,17 @@ impl Kernel for Reseeded<'_> {
 #[inline(always)]
 fn reseeded_blocks<F: Finish>(k: Reseeded<'_>, finish: F) {
     match k.s.owen.hash() {
-        OwenHash::Vegdahl => reseeded_with(k, crate::hash::vegdahl, finish),
-        OwenHash::LaineKarras => reseeded_with(k, crate::hash::laine_karras, finish),
+        OwenHash::Vegdahl => reseeded_with::<Vegdahl16, F>(k, finish),
+        OwenHash::LaineKarras => reseeded_with::<LaineKarras16, F>(k, finish),
     }
 }
 
 /// The keys of eight seeds at a time as eight lanes ([`keys8`]), then each seed's block of
 /// points: a block that is one run of 16 from a multiple of 16 (a pixel's samples) straight
-/// as [`run16_f32`], any other as [`fill_blocks`] does it.
+/// as [`run16_f32`], any other as [`fill_blocks`] does it. Blocks of 16 points (a pixel's
+/// samples) go through their own loop ([`reseeded16`]).
 #[inline(always)]
-fn reseeded_with<F: Finish>(k: Reseeded<'_>, hash: impl Fn(u32, u32) -> u32 + Copy, finish: F) {
+fn reseeded_with<H: Hash16, F: Finish>(k: Reseeded<'_>, finish: F) {
     let Reseeded {
         s,
         seeds,
@@ -190,6 +263,13 @@ fn reseeded_with<F: Finish>(k: Reseeded<'_>, hash: impl Fn(u32, u32) -> u32 + Co
         indices,
         out,
     } = k;
+    #[cfg(target_pointer_width = "64")]
+    if per_seed == 16 {
+        let (idx16, _) = indices.as_chunks::<16>();
+        let (out16, _) = out.as_chunks_mut::<16>();
+        reseeded16::<H, F>(s, seeds, idx16, out16, finish);
+        return;
+    }
     let mut blocks = indices
         .chunks_exact(per_seed)
         .zip(out.chunks_exact_mut(per_seed));
@@ -200,42 +280,128 @@ fn reseeded_with<F: Finish>(k: Reseeded<'_>, hash: impl Fn(u32, u32) -> u32 + Co
             let Some((idx, out)) = blocks.next() else {
                 return;
             };
-            block(s, seed, keys, idx, out, hash, finish);
+            block::<H, F>(s, seed, keys, idx, out, finish);
         }
     }
     for (&seed, (idx, out)) in rest.iter().zip(blocks) {
-        block(s, seed, dimension_seeds(seed, 0), idx, out, hash, finish);
+        block::<H, F>(s, seed, dimension_seeds(seed, 0), idx, out, finish);
+    }
+}
+
+/// [`reseeded_with`] with 16 points a seed: the keys of eight seeds at a time
+/// ([`keys8`]), then each seed's run of 16 as [`run16_f32`] (checked against the previous
+/// run plus 16 first, then against its own first index), any other block of 16 as
+/// [`fill_with`]. The upper part of the table XOR is kept while the runs share it.
+#[cfg(target_pointer_width = "64")]
+#[inline(always)]
+fn reseeded16<H: Hash16, F: Finish>(
+    s: &OwenSobol,
+    seeds: &[u64],
+    indices: &[[u32; 16]],
+    out: &mut [[[f32; 4]; 16]],
+    finish: F,
+) {
+    let mut run = Runs {
+        upper: u32::MAX,
+        high: [0; 16],
+        next: indices.first().map_or(0, |i| i[0]),
+    };
+    let mut blocks = indices.iter().zip(out.iter_mut());
+    let (seeds8, rest) = seeds.as_chunks::<8>();
+    // Software-pipelined: the keys of the next eight seeds are hashed before this eight's
+    // points, so that their long chains of dependent multiplies (three `mix64` deep)
+    // overlap the fills instead of stalling the next eight.
+    let mut keys = seeds8.first().map(keys8);
+    for (g, seeds) in seeds8.iter().enumerate() {
+        let Some(now) = keys else {
+            return;
+        };
+        keys = seeds8.get(g + 1).map(keys8);
+        for (&seed, keys) in seeds.iter().zip(&now) {
+            let Some((i, o)) = blocks.next() else {
+                return;
+            };
+            run.pixel::<H, F>(s, seed, keys, i, o, finish);
+        }
+    }
+    for (&seed, (i, o)) in rest.iter().zip(blocks) {
+        run.pixel::<H, F>(s, seed, &dimension_seeds(seed, 0), i, o, finish);
+    }
+}
+
+/// What [`reseeded16`] carries from one pixel to the next.
+#[cfg(target_pointer_width = "64")]
+struct Runs {
+    /// `index >> 8` of the runs `high` belongs to (`u32::MAX`: none yet).
+    upper: u32,
+    /// [`reversed4_high`] of those runs, spread over 16 lanes.
+    high: [u32; 16],
+    /// The first index of the next run if the runs go on (a sequential fill).
+    next: u32,
+}
+
+#[cfg(target_pointer_width = "64")]
+impl Runs {
+    /// One pixel: `s` with `seed` (whose keys are `keys`) on the 16 indices `i`.
+    #[inline(always)]
+    fn pixel<H: Hash16, F: Finish>(
+        &mut self,
+        s: &OwenSobol,
+        seed: u64,
+        keys: &[u32; TABLE_DIMS],
+        i: &[u32; 16],
+        o: &mut [[f32; 4]; 16],
+        finish: F,
+    ) {
+        let first = if is_run_from(i, self.next, finish) {
+            self.next
+        } else if is_aligned_run(i, finish) {
+            i[0]
+        } else {
+            let s = OwenSobol {
+                dims: s.dims,
+                owen: FastOwen::with_hash(seed, s.owen.hash()),
+                keys: *keys,
+            };
+            fill_with::<H, F>(&s, i, o, finish);
+            return;
+        };
+        self.next = first.wrapping_add(16);
+        if first >> 8 != self.upper {
+            self.upper = first >> 8;
+            self.high = spread(reversed4_high(first));
+        }
+        run16_f32(&H::prepare(keys), &self.high, first, o, finish);
     }
 }
 
 /// One block of [`reseeded_with`]: `s` with `seed` (whose keys are `keys`) on `idx`.
 #[inline(always)]
-fn block<F: Finish>(
+fn block<H: Hash16, F: Finish>(
     s: &OwenSobol,
     seed: u64,
     keys: [u32; TABLE_DIMS],
     idx: &[u32],
     out: &mut [[f32; 4]],
-    hash: impl Fn(u32, u32) -> u32 + Copy,
     finish: F,
 ) {
     #[cfg(target_pointer_width = "64")]
     if let (Ok(i16), Ok(o16)) = (
         <&[u32; 16]>::try_from(idx),
         <&mut [[f32; 4]; 16]>::try_from(&mut *out),
-    ) && is_aligned_run(i16)
+    ) && is_aligned_run(i16, finish)
     {
-        run16_f32(&keys, i16[0], o16, hash, finish);
+        let first = i16[0];
+        let high = spread(reversed4_high(first));
+        run16_f32(&H::prepare(&keys), &high, first, o16, finish);
         return;
     }
-    #[cfg(not(target_pointer_width = "64"))]
-    let _ = hash;
     let s = OwenSobol {
         dims: s.dims,
         owen: FastOwen::with_hash(seed, s.owen.hash()),
         keys,
     };
-    fill_blocks(&s, idx, out, finish);
+    fill_with::<H, F>(&s, idx, out, finish);
 }
 
 /// [`crate::randomize::dimension_seeds`]`(seed, 0)` of eight seeds, as lanes: the same
@@ -329,6 +495,17 @@ trait Finish: Copy {
     /// The sixteen values (32-bit targets go point by point and do not call it).
     #[cfg_attr(not(target_pointer_width = "64"), allow(dead_code))]
     fn f32x16(self, h: &[u32; 16]) -> [f32; 16];
+
+    /// `a == b` for all 16 lanes.
+    #[cfg_attr(not(target_pointer_width = "64"), allow(dead_code))]
+    #[inline(always)]
+    fn lanes_equal(self, a: &[u32; 16], b: &[u32; 16]) -> bool {
+        let mut same = true;
+        for (a, b) in a.iter().zip(b) {
+            same &= a == b;
+        }
+        same
+    }
 }
 
 /// [`reversed_to_f32`] lane by lane (the portable and AVX2 builds).
@@ -362,12 +539,15 @@ impl Finish for dispatch::Avx512 {
         }
         y
     }
+
+    #[inline(always)]
+    fn lanes_equal(self, a: &[u32; 16], b: &[u32; 16]) -> bool {
+        dispatch::Avx512::lanes_equal(self, *a, *b)
+    }
 }
 
 /// The loop of every [`OwenSobol::fill_f32`] build (the lengths are checked by the caller;
-/// the shorter one bounds the loop). On 64-bit targets runs of 16 points and blocks of
-/// four ([`fill16`], [`block_f32`]); the last `len % 4` points go one by one. 32-bit
-/// targets go point by point (small code).
+/// the shorter one bounds the loop), for the sampler's hash ([`fill_with`]).
 #[inline(always)]
 fn fill_blocks<F: Finish>(s: &OwenSobol, indices: &[u32], out: &mut [[f32; 4]], finish: F) {
     let n = indices.len().min(out.len());
@@ -381,32 +561,38 @@ fn fill_blocks<F: Finish>(s: &OwenSobol, indices: &[u32], out: &mut [[f32; 4]], 
     if let (Ok(i16), Ok(o16)) = (
         <&[u32; 16]>::try_from(indices),
         <&mut [[f32; 4]; 16]>::try_from(&mut *out),
-    ) && is_aligned_run(i16)
+    ) && is_aligned_run(i16, finish)
     {
         run16_hashed(&s.keys, s.owen.hash(), i16[0], o16, finish);
         return;
     }
+    match s.owen.hash() {
+        OwenHash::Vegdahl => fill_with::<Vegdahl16, F>(s, indices, out, finish),
+        OwenHash::LaineKarras => fill_with::<LaineKarras16, F>(s, indices, out, finish),
+    }
+}
+
+/// [`fill_blocks`] with the hash `H` (equal lengths): on 64-bit targets runs of 16 points
+/// and blocks of four ([`fill16`], [`block_f32`]), the keys' parts of the hash prepared once
+/// for the whole call; the last `len % 4` points go one by one. 32-bit targets go point by
+/// point (small code).
+#[inline(always)]
+fn fill_with<H: Hash16, F: Finish>(
+    s: &OwenSobol,
+    indices: &[u32],
+    out: &mut [[f32; 4]],
+    finish: F,
+) {
     #[cfg(target_pointer_width = "64")]
     let (indices, out) = {
+        let h = H::prepare(&s.keys);
         let (idx16, idx_rest) = indices.as_chunks::<16>();
         let (out16, out_rest) = out.as_chunks_mut::<16>();
-        match s.owen.hash() {
-            OwenHash::Vegdahl => fill16(s, idx16, out16, crate::hash::vegdahl, finish),
-            OwenHash::LaineKarras => fill16(s, idx16, out16, crate::hash::laine_karras, finish),
-        }
+        fill16(&h, idx16, out16, finish);
         let (idx4, idx_rest) = idx_rest.as_chunks::<4>();
         let (out4, out_rest) = out_rest.as_chunks_mut::<4>();
-        match s.owen.hash() {
-            OwenHash::Vegdahl => {
-                for (o, i) in out4.iter_mut().zip(idx4) {
-                    *o = block_f32(s, i, crate::hash::vegdahl, finish);
-                }
-            }
-            OwenHash::LaineKarras => {
-                for (o, i) in out4.iter_mut().zip(idx4) {
-                    *o = block_f32(s, i, crate::hash::laine_karras, finish);
-                }
-            }
+        for (o, i) in out4.iter_mut().zip(idx4) {
+            *o = block_f32(&h, i, finish);
         }
         (idx_rest, out_rest)
     };
@@ -419,24 +605,42 @@ fn fill_blocks<F: Finish>(s: &OwenSobol, indices: &[u32], out: &mut [[f32; 4]], 
 
 /// Sixteen points at a time: a run of 16 consecutive indices from a multiple of 16 (a
 /// pixel's samples, a sequential fill) as whole rows of the low-byte table
-/// ([`run16_f32`]), other indices as four blocks of four ([`block_f32`]).
+/// ([`run16_f32`]), other indices as four blocks of four ([`block_f32`]). The upper part
+/// of the table XOR ([`reversed4_high`]) is kept from one run to the next while the runs
+/// share their upper three bytes (16 runs in a row in a sequential fill).
 #[cfg(target_pointer_width = "64")]
 #[inline(always)]
-fn fill16<F: Finish>(
-    s: &OwenSobol,
+fn fill16<H: Hash16, F: Finish>(
+    h: &H,
     indices: &[[u32; 16]],
     out: &mut [[[f32; 4]; 16]],
-    hash: impl Fn(u32, u32) -> u32 + Copy,
     finish: F,
 ) {
+    // `index >> 8` of the runs `high` belongs to: none yet (`index >> 8 < 2^24`).
+    let mut upper = u32::MAX;
+    let mut high = [0u32; 16];
+    // The first index of the next run if the runs go on (a sequential fill).
+    let mut next = indices.first().map_or(0, |i| i[0]);
     for (o, i) in out.iter_mut().zip(indices) {
-        if is_aligned_run(i) {
-            run16_f32(&s.keys, i[0], o, hash, finish);
+        let first = if is_run_from(i, next, finish) {
+            Some(next)
+        } else if is_aligned_run(i, finish) {
+            Some(i[0])
+        } else {
+            None
+        };
+        if let Some(first) = first {
+            next = first.wrapping_add(16);
+            if first >> 8 != upper {
+                upper = first >> 8;
+                high = spread(reversed4_high(first));
+            }
+            run16_f32(h, &high, first, o, finish);
         } else {
             let (o4, _) = o.as_chunks_mut::<4>();
             let (i4, _) = i.as_chunks::<4>();
             for (o, i) in o4.iter_mut().zip(i4) {
-                *o = block_f32(s, i, hash, finish);
+                *o = block_f32(h, i, finish);
             }
         }
     }
@@ -446,13 +650,19 @@ fn fill16<F: Finish>(
 /// their upper three bytes and their low bytes are one run of table rows).
 #[cfg(target_pointer_width = "64")]
 #[inline(always)]
-fn is_aligned_run(idx: &[u32; 16]) -> bool {
-    let first = idx[0];
-    let mut same = first.is_multiple_of(16);
-    for (k, &i) in idx.iter().enumerate() {
-        same &= i == first.wrapping_add(k as u32);
-    }
-    same
+fn is_aligned_run(idx: &[u32; 16], finish: impl Finish) -> bool {
+    is_run_from(idx, idx[0] & !15, finish)
+}
+
+/// `true` when `idx` is `first, first + 1, .., first + 15` and `first` is a multiple of 16:
+/// `idx[k] ^ k == first` for every lane (then `first ^ k = first + k`; with the low bits of
+/// `first` set, lane 0 differs). With `first` a predicted value (the previous run's plus
+/// 16) rather than a read of `idx[0]`, this is one vector XOR and compare.
+#[cfg(target_pointer_width = "64")]
+#[inline(always)]
+fn is_run_from(idx: &[u32; 16], first: u32, finish: impl Finish) -> bool {
+    let run: [u32; 16] = core::array::from_fn(|k| first ^ k as u32);
+    first.is_multiple_of(16) && finish.lanes_equal(idx, &run)
 }
 
 /// Sixteen points `first .. first + 16` (`first` a multiple of 16) into `out` as 64
@@ -460,14 +670,13 @@ fn is_aligned_run(idx: &[u32; 16]) -> bool {
 /// the hash and [`Finish`] on four arrays of 16 lanes (four AVX-512 vectors).
 #[cfg(target_pointer_width = "64")]
 #[inline(always)]
-fn run16_f32<F: Finish>(
-    keys: &[u32; TABLE_DIMS],
+fn run16_f32<H: Hash16, F: Finish>(
+    h: &H,
+    high: &[u32; 16],
     first: u32,
     out: &mut [[f32; 4]; 16],
-    hash: impl Fn(u32, u32) -> u32,
     finish: F,
 ) {
-    let high = reversed4_high(first);
     let low = (first & 0xF0) as usize;
     let Some(Ok(rows)) = REVERSED4[0]
         .as_flattened()
@@ -476,8 +685,6 @@ fn run16_f32<F: Finish>(
     else {
         return; // unreachable: low + 16 <= 256
     };
-    let high: [u32; 16] = core::array::from_fn(|k| high[k % 4]);
-    let keys: [u32; 16] = core::array::from_fn(|k| keys[k % 4]);
     // Computed in a local array and stored in one copy: the loop then reads and writes
     // only its own arrays, so it compiles to straight vector code (no run-time overlap
     // check against `out`), and the key-only parts of the hash are computed once.
@@ -485,11 +692,11 @@ fn run16_f32<F: Finish>(
     let (ys, _) = y.as_chunks_mut::<16>();
     let (rows, _) = rows.as_chunks::<16>();
     for (o, r) in ys.iter_mut().zip(rows) {
-        let mut h = [0u32; 16];
+        let mut x = [0u32; 16];
         for k in 0..16 {
-            h[k] = hash(r[k] ^ high[k], keys[k]);
+            x[k] = r[k] ^ high[k];
         }
-        *o = finish.f32x16(&h);
+        *o = finish.f32x16(&h.hash16(&x));
     }
     out.as_flattened_mut().copy_from_slice(&y);
 }
@@ -498,12 +705,7 @@ fn run16_f32<F: Finish>(
 /// hash over all 16 with the keys spread to 16 lanes, and [`Finish`].
 #[cfg(target_pointer_width = "64")]
 #[inline(always)]
-fn block_f32<F: Finish>(
-    s: &OwenSobol,
-    idx: &[u32; 4],
-    hash: impl Fn(u32, u32) -> u32,
-    finish: F,
-) -> [[f32; 4]; 4] {
+fn block_f32<H: Hash16, F: Finish>(h: &H, idx: &[u32; 4], finish: F) -> [[f32; 4]; 4] {
     let mut x = [0u32; 16];
     // Four indices with the same upper three bytes (consecutive ones, 63 blocks in 64)
     // share those bytes' table reads: 7 reads for the block instead of 16.
@@ -524,12 +726,7 @@ fn block_f32<F: Finish>(
             }
         }
     }
-    let keys: [u32; 16] = core::array::from_fn(|k| s.keys[k % 4]);
-    let mut h = [0u32; 16];
-    for ((h, &x), &key) in h.iter_mut().zip(&x).zip(&keys) {
-        *h = hash(x, key);
-    }
-    let y = finish.f32x16(&h);
+    let y = finish.f32x16(&h.hash16(&x));
     core::array::from_fn(|p| core::array::from_fn(|lane| y[(4 * p + lane) % 16]))
 }
 
@@ -584,8 +781,9 @@ mod tests {
     /// Every build of the reseeded fill against a reseed and the scalar `sample4_f32`
     /// point by point (whose keys come from `dimension_seeds`, not from the eight-lane
     /// `keys8`): 1 to 19 seeds (whole groups of eight and the rest), blocks that are aligned
-    /// runs of 16, runs of 16 not starting at a multiple of 16, and blocks of 1, 5 and 33
-    /// scattered indices; both hashes.
+    /// runs of 16 (one after another, across a 256-point boundary, and all the same run),
+    /// runs of 16 not starting at a multiple of 16, and blocks of 1, 5 and 33 scattered
+    /// indices; both hashes.
     #[test]
     fn every_build_of_the_reseeded_fill_matches_reseeding() {
         let scattered: Vec<u32> = (0..19 * 33u32)
@@ -599,9 +797,13 @@ mod tests {
                     .collect();
                 let aligned: Vec<u32> = (0..16 * n_seeds as u32).map(|k| k + 4096).collect();
                 let shifted: Vec<u32> = (0..16 * n_seeds as u32).map(|k| k + 8).collect();
+                // Every pixel on the same run (a renderer's samples 0..16 of each pixel):
+                // not the run after the previous one.
+                let repeated: Vec<u32> = (0..16 * n_seeds as u32).map(|k| k % 16 + 32).collect();
                 let cases = [
                     aligned,
                     shifted,
+                    repeated,
                     scattered[..n_seeds].to_vec(),
                     scattered[..5 * n_seeds].to_vec(),
                     scattered[..33 * n_seeds].to_vec(),
