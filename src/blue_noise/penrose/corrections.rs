@@ -107,4 +107,20 @@ mod tests {
         assert_eq!((thin + thick) as usize, CLASSES);
         assert!(CLASSES < usize::from(NO_CLASS));
     }
+
+    /// The bands cut `(phi^-2, 1]` into `BANDS` equal steps of `log t`: the middle of the
+    /// step `b`, `t = phi^(-2 (b + 1/2) / BANDS)`, falls in band `b`, and the ends clamp.
+    #[test]
+    fn bands_are_equal_steps_of_log_t() {
+        for b in 0..BANDS {
+            let mid = PHI.powf(-2.0 * (b as f64 + 0.5) / BANDS as f64);
+            assert_eq!(band(mid), b);
+            let lo = PHI.powf(-2.0 * (b as f64 + 0.99) / BANDS as f64);
+            assert_eq!(band(lo), b, "{b}");
+        }
+        assert_eq!(band(1.0), 0);
+        assert_eq!(band(2.0), 0);
+        assert_eq!(band(1.0 / (PHI * PHI) + 1e-9), BANDS - 1);
+        assert_eq!(band(0.01), BANDS - 1);
+    }
 }
