@@ -66,9 +66,9 @@
 //! three) and values are ours; [`importance`] leaves its samples at the centroids (its
 //! threshold varies over the square, and a table row holds for one band); the depth is
 //! uniform (the paper refines only where the density asks). The sun's centre lies within
-//! 0.1 of the square's, so its ten-fold configuration and a few pairs that the table
-//! pushes together recur around it (about 0.1% of the samples at 1024 points have a
-//! neighbour within 0.1 of the hexagonal spacing).
+//! 0.1 of the square's, so its ten-fold configuration recurs around it, and a few pairs
+//! that the table moves towards each other are sometimes both kept (at 1024 points about
+//! 0.1% of the samples have a neighbour within 0.05 of the hexagonal spacing).
 //!
 //! ## Cost
 //!
