@@ -25,6 +25,8 @@ pub type Table = [[[f64; 2]; CLASSES]; BANDS];
 
 /// The correction table made by [`crate::blue_noise::penrose_train`] (see
 /// `examples/gen_penrose_table.rs`).
+// Trained data: an entry may come near a named constant (1.57070 against pi / 2).
+#[allow(clippy::approx_constant)]
 pub(super) static CORRECTIONS: Table = include!("../../../tables/penrose_corrections.rs");
 
 /// The band of a threshold fraction `t` (`(phi^-2, 1]` maps onto `0 .. BANDS`, outside
