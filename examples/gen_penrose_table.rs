@@ -9,7 +9,7 @@ use qmckit::blue_noise::penrose_train::{table_source, train};
 use qmckit::work::Budget;
 
 fn main() -> Result<(), qmckit::Error> {
-    let trained = train(4096, 20, 3, &Budget::seconds(3600.0)?)?;
+    let trained = train(4096, 40, 6, &Budget::seconds(7200.0)?)?;
     for (i, e) in trained.energy.iter().enumerate() {
         eprintln!("iteration {i}: energy {e:.5}");
     }

@@ -1,22 +1,26 @@
 //! The optimizer of the correction table of [`Penrose`](super::Penrose): Lloyd
 //! relaxation carried out in the leaves' own frames and averaged over each structural
-//! class, as Ostromoukhov, Donohue & Jodoin 2004 learn their correction vectors offline by
-//! relaxation (the procedure here is ours).
+//! class and band, as Ostromoukhov, Donohue & Jodoin 2004 learn their correction vectors
+//! offline by relaxation, one table row for each of 21 positions of the threshold in a
+//! level's period (the procedure here is ours).
 //!
 //! A leaf's class is its index among the leaves of its ancestor five levels up (233
 //! classes: 89 under a thin, 144 under a thick triangle); its band is the threshold
-//! fraction `t` of the set, `(phi^-2, 1]` cut into 4 bands equal in `log t`. An iteration,
-//! for each band (at the band's middle `t`) and each seed, takes the first `t` of the
-//! square's leaves by rank, places them with the current table, and measures each sample's
-//! Lloyd displacement `d` (its Voronoi cell's centroid minus the sample; the cells found
-//! on a raster of 48 pixels a sample, nearest sample by k-d tree). Samples within
-//! `2 / sqrt n` of the border are left out (their cells are cut by it). `d` is written in
-//! the leaf's frame, `d = alpha (b - a) + beta (c - a)` (legs of the leaf), and the mean
-//! `(alpha, beta)` of each class and band is added to its table entry. The table starts at
-//! zero, so the result depends only on the arguments.
+//! fraction `t` of the set, `(phi^-2, 1]` cut into 21 bands equal in `log t`. An iteration,
+//! for each band, at [`SUBS`] values of `t` spread over the band (the middles of its equal
+//! thirds in `log t`, so that every leaf a set of that band can keep is trained), and each
+//! seed, takes the first `t` of the square's leaves by rank, places them with the current
+//! table, and measures each sample's Lloyd displacement `d` (its Voronoi cell's centroid
+//! minus the sample; the cells found on a raster of 48 pixels a sample, nearest sample by
+//! k-d tree). Samples within `2 / sqrt n` of the border are left out (their cells are cut
+//! by it). `d` is written in the leaf's frame, `d = alpha (b - a) + beta (c - a)` (legs of
+//! the leaf), and the mean `(alpha, beta)` of each class and band is added to its table
+//! entry. The table starts at zero, so the result depends only on the arguments. The
+//! squares trained on are those of seeds `2^32 + s`, apart from the seeds of ordinary use.
 //!
-//! Cost: `iterations x bands x seeds x (48 n log n)` for `n` samples (a nearest-sample
-//! search a pixel); estimated against the budget and stopped at its deadline.
+//! Cost: `iterations x bands x SUBS x seeds x (48 n log n)` for `n` samples (a
+//! nearest-sample search a pixel); estimated against the budget and stopped at its
+//! deadline.
 //!
 //! `examples/gen_penrose_table.rs` runs it and writes `tables/penrose_corrections.rs`.
 
@@ -28,11 +32,19 @@ use crate::{Error, Result};
 /// Raster pixels a sample.
 const PIXELS: f64 = 48.0;
 
-/// Nearest-sample searches a second (one core, release; taken low).
-const SEARCHES: Rate = Rate::per_second(3e6);
+/// Nearest-sample searches, each counted as `log2 n` steps, a second (one core, release:
+/// the table of `examples/gen_penrose_table.rs`, 5.2e10 such steps, took 441 s on a loaded
+/// machine, 1.2e8 a second; taken at a quarter of that).
+const SEARCHES: Rate = Rate::per_second(3e7);
 
 /// The golden ratio.
 const PHI: f64 = 1.618_033_988_749_895;
+
+/// Values of the threshold fraction trained in each band.
+pub const SUBS: usize = 3;
+
+/// The seed of the first square trained on.
+const FIRST_SEED: u64 = 1 << 32;
 
 /// A trained table and, per iteration, the mean squared Lloyd displacement over the
 /// interior samples, in units of the squared hexagonal spacing `2 / (sqrt 3 n)`.
@@ -61,14 +73,14 @@ pub fn train(points: u64, iterations: u32, seeds: u64, budget: &Budget) -> Resul
     }
     let budget = budget.started();
     let n = points as f64 * PHI * PHI;
-    let searches = f64::from(iterations) * (BANDS as u64 * seeds) as f64 * PIXELS * n;
+    let searches = f64::from(iterations) * (BANDS as u64 * SUBS as u64 * seeds) as f64 * PIXELS * n;
     budget.check(
         "penrose training",
         Cost::steps(searches * n.log2(), SEARCHES),
     )?;
     let levels = depth_for(points as f64)?;
     let sets = (0..seeds)
-        .map(|s| ranked(levels, s, &budget))
+        .map(|s| ranked(levels, FIRST_SEED + s, &budget))
         .collect::<Result<Vec<_>>>()?;
     let mut table: Table = [[[0.0; 2]; CLASSES]; BANDS];
     let mut energy = Vec::new();
@@ -77,9 +89,11 @@ pub fn train(points: u64, iterations: u32, seeds: u64, budget: &Budget) -> Resul
         let mut sum = [[[0.0f64; 2]; CLASSES]; BANDS];
         let mut count = [[0u64; CLASSES]; BANDS];
         let (mut e_sum, mut e_count) = (0.0, 0u64);
-        for (b, (sum, count)) in sum.iter_mut().zip(count.iter_mut()).enumerate() {
-            // The middle of band b: t = phi^(-2 (b + 1/2) / BANDS).
-            let t = PHI.powf(-2.0 * (b as f64 + 0.5) / BANDS as f64);
+        for bs in 0..BANDS * SUBS {
+            // Band b = bs / SUBS at the middle of its third: t = phi^(-2 (bs + 1/2) / (3 BANDS)).
+            let b = bs / SUBS;
+            let (sum, count) = (&mut sum[b], &mut count[b]);
+            let t = PHI.powf(-2.0 * (bs as f64 + 0.5) / (BANDS * SUBS) as f64);
             for (leaves, frame, _) in &sets {
                 let k = ((t * leaves.len() as f64).round() as usize).clamp(1, leaves.len());
                 let chosen = &leaves[..k];
@@ -167,15 +181,19 @@ fn lloyd_displacements(xy: &[f64], budget: &Budget) -> Result<Vec<[f64; 2]>> {
         .collect())
 }
 
-/// The table as the Rust array literal `tables/penrose_corrections.rs` holds.
+/// The table as the Rust array literal `tables/penrose_corrections.rs` holds: a band a
+/// block, four entries a line, five decimals (a hundred-thousandth of a leg).
 pub fn table_source(table: &Table) -> String {
     let mut s = String::from("[\n");
     for row in table {
-        s.push_str("    [\n");
-        for [a, b] in row {
-            s.push_str(&format!("        [{a:.6}, {b:.6}],\n"));
+        s.push_str("[\n");
+        for line in row.chunks(4) {
+            for [a, b] in line {
+                s.push_str(&format!("[{a:.5},{b:.5}],"));
+            }
+            s.push('\n');
         }
-        s.push_str("    ],\n");
+        s.push_str("],\n");
     }
     s.push_str("]\n");
     s

@@ -227,6 +227,68 @@ fn penrose_corrections_improve_on_the_centroids() {
     assert!(nn > nn0 + 0.1, "mean NN {nn} vs {nn0}");
 }
 
+/// The mean over the rings `r = 1 ..= sqrt(N) / 2` of the periodogram's mean on the
+/// integer frequencies `k` with `|k|` rounded to `r` (white noise: 1).
+fn radial_low_band(x: &[f64]) -> f64 {
+    let n = x.len() / 2;
+    let half = ((n as f64).sqrt() / 2.0).floor() as usize;
+    let s = spectrum_2d(Points::new(x, 2).unwrap(), half + 1, &Budget::DEFAULT).unwrap();
+    let (mut sum, mut count) = (vec![0.0; half + 1], vec![0usize; half + 1]);
+    for (kx, ky, p) in s.iter() {
+        let r = ((kx * kx + ky * ky) as f64).sqrt().round() as usize;
+        if (1..=half).contains(&r) {
+            sum[r] += p;
+            count[r] += 1;
+        }
+    }
+    (1..=half).map(|r| sum[r] / count[r] as f64).sum::<f64>() / half as f64
+}
+
+/// Jittered sampling: one uniform point in each cell of a `g x g` grid.
+fn jittered(g: usize, seed: u64) -> Vec<f64> {
+    let u = crate::common::uniform(g * g * 2, seed);
+    let mut x = Vec::with_capacity(2 * g * g);
+    for j in 0..g {
+        for i in 0..g {
+            let c = 2 * (j * g + i);
+            x.push((i as f64 + u[c]) / g as f64);
+            x.push((j as f64 + u[c + 1]) / g as f64);
+        }
+    }
+    x
+}
+
+#[test]
+fn penrose_at_1024_points_is_spaced_and_quiet_at_low_frequencies() {
+    // The bar Ostromoukhov, Donohue & Jodoin's correction vectors reach in UTK's build
+    // of their code at N = 1024 (docs/utk-comparison.md): mean nearest-neighbour distance
+    // 0.932 / sqrt(N), low band 0.073. Jittered sampling, measured the same way, is far
+    // from both (about 0.64 and 0.24), so both checks can fail.
+    let (n, seeds) = (1024u64, 4u64);
+    let hex_to_root_n = (2.0 / 3f64.sqrt()).sqrt();
+    let (mut nn, mut low, mut nn_j, mut low_j) = (0.0, 0.0, 0.0, 0.0);
+    for seed in 1..=seeds {
+        let x = penrose_set(n, seed);
+        nn += mean_nn_over_hex(&x) * hex_to_root_n / seeds as f64;
+        low += radial_low_band(&x) / seeds as f64;
+        let j = jittered(32, seed);
+        nn_j += mean_nn_over_hex(&j) * hex_to_root_n / seeds as f64;
+        low_j += radial_low_band(&j) / seeds as f64;
+    }
+    eprintln!(
+        "penrose N {n}: mean NN x sqrt(N) {nn:.4} (jittered {nn_j:.4}), low band {low:.4} \
+         (jittered {low_j:.4})"
+    );
+    assert!(nn >= NN_BAR, "mean NN x sqrt(N) {nn}");
+    assert!(low <= LOW_BAR, "low band {low}");
+    assert!(nn_j < NN_BAR && low_j > LOW_BAR, "jittered {nn_j} {low_j}");
+}
+
+/// Mean nearest-neighbour distance x sqrt(N) that Penrose sets of 1024 points reach.
+const NN_BAR: f64 = 0.93;
+/// Low band (rings 1 to sqrt(N)/2) that they stay under.
+const LOW_BAR: f64 = 0.073;
+
 #[test]
 fn penrose_training_lowers_the_lloyd_energy() {
     use qmckit::blue_noise::penrose_train::train;
