@@ -107,8 +107,9 @@ pub const AA_STEP_X: [u32; 2] = [0x9e37_79b9, 0xc941_3779];
 /// `B = R e_2` as 0.32 fractions: `(-sin theta, cos theta)` modulo 1.
 pub const AA_STEP_Y: [u32; 2] = [0x36be_c887, 0x9e37_79b9];
 
-/// Points a second, one core, release (a label addition and a table read; measured 3.5e7
-/// with the command's output, `qmckit points aa-patterns -n 16777216`, 0.48 s; taken low).
+/// Points a second, one core, release (a lattice vector tried or kept, a label addition and
+/// a table read; measured 3.2e7 with the command's output, `qmckit points aa-patterns -n
+/// 16777216 --format u32`, 0.52 s of user time; taken low).
 const POINTS: Rate = Rate::per_second(2e7);
 
 /// The label of cell `(x, y)` for start label `s`: `s + x A + y B` modulo 1.

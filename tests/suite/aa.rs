@@ -20,7 +20,7 @@ use qmckit::analysis::star::star_exact;
 use qmckit::blue_noise::AaPattern;
 use qmckit::blue_noise::aa::{AA_BINS, AA_TABLE, AaTable, bin, label, lattice};
 use qmckit::work::Budget;
-use qmckit::{Error, Sampler};
+use qmckit::Error;
 
 fn set(n: u64, seed: u64) -> Vec<f64> {
     AaPattern::new(n, seed)
@@ -121,7 +121,7 @@ fn one_point_in_each_cell_for_any_table() {
                 .table(table.clone())
                 .generate(&Budget::DEFAULT)
                 .unwrap();
-            assert_eq!(s.count(), k * k);
+            assert_eq!(s.count() as u64, k * k);
             let x = s.to_f64();
             assert!(x.iter().all(|v| (0.0..1.0).contains(v)));
             let mut c = cells(&x, k);
