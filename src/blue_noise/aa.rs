@@ -270,7 +270,7 @@ impl AaPattern {
 
 /// `tan 20°` and `tan 40°`: the range of the lattice's angle.
 const TAN_LO: f64 = 0.363_970_234_266_202_4;
-const TAN_HI: f64 = 0.839_099_631_177_280_0;
+const TAN_HI: f64 = 0.839_099_631_177_28;
 
 /// The lattice matrix `G = [[a, -b], [b, d]]` (returned as `[a, b, d]`) of side `K`:
 /// `det G = a d + b^2 = K^2`, so that `G Z^2 / K^2` contains `Z^2` with index `K^2`

@@ -14,13 +14,13 @@
 //! nearest-neighbour distance is far above white noise's closed form and the jittered
 //! grid's, and no two points come closer than half a cell.
 
+use qmckit::Error;
 use qmckit::analysis::Points;
 use qmckit::analysis::spectrum::spectrum_2d;
 use qmckit::analysis::star::star_exact;
 use qmckit::blue_noise::AaPattern;
 use qmckit::blue_noise::aa::{AA_BINS, AA_TABLE, AaTable, bin, label, lattice};
 use qmckit::work::Budget;
-use qmckit::Error;
 
 fn set(n: u64, seed: u64) -> Vec<f64> {
     AaPattern::new(n, seed)
