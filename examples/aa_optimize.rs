@@ -2,7 +2,9 @@
 //! `qmckit::blue_noise::AaPattern`: descent of the mismatch between the pair correlation of
 //! a `192 x 192` patch of the pattern (cell units, unit density; around the cells at least
 //! 3 from the border) and that of step blue noise with cutoff `U0` (Heck, Schlömer &
-//! Deussen 2013), each step on a patch from a fresh start label. A bin's displacement moves
+//! Deussen 2013), each step on a patch from a fresh start label, laid on the turned lattice
+//! `G / K` of `qmckit::blue_noise::aa::lattice` for the sides `SIDES` in turn (the shapes
+//! the sampler uses at `N = K^2`, each within 10% of a rotation). A bin's displacement moves
 //! by the mean gradient of the cells that read it (the moves scaled to a root-mean-square of
 //! 0.01 cell, shrinking to 0.001), and stays within `[-0.45, 0.45]` (the point in its cell).
 //! The start is uniform in `[-INIT/2, INIT/2]`.
@@ -13,15 +15,15 @@
 //! the table's 32 sets of 1024 points (seeds 1 to 32) are measured as
 //! `scripts/utk_compare.sh` measures them and the means printed to standard error.
 //!
-//! `cargo run --release --features analysis --example aa_optimize [U0] [STEPS] [INIT] [R0] [W] > tables/aa_displacements.rs`
-//! (defaults 0.5, 600, 0.9, 1.07, 20000).
+//! `cargo run --release --features analysis --example aa_optimize [U0] [STEPS] [INIT] [R0] [W] [SIDES] > tables/aa_displacements.rs`
+//! (defaults 0.5, 600, 0.9, 1.04, 20000, `16,32,64,128`).
 
 #[path = "common/gauss.rs"]
 mod gauss;
 #[path = "common/set_stats.rs"]
 mod set_stats;
 
-use qmckit::blue_noise::aa::{AA_BINS, AaPattern, AaTable, bin, label};
+use qmckit::blue_noise::aa::{AA_BINS, AaPattern, AaTable, bin, label, lattice};
 use qmckit::work::Budget;
 
 const PATCH: u32 = 192;
@@ -31,8 +33,19 @@ fn main() {
     let u0: f64 = args.get(1).map_or(0.5, |s| s.parse().expect("U0"));
     let steps: usize = args.get(2).map_or(600, |s| s.parse().expect("STEPS"));
     let init: f64 = args.get(3).map_or(0.9, |s| s.parse().expect("INIT"));
-    let r0: f64 = args.get(4).map_or(1.07, |s| s.parse().expect("R0"));
+    let r0: f64 = args.get(4).map_or(1.04, |s| s.parse().expect("R0"));
     let w: f64 = args.get(5).map_or(20000.0, |s| s.parse().expect("W"));
+    let sides: Vec<u32> = args
+        .get(6)
+        .map_or("16,32,64,128", String::as_str)
+        .split(',')
+        .map(|k| k.parse().expect("SIDES"))
+        .collect();
+    // The lattice of each side, `G / K` (module `qmckit::blue_noise::aa`, "The lattice").
+    let shapes: Vec<[f64; 3]> = sides
+        .iter()
+        .map(|&k| lattice(k).map(|v| f64::from(v) / f64::from(k)))
+        .collect();
     let bins = AA_BINS * AA_BINS;
     let mut state = 0x2545_f491_4f6c_dd1du64;
     let mut next = move || {
@@ -54,12 +67,14 @@ fn main() {
     let mut grad = vec![[0.0; 2]; n];
     for step in 0..steps {
         let s = [next() as u32, (next() >> 32) as u32];
+        let [a, b, d] = shapes[step % shapes.len()];
         for y in 0..PATCH {
             for x in 0..PATCH {
                 let i = (x + PATCH * y) as usize;
                 ids[i] = bin(label(s, x, y));
-                let d = table[ids[i]];
-                p[i] = [f64::from(x) + 0.5 + d[0], f64::from(y) + 0.5 + d[1]];
+                let e = table[ids[i]];
+                let u = [f64::from(x) + 0.5 + e[0], f64::from(y) + 0.5 + e[1]];
+                p[i] = [a * u[0] - b * u[1], b * u[0] + d * u[1]];
             }
         }
         grad.iter_mut().for_each(|g| *g = [0.0; 2]);
@@ -123,11 +138,15 @@ fn main() {
         })
         .collect();
     let (nn, low, mid) = set_stats::mean_nn_low_mid(&sets);
-    eprintln!("32 sets of 1024: NN {nn:.4}, low band {low:.4}, band sqrt(N)/2..sqrt(N) {mid:.3}");
+    let star = set_stats::mean_star(&sets);
+    eprintln!(
+        "32 sets of 1024: D* {star:.5}, NN {nn:.4}, low band {low:.4}, band sqrt(N)/2..sqrt(N) {mid:.3}"
+    );
     println!(
         "// The displacement table of AA patterns (qmckit::blue_noise::aa), by bin\n\
          // u + {AA_BINS} v of the label torus, in cell units. Written by\n\
-         // `cargo run --release --features analysis --example aa_optimize {u0} {steps} {init} {r0} {w}`."
+         // `cargo run --release --features analysis --example aa_optimize {u0} {steps} {init} {r0} {w} {}`.",
+        args.get(6).map_or("16,32,64,128", String::as_str)
     );
     println!("[");
     for d in &table {

@@ -1,5 +1,6 @@
-//! The two statistics of `scripts/utk_compare.sh` for a 2D set in the unit square, as
-//! `cli/examples/set_stats.rs` measures them: the mean nearest-neighbour distance times
+//! The statistics of `scripts/utk_compare.sh` for a 2D set in the unit square, as
+//! `cli/examples/set_stats.rs` measures them: the exact star discrepancy, the mean
+//! nearest-neighbour distance times
 //! `sqrt(N)` (in the square, not the torus) and the mean radial power of the periodogram
 //! over `1 <= |k| <= sqrt(N)/2`. Shared by the table optimizers to report the tables
 //! they write.
@@ -8,6 +9,7 @@ use qmckit::analysis::{
     Points,
     distance::mean_min_distance,
     spectrum::{DEFAULT_TOLERANCE, Method, periodogram_2d},
+    star::star_exact,
 };
 use qmckit::work::Budget;
 
@@ -36,6 +38,18 @@ pub fn nn_low_mid(xy: &[f64]) -> (f64, f64, f64) {
         v.iter().sum::<f64>() / v.len().max(1) as f64
     };
     (nn, band(0.5, root / 2.0), band(root / 2.0, root))
+}
+
+/// The mean exact star discrepancy `D*` of `sets` (interleaved `x, y` in `[0, 1)`).
+pub fn mean_star(sets: &[Vec<f64>]) -> f64 {
+    let total: f64 = sets
+        .iter()
+        .map(|s| {
+            let p = Points::new(s, 2).expect("2D points");
+            star_exact(p, &Budget::DEFAULT).expect("star discrepancy")
+        })
+        .sum();
+    total / sets.len().max(1) as f64
 }
 
 /// The means of [`nn_low_mid`] over `sets`.

@@ -49,9 +49,15 @@
 //! [`ART_TABLE`] (512 offsets) is `tables/art_offsets.rs`, made by
 //! `examples/art_optimize.rs`: gradient descent, over the prefixes of 256, 1024 and 4096
 //! points on the torus (1024 weighted seven times: it lies between two complete
-//! levels, where the offsets have the least room), of the mismatch of their pair correlation with step blue noise (Heck, Schlömer
-//! & Deussen 2013) plus a hard-core penalty `sum (r0 - r)^2` on pairs closer than
-//! `r0 = 1` mean spacing. The paper relaxes its offsets so that the samples of every level
+//! levels, where the offsets have the least room), of the mismatch of their pair
+//! correlation with step blue noise (Heck, Schlömer & Deussen 2013) plus a hard-core
+//! penalty `sum (r0 - r)^2` on pairs closer than `r0 = 1` mean spacing, plus (started from
+//! the table of those two terms) an axis term, `V sum_(d, j <= 3 sqrt N) |S_d(j)|^2 /
+//! (N j^2)` with `S_d(j)` the Fourier sum of the `d`-th coordinates: the squared `L2`
+//! discrepancy of the projections on the axes. At 1024 points (one sample in each `1/32`
+//! square) the first two terms alone kept the samples in the middle of their squares, the
+//! projections' discrepancy 0.015 and the star discrepancy 0.024; with the axis term
+//! (`V = 100`) 0.012. The paper relaxes its offsets so that the samples of every level
 //! spread out; its optimizer and table are not reproduced.
 //!
 //! ## Range and cost

@@ -49,7 +49,8 @@ not apply):
   penrose              Penrose-tiling sampling (Ostromoukhov et al. 2004), 2D: -n N (the
                        N points of lowest rank), --seed (rotation and offset)
   aa-patterns          AA patterns (after Ahmed et al. 2015), 2D: -n N a perfect square, one
-                       point a grid cell displaced by a table indexed by an automaton's label
+                       point a cell of a turned square lattice, displaced by a table indexed
+                       by an automaton's label
   art                  adaptive regular tiles (after Ahmed et al. 2017), 2D: -n N (the N
                        samples of lowest rank of a 4 x 4 subdivision), --seed (a torus shift)
   step-blue-noise, single-peak-blue-noise
