@@ -316,14 +316,8 @@ forward_base2!(#[cfg(feature = "std")] Box<S>);
 
 /// Validates a finite set's size, `1 <= n <= 2^32`, and its dimension count, `dims >= 1`.
 pub(crate) const fn check_set(n: u64, dims: usize) -> Result<()> {
-    if n == 0 {
-        return Err(Error::ZeroPoints);
-    }
-    if n > FULL_RANGE {
-        return Err(Error::TooManyPoints {
-            requested: n,
-            max: FULL_RANGE,
-        });
+    if let Err(e) = crate::size::points(n, FULL_RANGE) {
+        return Err(e);
     }
     if dims == 0 {
         return Err(Error::ZeroDimensions);

@@ -33,6 +33,30 @@ pub const fn coordinates(n: u64, dims: usize) -> Result<usize> {
     product("coordinates", n, dims as u64)
 }
 
+/// `n` when it is a valid point count for a construction that takes at most `max` points:
+/// the one check of every builder's `new`.
+///
+/// # Errors
+/// [`Error::ZeroPoints`] for `n = 0`, [`Error::TooManyPoints`] (`requested: n, max`) for
+/// `n > max`.
+///
+/// ```
+/// use qmckit::{size, Error};
+/// assert_eq!(size::points(5, 8)?, 5);
+/// assert_eq!(size::points(0, 8), Err(Error::ZeroPoints));
+/// assert_eq!(size::points(9, 8), Err(Error::TooManyPoints { requested: 9, max: 8 }));
+/// # Ok::<(), qmckit::Error>(())
+/// ```
+pub const fn points(n: u64, max: u64) -> Result<u64> {
+    if n == 0 {
+        return Err(Error::ZeroPoints);
+    }
+    if n > max {
+        return Err(Error::TooManyPoints { requested: n, max });
+    }
+    Ok(n)
+}
+
 /// `a * b` as a `usize`, for the count named `what`.
 ///
 /// # Errors

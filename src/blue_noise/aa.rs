@@ -184,15 +184,7 @@ impl AaPattern {
     /// [`Error::ZeroPoints`], [`Error::TooManyPoints`], [`Error::InvalidParameter`] unless
     /// `n` is a perfect square.
     pub fn new(n: u64, seed: u64) -> Result<Self> {
-        if n == 0 {
-            return Err(Error::ZeroPoints);
-        }
-        if n > AA_MAX_POINTS {
-            return Err(Error::TooManyPoints {
-                requested: n,
-                max: AA_MAX_POINTS,
-            });
-        }
+        crate::size::points(n, AA_MAX_POINTS)?;
         let side = n.isqrt();
         if side * side != n {
             return Err(Error::InvalidParameter {

@@ -284,15 +284,7 @@ impl Art {
     /// # Errors
     /// [`Error::ZeroPoints`], [`Error::TooManyPoints`].
     pub fn new(n: u64) -> Result<Self> {
-        if n == 0 {
-            return Err(Error::ZeroPoints);
-        }
-        if n > ART_MAX_POINTS {
-            return Err(Error::TooManyPoints {
-                requested: n,
-                max: ART_MAX_POINTS,
-            });
-        }
+        crate::size::points(n, ART_MAX_POINTS)?;
         Ok(Art {
             n,
             seed: 0,

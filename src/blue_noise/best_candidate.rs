@@ -50,15 +50,7 @@ impl BestCandidate {
     /// # Errors
     /// [`Error::ZeroPoints`], [`Error::TooManyPoints`].
     pub fn new(n: u64) -> Result<Self> {
-        if n == 0 {
-            return Err(Error::ZeroPoints);
-        }
-        if n > BEST_CANDIDATE_MAX_POINTS {
-            return Err(Error::TooManyPoints {
-                requested: n,
-                max: BEST_CANDIDATE_MAX_POINTS,
-            });
-        }
+        crate::size::points(n, BEST_CANDIDATE_MAX_POINTS)?;
         Ok(BestCandidate { n, m: 10, seed: 0 })
     }
 

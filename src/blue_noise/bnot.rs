@@ -114,15 +114,7 @@ impl Bnot {
     /// # Errors
     /// [`Error::ZeroPoints`], [`Error::TooManyPoints`].
     pub fn new(n: u64) -> Result<Self> {
-        if n == 0 {
-            return Err(Error::ZeroPoints);
-        }
-        if n > BNOT_MAX_POINTS {
-            return Err(Error::TooManyPoints {
-                requested: n,
-                max: BNOT_MAX_POINTS,
-            });
-        }
+        crate::size::points(n, BNOT_MAX_POINTS)?;
         Ok(Bnot {
             n,
             iterations: 50,

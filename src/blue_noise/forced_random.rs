@@ -106,15 +106,7 @@ impl ForcedRandom {
     /// # Errors
     /// [`Error::ZeroPoints`], [`Error::TooManyPoints`].
     pub fn new(n: u64) -> Result<Self> {
-        if n == 0 {
-            return Err(Error::ZeroPoints);
-        }
-        if n > FORCED_MAX_POINTS {
-            return Err(Error::TooManyPoints {
-                requested: n,
-                max: FORCED_MAX_POINTS,
-            });
-        }
+        crate::size::points(n, FORCED_MAX_POINTS)?;
         Ok(ForcedRandom {
             n,
             side: FORCING_SIDE,

@@ -144,15 +144,7 @@ impl KdeBlueNoise {
     /// [`Error::ZeroPoints`], [`Error::TooManyPoints`], [`Error::ZeroDimensions`],
     /// [`Error::DimensionOutOfRange`]; [`Error::InvalidParameter`] for one point.
     pub fn new(n: u64, dims: usize) -> Result<Self> {
-        if n == 0 {
-            return Err(Error::ZeroPoints);
-        }
-        if n > KDE_MAX_POINTS {
-            return Err(Error::TooManyPoints {
-                requested: n,
-                max: KDE_MAX_POINTS,
-            });
-        }
+        crate::size::points(n, KDE_MAX_POINTS)?;
         if dims == 0 {
             return Err(Error::ZeroDimensions);
         }

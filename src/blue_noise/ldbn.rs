@@ -254,15 +254,7 @@ impl Ldbn {
     /// [`Error::ZeroPoints`], [`Error::TooManyPoints`], [`Error::InvalidParameter`] unless
     /// `n` is a power of four of at least 4.
     pub fn new(n: u64, seed: u64) -> Result<Self> {
-        if n == 0 {
-            return Err(Error::ZeroPoints);
-        }
-        if n > LDBN_MAX_POINTS {
-            return Err(Error::TooManyPoints {
-                requested: n,
-                max: LDBN_MAX_POINTS,
-            });
-        }
+        crate::size::points(n, LDBN_MAX_POINTS)?;
         if n < 4 || !n.is_power_of_two() || !n.trailing_zeros().is_multiple_of(2) {
             return Err(Error::InvalidParameter {
                 what: "LDBN takes a power of four of at least 4 points (N = 4^k)",

@@ -128,15 +128,7 @@ impl Lloyd {
     /// [`Error::ZeroPoints`], [`Error::TooManyPoints`], [`Error::ZeroDimensions`],
     /// [`Error::DimensionOutOfRange`].
     pub fn new(n: u64, dims: usize) -> Result<Self> {
-        if n == 0 {
-            return Err(Error::ZeroPoints);
-        }
-        if n > LLOYD_MAX_POINTS {
-            return Err(Error::TooManyPoints {
-                requested: n,
-                max: LLOYD_MAX_POINTS,
-            });
-        }
+        crate::size::points(n, LLOYD_MAX_POINTS)?;
         if dims == 0 {
             return Err(Error::ZeroDimensions);
         }

@@ -155,15 +155,7 @@ impl ProjectiveBlueNoise {
     /// [`Error::ZeroPoints`], [`Error::TooManyPoints`], [`Error::ZeroDimensions`],
     /// [`Error::InvalidParameter`] in 1D, [`Error::DimensionOutOfRange`] past 8.
     pub fn new(n: u64, dims: usize) -> Result<Self> {
-        if n == 0 {
-            return Err(Error::ZeroPoints);
-        }
-        if n > PROJECTIVE_MAX_POINTS {
-            return Err(Error::TooManyPoints {
-                requested: n,
-                max: PROJECTIVE_MAX_POINTS,
-            });
-        }
+        crate::size::points(n, PROJECTIVE_MAX_POINTS)?;
         if dims == 0 {
             return Err(Error::ZeroDimensions);
         }

@@ -115,15 +115,7 @@ impl Sot {
     /// [`Error::ZeroPoints`], [`Error::TooManyPoints`], [`Error::ZeroDimensions`],
     /// [`Error::DimensionOutOfRange`].
     pub fn new(n: u64, dims: usize) -> Result<Self> {
-        if n == 0 {
-            return Err(Error::ZeroPoints);
-        }
-        if n > SOT_MAX_POINTS {
-            return Err(Error::TooManyPoints {
-                requested: n,
-                max: SOT_MAX_POINTS,
-            });
-        }
+        crate::size::points(n, SOT_MAX_POINTS)?;
         if dims == 0 {
             return Err(Error::ZeroDimensions);
         }

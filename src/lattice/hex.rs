@@ -159,15 +159,7 @@ impl HexGrid {
 
 /// `n` even in `2..=2^32`.
 fn check_n(n: u64) -> Result<()> {
-    if n == 0 {
-        return Err(Error::ZeroPoints);
-    }
-    if n > FULL_RANGE {
-        return Err(Error::TooManyPoints {
-            requested: n,
-            max: FULL_RANGE,
-        });
-    }
+    crate::size::points(n, FULL_RANGE)?;
     if !n.is_multiple_of(2) {
         return Err(Error::InvalidParameter {
             what: "a hex grid on the torus needs an even N (an even number of rows; N - 1 \

@@ -167,15 +167,7 @@ impl Penrose {
     /// # Errors
     /// [`Error::ZeroPoints`], [`Error::TooManyPoints`].
     pub fn new(n: u64) -> Result<Self> {
-        if n == 0 {
-            return Err(Error::ZeroPoints);
-        }
-        if n > PENROSE_MAX_POINTS {
-            return Err(Error::TooManyPoints {
-                requested: n,
-                max: PENROSE_MAX_POINTS,
-            });
-        }
+        crate::size::points(n, PENROSE_MAX_POINTS)?;
         Ok(Penrose {
             n,
             seed: 0,

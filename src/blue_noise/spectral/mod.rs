@@ -152,15 +152,7 @@ impl SpectralBlueNoise {
     /// [`Error::DimensionOutOfRange`]; [`Error::InvalidParameter`] for one point, a bad or
     /// an unrealizable profile.
     pub fn new(n: u64, dims: usize, profile: Profile) -> Result<Self> {
-        if n == 0 {
-            return Err(Error::ZeroPoints);
-        }
-        if n > SPECTRAL_MAX_POINTS {
-            return Err(Error::TooManyPoints {
-                requested: n,
-                max: SPECTRAL_MAX_POINTS,
-            });
-        }
+        crate::size::points(n, SPECTRAL_MAX_POINTS)?;
         check_dims(dims)?;
         if n < 2 || range(n, dims) < 4.0 * DELTA {
             return Err(Error::InvalidParameter {
